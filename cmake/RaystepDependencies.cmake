@@ -1,0 +1,57 @@
+# Third-party libraries, found once for the whole build.
+#
+# What a student's machine needs (Linux, macOS or Windows): GLM and Catch2 (v2 or v3) for the
+# stage libraries and their tests; OpenImageIO, and the two small header-style libraries CLI11
+# and tinyobjloader, for the `raystep` command that renders. CGAL, Embree and the rest are the
+# instructor's: only the grader and the benchmarks use them.
+
+set(RAYSTEP_INSTALL_HINT
+    "Debian/Ubuntu: scripts/install-deps.sh; macOS: brew install glm catch2 openimageio cli11 tinyobjloader; Windows: vcpkg install glm catch2 openimageio cli11 tinyobjloader")
+
+find_package(glm CONFIG QUIET)
+if(NOT TARGET glm::glm)
+    message(FATAL_ERROR "GLM was not found. ${RAYSTEP_INSTALL_HINT}")
+endif()
+
+find_package(Catch2 CONFIG QUIET)
+if(NOT TARGET Catch2::Catch2WithMain)
+    message(FATAL_ERROR "Catch2 was not found. ${RAYSTEP_INSTALL_HINT}")
+endif()
+
+# Debian's OpenImageIO CMake config names /usr/include/opencv4 and fails to configure where
+# OpenCV's headers are absent, so pkg-config comes first and the CMake config is the fallback
+# for platforms without pkg-config.
+find_package(PkgConfig QUIET)
+if(PkgConfig_FOUND)
+    pkg_check_modules(OpenImageIO QUIET IMPORTED_TARGET OpenImageIO)
+endif()
+add_library(raystep_openimageio INTERFACE)
+if(TARGET PkgConfig::OpenImageIO)
+    target_link_libraries(raystep_openimageio INTERFACE PkgConfig::OpenImageIO)
+else()
+    find_package(OpenImageIO CONFIG QUIET)
+    if(NOT TARGET OpenImageIO::OpenImageIO)
+        message(FATAL_ERROR "OpenImageIO was not found. ${RAYSTEP_INSTALL_HINT}")
+    endif()
+    target_link_libraries(raystep_openimageio INTERFACE OpenImageIO::OpenImageIO)
+endif()
+
+find_package(CLI11 CONFIG QUIET)
+if(NOT TARGET CLI11::CLI11)
+    message(FATAL_ERROR "CLI11 was not found. ${RAYSTEP_INSTALL_HINT}")
+endif()
+
+# Mesh coordinates are parsed straight to double, the precision of the whole student API, where
+# the installed tinyobjloader offers it (Debian builds both variants); core/scene uses
+# tinyobj::real_t, so either variant compiles.
+find_package(tinyobjloader CONFIG QUIET)
+add_library(raystep_tinyobjloader INTERFACE)
+if(TARGET tinyobjloader::tinyobjloader_double)
+    target_link_libraries(raystep_tinyobjloader INTERFACE tinyobjloader::tinyobjloader_double)
+elseif(TARGET tinyobjloader::tinyobjloader)
+    target_link_libraries(raystep_tinyobjloader INTERFACE tinyobjloader::tinyobjloader)
+else()
+    message(FATAL_ERROR "tinyobjloader was not found. ${RAYSTEP_INSTALL_HINT}")
+endif()
+
+find_package(Threads REQUIRED)

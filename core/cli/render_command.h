@@ -1,0 +1,22 @@
+#pragma once
+
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace raystep {
+
+/// `raystep render SCENE [-o FILE] [--threads N] [--view VIEW]`
+struct RenderArguments {
+    std::string scene;
+    std::string output;
+    int threads = 0;
+    std::string view = "full";
+};
+
+CLI::App* add_render_command(CLI::App& app, RenderArguments& arguments);
+
+/// Renders and writes the image; the exit code. Errors propagate to main.
+int run_render(const RenderArguments& arguments);
+
+}  // namespace raystep

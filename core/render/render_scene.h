@@ -1,0 +1,34 @@
+#pragma once
+
+#include <cstddef>
+#include <variant>
+
+#include "core/scene/scene.h"
+#include "stages/2_rays/camera.h"
+#include "stages/3_intersect/intersect.h"
+
+namespace raystep {
+
+/// The scene as the renderer uses it, built once per render by the stages: the camera from
+/// stage 2 and the primitives gathered for stage 3. `scene` keeps materials and lights.
+struct RenderScene {
+    const Scene* scene = nullptr;
+    std::variant<PerspectiveCamera, OrthographicCamera> camera;
+    PrimitiveList primitives;  ///< in Scene order, so index k of a kind is Scene's k-th of it
+};
+
+/// Builds the camera with stage 2 (whose errors and stubs propagate) and gathers the
+/// primitives. Throws std::runtime_error for a scene that needs a capability this build lacks.
+RenderScene prepare_render_scene(const Scene& scene);
+
+/// The camera ray through the centre of pixel (i, j), from stage 2.
+Ray camera_ray(const RenderScene& render_scene, int i, int j);
+
+/// The scene's record of a primitive the renderer hit.
+const ObjectAttributes& attributes_of(const RenderScene& render_scene, PrimitiveKind kind,
+                                      std::size_t index);
+
+/// "sphere", "triangle", "plane".
+const char* kind_name(PrimitiveKind kind);
+
+}  // namespace raystep

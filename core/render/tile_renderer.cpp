@@ -1,0 +1,135 @@
+#include "core/render/tile_renderer.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "core/render/progress_bar.h"
+#include "core/render/render_pixel.h"
+
+namespace raystep {
+
+namespace {
+
+constexpr int kTileSize = 16;
+
+// Shared by the workers: the next tile to take, the pixels done, and the first failure.
+class TileQueue {
+  public:
+    TileQueue(int width, int height)
+        : width_(width),
+          tiles_x_((width + kTileSize - 1) / kTileSize),
+          tile_count_(tiles_x_ * ((height + kTileSize - 1) / kTileSize)),
+          height_(height) {}
+
+    /// The next tile's first pixel, or false when none is left or the render failed.
+    bool take(int& x0, int& y0) {
+        if (failed_.load()) return false;
+        const int tile = next_.fetch_add(1);
+        if (tile >= tile_count_) return false;
+        x0 = (tile % tiles_x_) * kTileSize;
+        y0 = (tile / tiles_x_) * kTileSize;
+        return true;
+    }
+
+    void fail(std::exception_ptr error) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (!error_) error_ = error;
+        failed_ = true;
+    }
+
+    void add_done(std::size_t pixels) { done_ += pixels; }
+    std::size_t done() const { return done_.load(); }
+
+    void worker_finished() {
+        std::lock_guard<std::mutex> lock(mutex_);
+        ++finished_workers_;
+        changed_.notify_all();
+    }
+
+    /// Waits until `workers` have finished or `period` has passed; true when all have finished.
+    bool wait_for_workers(int workers, std::chrono::milliseconds period) {
+        std::unique_lock<std::mutex> lock(mutex_);
+        return changed_.wait_for(lock, period, [&] { return finished_workers_ == workers; });
+    }
+
+    std::exception_ptr error() const { return error_; }
+    int width() const { return width_; }
+    int height() const { return height_; }
+
+  private:
+    int width_;
+    int tiles_x_;
+    int tile_count_;
+    int height_;
+    std::atomic<int> next_{0};
+    std::atomic<std::size_t> done_{0};
+    std::atomic<bool> failed_{false};
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    int finished_workers_ = 0;
+    std::exception_ptr error_;
+};
+
+void render_tiles(const RenderScene& render_scene, View view, TileQueue& queue, Image& image) {
+    try {
+        int x0 = 0;
+        int y0 = 0;
+        while (queue.take(x0, y0)) {
+            const int x1 = std::min(x0 + kTileSize, queue.width());
+            const int y1 = std::min(y0 + kTileSize, queue.height());
+            for (int j = y0; j < y1; ++j) {
+                for (int i = x0; i < x1; ++i) {
+                    image.set(i, j, render_pixel(render_scene, view, i, j, nullptr));
+                }
+            }
+            queue.add_done(static_cast<std::size_t>((x1 - x0) * (y1 - y0)));
+        }
+    } catch (...) {
+        queue.fail(std::current_exception());
+    }
+    queue.worker_finished();
+}
+
+}  // namespace
+
+Image render_image(const RenderScene& render_scene, const RenderOptions& options) {
+    const Scene& scene = *render_scene.scene;
+    Image image(scene.width, scene.height);
+    TileQueue queue(scene.width, scene.height);
+
+    const int workers = options.threads > 0
+                            ? options.threads
+                            : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    std::vector<std::thread> pool;
+    pool.reserve(static_cast<std::size_t>(workers));
+    for (int w = 0; w < workers; ++w) {
+        pool.emplace_back(render_tiles, std::cref(render_scene), options.view, std::ref(queue),
+                          std::ref(image));
+    }
+
+    // The calling thread draws the progress bar until every worker is done.
+    ProgressBar bar(options.label,
+                    static_cast<std::size_t>(scene.width) * static_cast<std::size_t>(scene.height),
+                    options.progress);
+    while (!queue.wait_for_workers(workers, std::chrono::milliseconds(100))) {
+        bar.update(queue.done());
+    }
+    for (std::thread& thread : pool)
+        thread.join();
+
+    if (queue.error()) {
+        bar.abandon();
+        std::rethrow_exception(queue.error());
+    }
+    bar.finish();
+    finish_view(image, options.view);
+    return image;
+}
+
+}  // namespace raystep

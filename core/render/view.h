@@ -1,0 +1,29 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace raystep {
+
+/// What a render shows. Each view is what one stage produces, so that a stage can be checked
+/// (and graded) on its own image before the later stages exist.
+enum class View {
+    rays,         ///< stage 2: the camera ray's direction as a colour, 0.5 (d + 1)
+    depth,        ///< stage 3: distance to the nearest hit, near bright, far dark, misses black
+    normal,       ///< stage 3: the geometric normal at the nearest hit as a colour, 0.5 (n + 1)
+    barycentric,  ///< stage 3: (1 - beta - gamma, beta, gamma) on triangles, grey elsewhere
+    full,         ///< the finished image
+};
+
+/// The view's name on the command line.
+std::string_view view_name(View view);
+
+/// The view with this name; nullopt when no view has it.
+std::optional<View> parse_view(std::string_view name);
+
+/// Every view's name, in the order above.
+std::vector<std::string> view_names();
+
+}  // namespace raystep

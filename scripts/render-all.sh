@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# The first command of README.md: installs what is missing, builds, and renders every scene
+# under scenes/ with the reference code into out/, one folder per scene and one image per view.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+scripts/install-deps.sh
+cmake --preset release >/dev/null
+cmake --build --preset release
+
+raystep=build/release/bin/raystep-reference
+views=(rays depth normal barycentric)
+count=0
+while IFS= read -r scene; do
+    relative=${scene#scenes/}
+    folder="out/${relative%.test}"
+    for view in "${views[@]}"; do
+        "$raystep" render "$scene" --view "$view" -o "$folder/$view.png" >/dev/null
+    done
+    echo "rendered $scene into $folder/"
+    count=$((count + 1))
+done < <(find scenes -name '*.test' | sort)
+
+echo
+echo "$count scenes rendered with the reference code: the images are in $(pwd)/out/"

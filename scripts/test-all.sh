@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# The second command of README.md: builds and runs the whole test suite.
+#   1. the release build, warnings as errors, and every test;
+#   2. the student build (every stage from stages/): every public test must fail with a
+#      NotImplemented message and none may crash;
+#   3. the debug build under AddressSanitizer and UndefinedBehaviorSanitizer, and every test.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+jobs=$(nproc 2>/dev/null || echo 2)
+
+echo "== release build and tests"
+cmake --preset release -DRAYSTEP_WARNINGS_AS_ERRORS=ON >/dev/null
+cmake --build --preset release
+ctest --preset release -j "$jobs"
+
+echo "== student build: every stub fails cleanly"
+scripts/check-student-build.sh
+
+echo "== sanitizer build and tests"
+cmake --preset debug-asan -DRAYSTEP_WARNINGS_AS_ERRORS=ON >/dev/null
+cmake --build --preset debug-asan
+ctest --preset debug-asan -j "$jobs"
+
+echo "== all tests passed"

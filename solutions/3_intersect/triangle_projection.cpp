@@ -1,0 +1,46 @@
+// Stage 3 reference solution: lecture method 1, ray-plane then a 2D inside test.
+
+#include <cmath>
+
+#include "solutions/3_intersect/triangle_hit.h"
+
+namespace raystep {
+
+namespace {
+
+// The 2D cross product of (a - o) and (b - o) in the kept coordinates x, y: twice the signed
+// area of the triangle o a b.
+double signed_area2(const Vec3& o, const Vec3& a, const Vec3& b, int x, int y) {
+    return (a[x] - o[x]) * (b[y] - o[y]) - (a[y] - o[y]) * (b[x] - o[x]);
+}
+
+}  // namespace
+
+std::optional<Hit> intersect_triangle_projection(const Ray& ray, const Triangle& tri) {
+    // The supporting plane
+    const Vec3 n = glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0);
+    const double denominator = glm::dot(ray.direction, n);
+    if (denominator == 0.0) return std::nullopt;  // parallel ray, zero direction or zero area
+    const double t = glm::dot(tri.p0 - ray.origin, n) / denominator;
+    if (!in_ray_range(ray, t)) return std::nullopt;
+    const Vec3 p = ray.origin + t * ray.direction;
+
+    // Drop the axis where |n| is largest; keeping (z+1, z+2) in cyclic order preserves the
+    // orientation, so the projected triangle's area has the sign of n[z].
+    const Vec3 m = glm::abs(n);
+    const int z = (m.x >= m.y && m.x >= m.z) ? 0 : (m.y >= m.z ? 1 : 2);
+    const int x = (z + 1) % 3;
+    const int y = (z + 2) % 3;
+
+    // Inside: p is on the inner side of every edge, or on it.
+    const double area = signed_area2(tri.p0, tri.p1, tri.p2, x, y);
+    const double w0 = signed_area2(tri.p1, tri.p2, p, x, y);  // opposite p0
+    const double w1 = signed_area2(tri.p2, tri.p0, p, x, y);  // opposite p1
+    const double w2 = signed_area2(tri.p0, tri.p1, p, x, y);  // opposite p2
+    const bool inside =
+        area > 0.0 ? (w0 >= 0.0 && w1 >= 0.0 && w2 >= 0.0) : (w0 <= 0.0 && w1 <= 0.0 && w2 <= 0.0);
+    if (!inside) return std::nullopt;
+    return triangle_hit(tri, t, w1 / area, w2 / area);
+}
+
+}  // namespace raystep

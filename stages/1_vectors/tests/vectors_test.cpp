@@ -1,0 +1,227 @@
+// Public tests for stage 1. Run them with `ctest --test-dir build/release -L stage1`, or run
+// build/release/bin/raystep_stage1_tests directly to see every failure in full.
+//
+// The loops call your function before the CHECK, not inside it: an exception outside a CHECK
+// ends the test at once, so a stub is reported once rather than a thousand times.
+
+#include <cmath>
+#include <limits>
+#include <random>
+#include <stdexcept>
+
+#include <glm/geometric.hpp>
+
+#include "core/testing/catch.h"
+#include "core/testing/vec3_matchers.h"
+#include "stages/1_vectors/vectors.h"
+
+using namespace raystep;
+using raystep::testing::IsNear;
+
+namespace {
+
+// Components in [-10, 10] from a seeded generator, so a failure can be replayed.
+Vec3 random_vec3(std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> u(-10.0, 10.0);
+    return {u(rng), u(rng), u(rng)};
+}
+
+constexpr double kTight = 1e-14;  // a few ulps of the values these tests use
+
+}  // namespace
+
+TEST_CASE("dot: multiplies componentwise and adds", "[stage1]") {
+    CHECK(dot({1, 2, 3}, {4, -5, 6}) == 1 * 4 - 2 * 5 + 3 * 6);
+    CHECK(dot({1, 0, 0}, {0, 1, 0}) == 0.0);
+}
+
+TEST_CASE("dot: agrees with glm::dot on random vectors", "[stage1]") {
+    std::mt19937_64 rng(1);
+    for (int k = 0; k < 1000; ++k) {
+        const Vec3 a = random_vec3(rng);
+        const Vec3 b = random_vec3(rng);
+        CAPTURE(k, a.x, a.y, a.z, b.x, b.y, b.z);
+        const double got = dot(a, b);
+        CHECK(got == Approx(glm::dot(a, b)).epsilon(kTight).margin(kTight));
+    }
+}
+
+TEST_CASE("cross: x cross y is z (right-handed)", "[stage1]") {
+    CHECK(cross({1, 0, 0}, {0, 1, 0}) == Vec3(0, 0, 1));
+    CHECK(cross({0, 1, 0}, {0, 0, 1}) == Vec3(1, 0, 0));
+    CHECK(cross({0, 0, 1}, {1, 0, 0}) == Vec3(0, 1, 0));
+    CHECK(cross({0, 1, 0}, {1, 0, 0}) == Vec3(0, 0, -1));
+}
+
+TEST_CASE("cross: is perpendicular to both and agrees with glm::cross", "[stage1]") {
+    std::mt19937_64 rng(2);
+    for (int k = 0; k < 1000; ++k) {
+        const Vec3 a = random_vec3(rng);
+        const Vec3 b = random_vec3(rng);
+        CAPTURE(k, a.x, a.y, a.z, b.x, b.y, b.z);
+        const Vec3 c = cross(a, b);
+        CHECK_THAT(c, IsNear(glm::cross(a, b), kTight));
+        CHECK(std::abs(glm::dot(c, a)) <= 1e-12 * glm::length(c) * glm::length(a) + 1e-12);
+        CHECK(std::abs(glm::dot(c, b)) <= 1e-12 * glm::length(c) * glm::length(b) + 1e-12);
+    }
+}
+
+TEST_CASE("length: of (3, 4, 12) is 13", "[stage1]") {
+    CHECK(length({3, 4, 12}) == 13.0);
+    CHECK(length({0, 0, 0}) == 0.0);
+    CHECK(length({0, -2, 0}) == 2.0);
+}
+
+TEST_CASE("length: agrees with glm::length on random vectors", "[stage1]") {
+    std::mt19937_64 rng(3);
+    for (int k = 0; k < 1000; ++k) {
+        const Vec3 v = random_vec3(rng);
+        CAPTURE(k, v.x, v.y, v.z);
+        const double got = length(v);
+        CHECK(got == Approx(glm::length(v)).epsilon(kTight));
+    }
+}
+
+TEST_CASE("length: does not overflow for components near 1e200", "[stage1]") {
+    // (3, 4, 12) * 1e200: the squares are 1e400, beyond the largest double (1.8e308), yet the
+    // length 1.3e201 is an ordinary double. sqrt(v . v) gives infinity here.
+    CHECK(length({3e200, 4e200, 12e200}) == Approx(13e200).epsilon(kTight));
+}
+
+TEST_CASE("length: does not underflow for components near 1e-200", "[stage1]") {
+    // The squares are 1e-400, below the smallest double (4.9e-324): sqrt(v . v) gives 0.
+    CHECK(length({3e-200, 4e-200, 12e-200}) == Approx(13e-200).epsilon(kTight));
+}
+
+TEST_CASE("normalize: gives a unit vector in the same direction", "[stage1]") {
+    CHECK_THAT(normalize({0, 0, -5}), IsNear(Vec3{0, 0, -1}, kTight));
+    CHECK_THAT(normalize({3, 4, 12}), IsNear(Vec3(3, 4, 12) / 13.0, kTight));
+}
+
+TEST_CASE("normalize: agrees with glm::normalize on random vectors", "[stage1]") {
+    std::mt19937_64 rng(4);
+    for (int k = 0; k < 1000; ++k) {
+        const Vec3 v = random_vec3(rng);
+        CAPTURE(k, v.x, v.y, v.z);
+        const Vec3 n = normalize(v);
+        CHECK_THAT(n, IsNear(glm::normalize(v), kTight));
+        CHECK(glm::length(n) == Approx(1.0).epsilon(kTight));
+    }
+}
+
+TEST_CASE("normalize: works for tiny and huge vectors", "[stage1]") {
+    CHECK_THAT(normalize({3e-200, 4e-200, 12e-200}), IsNear(Vec3(3, 4, 12) / 13.0, kTight));
+    CHECK_THAT(normalize({3e200, 4e200, 12e200}), IsNear(Vec3(3, 4, 12) / 13.0, kTight));
+    CHECK_THAT(normalize({5e-324, 0, 0}), IsNear(Vec3{1, 0, 0}, kTight));  // the smallest double
+}
+
+TEST_CASE("normalize: the zero vector has no direction, so it throws", "[stage1]") {
+    REQUIRE_THROWS_AS(normalize({0, 0, 0}), std::domain_error);
+    REQUIRE_THROWS_AS(normalize({-0.0, 0, 0}), std::domain_error);
+}
+
+TEST_CASE("normalize: a vector with an infinite or NaN component throws", "[stage1]") {
+    const double inf = std::numeric_limits<double>::infinity();
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    REQUIRE_THROWS_AS(normalize({inf, 0, 0}), std::domain_error);
+    REQUIRE_THROWS_AS(normalize({1, nan, 0}), std::domain_error);
+}
+
+TEST_CASE("reflect: a ray hitting the floor bounces up", "[stage1]") {
+    CHECK_THAT(reflect({1, -1, 0}, {0, 1, 0}), IsNear(Vec3{1, 1, 0}, kTight));
+    CHECK_THAT(reflect({0, 0, -1}, {0, 0, 1}), IsNear(Vec3{0, 0, 1}, kTight));  // straight back
+    CHECK_THAT(reflect({1, 0, 0}, {0, 1, 0}), IsNear(Vec3{1, 0, 0}, kTight));  // grazing: unchanged
+}
+
+TEST_CASE("reflect: keeps the length and agrees with glm::reflect", "[stage1]") {
+    std::mt19937_64 rng(5);
+    for (int k = 0; k < 1000; ++k) {
+        const Vec3 d = random_vec3(rng);
+        const Vec3 n = glm::normalize(random_vec3(rng));
+        CAPTURE(k, d.x, d.y, d.z, n.x, n.y, n.z);
+        const Vec3 r = reflect(d, n);
+        CHECK_THAT(r, IsNear(glm::reflect(d, n), 1e-13));
+        CHECK(glm::length(r) == Approx(glm::length(d)).epsilon(1e-13));
+    }
+}
+
+TEST_CASE("project_onto: keeps the part along the line", "[stage1]") {
+    CHECK_THAT(project_onto({3, 4, 5}, {0, 2, 0}), IsNear(Vec3{0, 4, 0}, kTight));
+    CHECK_THAT(project_onto({1, 1, 0}, {1, 0, 0}), IsNear(Vec3{1, 0, 0}, kTight));
+    CHECK_THAT(project_onto({0, 0, 7}, {1, 1, 0}), IsNear(Vec3{0, 0, 0}, kTight));
+    CHECK_THAT(project_onto({2, 0, 0}, {-1, 0, 0}),
+               IsNear(Vec3{2, 0, 0}, kTight));  // onto the line, either way
+}
+
+TEST_CASE("project_onto: onto the zero vector throws", "[stage1]") {
+    REQUIRE_THROWS_AS(project_onto({1, 2, 3}, {0, 0, 0}), std::domain_error);
+}
+
+TEST_CASE("perpendicular_to: is what projection leaves, at right angles to the edge", "[stage1]") {
+    CHECK_THAT(perpendicular_to({3, 4, 5}, {0, 2, 0}), IsNear(Vec3{3, 0, 5}, kTight));
+    std::mt19937_64 rng(6);
+    for (int k = 0; k < 1000; ++k) {
+        const Vec3 v = random_vec3(rng);
+        const Vec3 edge = random_vec3(rng);
+        CAPTURE(k, v.x, v.y, v.z, edge.x, edge.y, edge.z);
+        const Vec3 p = perpendicular_to(v, edge);
+        CHECK(std::abs(glm::dot(p, edge)) <= 1e-12 * glm::length(v) * glm::length(edge));
+        CHECK_THAT(p + project_onto(v, edge), IsNear(v, 1e-13));
+    }
+}
+
+TEST_CASE("perpendicular_to: a zero edge throws", "[stage1]") {
+    REQUIRE_THROWS_AS(perpendicular_to({1, 2, 3}, {0, 0, 0}), std::domain_error);
+}
+
+TEST_CASE("orthonormal_frame: a camera on +z looking at the origin with up +y", "[stage1]") {
+    const Frame f = orthonormal_frame({0, 0, 5}, {0, 1, 0});
+    CHECK_THAT(f.w, IsNear(Vec3{0, 0, 1}, kTight));
+    CHECK_THAT(f.u, IsNear(Vec3{1, 0, 0}, kTight));
+    CHECK_THAT(f.v, IsNear(Vec3{0, 1, 0}, kTight));
+}
+
+TEST_CASE("orthonormal_frame: is orthonormal and right-handed for random input", "[stage1]") {
+    std::mt19937_64 rng(7);
+    for (int k = 0; k < 1000; ++k) {
+        const Vec3 a = random_vec3(rng);
+        const Vec3 b = random_vec3(rng);
+        CAPTURE(k, a.x, a.y, a.z, b.x, b.y, b.z);
+        const Frame f = orthonormal_frame(a, b);
+        CHECK(glm::length(f.u) == Approx(1.0).epsilon(1e-14));
+        CHECK(glm::length(f.v) == Approx(1.0).epsilon(1e-14));
+        CHECK(glm::length(f.w) == Approx(1.0).epsilon(1e-14));
+        CHECK(std::abs(glm::dot(f.u, f.v)) < 1e-12);
+        CHECK(std::abs(glm::dot(f.v, f.w)) < 1e-12);
+        CHECK(std::abs(glm::dot(f.w, f.u)) < 1e-12);
+        CHECK_THAT(glm::cross(f.u, f.v), IsNear(f.w, 1e-12));
+        CHECK(glm::dot(f.w, a) > 0.0);  // w points along a
+        CHECK(glm::dot(f.v, b) > 0.0);  // v is on b's side
+    }
+}
+
+TEST_CASE("orthonormal_frame: b parallel to a throws instead of returning NaN", "[stage1]") {
+    // Looking straight down with "up" pointing up: up and view are parallel.
+    REQUIRE_THROWS_AS(orthonormal_frame({0, 10, 0}, {0, 1, 0}), std::domain_error);
+    REQUIRE_THROWS_AS(orthonormal_frame({0, 10, 0}, {0, -1, 0}), std::domain_error);
+}
+
+TEST_CASE("orthonormal_frame: b parallel to a throws even when rounding hides it", "[stage1]") {
+    // b = 2a exactly, but w = a / |a| is rounded, so b x w is a few 1e-16, not 0: testing
+    // "== 0" lets this through and returns a u decided by rounding alone.
+    REQUIRE_THROWS_AS(orthonormal_frame({1, 2, 3}, {2, 4, 6}), std::domain_error);
+    REQUIRE_THROWS_AS(orthonormal_frame({0.1, 0.7, -0.3}, {-0.3, -2.1, 0.9}), std::domain_error);
+}
+
+TEST_CASE("orthonormal_frame: b at 1e-6 radians from a is still a frame", "[stage1]") {
+    // The sine 1e-6 is well above kParallelSine (1e-8): this frame is well defined.
+    // b x w = (0, -1e-6, 0), so u = (0, -1, 0) and v = w x u = (1, 0, 0), towards b.
+    const Frame f = orthonormal_frame({0, 0, 1}, {1e-6, 0, 1});
+    CHECK_THAT(f.u, IsNear(Vec3{0, -1, 0}, 1e-9));
+    CHECK_THAT(f.v, IsNear(Vec3{1, 0, 0}, 1e-9));
+}
+
+TEST_CASE("orthonormal_frame: a zero a or b throws", "[stage1]") {
+    REQUIRE_THROWS_AS(orthonormal_frame({0, 0, 0}, {0, 1, 0}), std::domain_error);
+    REQUIRE_THROWS_AS(orthonormal_frame({0, 0, 1}, {0, 0, 0}), std::domain_error);
+}
