@@ -1,9 +1,11 @@
 # The student/solution switch of docs/design: every stage is a static library
 # `raystep_stageN`, compiled from stages/N_topic/ when N is listed in RAYSTEP_STUDENT_STAGES and
-# from solutions/N_topic/ otherwise. `raystep_stageN_reference` is always the solution, so the
-# reference build (`raystep-reference`, used by `raystep trace --compare`) sits beside the
-# configured one. Both take their source list from the stage's manifest.txt, the list of files a
-# student edits and the grader takes from a submission.
+# from solutions/N_topic/ otherwise, and always linked against the configured stages below it:
+# with RAYSTEP_STUDENT_STAGES=1, the reference stage 2 calls the student's stage 1, which is the
+# point. `raystep_stageN_reference` is the solution linked against the solutions below it, for
+# the reference build (`raystep-reference`, used by `raystep trace --compare`). Both take their
+# source list from the stage's manifest.txt, the files a student edits and the grader takes from
+# a submission.
 
 set(RAYSTEP_HAVE_SOLUTIONS FALSE)
 if(EXISTS ${PROJECT_SOURCE_DIR}/solutions)
@@ -17,9 +19,10 @@ foreach(folder IN LISTS RAYSTEP_STAGES)
     list(APPEND RAYSTEP_STAGE_NUMBERS ${number})
 endforeach()
 
-# RAYSTEP_STUDENT_STAGES accepts "1;3", "1,3", "1 3" and "all". A student release has no
-# solutions/, so there every stage is the student's.
-string(REGEX REPLACE "[, ]+" ";" requested "${RAYSTEP_STUDENT_STAGES}")
+# RAYSTEP_STUDENT_STAGES accepts "1;3", "1,3", "1 3", "1; 3" and "all". A student release has
+# no solutions/, so there every stage is the student's.
+string(REGEX REPLACE "[,; ]+" ";" requested "${RAYSTEP_STUDENT_STAGES}")
+list(FILTER requested EXCLUDE REGEX "^$")
 if(requested STREQUAL "all" OR NOT RAYSTEP_HAVE_SOLUTIONS)
     set(RAYSTEP_STUDENT_STAGE_NUMBERS ${RAYSTEP_STAGE_NUMBERS})
 else()
@@ -68,23 +71,27 @@ function(raystep_add_stage folder)
     # A stage may call every stage below it, so each links the ones before it in the same build.
     set(lower)
     set(lower_reference)
+    set(student_below FALSE)
     foreach(other IN LISTS RAYSTEP_STAGE_NUMBERS)
         if(other LESS number)
             list(APPEND lower raystep_stage${other})
             list(APPEND lower_reference raystep_stage${other}_reference)
+            if(other IN_LIST RAYSTEP_STUDENT_STAGE_NUMBERS)
+                set(student_below TRUE)
+            endif()
         endif()
     endforeach()
 
     if(RAYSTEP_HAVE_SOLUTIONS)
         # The solution may go beyond the manifest (a watertight triangle test, float variants),
         # so it is every .cpp of its folder, which must include each manifest file.
-        file(GLOB reference_sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/solutions/${folder}/*.cpp)
+        file(GLOB solution_sources CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/solutions/${folder}/*.cpp)
         foreach(file IN LISTS files)
             if(NOT EXISTS ${PROJECT_SOURCE_DIR}/solutions/${folder}/${file})
                 message(FATAL_ERROR "solutions/${folder}/${file} is missing: the manifest lists it")
             endif()
         endforeach()
-        add_library(raystep_stage${number}_reference STATIC ${reference_sources})
+        add_library(raystep_stage${number}_reference STATIC ${solution_sources})
         target_link_libraries(raystep_stage${number}_reference PUBLIC raystep_core ${lower_reference})
         raystep_set_compile_options(raystep_stage${number}_reference)
     endif()
@@ -95,10 +102,18 @@ function(raystep_add_stage folder)
         add_library(raystep_stage${number} STATIC ${student_sources})
         target_link_libraries(raystep_stage${number} PUBLIC raystep_core ${lower})
         raystep_set_compile_options(raystep_stage${number})
-        # A stub names its parameters, as the slide does, before it uses them.
-        if(NOT MSVC)
+        # A stub names its parameters, as the slide does, before the student uses them.
+        if(MSVC)
+            target_compile_options(raystep_stage${number} PRIVATE /wd4100)
+        else()
             target_compile_options(raystep_stage${number} PRIVATE -Wno-unused-parameter)
         endif()
+    elseif(student_below)
+        # The solution, but over the student's lower stages: compiled a second time, because a
+        # program must hold one definition of each lower-stage function, the student's.
+        add_library(raystep_stage${number} STATIC ${solution_sources})
+        target_link_libraries(raystep_stage${number} PUBLIC raystep_core ${lower})
+        raystep_set_compile_options(raystep_stage${number})
     else()
         add_library(raystep_stage${number} ALIAS raystep_stage${number}_reference)
     endif()

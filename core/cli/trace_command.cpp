@@ -54,8 +54,21 @@ TraceResult trace_pixel(const TraceArguments& arguments) {
     return result;
 }
 
-std::string quoted(const std::string& text) {
+// One argument of a command line for the platform's shell, with nothing in it the shell would
+// interpret: POSIX single quotes (each ' becomes '\''), or on Windows double quotes around text
+// that cmd.exe cannot misread.
+std::string shell_argument(const std::string& text) {
+#ifdef _WIN32
+    if (text.find_first_of("\"%^!") != std::string::npos) {
+        throw std::runtime_error("--compare cannot pass " + text +
+                                 " to the reference build: rename it without \" % ^ !");
+    }
     return "\"" + text + "\"";
+#else
+    std::string quoted = "'";
+    for (const char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return quoted + "'";
+#endif
 }
 
 std::string reference_executable(const TraceArguments& arguments) {
@@ -69,33 +82,49 @@ std::string reference_executable(const TraceArguments& arguments) {
 #endif
 }
 
+// A new folder of our own under the system's temporary folder: create_directory fails when the
+// name exists, so no one else's file can be there.
+std::filesystem::path private_folder() {
+    std::random_device entropy;
+    for (int attempt = 0; attempt < 100; ++attempt) {
+        const std::filesystem::path folder = std::filesystem::temp_directory_path() /
+                                             ("raystep-trace-" + std::to_string(entropy()));
+        if (std::filesystem::create_directory(folder)) return folder;
+    }
+    throw std::runtime_error("cannot create a temporary folder for the reference trace");
+}
+
 // Runs the reference build's trace of the same pixel and returns its lines.
 std::vector<std::string> reference_trace(const TraceArguments& arguments) {
     const std::string executable = reference_executable(arguments);
-    if (!std::filesystem::exists(executable)) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(executable, error)) {
         throw std::runtime_error("the reference build " + executable + " does not exist");
     }
-    std::random_device entropy;
-    const std::filesystem::path output = std::filesystem::temp_directory_path() /
-                                         ("raystep-trace-" + std::to_string(entropy()) + ".txt");
-    const std::string command = quoted(executable) + " trace " + quoted(arguments.scene) + " " +
-                                std::to_string(arguments.x) + " " + std::to_string(arguments.y) +
-                                " --view " + arguments.view + " > " + quoted(output.string()) +
-                                " 2>&1";
-    // std::system hands the line to the platform's shell, the same on Linux, macOS and Windows.
+    const std::filesystem::path folder = private_folder();
+    const std::filesystem::path output = folder / "trace.txt";
+    std::string command = shell_argument(executable) + " trace " +
+                          shell_argument(arguments.scene) + " " + std::to_string(arguments.x) +
+                          " " + std::to_string(arguments.y) + " --view " + arguments.view +
+                          " > " + shell_argument(output.string()) + " 2>&1";
+#ifdef _WIN32
+    command = "\"" + command + "\"";  // cmd /c strips one outer pair of quotes
+#endif
+    // The reference exits 1 when its trace stops early; its lines are what matter.
     std::system(command.c_str());
 
     std::vector<std::string> lines;
     std::ifstream in(output);
-    for (std::string line; std::getline(in, line);)
-        lines.push_back(line);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
     in.close();
-    std::filesystem::remove(output);
+    std::filesystem::remove_all(folder, error);
     if (lines.empty()) throw std::runtime_error("the reference build printed no trace: " + command);
     return lines;
 }
 
-void print_side_by_side(const std::vector<std::string>& ours,
+// Prints both traces in two columns, marking the first line that differs; true when they are
+// the same.
+bool print_side_by_side(const std::vector<std::string>& ours,
                         const std::vector<std::string>& reference) {
     std::size_t width = std::string("this build").size();
     for (const std::string& line : ours)
@@ -121,9 +150,10 @@ void print_side_by_side(const std::vector<std::string>& ours,
     }
     if (first_difference == rows) {
         std::printf("the traces are the same\n");
-    } else {
-        std::printf("first difference at line %zu (marked >>)\n", first_difference + 1);
+        return true;
     }
+    std::printf("first difference at line %zu (marked >>)\n", first_difference + 1);
+    return false;
 }
 
 }  // namespace
@@ -149,11 +179,10 @@ CLI::App* add_trace_command(CLI::App& app, TraceArguments& arguments) {
 int run_trace(const TraceArguments& arguments) {
     const TraceResult ours = trace_pixel(arguments);
     if (arguments.compare) {
-        print_side_by_side(ours.lines, reference_trace(arguments));
-    } else {
-        for (const std::string& line : ours.lines)
-            std::printf("%s\n", line.c_str());
+        const bool same = print_side_by_side(ours.lines, reference_trace(arguments));
+        return same && !ours.stopped ? 0 : 1;
     }
+    for (const std::string& line : ours.lines) std::printf("%s\n", line.c_str());
     return ours.stopped ? 1 : 0;
 }
 

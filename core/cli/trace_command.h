@@ -18,8 +18,8 @@ struct TraceArguments {
 
 CLI::App* add_trace_command(CLI::App& app, TraceArguments& arguments);
 
-/// Prints the trace (or, with --compare, both traces side by side); the exit code. A stub that
-/// stops the trace ends it with its message and exit code 1.
+/// Prints the trace (or, with --compare, both traces side by side). Exit code 0; 1 when a stub or
+/// an error stopped the trace, or when --compare found the traces differ.
 int run_trace(const TraceArguments& arguments);
 
 }  // namespace raystep

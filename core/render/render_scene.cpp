@@ -2,10 +2,12 @@
 
 #include <stdexcept>
 
+#include "core/scene/scene_features.h"
+
 namespace raystep {
 
 RenderScene prepare_render_scene(const Scene& scene) {
-    if (scene.transforms.size() > 1) {
+    if (scene_features(scene).uses_transforms()) {
         throw std::runtime_error(scene.path +
                                  ": this scene places objects with translate, rotate or scale, "
                                  "which needs stage 5 (transforms), not yet part of raystep");

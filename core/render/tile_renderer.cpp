@@ -6,6 +6,7 @@
 #include <condition_variable>
 #include <exception>
 #include <mutex>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -103,25 +104,34 @@ Image render_image(const RenderScene& render_scene, const RenderOptions& options
     Image image(scene.width, scene.height);
     TileQueue queue(scene.width, scene.height);
 
-    const int workers = options.threads > 0
-                            ? options.threads
-                            : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    const int wanted = options.threads > 0
+                           ? options.threads
+                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     std::vector<std::thread> pool;
-    pool.reserve(static_cast<std::size_t>(workers));
-    for (int w = 0; w < workers; ++w) {
-        pool.emplace_back(render_tiles, std::cref(render_scene), options.view, std::ref(queue),
-                          std::ref(image));
+    pool.reserve(static_cast<std::size_t>(wanted));
+    try {
+        for (int w = 0; w < wanted; ++w) {
+            pool.emplace_back(render_tiles, std::cref(render_scene), options.view,
+                              std::ref(queue), std::ref(image));
+        }
+    } catch (const std::system_error&) {
+        // Fewer threads than asked for (a process limit in a sandbox, say): the ones running
+        // share the work, and the image is the same.
     }
 
-    // The calling thread draws the progress bar until every worker is done.
     ProgressBar bar(options.label,
                     static_cast<std::size_t>(scene.width) * static_cast<std::size_t>(scene.height),
-                    options.progress);
-    while (!queue.wait_for_workers(workers, std::chrono::milliseconds(100))) {
-        bar.update(queue.done());
+                    options.progress && !pool.empty());
+    if (pool.empty()) {
+        render_tiles(render_scene, options.view, queue, image);
+    } else {
+        // This thread draws the progress bar until every worker is done.
+        const int workers = static_cast<int>(pool.size());
+        while (!queue.wait_for_workers(workers, std::chrono::milliseconds(100))) {
+            bar.update(queue.done());
+        }
+        for (std::thread& thread : pool) thread.join();
     }
-    for (std::thread& thread : pool)
-        thread.join();
 
     if (queue.error()) {
         bar.abandon();

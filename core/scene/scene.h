@@ -37,14 +37,22 @@ struct TransformOp {
     double angle_degrees = 0;  ///< rotate only
 };
 
-/// The transform of an object: its ops in file order, right-multiplied as in OpenGL, so that
-/// M = op[0] * op[1] * ... and the last op written is the first applied to the object.
-using TransformProgram = std::vector<TransformOp>;
+/// The transform stack as a tree: every translate, rotate or scale adds a node whose parent is
+/// the node in force before it, so the transform of an object is the chain of ops from the root
+/// to its node, right-multiplied in file order as in OpenGL: M = op1 op2 ... opN, and the last
+/// op written is the first applied to the object. Scene::transforms[0] is the root, the
+/// identity; each object stores its node. A tree (not a list of ops per object) keeps memory
+/// linear in the file's length however deep the stack or long the chains.
+struct TransformNode {
+    std::uint32_t parent = 0;  ///< the node this op right-multiplies; the root's is itself
+    TransformOp op{TransformOp::Kind::translate, Vec3(0.0), 0.0};
+    bool identity = true;      ///< this node's whole chain changes nothing
+};
 
 /// Where an object came from and how it is placed and shaded.
 struct ObjectAttributes {
     std::uint32_t material = 0;   ///< index into Scene::materials
-    std::uint32_t transform = 0;  ///< index into Scene::transforms; 0 is the identity
+    std::uint32_t transform = 0;  ///< node in Scene::transforms; 0 (the root) is the identity
     std::uint32_t line = 0;       ///< the line of the scene file that made it
 };
 
@@ -134,7 +142,7 @@ struct Scene {
     CameraSpec camera;
 
     std::vector<Material> materials;
-    std::vector<TransformProgram> transforms{TransformProgram{}};
+    std::vector<TransformNode> transforms{TransformNode{}};
 
     std::vector<SceneSphere> spheres;
     std::vector<SceneTriangle> triangles;
@@ -145,5 +153,8 @@ struct Scene {
     std::vector<PointLight> point_lights;
     std::vector<DirectionalLight> directional_lights;
 };
+
+/// The ops of a transform node, root first: the order they were written in the file.
+std::vector<TransformOp> transform_ops(const Scene& scene, std::uint32_t node);
 
 }  // namespace raystep

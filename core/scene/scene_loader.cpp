@@ -25,46 +25,36 @@ namespace {
 constexpr long kMaxImageSide = 32768;
 constexpr long kMaxImagePixels = 1L << 27;  // 128 Mpixels, 1.5 GiB of float RGB
 constexpr long kMaxDepth = 1000;
-constexpr long kMaxDeclaredVertices = 1L << 28;
+
+// A direction (an up vector, a normal, an axis, a scale factor) must have its largest component
+// in this range: then |v|^2 neither overflows nor underflows, and normalizing or inverting it is
+// safe in anyone's code.
+constexpr double kSmallestDirection = 1e-150;
+constexpr double kLargestDirection = 1e150;
+
+// Every number in a scene: the range in which products of three coordinates still fit in a
+// double, the domain of the stage-3 contract.
+constexpr double kLargestNumber = 1e100;
 
 constexpr std::uint32_t kUnregistered = std::numeric_limits<std::uint32_t>::max();
 
-// Levenshtein distance, to suggest the command a typo meant.
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j)
-        row[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-        std::size_t diagonal = row[0];
-        row[0] = i;
-        for (std::size_t j = 1; j <= b.size(); ++j) {
-            const std::size_t above = row[j];
-            const std::size_t substitution = diagonal + (a[i - 1] == b[j - 1] ? 0 : 1);
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitution});
-            diagonal = above;
-        }
-    }
-    return row[b.size()];
+double largest_magnitude(const Vec3& v) {
+    return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
 }
 
 // Translate by 0, scale by 1 and rotate by 0 degrees change nothing, so an object under only
 // such ops needs no matrix at all.
-bool is_identity(const TransformProgram& program) {
-    return std::all_of(program.begin(), program.end(), [](const TransformOp& op) {
-        switch (op.kind) {
-            case TransformOp::Kind::translate:
-                return op.vector == Vec3(0.0);
-            case TransformOp::Kind::scale:
-                return op.vector == Vec3(1.0);
-            case TransformOp::Kind::rotate:
-                return op.angle_degrees == 0.0;
-        }
-        return false;
-    });
+bool is_identity(const TransformOp& op) {
+    switch (op.kind) {
+        case TransformOp::Kind::translate: return op.vector == Vec3(0.0);
+        case TransformOp::Kind::scale: return op.vector == Vec3(1.0);
+        case TransformOp::Kind::rotate: return op.angle_degrees == 0.0;
+    }
+    return false;
 }
 
 class SceneParser {
-  public:
+public:
     SceneParser(std::string name, std::filesystem::path folder)
         : name_(std::move(name)), folder_(std::move(folder)) {
         scene_.path = name_;
@@ -75,27 +65,27 @@ class SceneParser {
         split_fields(text, fields_);
         if (fields_.empty()) return;
 
-        const Command* command = find_command(fields_[0]);
+        const Command& command = find_command(fields_[0]);
         const std::size_t given = fields_.size() - 1;
-        if (given != command->argument_count) {
-            fail("'" + std::string(command->name) + "' takes " +
-                 std::to_string(command->argument_count) + " argument" +
-                 (command->argument_count == 1 ? "" : "s") +
-                 (command->arguments.empty() ? "" : " (" + std::string(command->arguments) + ")") +
+        if (given != command.argument_count) {
+            fail("'" + std::string(command.name) + "' takes " +
+                 std::to_string(command.argument_count) + " argument" +
+                 (command.argument_count == 1 ? "" : "s") +
+                 (command.arguments.empty() ? "" : " (" + std::string(command.arguments) + ")") +
                  ", found " + std::to_string(given));
         }
-        (this->*command->handle)();
+        (this->*command.handle)();
     }
 
     Scene finish() {
         if (camera_line_ == 0) {
             throw InputError(name_, 0, "the scene has no 'camera' command, so nothing can be seen");
         }
-        if (ortho_) scene_.camera.ortho = ortho_;
+        scene_.camera.ortho = ortho_;
         return std::move(scene_);
     }
 
-  private:
+private:
     struct Command {
         std::string_view name;
         std::string_view arguments;  // names of the arguments, separated by spaces
@@ -144,19 +134,22 @@ class SceneParser {
         return table;
     }
 
-    const Command* find_command(std::string_view name) const {
+    const Command& find_command(std::string_view name) const {
         const std::vector<Command>& table = commands();
         const auto found = std::find_if(table.begin(), table.end(),
                                         [&](const Command& c) { return c.name == name; });
-        if (found != table.end()) return &*found;
+        if (found != table.end()) return *found;
 
-        std::string message = "unknown command '" + std::string(name) + "'";
-        const auto nearest =
-            std::min_element(table.begin(), table.end(), [&](const Command& a, const Command& b) {
-                return edit_distance(name, a.name) < edit_distance(name, b.name);
-            });
-        if (edit_distance(name, nearest->name) <= 2) {
-            message += "; did you mean '" + std::string(nearest->name) + "'?";
+        std::string message = "unknown command " + quoted_field(name);
+        // A typo is a few characters off a command; a longer word is not worth measuring.
+        if (name.size() <= 20) {
+            const auto nearest = std::min_element(
+                table.begin(), table.end(), [&](const Command& a, const Command& b) {
+                    return edit_distance(name, a.name) < edit_distance(name, b.name);
+                });
+            if (edit_distance(name, nearest->name) <= 2) {
+                message += "; did you mean '" + std::string(nearest->name) + "'?";
+            }
         }
         fail(message);
     }
@@ -168,7 +161,12 @@ class SceneParser {
     }
 
     double number(std::size_t k, std::string_view what) const {
-        return parse_finite_number(fields_[k], {name_, line_}, what);
+        const double value = parse_finite_number(fields_[k], {name_, line_}, what);
+        if (std::abs(value) > kLargestNumber) {
+            fail(std::string(what) + " " + quoted_field(fields_[k]) +
+                 " is beyond 1e100, the range in which the renderer computes reliably");
+        }
+        return value;
     }
 
     long count(std::size_t k, std::string_view what) const {
@@ -179,8 +177,20 @@ class SceneParser {
         return {number(first, what), number(first + 1, what), number(first + 2, what)};
     }
 
+    // A vector used for its direction only.
+    Vec3 direction(std::size_t first, std::string_view what) const {
+        const Vec3 v = vec3(first, "a component of " + std::string(what));
+        const double m = largest_magnitude(v);
+        if (m == 0.0) fail(std::string(what) + " is zero");
+        if (m < kSmallestDirection || m > kLargestDirection) {
+            fail(std::string(what) + " " + to_text(v) +
+                 " is too short or too long to normalize reliably; scale it towards 1");
+        }
+        return v;
+    }
+
     Color color(std::size_t first) const {
-        const Color c = vec3(first, "colour component");
+        const Color c = vec3(first, "a colour component");
         if (c.r < 0 || c.g < 0 || c.b < 0) {
             fail("colour " + to_text(c) + " has a negative component");
         }
@@ -233,7 +243,7 @@ class SceneParser {
         CameraSpec& c = scene_.camera;
         c.lookfrom = vec3(1, "lookfrom");
         c.lookat = vec3(4, "lookat");
-        c.up = vec3(7, "up");
+        c.up = direction(7, "the up vector");
         c.fovy_degrees = number(10, "fovy");
         c.line = static_cast<std::uint32_t>(line_);
 
@@ -242,27 +252,28 @@ class SceneParser {
             fail("fovy " + std::string(fields_[10]) +
                  " is out of range: the field of view must be strictly between 0 and 180 degrees");
         }
-        // The view direction and the up hint must span a plane.
+        // The view direction must exist and span a plane with the up hint. (Every number is at
+        // most 1e100, so the difference is finite.)
         const Vec3 view = c.lookat - c.lookfrom;
-        if (view == Vec3(0.0)) {
+        const double view_size = largest_magnitude(view);
+        if (view_size == 0.0) {
             fail("lookfrom and lookat are the same point " + to_text(c.lookfrom) +
                  ", so there is no view direction");
         }
-        if (c.up == Vec3(0.0)) fail("the up vector is zero");
-        // Scale both by their largest component first so that the products cannot overflow.
-        const Vec3 a =
-            view / glm::max(glm::abs(view.x), glm::max(glm::abs(view.y), glm::abs(view.z)));
-        const Vec3 b =
-            c.up / glm::max(glm::abs(c.up.x), glm::max(glm::abs(c.up.y), glm::abs(c.up.z)));
-        if (glm::length(glm::cross(a, b)) <= kParallelSine * glm::length(a) * glm::length(b)) {
+        // Both scaled by their largest component, so that the products cannot overflow; written
+        // so that a NaN counts as parallel.
+        const Vec3 a = view / view_size;
+        const Vec3 b = c.up / largest_magnitude(c.up);
+        if (!(glm::length(glm::cross(a, b)) > kParallelSine * glm::length(a) * glm::length(b))) {
             fail("the up vector " + to_text(c.up) + " is parallel to the view direction " +
                  to_text(view) + ", so the camera cannot tell up from down; choose another up");
         }
     }
 
     void ortho() {
-        OrthoWindow window{number(1, "left"), number(2, "right"), number(3, "bottom"),
-                           number(4, "top")};
+        once(ortho_line_, "ortho");
+        const OrthoWindow window{number(1, "left"), number(2, "right"), number(3, "bottom"),
+                                 number(4, "top")};
         if (!(window.left < window.right) || !(window.bottom < window.top)) {
             fail("ortho window must have left < right and bottom < top");
         }
@@ -276,15 +287,9 @@ class SceneParser {
             scene_.materials.push_back(material_);
             material_id_ = static_cast<std::uint32_t>(scene_.materials.size() - 1);
         }
-        if (transform_ids_.back() == kUnregistered) {
-            if (is_identity(transforms_.back())) {
-                transform_ids_.back() = 0;
-            } else {
-                scene_.transforms.push_back(transforms_.back());
-                transform_ids_.back() = static_cast<std::uint32_t>(scene_.transforms.size() - 1);
-            }
-        }
-        return {material_id_, transform_ids_.back(), static_cast<std::uint32_t>(line_)};
+        const std::uint32_t node = transform_stack_.back();
+        const std::uint32_t transform = scene_.transforms[node].identity ? 0 : node;
+        return {material_id_, transform, static_cast<std::uint32_t>(line_)};
     }
 
     void sphere() {
@@ -296,24 +301,22 @@ class SceneParser {
 
     void plane() {
         const Vec3 point = vec3(1, "the point");
-        const Vec3 normal = vec3(4, "the normal");
-        if (normal == Vec3(0.0)) fail("the plane's normal is zero");
+        const Vec3 normal = direction(4, "the plane's normal");
         scene_.planes.push_back({{point, normal}, attributes()});
     }
 
+    // maxverts and maxvertnorms are promises, checked as the vertices come; never capacities to
+    // allocate, so that a typo cannot reserve gigabytes.
     void maxverts() {
         max_vertices_ = count(1, "the vertex count");
-        if (max_vertices_ > kMaxDeclaredVertices) fail("maxverts is above 2^28");
         if (static_cast<std::size_t>(max_vertices_) < vertices_.size()) {
             fail("maxverts " + std::to_string(max_vertices_) + " is less than the " +
                  std::to_string(vertices_.size()) + " vertices already given");
         }
-        vertices_.reserve(static_cast<std::size_t>(max_vertices_));
     }
 
     void maxvertnorms() {
         max_normal_vertices_ = count(1, "the vertex count");
-        if (max_normal_vertices_ > kMaxDeclaredVertices) fail("maxvertnorms is above 2^28");
         if (static_cast<std::size_t>(max_normal_vertices_) < normal_vertices_.size()) {
             fail("maxvertnorms " + std::to_string(max_normal_vertices_) + " is less than the " +
                  std::to_string(normal_vertices_.size()) + " vertexnormals already given");
@@ -334,8 +337,7 @@ class SceneParser {
                  "' declared");
         }
         const Vec3 position = vec3(1, "a coordinate");
-        const Vec3 normal = vec3(4, "a normal component");
-        if (normal == Vec3(0.0)) fail("the vertex normal is zero");
+        const Vec3 normal = direction(4, "the vertex normal");
         normal_vertices_.push_back({position, normal});
     }
 
@@ -344,8 +346,8 @@ class SceneParser {
         for (std::size_t k = 0; k < 3; ++k) {
             const long index = count(k + 1, "a vertex index");
             if (static_cast<std::size_t>(index) >= available) {
-                fail("vertex index " + std::to_string(index) +
-                     " is out of range: " + std::to_string(available) + " " + std::string(pile) +
+                fail("vertex index " + std::to_string(index) + " is out of range: " +
+                     std::to_string(available) + " " + std::string(pile) +
                      " defined so far, numbered from 0");
             }
             result[k] = static_cast<std::size_t>(index);
@@ -376,15 +378,16 @@ class SceneParser {
     void mesh() {
         std::filesystem::path file{std::string(fields_[1])};
         if (file.is_relative()) file = folder_ / file;
-        if (!std::filesystem::exists(file)) {
-            fail("mesh file '" + std::string(fields_[1]) + "' not found (looked for " +
-                 file.string() + ")");
+        std::error_code error;
+        if (!std::filesystem::exists(file, error)) {
+            fail("mesh file " + quoted_field(fields_[1]) + " not found (looked for " +
+                 quoted_field(file.string()) + ")");
         }
         TriangleMesh loaded;
         try {
             loaded = load_mesh(file);
-        } catch (const InputError& error) {
-            fail(std::string("in mesh: ") + error.what());
+        } catch (const InputError& mesh_error) {
+            fail(std::string("in mesh: ") + mesh_error.what());
         }
 
         SceneMesh record;
@@ -407,48 +410,54 @@ class SceneParser {
         }
     }
 
-    // The transform stack: ops right-multiply the top, as in OpenGL.
+    // The transform stack. Each op becomes a tree node under the node in force: the OpenGL
+    // right-multiplication, in memory linear in the file's length.
 
     void add_op(const TransformOp& op) {
-        transforms_.back().push_back(op);
-        transform_ids_.back() = kUnregistered;
+        TransformNode node;
+        node.parent = transform_stack_.back();
+        node.op = op;
+        node.identity = scene_.transforms[node.parent].identity && is_identity(op);
+        scene_.transforms.push_back(node);
+        transform_stack_.back() = static_cast<std::uint32_t>(scene_.transforms.size() - 1);
     }
 
     void translate() { add_op({TransformOp::Kind::translate, vec3(1, "the offset"), 0.0}); }
 
     void rotate() {
-        const Vec3 axis = vec3(1, "the axis");
-        if (axis == Vec3(0.0)) fail("the rotation axis is zero");
+        const Vec3 axis = direction(1, "the rotation axis");
         add_op({TransformOp::Kind::rotate, axis, number(4, "the angle")});
     }
 
     void scale() {
         const Vec3 factors = vec3(1, "a scale factor");
-        if (factors.x == 0.0 || factors.y == 0.0 || factors.z == 0.0) {
-            fail("scale " + to_text(factors) +
-                 " has a zero factor, which flattens objects and has no inverse");
+        for (const double factor : {factors.x, factors.y, factors.z}) {
+            if (factor == 0.0) {
+                fail("scale " + to_text(factors) +
+                     " has a zero factor, which flattens objects and has no inverse");
+            }
+            // The inverse transform and the normal matrix divide by each factor.
+            if (std::abs(factor) < kSmallestDirection || std::abs(factor) > kLargestDirection) {
+                fail("scale " + to_text(factors) +
+                     " has a factor whose inverse overflows or underflows");
+            }
         }
         add_op({TransformOp::Kind::scale, factors, 0.0});
     }
 
-    void push_transform() {
-        transforms_.push_back(transforms_.back());
-        transform_ids_.push_back(transform_ids_.back());
-    }
+    void push_transform() { transform_stack_.push_back(transform_stack_.back()); }
 
     void pop_transform() {
-        if (transforms_.size() == 1) fail("popTransform without a matching pushTransform");
-        transforms_.pop_back();
-        transform_ids_.pop_back();
+        if (transform_stack_.size() == 1) fail("popTransform without a matching pushTransform");
+        transform_stack_.pop_back();
     }
 
     // Lights: world coordinates, whatever the transform stack holds.
 
     void directional() {
-        const Vec3 direction = vec3(1, "the direction");
-        if (direction == Vec3(0.0)) fail("the light's direction is zero");
+        const Vec3 towards_light = direction(1, "the light's direction");
         scene_.directional_lights.push_back(
-            {direction, color(4), static_cast<std::uint32_t>(line_)});
+            {towards_light, color(4), static_cast<std::uint32_t>(line_)});
     }
 
     void point() {
@@ -497,13 +506,13 @@ class SceneParser {
     std::uint32_t maxdepth_line_ = 0;
     std::uint32_t output_line_ = 0;
     std::uint32_t camera_line_ = 0;
+    std::uint32_t ortho_line_ = 0;
     std::optional<OrthoWindow> ortho_;
 
     Material material_;
     std::uint32_t material_id_ = kUnregistered;
     Attenuation attenuation_;
-    std::vector<TransformProgram> transforms_{TransformProgram{}};
-    std::vector<std::uint32_t> transform_ids_{0};
+    std::vector<std::uint32_t> transform_stack_{0};  // tree nodes; the root is the identity
 
     long max_vertices_ = -1;
     long max_normal_vertices_ = -1;
@@ -519,23 +528,29 @@ Scene parse_scene(std::string_view text, const std::string& name,
     std::string line;
     std::size_t start = 0;
     while (start < text.size()) {
-        std::size_t end = text.find('\n', start);
+        // A line ends at "\n", "\r\n" or a lone "\r" (old Mac files).
+        std::size_t end = text.find_first_of("\r\n", start);
         if (end == std::string_view::npos) end = text.size();
         // A copy per line keeps each field NUL- or space-terminated for strtod.
         line.assign(text.substr(start, end - start));
         parser.parse_line(line);
         start = end + 1;
+        if (end + 1 < text.size() && text[end] == '\r' && text[end + 1] == '\n') ++start;
     }
     return parser.finish();
 }
 
 Scene load_scene(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        throw InputError(
-            path.string(), 0,
-            std::filesystem::exists(path) ? "cannot read the scene file" : "scene file not found");
+    std::error_code error;
+    if (!std::filesystem::exists(path, error)) {
+        throw InputError(path.string(), 0, "scene file not found");
     }
+    // Not a FIFO or a device, which could block or never end.
+    if (!std::filesystem::is_regular_file(path, error)) {
+        throw InputError(path.string(), 0, "not a regular file");
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path.string(), 0, "cannot read the scene file");
     std::ostringstream contents;
     contents << in.rdbuf();
     const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : ".";

@@ -1,6 +1,8 @@
 #include "core/scene/text_fields.h"
 
+#include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -11,13 +13,47 @@ namespace raystep {
 
 namespace {
 
+constexpr std::size_t kLongestQuotedField = 40;
+
 [[noreturn]] void bad(const TextPosition& where, std::string_view what, std::string_view token,
                       std::string_view problem) {
     throw InputError(where.file, where.line,
-                     std::string(what) + " '" + std::string(token) + "' " + std::string(problem));
+                     std::string(what) + " " + quoted_field(token) + " " + std::string(problem));
 }
 
 }  // namespace
+
+std::string quoted_field(std::string_view field) {
+    std::string text = "'";
+    for (std::size_t k = 0; k < field.size() && k < kLongestQuotedField; ++k) {
+        const auto c = static_cast<unsigned char>(field[k]);
+        if (c < 0x20 || c == 0x7f) {
+            char escaped[8];
+            std::snprintf(escaped, sizeof escaped, "\\x%02x", c);
+            text += escaped;
+        } else {
+            text += static_cast<char>(c);
+        }
+    }
+    if (field.size() > kLongestQuotedField) text += "...";
+    return text + "'";
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t above = row[j];
+            const std::size_t substitution = diagonal + (a[i - 1] == b[j - 1] ? 0 : 1);
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitution});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
 
 void split_fields(std::string_view line, std::vector<std::string_view>& fields) {
     fields.clear();

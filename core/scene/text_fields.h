@@ -16,6 +16,13 @@ struct TextPosition {
 /// on (a comment) and a trailing '\r' (files written on Windows). The views point into `line`.
 void split_fields(std::string_view line, std::vector<std::string_view>& fields);
 
+/// A field as an error message shows it: in single quotes, control characters escaped as \xNN,
+/// and cut to 40 characters and "..." so that a 2 MB token does not flood the terminal.
+std::string quoted_field(std::string_view field);
+
+/// The Levenshtein distance: how many one-character edits turn a into b.
+std::size_t edit_distance(std::string_view a, std::string_view b);
+
 /// The finite double that the whole token spells. Throws InputError at `where` when the token
 /// is not a number, has trailing characters, overflows, or is inf or nan; `what` names the field
 /// in the message ("the radius"). Underflow to zero or a subnormal is accepted: it is the

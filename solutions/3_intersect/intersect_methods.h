@@ -18,8 +18,13 @@ std::optional<Hit> intersect_triangle_watertight(const Ray& ray, const Triangle&
 /// unknowns. Same contract as intersect_triangle.
 std::optional<Hit> intersect_triangle_moller_trumbore(const Ray& ray, const Triangle& triangle);
 
-/// The quadratic as first written, t = (-b -+ sqrt(b^2 - a c)) / a with c = f . f - r^2: kept to
-/// measure what the stable form of intersect_sphere fixes. Same contract as intersect_sphere.
+/// The quadratic as first written, t = (-b -+ sqrt(b^2 - 4 a c)) / 2a: kept to measure what the
+/// stable forms fix. Same contract as intersect_sphere, except accuracy.
 std::optional<Hit> intersect_sphere_textbook(const Ray& ray, const Sphere& sphere);
+
+/// The stable roots q / a and c / q the lecture asks for, with the discriminant b^2 - a c as
+/// written: what a student's intersect_sphere is expected to be. Same contract as
+/// intersect_sphere, except accuracy for small spheres far away.
+std::optional<Hit> intersect_sphere_stable_roots(const Ray& ray, const Sphere& sphere);
 
 }  // namespace raystep

@@ -5,12 +5,12 @@
 namespace raystep {
 
 std::optional<Hit> intersect_plane(const Ray& ray, const Plane& plane) {
-    // A zero normal has no plane; D . N = 0 is a ray parallel to the plane (or a zero D).
+    // D . N = 0 is a ray parallel to the plane, a zero D or a zero N: a miss.
     const double denominator = glm::dot(ray.direction, plane.normal);
     if (denominator == 0.0) return std::nullopt;
     const double t = glm::dot(plane.point - ray.origin, plane.normal) / denominator;
     if (!in_ray_range(ray, t)) return std::nullopt;
-    return Hit{t, plane.normal / glm::length(plane.normal)};
+    return Hit{t, unit_vector(plane.normal)};
 }
 
 }  // namespace raystep

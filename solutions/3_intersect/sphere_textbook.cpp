@@ -1,4 +1,4 @@
-// The ray-sphere quadratic exactly as first derived, kept to measure what the stable form fixes.
+// The ray-sphere quadratic exactly as first derived, kept to measure what the stable forms fix.
 
 #include <cmath>
 
@@ -21,8 +21,9 @@ std::optional<Hit> intersect_sphere_textbook(const Ray& ray, const Sphere& spher
     const double t1 = (-b + root) / (2.0 * a);
     const double t = in_ray_range(ray, t0) ? t0 : t1;
     if (!in_ray_range(ray, t)) return std::nullopt;
-    const Vec3 p = ray.origin + t * ray.direction;
-    return Hit{t, glm::normalize(p - sphere.center)};
+    const Vec3 outward = f + t * ray.direction;
+    if (outward == Vec3(0.0)) return std::nullopt;
+    return Hit{t, unit_vector(outward)};
 }
 
 }  // namespace raystep

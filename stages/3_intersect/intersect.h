@@ -12,10 +12,14 @@ namespace raystep {
 
 // Stage 3: ray-object intersection. Handout: docs/stage3.md.
 //
-// Every test returns the hit with t in [ray.t_min, ray.t_max] (both ends included), or nullopt
-// on a miss. Points on a triangle's edges and vertices belong to the triangle. Degenerate input
-// (a zero direction, a zero-area triangle, a zero radius) is a miss, never a NaN. Surfaces are
-// two-sided: a ray meets a triangle or plane from either side.
+// Every test returns the hit with a finite t in [ray.t_min, ray.t_max] (both ends included), or
+// nullopt on a miss. Points on a triangle's edges and vertices belong to the triangle.
+// Degenerate input (a zero direction, a zero-area triangle, a zero radius) is a miss, never a
+// NaN. Surfaces are two-sided: a ray meets a triangle or plane from either side.
+//
+// The domain: coordinates and direction components of magnitude 1e-100 to 1e100, or 0. The
+// tests multiply three of them, and beyond that range the product overflows or underflows a
+// double.
 
 /// Ray-plane: t = (p0 - A) . N / (D . N). A ray parallel to the plane misses it, even when it
 /// lies in it.
