@@ -1,0 +1,25 @@
+#pragma once
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "core/check/case_scoring.h"
+
+namespace raystep {
+
+/// The median, 99th percentile and maximum of a list of ulp errors (0 for an empty list).
+struct UlpSummary {
+    double median = 0.0;
+    double p99 = 0.0;
+    double max = 0.0;
+};
+UlpSummary summarize_ulps(std::vector<double> ulps);
+
+/// Prints the scores as a table, one row per method and family: cases, pass rate, false hits,
+/// false misses, leaks, other failures, t error in ulps (median, p99, max); then each failing
+/// row's first counterexamples with their inputs and `rerun` (a command that runs just that case).
+void print_check_report(std::FILE* out, const std::vector<MethodScore>& scores,
+                        const std::string& rerun);
+
+}  // namespace raystep
