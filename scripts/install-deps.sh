@@ -8,6 +8,8 @@ packages=(
     cmake ninja-build g++ pkg-config
     # the stage libraries, their tests and the raystep command
     libglm-dev catch2 libopenimageio-dev openimageio-tools libcli11-dev libtinyobjloader-dev
+    # the grader's exact oracle
+    libcgal-dev libgmp-dev libmpfr-dev
 )
 
 if ! command -v apt-get >/dev/null || ! command -v dpkg-query >/dev/null; then

@@ -39,6 +39,11 @@ struct Expectation {
     double beta = std::numeric_limits<double>::quiet_NaN();
     double gamma = std::numeric_limits<double>::quiet_NaN();
     double barycentric_tolerance = 0.0;
+    /// A second hit that also passes, with its own normal: a sphere's far root, when the near root
+    /// lies within rounding of t_min (a ray starting on the surface may see the near root or
+    /// not). NaN otherwise. It has the same t_tolerance and normal_tolerance.
+    double t_alternative = std::numeric_limits<double>::quiet_NaN();
+    Vec3 normal_alternative{std::numeric_limits<double>::quiet_NaN()};
 };
 
 using CaseShape = std::variant<Sphere, Triangle, Plane>;
