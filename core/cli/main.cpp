@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "core/cli/check_command.h"
 #include "core/cli/info_command.h"
 #include "core/cli/render_command.h"
 #include "core/cli/trace_command.h"
@@ -19,9 +20,11 @@ int main(int argc, char** argv) {
     RenderArguments render;
     InfoArguments info;
     TraceArguments trace;
+    CheckArguments check;
     CLI::App* render_command = add_render_command(app, render);
     CLI::App* info_command = add_info_command(app, info);
     CLI::App* trace_command = add_trace_command(app, trace);
+    CLI::App* check_command = add_check_command(app, check);
 
     if (argc == 1) {
         std::fputs(app.help().c_str(), stderr);
@@ -38,6 +41,7 @@ int main(int argc, char** argv) {
         if (render_command->parsed()) return run_render(render);
         if (info_command->parsed()) return run_info(info);
         if (trace_command->parsed()) return run_trace(trace);
+        if (check_command->parsed()) return run_check(check);
     } catch (const NotImplemented& stub) {
         std::fprintf(stderr, "raystep: %s\n", stub.what());
     } catch (const InputError& error) {
