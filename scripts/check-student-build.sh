@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # What students meet, checked.
-#   1. A student release: this tree without solutions/, built as a student would. Every public
-#      test must fail with a NotImplemented message and no test binary may crash; `raystep render`
-#      and `raystep trace` must stop with the message of the stub that stopped them; `raystep info`,
+#   1. A student release: this tree without solutions/ and grader/, built as a student would.
+#      Every public test must fail with a NotImplemented message and no test binary may crash;
+#      `raystep render` and `raystep trace` must stop with the message of the stub that stopped
+#      them; `raystep check` must report every stage-3 function as not implemented; `raystep info`,
 #      which runs no stage code, must work.
 #   2. A mixed build, RAYSTEP_STUDENT_STAGES=1: the reference stage 2 must call the student's
 #      stage 1, so a render stops at a stage-1 stub.
@@ -14,7 +15,8 @@ stub_message='stage [0-9]+: [A-Za-z_:]+ is not implemented yet, see docs/stage[0
 
 release=$(mktemp -d)
 trap 'rm -rf "$release"' EXIT
-tar -C "$root" --exclude=./build --exclude=./out --exclude=./.git --exclude=./solutions -cf - . |
+tar -C "$root" --exclude=./build --exclude=./out --exclude=./.git --exclude=./solutions \
+    --exclude=./grader -cf - . |
     tar -C "$release" -xf -
 cmake -S "$release" -B "$release/build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
     -DRAYSTEP_WARNINGS_AS_ERRORS=ON >/dev/null
@@ -68,6 +70,8 @@ check_command "raystep render names the stub" 1 "^raystep: $stub_message" \
     "$bin/raystep" render "$scene" --view normal -o "$release/normal.png"
 check_command "raystep trace stops at the stub" 1 "^stopped: $stub_message" \
     "$bin/raystep" trace "$scene" 1 1 --view normal
+check_command "raystep check reports the stubs, all of them" 1 \
+    "^closest_hit +$stub_message" "$bin/raystep" check --stage 3
 check_command "raystep info needs no stage" 0 "^primitives" "$bin/raystep" info "$scene"
 
 cmake -S "$root" -B "$root/build/student-stage1" -G Ninja -DCMAKE_BUILD_TYPE=Release \

@@ -57,8 +57,9 @@ struct RayCase {
     std::uint64_t index = 0;  ///< the case's number in its family
     Ray ray;
     std::vector<CasePrimitive> primitives;
-    /// The primitives are neighbours in a closed mesh (they share an edge or a vertex): when the
-    /// exact ray meets any of them, at least one must report a hit, near a boundary or not.
+    /// The primitives are neighbours in a closed mesh (they share an edge or a vertex) and all face
+    /// the ray from the same side, so together they cover a neighbourhood of where it passes: when
+    /// the exact ray meets any of them, at least one must report a hit, near a boundary or not.
     bool watertight = false;
 };
 

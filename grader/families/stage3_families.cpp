@@ -111,11 +111,26 @@ RayCase aimed_at_mesh(CaseRandom& random, const Placement& placement, const Vec3
     RayCase ray_case;
     const Vec3 origin = placement.offset + random.unit_vector() * placement.scale * random.uniform(1.5, 5.0);
     ray_case.ray = ray_through(random, origin, target);
-    ray_case.watertight = true;
     for (const std::uint32_t f : faces) {
         const auto& [a, b, c] = mesh.faces[f];
         ray_case.primitives.push_back({Triangle{vertex(a), vertex(b), vertex(c)}, {}});
     }
+    // The group covers a neighbourhood of the aim point only when every triangle faces the ray
+    // from the same side. On the silhouette the triangles overlap on one side of the shared edge
+    // or vertex, and a ray grazing it may miss them all: no watertight promise there. The facing
+    // is decided in doubles with a wide margin, so the exact sign is the same.
+    int front = 0;
+    int back = 0;
+    for (const CasePrimitive& primitive : ray_case.primitives) {
+        const Triangle& t = std::get<Triangle>(primitive.shape);
+        const Vec3 n = glm::cross(t.p1 - t.p0, t.p2 - t.p0);
+        const double facing = glm::dot(ray_case.ray.direction, n);
+        const double margin = 1e-6 * glm::length(ray_case.ray.direction) * glm::length(n);
+        front += facing < -margin;
+        back += facing > margin;
+    }
+    const int count = static_cast<int>(ray_case.primitives.size());
+    ray_case.watertight = front == count || back == count;
     return ray_case;
 }
 
@@ -309,9 +324,9 @@ const std::vector<Stage3Family>& stage3_families() {
         {"random-triangles", "random triangles, rays aimed in and around them, some with a short t_max", 0.0, random_triangle},
         {"random-spheres", "random spheres, rays aimed in and around them, one in ten from inside", 0.0, random_sphere},
         {"random-planes", "random planes and rays", 0.0, random_plane},
-        {"shared-edges", "rays through an edge two triangles of a closed mesh share", 0.0, shared_edge_near},
+        {"shared-edges", "rays through an edge two triangles of a closed mesh share (watertight off the silhouette)", 0.0, shared_edge_near},
         {"shared-edges-far", "the same with the mesh 1e5 to 1e6 from the origin", 0.0, shared_edge_far},
-        {"shared-vertices", "rays through a vertex of a closed mesh, against its whole fan", 0.0, shared_vertex_near},
+        {"shared-vertices", "rays through a vertex of a closed mesh, against its fan (watertight off the silhouette)", 0.0, shared_vertex_near},
         {"shared-vertices-far", "the same with the mesh 1e5 to 1e6 from the origin", 0.0, shared_vertex_far},
         {"grazing", "rays 1e-2 to 1e-12 radians off the triangle's plane", 0.0, grazing},
         {"in-plane", "rays exactly in the triangle's plane: a miss by the contract", 0.0, in_plane},

@@ -117,9 +117,16 @@ Expectation expect_triangle(const Ray& ray, const Triangle& tri) {
     const bool grazing = den <= d_length * (2.0 * slack * (glm::length(e1) + glm::length(e2)) +
                                             kRelativeSlack * n_length);
 
-    // t moves by the slack over the cosine of the angle of incidence (|D . N| / |D| |N|), and by
-    // the direction's own slack.
-    const double t_tolerance = slack * n_length / den + kRelativeSlack * std::abs(t);
+    // t moves by the slack over the cosine of the angle of incidence (|D . N| / |D| |N|); by the
+    // plane's tilt (moving the vertices turns a sliver's plane a long way) times the hit point's
+    // distance from the pivot, which may be any vertex, over the same cosine; and by the
+    // direction's own slack.
+    const double tilt = 2.0 * slack * (glm::length(e1) + glm::length(e2)) / n_length;
+    const Vec3 point = ray.origin + t * ray.direction;
+    const double lever = std::max({glm::length(point - tri.p0), glm::length(point - tri.p1),
+                                   glm::length(point - tri.p2)});
+    const double t_tolerance =
+        (slack + tilt * lever) * n_length / den + kRelativeSlack * std::abs(t);
 
     // Inside: each edge's side, with the edges within their slack free to go either way. Moving
     // the two vertices by the slack and turning D changes the signed volume D . (a x b) by at
@@ -148,8 +155,7 @@ Expectation expect_triangle(const Ray& ray, const Triangle& tri) {
     expected.t = t;
     expected.t_tolerance = t_tolerance;
     expected.normal = n / n_length;
-    expected.normal_tolerance =
-        2.0 * slack * (glm::length(e1) + glm::length(e2)) / n_length + kRelativeSlack;
+    expected.normal_tolerance = tilt + kRelativeSlack;
     expected.beta = exact::rounded(g.v / g.den);
     expected.gamma = exact::rounded(g.w / g.den);
     expected.barycentric_tolerance =

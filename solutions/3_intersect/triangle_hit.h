@@ -28,9 +28,14 @@ inline Vec3 unit_vector(const Vec3& v) {
 }
 
 /// The hit at t on a triangle with barycentrics (beta, gamma); the normal is the triangle's
-/// geometric normal, (p1 - p0) x (p2 - p0) normalized.
-inline Hit triangle_hit(const Triangle& tri, double t, double beta, double gamma) {
-    return {t, unit_vector(glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0)), beta, gamma};
+/// geometric normal, (p1 - p0) x (p2 - p0) normalized. nullopt for a degenerate triangle (a zero
+/// normal): a test can find a rounding-sized determinant where the exact one is zero (the
+/// watertight test's sheared vertices are rounded), and the contract says such a triangle is a
+/// miss, never a hit with a NaN normal.
+inline std::optional<Hit> triangle_hit(const Triangle& tri, double t, double beta, double gamma) {
+    const Vec3 n = glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0);
+    if (n == Vec3(0.0)) return std::nullopt;
+    return Hit{t, unit_vector(n), beta, gamma};
 }
 
 }  // namespace raystep
