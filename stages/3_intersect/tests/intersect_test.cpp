@@ -147,6 +147,20 @@ TEST_CASE("intersect_triangle_*: a degenerate triangle or a zero direction misse
     }
 }
 
+TEST_CASE("intersect_triangle_*: a collinear triangle off the axes is a miss, even when rounding leaves a tiny determinant", "[stage3]") {
+    // (-2,-2,3), (1,-2,4), (7,-2,6) lie on one line (steps (3,0,1) and (6,0,2)). Cramer's
+    // determinant is exactly 0 here, but a test that first transforms the vertices (the
+    // watertight test shears them along the ray) rounds them off the line, finds a tiny
+    // determinant, and reports a hit on a triangle with no area and no normal (slivers case 258).
+    const Triangle line{{-2, -2, 3}, {1, -2, 4}, {7, -2, 6}};
+    const Ray ray{{4.5889181497847309, 1.4052998108618673, 6.6189080707000807},
+                  {4.4443599190418146, -8.0381775442856807, -1.8765851199167081}};
+    for (const NamedTest& method : kTriangleTests) {
+        CAPTURE(method.name);
+        CHECK_FALSE(method.intersect(ray, line));
+    }
+}
+
 TEST_CASE("intersect_triangle_*: the three methods agree on random rays", "[stage3]") {
     // Away from the edges (where rounding may decide either way) every method must give the same
     // answer, the same t and the same barycentrics.
