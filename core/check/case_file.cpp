@@ -12,6 +12,7 @@
 
 #include "core/check/case_format.h"
 #include "core/errors/input_error.h"
+#include "core/scene/text_file.h"
 #include "core/scene/text_fields.h"
 
 namespace raystep {
@@ -371,19 +372,7 @@ void write_primitive(std::ostream& out, const CasePrimitive& primitive) {
 }  // namespace
 
 std::vector<CaseFamily> read_case_file(const std::filesystem::path& path) {
-    std::error_code error;
-    if (!std::filesystem::exists(path, error)) {
-        throw InputError(path.string(), 0, "case file not found");
-    }
-    // Not a FIFO or a device, which could block or never end.
-    if (!std::filesystem::is_regular_file(path, error)) {
-        throw InputError(path.string(), 0, "not a regular file");
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path.string(), 0, "cannot read the case file");
-    std::ostringstream contents;
-    contents << in.rdbuf();
-    return parse_case_file(contents.str(), path.string());
+    return parse_case_file(read_text_file(path, "case file"), path.string());
 }
 
 std::vector<CaseFamily> parse_case_file(const std::string& text, const std::string& name) {

@@ -14,6 +14,7 @@
 #include "core/math/parallel_sine.h"
 #include "core/math/to_text.h"
 #include "core/scene/mesh_loader.h"
+#include "core/scene/text_file.h"
 #include "core/scene/text_fields.h"
 
 namespace raystep {
@@ -541,20 +542,8 @@ Scene parse_scene(std::string_view text, const std::string& name,
 }
 
 Scene load_scene(const std::filesystem::path& path) {
-    std::error_code error;
-    if (!std::filesystem::exists(path, error)) {
-        throw InputError(path.string(), 0, "scene file not found");
-    }
-    // Not a FIFO or a device, which could block or never end.
-    if (!std::filesystem::is_regular_file(path, error)) {
-        throw InputError(path.string(), 0, "not a regular file");
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path.string(), 0, "cannot read the scene file");
-    std::ostringstream contents;
-    contents << in.rdbuf();
     const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : ".";
-    return parse_scene(contents.str(), path.string(), folder);
+    return parse_scene(read_text_file(path, "scene file"), path.string(), folder);
 }
 
 }  // namespace raystep

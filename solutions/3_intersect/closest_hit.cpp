@@ -1,6 +1,6 @@
 // Stage 3 reference solution: the closest hit over a list.
 
-#include "solutions/3_intersect/triangle_hit.h"
+#include "solutions/3_intersect/hit_building.h"
 
 namespace raystep {
 

@@ -1,6 +1,6 @@
 // Stage 3 reference solution: ray-plane.
 
-#include "solutions/3_intersect/triangle_hit.h"
+#include "solutions/3_intersect/hit_building.h"
 
 namespace raystep {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <utility>
 
-#include "solutions/3_intersect/triangle_hit.h"
+#include "solutions/3_intersect/hit_building.h"
 
 namespace raystep {
 

@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "solutions/3_intersect/intersect_methods.h"
-#include "solutions/3_intersect/triangle_hit.h"
+#include "solutions/3_intersect/hit_building.h"
 
 namespace raystep {
 
@@ -23,11 +23,7 @@ std::optional<Hit> intersect_sphere_stable_roots(const Ray& ray, const Sphere& s
     double t0 = q / a;
     double t1 = q != 0.0 ? c / q : t0;
     if (t0 > t1) std::swap(t0, t1);
-    const double t = in_ray_range(ray, t0) ? t0 : t1;
-    if (!in_ray_range(ray, t)) return std::nullopt;
-    const Vec3 outward = f + t * ray.direction;
-    if (outward == Vec3(0.0)) return std::nullopt;
-    return Hit{t, unit_vector(outward)};
+    return nearer_root_hit(ray, sphere, t0, t1);
 }
 
 }  // namespace raystep

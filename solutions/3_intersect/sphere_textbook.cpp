@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "solutions/3_intersect/intersect_methods.h"
-#include "solutions/3_intersect/triangle_hit.h"
+#include "solutions/3_intersect/hit_building.h"
 
 namespace raystep {
 
@@ -19,11 +19,7 @@ std::optional<Hit> intersect_sphere_textbook(const Ray& ray, const Sphere& spher
     const double root = std::sqrt(discriminant);
     const double t0 = (-b - root) / (2.0 * a);
     const double t1 = (-b + root) / (2.0 * a);
-    const double t = in_ray_range(ray, t0) ? t0 : t1;
-    if (!in_ray_range(ray, t)) return std::nullopt;
-    const Vec3 outward = f + t * ray.direction;
-    if (outward == Vec3(0.0)) return std::nullopt;
-    return Hit{t, unit_vector(outward)};
+    return nearer_root_hit(ray, sphere, t0, t1);
 }
 
 }  // namespace raystep

@@ -1,6 +1,6 @@
 // Stage 3 reference solution: lecture method 3, Cramer's rule with early exits.
 
-#include "solutions/3_intersect/triangle_hit.h"
+#include "solutions/3_intersect/hit_building.h"
 
 namespace raystep {
 

@@ -1,6 +1,6 @@
 // Stage 3 reference solution: lecture method 2, ray-plane then 3D edge half-spaces.
 
-#include "solutions/3_intersect/triangle_hit.h"
+#include "solutions/3_intersect/hit_building.h"
 
 namespace raystep {
 
@@ -20,13 +20,10 @@ Vec3 inward_normal(const Vec3& a, const Vec3& b, const Vec3& opposite) {
 }  // namespace
 
 std::optional<Hit> intersect_triangle_halfspaces(const Ray& ray, const Triangle& tri) {
-    // The supporting plane
-    const Vec3 n = glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0);
-    const double denominator = glm::dot(ray.direction, n);
-    if (denominator == 0.0) return std::nullopt;  // parallel ray, zero direction or zero area
-    const double t = glm::dot(tri.p0 - ray.origin, n) / denominator;
-    if (!in_ray_range(ray, t)) return std::nullopt;
-    const Vec3 p = ray.origin + t * ray.direction;
+    // Step 1: where the ray crosses the supporting plane
+    const std::optional<PlaneCrossing> crossing = cross_supporting_plane(ray, tri);
+    if (!crossing) return std::nullopt;  // parallel, a zero direction or area, or out of range
+    const auto& [t, p, n] = *crossing;
 
     // One half-space per edge; the distance to the edge as a fraction of the opposite vertex's
     // distance is that vertex's barycentric weight.

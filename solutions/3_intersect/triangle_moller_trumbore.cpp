@@ -1,7 +1,7 @@
 // Möller-Trumbore (1997), "Fast, minimum storage ray-triangle intersection", JGT 2(1).
 
 #include "solutions/3_intersect/intersect_methods.h"
-#include "solutions/3_intersect/triangle_hit.h"
+#include "solutions/3_intersect/hit_building.h"
 
 namespace raystep {
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "solutions/3_intersect/triangle_hit.h"
+#include "solutions/3_intersect/hit_building.h"
 
 namespace raystep {
 
@@ -17,13 +17,10 @@ double signed_area2(const Vec3& o, const Vec3& a, const Vec3& b, int x, int y) {
 }  // namespace
 
 std::optional<Hit> intersect_triangle_projection(const Ray& ray, const Triangle& tri) {
-    // The supporting plane
-    const Vec3 n = glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0);
-    const double denominator = glm::dot(ray.direction, n);
-    if (denominator == 0.0) return std::nullopt;  // parallel ray, zero direction or zero area
-    const double t = glm::dot(tri.p0 - ray.origin, n) / denominator;
-    if (!in_ray_range(ray, t)) return std::nullopt;
-    const Vec3 p = ray.origin + t * ray.direction;
+    // Step 1: where the ray crosses the supporting plane
+    const std::optional<PlaneCrossing> crossing = cross_supporting_plane(ray, tri);
+    if (!crossing) return std::nullopt;  // parallel, a zero direction or area, or out of range
+    const auto& [t, p, n] = *crossing;
 
     // Drop the axis where |n| is largest; keeping (z+1, z+2) in cyclic order preserves the
     // orientation, so the projected triangle's area has the sign of n[z].
