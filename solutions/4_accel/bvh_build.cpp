@@ -1,0 +1,242 @@
+// Stage 4 reference solution: building the BVH, top down, with the binned surface area heuristic
+// (Wald 2007, "On fast construction of SAH-based bounding volume hierarchies") or at the median.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "solutions/4_accel/bvh_layout.h"
+
+namespace raystep {
+
+namespace {
+
+// The SAH's cost model: visiting a node costs 1, testing a primitive kIntersectionCost. Tests are
+// dearer than box checks (a double-precision triangle test against two boxes in one cache line),
+// which favours smaller leaves.
+constexpr double kIntersectionCost = 2.0;
+constexpr int kBins = 16;
+// The SAH may keep up to kMaxLeafSize primitives in a leaf when splitting costs more; the median
+// split stops at kMedianLeafSize, having no cost to weigh.
+constexpr std::size_t kMaxLeafSize = 8;
+constexpr std::size_t kMedianLeafSize = 4;
+
+// Below this depth every split is at the median, which halves: with at most 2^32 primitives the
+// tree is then at most kSahDepth + 32 deep, and the traversal's fixed stack (bvh_layout.h) holds
+// one pending node per level.
+constexpr int kSahDepth = 64;
+
+struct BuildPrimitive {
+    Aabb box;
+    Vec3 centroid;
+    std::uint32_t id;
+};
+
+// A subtree under construction: a leaf range of build primitives, or two children.
+struct BuildNode {
+    Aabb box;
+    std::size_t begin = 0;
+    std::size_t end = 0;
+    int children[2] = {-1, -1};
+};
+
+struct Split {
+    int axis = -1;
+    double position = 0.0;
+    double cost = std::numeric_limits<double>::infinity();
+};
+
+// The best binned SAH split of primitives [begin, end): the centroids' box cut into kBins slabs
+// per axis, and every boundary between slabs priced by the areas and counts on either side.
+Split best_sah_split(const std::vector<BuildPrimitive>& primitives, std::size_t begin,
+                     std::size_t end, const Aabb& centroids, double parent_area) {
+    Split best;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double low = centroids.min[axis];
+        const double width = centroids.max[axis] - low;
+        if (!(width > 0.0)) continue;
+        std::array<Aabb, kBins> bins;
+        std::array<std::size_t, kBins> counts{};
+        const double scale = kBins / width;
+        const auto bin_of = [&](double c) {
+            return std::min(kBins - 1, static_cast<int>((c - low) * scale));
+        };
+        for (std::size_t k = begin; k < end; ++k) {
+            const int b = bin_of(primitives[k].centroid[axis]);
+            bins[b].add(primitives[k].box);
+            ++counts[b];
+        }
+        // Sweep from the right, then from the left, pricing each boundary.
+        std::array<double, kBins> right_cost{};
+        Aabb right;
+        std::size_t right_count = 0;
+        for (int b = kBins - 1; b > 0; --b) {
+            right.add(bins[b]);
+            right_count += counts[b];
+            right_cost[b] = right.surface_area() * static_cast<double>(right_count);
+        }
+        Aabb left;
+        std::size_t left_count = 0;
+        for (int b = 0; b < kBins - 1; ++b) {
+            left.add(bins[b]);
+            left_count += counts[b];
+            if (left_count == 0 || left_count == end - begin) continue;
+            const double cost = 1.0 + kIntersectionCost *
+                                          (left.surface_area() * static_cast<double>(left_count) +
+                                           right_cost[b + 1]) /
+                                          parent_area;
+            if (cost < best.cost) best = {axis, low + (b + 1) / scale, cost};
+        }
+    }
+    return best;
+}
+
+class BvhBuilder {
+public:
+    BvhBuilder(std::vector<BuildPrimitive> primitives, BvhSplit split)
+        : primitives_(std::move(primitives)), split_(split) {}
+
+    /// Builds the tree of build nodes; node 0 is the root.
+    std::vector<BuildNode> build() {
+        nodes_.clear();
+        if (!primitives_.empty()) build_node(0, primitives_.size(), 0);
+        return std::move(nodes_);
+    }
+
+    const std::vector<BuildPrimitive>& primitives() const { return primitives_; }
+
+private:
+    int build_node(std::size_t begin, std::size_t end, int depth) {
+        const int index = static_cast<int>(nodes_.size());
+        nodes_.push_back({});
+        Aabb box;
+        Aabb centroids;
+        for (std::size_t k = begin; k < end; ++k) {
+            box.add(primitives_[k].box);
+            centroids.add(primitives_[k].centroid);
+        }
+        nodes_[index].box = box;
+        nodes_[index].begin = begin;
+        nodes_[index].end = end;
+
+        const std::size_t middle = split_at(begin, end, box, centroids, depth);
+        if (middle == begin) return index;  // a leaf
+        const int left = build_node(begin, middle, depth + 1);
+        const int right = build_node(middle, end, depth + 1);
+        nodes_[index].children[0] = left;
+        nodes_[index].children[1] = right;
+        return index;
+    }
+
+    // Where to divide [begin, end), after reordering it; `begin` to make a leaf.
+    std::size_t split_at(std::size_t begin, std::size_t end, const Aabb& box, const Aabb& centroids,
+                         int depth) {
+        const std::size_t count = end - begin;
+        const Vec3 extent = centroids.extent();
+        const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+
+        // All centroids at one point: no plane separates them, so split by order, and only when
+        // the leaf would be too big.
+        if (!(extent[axis] > 0.0)) return count > kMaxLeafSize ? median(begin, end, axis) : begin;
+        if (split_ == BvhSplit::median || depth >= kSahDepth) {
+            return count > kMedianLeafSize ? median(begin, end, axis) : begin;
+        }
+
+        const Split split = best_sah_split(primitives_, begin, end, centroids, box.surface_area());
+        const double leaf_cost = kIntersectionCost * static_cast<double>(count);
+        if (split.axis < 0 || (split.cost >= leaf_cost && count <= kMaxLeafSize)) return begin;
+        const auto middle = std::partition(
+            primitives_.begin() + static_cast<long>(begin), primitives_.begin() + static_cast<long>(end),
+            [&split](const BuildPrimitive& p) { return p.centroid[split.axis] < split.position; });
+        const auto at = static_cast<std::size_t>(middle - primitives_.begin());
+        // Rounding can put a centroid on the other side of the plane than its bin: never leave a
+        // side empty (an empty side would repeat this node forever).
+        if (at == begin || at == end) return median(begin, end, split.axis);
+        return at;
+    }
+
+    // Halves [begin, end) at the median centroid along the axis.
+    std::size_t median(std::size_t begin, std::size_t end, int axis) {
+        const std::size_t middle = begin + (end - begin) / 2;
+        std::nth_element(primitives_.begin() + static_cast<long>(begin),
+                         primitives_.begin() + static_cast<long>(middle),
+                         primitives_.begin() + static_cast<long>(end),
+                         [axis](const BuildPrimitive& a, const BuildPrimitive& b) {
+                             return a.centroid[axis] < b.centroid[axis];
+                         });
+        return middle;
+    }
+
+    std::vector<BuildPrimitive> primitives_;
+    BvhSplit split_;
+    std::vector<BuildNode> nodes_;
+};
+
+// Float bounds that contain the double ones: rounded down for minima, up for maxima.
+void store_box(const Aabb& box, float low[3], float high[3]) {
+    for (int axis = 0; axis < 3; ++axis) {
+        float l = static_cast<float>(box.min[axis]);
+        float h = static_cast<float>(box.max[axis]);
+        if (static_cast<double>(l) > box.min[axis]) l = std::nextafter(l, -std::numeric_limits<float>::infinity());
+        if (static_cast<double>(h) < box.max[axis]) h = std::nextafter(h, std::numeric_limits<float>::infinity());
+        low[axis] = l;
+        high[axis] = h;
+    }
+}
+
+// Writes the build tree as packed nodes, depth first; returns how the parent refers to it.
+BvhChild emit(const std::vector<BuildNode>& tree, int index, Bvh::Impl& bvh) {
+    const BuildNode& node = tree[static_cast<std::size_t>(index)];
+    if (node.children[0] < 0) {
+        return {static_cast<std::uint32_t>(node.begin), static_cast<std::uint32_t>(node.end - node.begin)};
+    }
+    const std::size_t packed = bvh.nodes.size();
+    bvh.nodes.push_back({});
+    for (int c = 0; c < 2; ++c) {
+        const BuildNode& child = tree[static_cast<std::size_t>(node.children[c])];
+        store_box(child.box, bvh.nodes[packed].low[c], bvh.nodes[packed].high[c]);
+    }
+    for (int c = 0; c < 2; ++c) {
+        const BvhChild ref = emit(tree, node.children[c], bvh);
+        bvh.nodes[packed].child[c] = ref.index;
+        bvh.nodes[packed].count[c] = ref.count;
+    }
+    return {static_cast<std::uint32_t>(packed), 0};
+}
+
+}  // namespace
+
+void build_bvh(Bvh::Impl& bvh, const PrimitiveList& primitives, BvhSplit split) {
+    bvh.spheres = primitives.spheres;
+    bvh.sphere_count = static_cast<std::uint32_t>(primitives.spheres.size());
+
+    std::vector<BuildPrimitive> items;
+    items.reserve(primitives.spheres.size() + primitives.triangles.size());
+    for (std::size_t k = 0; k < primitives.spheres.size(); ++k) {
+        const Aabb box = bounds_of(primitives.spheres[k]);
+        items.push_back({box, box.center(), static_cast<std::uint32_t>(k)});
+    }
+    for (std::size_t k = 0; k < primitives.triangles.size(); ++k) {
+        const Aabb box = bounds_of(primitives.triangles[k]);
+        items.push_back({box, box.center(), bvh.sphere_count + static_cast<std::uint32_t>(k)});
+    }
+
+    BvhBuilder builder(std::move(items), split);
+    const std::vector<BuildNode> tree = builder.build();
+    const std::vector<BuildPrimitive>& ordered = builder.primitives();
+
+    bvh.slots.resize(ordered.size());
+    bvh.slot_triangles.resize(ordered.size());
+    for (std::size_t slot = 0; slot < ordered.size(); ++slot) {
+        const std::uint32_t id = ordered[slot].id;
+        bvh.slots[slot] = id;
+        if (id >= bvh.sphere_count) bvh.slot_triangles[slot] = primitives.triangles[id - bvh.sphere_count];
+    }
+    bvh.nodes.clear();
+    if (tree.empty()) return;
+    bvh.root_box = tree[0].box;
+    bvh.root = emit(tree, 0, bvh);
+}
+
+}  // namespace raystep

@@ -1,0 +1,198 @@
+// Public tests for stage 4, the BVH. Run them with `ctest --preset release -L stage4`.
+//
+// A BVH must give exactly closest_hit's answer: the same primitive and the same t, compared
+// with ==. Both call the same stage-3 tests; only the order differs.
+
+#include <random>
+#include <string>
+
+#include "core/testing/catch.h"
+#include "stages/4_accel/bvh.h"
+
+using namespace raystep;
+
+namespace {
+
+Vec3 random_point(std::mt19937_64& rng, double extent) {
+    std::uniform_real_distribution<double> u(-extent, extent);
+    return {u(rng), u(rng), u(rng)};
+}
+
+// n small random triangles and n / 4 spheres in [-5, 5]^3.
+PrimitiveList random_scene(std::mt19937_64& rng, int n) {
+    PrimitiveList list;
+    std::uniform_real_distribution<double> size(0.05, 1.0);
+    for (int k = 0; k < n; ++k) {
+        const Vec3 c = random_point(rng, 5.0);
+        const double s = size(rng);
+        list.triangles.push_back({c + s * random_point(rng, 1.0), c + s * random_point(rng, 1.0),
+                                  c + s * random_point(rng, 1.0)});
+    }
+    for (int k = 0; k < n / 4; ++k) list.spheres.push_back({random_point(rng, 5.0), 0.5 * size(rng)});
+    return list;
+}
+
+Ray random_ray(std::mt19937_64& rng) {
+    const Vec3 origin = random_point(rng, 8.0);
+    return {origin, random_point(rng, 5.0) - origin};
+}
+
+// The BVH's answer is closest_hit's, bit for bit.
+void check_same(const std::optional<PrimitiveHit>& got, const std::optional<PrimitiveHit>& expected) {
+    REQUIRE(got.has_value() == expected.has_value());
+    if (!got) return;
+    CHECK(got->kind == expected->kind);
+    CHECK(got->index == expected->index);
+    CHECK(got->hit.t == expected->hit.t);
+}
+
+const BvhSplit kSplits[] = {BvhSplit::median, BvhSplit::sah};
+
+std::string split_name(BvhSplit split) { return split == BvhSplit::median ? "median" : "sah"; }
+
+}  // namespace
+
+TEST_CASE("Bvh::closest_hit: equals closest_hit on random scenes and rays", "[stage4]") {
+    for (const BvhSplit split : kSplits) {
+        for (const int seed : {1, 2, 3}) {
+            std::mt19937_64 rng(static_cast<std::uint64_t>(seed));
+            const PrimitiveList list = random_scene(rng, 400);
+            const Bvh bvh(list, split);
+            for (int k = 0; k < 500; ++k) {
+                const Ray ray = random_ray(rng);
+                CAPTURE(split_name(split), seed, k);
+                check_same(bvh.closest_hit(ray), closest_hit(ray, list));
+            }
+        }
+    }
+}
+
+TEST_CASE("Bvh::closest_hit: rays from inside the scene, axis-parallel rays, short rays", "[stage4]") {
+    std::mt19937_64 rng(4);
+    const PrimitiveList list = random_scene(rng, 300);
+    for (const BvhSplit split : kSplits) {
+        const Bvh bvh(list, split);
+        for (int k = 0; k < 300; ++k) {
+            CAPTURE(split_name(split), k);
+            const Vec3 origin = random_point(rng, 4.0);
+            Vec3 axis(0.0);
+            axis[k % 3] = k % 2 == 0 ? 1.0 : -1.0;
+            const Ray axis_ray{origin, axis};
+            check_same(bvh.closest_hit(axis_ray), closest_hit(axis_ray, list));
+            const Ray short_ray{origin, random_point(rng, 1.0), 0.0, 2.0};
+            check_same(bvh.closest_hit(short_ray), closest_hit(short_ray, list));
+        }
+    }
+}
+
+TEST_CASE("Bvh::closest_hit: ties go to the primitive closest_hit picks", "[stage4]") {
+    // Three copies of one triangle and a sphere touching its plane at the same t: closest_hit
+    // takes the sphere (spheres come first); among triangles, the lowest index.
+    PrimitiveList list;
+    const Triangle t{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
+    list.triangles = {t, t, t};
+    list.spheres = {{{0, 0, -1}, 1.0}};
+    const Ray ray{{0, 0, 5}, {0, 0, -1}};
+    for (const BvhSplit split : kSplits) {
+        CAPTURE(split_name(split));
+        const Bvh bvh(list, split);
+        check_same(bvh.closest_hit(ray), closest_hit(ray, list));
+        list.spheres.clear();
+        const Bvh no_sphere(list, split);
+        check_same(no_sphere.closest_hit(ray), closest_hit(ray, list));
+        CHECK(no_sphere.closest_hit(ray)->index == 0);
+        list.spheres = {{{0, 0, -1}, 1.0}};
+    }
+}
+
+TEST_CASE("Bvh::closest_hit: rays through edges shared by the triangles of a grid", "[stage4]") {
+    // A 20 x 20 grid of unit squares in z = 0, two triangles each; rays straight down through
+    // edge midpoints and vertices, where two to six triangles meet.
+    PrimitiveList list;
+    for (int i = 0; i < 20; ++i) {
+        for (int j = 0; j < 20; ++j) {
+            const Vec3 a(i, j, 0), b(i + 1, j, 0), c(i + 1, j + 1, 0), d(i, j + 1, 0);
+            list.triangles.push_back({a, b, c});
+            list.triangles.push_back({a, c, d});
+        }
+    }
+    for (const BvhSplit split : kSplits) {
+        const Bvh bvh(list, split);
+        for (int k = 0; k < 400; ++k) {
+            const double x = 0.5 * (k % 40);
+            const double y = 0.5 * (k / 20);
+            const Ray ray{{x, y, 3}, {0, 0, -1}};
+            CAPTURE(split_name(split), x, y);
+            check_same(bvh.closest_hit(ray), closest_hit(ray, list));
+        }
+    }
+}
+
+TEST_CASE("Bvh::closest_hit: an empty scene, one primitive, primitives all at one point", "[stage4]") {
+    const Ray ray{{0, 0, 5}, {0, 0, -1}};
+    for (const BvhSplit split : kSplits) {
+        CAPTURE(split_name(split));
+        CHECK_FALSE(Bvh(PrimitiveList{}, split).closest_hit(ray));
+        PrimitiveList one;
+        one.spheres = {{{0, 0, 0}, 1.0}};
+        check_same(Bvh(one, split).closest_hit(ray), closest_hit(ray, one));
+        PrimitiveList stacked;
+        for (int k = 0; k < 50; ++k) stacked.spheres.push_back({{0, 0, 0}, 1.0 + 0.01 * k});
+        check_same(Bvh(stacked, split).closest_hit(ray), closest_hit(ray, stacked));
+    }
+}
+
+TEST_CASE("Bvh::occluded: agrees with closest_hit, before and after the first hit", "[stage4]") {
+    std::mt19937_64 rng(5);
+    const PrimitiveList list = random_scene(rng, 300);
+    for (const BvhSplit split : kSplits) {
+        const Bvh bvh(list, split);
+        for (int k = 0; k < 300; ++k) {
+            Ray ray = random_ray(rng);
+            CAPTURE(split_name(split), k);
+            const std::optional<PrimitiveHit> first = closest_hit(ray, list);
+            CHECK(bvh.occluded(ray) == first.has_value());
+            if (first) {
+                ray.t_max = 0.5 * first->hit.t;  // stop short of it
+                CHECK(bvh.occluded(ray) == closest_hit(ray, list).has_value());
+            }
+        }
+    }
+}
+
+TEST_CASE("Bvh: a ray through empty space visits few nodes and tests nothing", "[stage4]") {
+    std::mt19937_64 rng(6);
+    const PrimitiveList list = random_scene(rng, 1000);
+    const Bvh bvh(list, BvhSplit::sah);
+    TraversalStats stats;
+    CHECK_FALSE(bvh.closest_hit({{0, 0, 100}, {0, 0, 1}}, &stats));  // pointing away
+    CHECK(stats.primitive_tests == 0);
+    TraversalStats through;
+    const Ray ray = random_ray(rng);
+    bvh.closest_hit(ray, &through);
+    CHECK(through.nodes > 0);
+    CHECK(through.primitive_tests < 1250 / 4);  // far fewer than brute force's 1250
+}
+
+TEST_CASE("Bvh: the SAH tree is no slower to walk than the median tree", "[stage4]") {
+    // Counted in nodes and tests, not seconds: over the same rays the SAH's estimate of the cost
+    // must not lose to the median split on a scene of clustered primitives.
+    std::mt19937_64 rng(7);
+    PrimitiveList list = random_scene(rng, 2000);
+    for (int k = 0; k < 2000; ++k) {  // a dense cluster beside the rest
+        const Vec3 c = Vec3(20, 0, 0) + random_point(rng, 0.5);
+        list.triangles.push_back({c, c + Vec3(0.01, 0, 0), c + Vec3(0, 0.01, 0)});
+    }
+    const Bvh median(list, BvhSplit::median);
+    const Bvh sah(list, BvhSplit::sah);
+    TraversalStats median_cost;
+    TraversalStats sah_cost;
+    for (int k = 0; k < 2000; ++k) {
+        const Ray ray = random_ray(rng);
+        median.closest_hit(ray, &median_cost);
+        sah.closest_hit(ray, &sah_cost);
+    }
+    CAPTURE(median_cost.nodes, median_cost.primitive_tests, sah_cost.nodes, sah_cost.primitive_tests);
+    CHECK(sah_cost.nodes + 2 * sah_cost.primitive_tests <=
+          median_cost.nodes + 2 * median_cost.primitive_tests);
+}

@@ -1,0 +1,51 @@
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include <glm/vec3.hpp>
+
+#include "stages/3_intersect/intersect.h"
+#include "stages/4_accel/aabb.h"
+#include "stages/4_accel/traversal.h"
+
+namespace raystep {
+
+/// A uniform grid over the spheres and triangles of a PrimitiveList (planes stay outside), walked
+/// cell by cell along the ray with the 3D-DDA of Amanatides and Woo (1987). Its layout is the
+/// implementation's own (UniformGrid::Impl, in uniform_grid.cpp).
+class UniformGrid {
+public:
+    /// Builds over a copy of the list's spheres and triangles, with the resolution of
+    /// grid_resolution.
+    explicit UniformGrid(const PrimitiveList& primitives);
+    ~UniformGrid();
+    UniformGrid(UniformGrid&&) noexcept;
+    UniformGrid& operator=(UniformGrid&&) noexcept;
+
+    /// Exactly what closest_hit returns for the same spheres and triangles (same primitive, same
+    /// t, ties broken by comes_before). A primitive that spans several cells is found once and
+    /// reported in the cell where its hit is; the walk stops once no nearer cell is left.
+    std::optional<PrimitiveHit> closest_hit(const Ray& ray, TraversalStats* stats = nullptr) const;
+
+    /// True when any sphere or triangle has a hit in [ray.t_min, ray.t_max].
+    bool occluded(const Ray& ray, TraversalStats* stats = nullptr) const;
+
+    /// Cells along x, y and z.
+    glm::ivec3 resolution() const;
+
+    struct Impl;
+
+private:
+    std::unique_ptr<Impl> impl_;
+};
+
+/// The cells along each axis for n primitives in a box: about `kCellsPerPrimitive` n cells in
+/// all, shaped like the box (cubes as near as whole numbers allow), at least 1 and at most 256
+/// per axis. docs/stage4.md, "Grid resolution", says where the numbers come from.
+glm::ivec3 grid_resolution(const Aabb& bounds, std::size_t n);
+
+/// Cells per primitive in a uniform grid.
+inline constexpr double kCellsPerPrimitive = 3.0;
+
+}  // namespace raystep
