@@ -76,6 +76,15 @@ int run_info(const InfoArguments& arguments) {
                           ? counted(f.reflective_objects, "mirror object", "mirror objects") +
                                 ", up to " + std::to_string(scene.max_depth) + " bounces"
                           : "none");
+    const std::size_t bounded = f.spheres + f.triangles;
+    row("structure", uses_bvh(f)
+                         ? "a BVH (SAH) over the " + std::to_string(bounded) +
+                               " spheres and triangles: it pays from " +
+                               std::to_string(kBvhFromPrimitives) +
+                               " (measured by raystep bench --threshold)"
+                         : "none: " + std::to_string(bounded) +
+                               " spheres and triangles are tested one by one, faster below " +
+                               std::to_string(kBvhFromPrimitives));
     row("stages", "full image " + stage_list(stages_for_view(f, View::full)) +
                       "; depth, normal and barycentric views " +
                       stage_list(stages_for_view(f, View::normal)) + "; rays view " +

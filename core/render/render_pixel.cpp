@@ -69,10 +69,15 @@ Color render_pixel(const RenderScene& render_scene, View view, int i, int j, Tra
     }
     if (view == View::rays) return direction_color(ray.direction);
 
-    // Stage 3: the closest hit
+    // Stages 3 and 4: the closest hit, through the BVH when the scene has one
     if (trace) trace_primitives(render_scene, ray, *trace);
-    const std::optional<PrimitiveHit> closest = closest_hit(ray, render_scene.primitives);
+    TraversalStats cost;
+    const std::optional<PrimitiveHit> closest = scene_closest_hit(render_scene, ray, &cost);
     if (trace) {
+        if (render_scene.bvh) {
+            trace->add("BVH: " + std::to_string(cost.nodes) + " nodes visited, " +
+                       std::to_string(cost.primitive_tests) + " primitives tested");
+        }
         if (closest) {
             trace->add("closest_hit: " + std::string(kind_name(closest->kind)) + " " +
                        std::to_string(closest->index) + " at t=" + to_text(closest->hit.t) +
@@ -88,6 +93,8 @@ Color render_pixel(const RenderScene& render_scene, View view, int i, int j, Tra
             return Color(closest ? closest->hit.t : std::numeric_limits<double>::infinity());
         case View::normal:
             return closest ? direction_color(closest->hit.normal) : Color(0.0);
+        case View::cost:
+            return Color(static_cast<double>(cost.nodes + cost.primitive_tests));
         case View::barycentric:
             if (!closest) return Color(0.0);
             if (closest->kind != PrimitiveKind::triangle) return Color(0.25);
@@ -96,15 +103,17 @@ Color render_pixel(const RenderScene& render_scene, View view, int i, int j, Tra
         case View::full:
             throw std::runtime_error(
                 "the full image needs stage 6 (shading), not yet part of raystep; choose "
-                "--view rays, depth, normal or barycentric");
+                "--view rays, depth, normal, barycentric or cost");
         case View::rays:
             break;
     }
     return Color(0.0);
 }
 
-void finish_view(Image& image, View view) {
-    if (view != View::depth) return;
+namespace {
+
+// Inverse depth: the nearest positive t in the image is white, twice as far 0.5.
+void finish_depth(Image& image) {
     double nearest = std::numeric_limits<double>::infinity();
     for (int j = 0; j < image.height(); ++j) {
         for (int i = 0; i < image.width(); ++i) {
@@ -120,6 +129,36 @@ void finish_view(Image& image, View view) {
             image.set(i, j, Color(grey));
         }
     }
+}
+
+// A heat map of the work per pixel, from black (none) through blue, red and yellow to white (the
+// image's most expensive pixel): stops spread so that equal steps of work are visible steps.
+Color heat(double fraction) {
+    static const Color kStops[] = {
+        {0, 0, 0}, {0.1, 0.1, 0.8}, {0.9, 0.1, 0.1}, {1, 0.9, 0}, {1, 1, 1}};
+    const double x = std::clamp(fraction, 0.0, 1.0) * 4.0;
+    const int k = std::min(3, static_cast<int>(x));
+    return kStops[k] + (x - k) * (kStops[k + 1] - kStops[k]);
+}
+
+void finish_cost(Image& image) {
+    double most = 0.0;
+    for (int j = 0; j < image.height(); ++j) {
+        for (int i = 0; i < image.width(); ++i)
+            most = std::max(most, image.at(i, j).r);
+    }
+    for (int j = 0; j < image.height(); ++j) {
+        for (int i = 0; i < image.width(); ++i) {
+            image.set(i, j, heat(most > 0.0 ? image.at(i, j).r / most : 0.0));
+        }
+    }
+}
+
+}  // namespace
+
+void finish_view(Image& image, View view) {
+    if (view == View::depth) finish_depth(image);
+    if (view == View::cost) finish_cost(image);
 }
 
 }  // namespace raystep

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "core/render/render_plan.h"
 #include "core/scene/scene_features.h"
 
 namespace raystep {
@@ -36,7 +37,32 @@ RenderScene prepare_render_scene(const Scene& scene) {
     list.planes.reserve(scene.planes.size());
     for (const ScenePlane& p : scene.planes)
         list.planes.push_back(p.shape);
+
+    if (uses_bvh(scene_features(scene))) {
+        render_scene.bvh.emplace(list, BvhSplit::sah);
+        render_scene.planes.planes = list.planes;
+    }
     return render_scene;
+}
+
+std::optional<PrimitiveHit> scene_closest_hit(const RenderScene& render_scene, const Ray& ray,
+                                              TraversalStats* stats) {
+    const PrimitiveList& list = render_scene.primitives;
+    if (!render_scene.bvh) {
+        if (stats)
+            stats->primitive_tests +=
+                list.spheres.size() + list.triangles.size() + list.planes.size();
+        return closest_hit(ray, list);
+    }
+    std::optional<PrimitiveHit> best = render_scene.bvh->closest_hit(ray, stats);
+    // The planes come after spheres and triangles in closest_hit's order, so on a tie the BVH's
+    // hit stays, and a plane must be strictly nearer.
+    Ray nearer = ray;
+    if (best) nearer.t_max = best->hit.t;
+    const std::optional<PrimitiveHit> plane = closest_hit(nearer, render_scene.planes);
+    if (stats) stats->primitive_tests += list.planes.size();
+    if (plane && (!best || comes_before(*plane, *best))) best = plane;
+    return best;
 }
 
 Ray camera_ray(const RenderScene& render_scene, int i, int j) {

@@ -111,8 +111,8 @@ Image render_image(const RenderScene& render_scene, const RenderOptions& options
     pool.reserve(static_cast<std::size_t>(wanted));
     try {
         for (int w = 0; w < wanted; ++w) {
-            pool.emplace_back(render_tiles, std::cref(render_scene), options.view,
-                              std::ref(queue), std::ref(image));
+            pool.emplace_back(render_tiles, std::cref(render_scene), options.view, std::ref(queue),
+                              std::ref(image));
         }
     } catch (const std::system_error&) {
         // Fewer threads than asked for (a process limit in a sandbox, say): the ones running
@@ -130,7 +130,8 @@ Image render_image(const RenderScene& render_scene, const RenderOptions& options
         while (!queue.wait_for_workers(workers, std::chrono::milliseconds(100))) {
             bar.update(queue.done());
         }
-        for (std::thread& thread : pool) thread.join();
+        for (std::thread& thread : pool)
+            thread.join();
     }
 
     if (queue.error()) {

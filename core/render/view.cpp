@@ -7,11 +7,12 @@ namespace raystep {
 
 namespace {
 
-constexpr std::array<std::pair<View, std::string_view>, 5> kViews = {{
+constexpr std::array<std::pair<View, std::string_view>, 6> kViews = {{
     {View::rays, "rays"},
     {View::depth, "depth"},
     {View::normal, "normal"},
     {View::barycentric, "barycentric"},
+    {View::cost, "cost"},
     {View::full, "full"},
 }};
 

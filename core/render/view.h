@@ -14,6 +14,7 @@ enum class View {
     depth,        ///< stage 3: distance to the nearest hit, near bright, far dark, misses black
     normal,       ///< stage 3: the geometric normal at the nearest hit as a colour, 0.5 (n + 1)
     barycentric,  ///< stage 3: (1 - beta - gamma, beta, gamma) on triangles, grey elsewhere
+    cost,         ///< stage 4: BVH nodes visited plus primitives tested, as a heat map
     full,         ///< the finished image
 };
 

@@ -187,3 +187,36 @@ TEST_CASE("render: the normal and barycentric views colour a triangle as expecte
     CHECK(barycentric.at(4, 1).b > 0.9);        // (0, 3.33), near p2 at the top: blue
     CHECK(barycentric.at(0, 0) == Color(0.0));  // (-4.4, 4.4): a miss
 }
+
+TEST_CASE("scene_closest_hit: through the BVH, the same hit as closest_hit at every pixel", "[core]") {
+    // 200 triangles and 50 spheres: a BVH scene. Every camera ray must get closest_hit's answer.
+    std::string text = "size 48 36\ncamera 0 1 12 0 0 0 0 1 0 50\nplane 0 -3 0 0 1 0\n";
+    for (int k = 0; k < 200; ++k) {
+        const double x = (k % 20) * 0.5 - 5.0;
+        const double y = (k / 20) * 0.5 - 2.5;
+        text += "vertex " + std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(0.1 * (k % 7)) + "\n";
+    }
+    for (int k = 0; k + 21 < 200; ++k) {
+        text += "tri " + std::to_string(k) + " " + std::to_string(k + 1) + " " + std::to_string(k + 21) + "\n";
+    }
+    for (int k = 0; k < 50; ++k) {
+        text += "sphere " + std::to_string((k % 10) - 4.5) + " " + std::to_string(k / 10 - 2.0) + " 1.5 0.3\n";
+    }
+    const Scene scene = parse_scene(text, "bvh.test", ".");
+    const RenderScene render_scene = prepare_render_scene(scene);
+    REQUIRE(render_scene.bvh.has_value());
+    for (int j = 0; j < scene.height; ++j) {
+        for (int i = 0; i < scene.width; ++i) {
+            CAPTURE(i, j);
+            const Ray ray = camera_ray(render_scene, i, j);
+            const std::optional<PrimitiveHit> expected = closest_hit(ray, render_scene.primitives);
+            const std::optional<PrimitiveHit> got = scene_closest_hit(render_scene, ray, nullptr);
+            REQUIRE(got.has_value() == expected.has_value());
+            if (got) {
+                CHECK(got->kind == expected->kind);
+                CHECK(got->index == expected->index);
+                CHECK(got->hit.t == expected->hit.t);
+            }
+        }
+    }
+}
