@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "solutions/4_accel/bvh_layout.h"
+#include "solutions/4_accel/node_test.h"
 #include "solutions/4_accel/slab_test.h"
 
 namespace raystep {
@@ -22,72 +23,70 @@ constexpr double kPruneSlack = 0x1p-40;
 // The far end of the search: the best hit so far (or t_max), widened by the slack.
 double search_limit(double t) { return t + kPruneSlack * std::abs(t); }
 
-// A ray prepared for box tests: its inverse direction, computed once.
-struct BoxRay {
-    Vec3 origin;
-    Vec3 inverse;
-    double t_min;
-};
-
-bool enters(const BoxRay& ray, const float low[3], const float high[3], double limit,
-            double& enter) {
-    double entry = ray.t_min;
-    double exit = limit;
-    for (int axis = 0; axis < 3; ++axis) {
-        clip_to_slab(ray.origin[axis], ray.inverse[axis], low[axis], high[axis], entry, exit);
-    }
-    enter = entry;
-    return entry <= widen_exit(exit);
-}
-
 // The queries share one walk: nearer children first, a stack of the others, skipping any whose
-// entry lies beyond the search limit. `Visit` tests a leaf's primitives and returns true to stop.
-template <class Limit, class Visit>
-void walk(const Bvh::Impl& bvh, const Ray& ray, TraversalStats* stats, Limit limit, Visit visit) {
+// entry lies beyond `bound`, the float search limit. `Visit` tests a leaf's primitives, may lower
+// the bound (after a nearer hit), and returns true to stop.
+//
+// The node test (node_test.h) takes both children at once, and the stack is a plain array, never
+// initialized: this loop is where the time goes (docs/stage4.md, "Measurements").
+template <class Visit>
+void walk(const Bvh::Impl& bvh, const Ray& ray, TraversalStats* stats, Visit visit) {
     if (bvh.slots.empty()) return;
-    const BoxRay box_ray{ray.origin, 1.0 / ray.direction, ray.t_min};
     {
+        const Vec3 inverse = 1.0 / ray.direction;
         double entry = ray.t_min;
         double exit = ray.t_max;
         for (int axis = 0; axis < 3; ++axis) {
-            clip_to_slab(ray.origin[axis], box_ray.inverse[axis], bvh.root_box.min[axis],
+            clip_to_slab(ray.origin[axis], inverse[axis], bvh.root_box.min[axis],
                          bvh.root_box.max[axis], entry, exit);
         }
         if (!(entry <= widen_exit(exit))) return;
     }
+    const NodeRay node_ray(ray);
+    const ChildTest child_test(node_ray);
+    float bound = rounded_up(search_limit(ray.t_max));
 
+    // The node at hand stays in `current`; only the farther child of two waits on the stack.
     struct Pending {
-        BvhChild child;
-        double enter;
+        std::uint32_t index;
+        std::uint32_t count;  ///< 0: an inner node
+        float enter;
     };
     Pending stack[kBvhStackSize];
     int top = 0;
-    stack[top++] = {bvh.root, ray.t_min};
+    Pending current{bvh.root.index, bvh.root.count, node_ray.t_min};
+    // The next node from the stack, skipping what starts beyond the best hit found since it
+    // waited; false when none is left.
+    const auto next = [&] {
+        while (top > 0) {
+            current = stack[--top];
+            if (current.enter <= bound) return true;
+        }
+        return false;
+    };
     std::uint64_t nodes = 0;
-    while (top > 0) {
-        const Pending pending = stack[--top];
-        if (pending.enter > limit()) continue;
-        if (pending.child.count > 0) {
-            if (visit(pending.child.index, pending.child.count)) break;
-            continue;
+    for (;;) {
+        if (current.count > 0) {
+            if (visit(current.index, current.count, bound)) break;
+        } else {
+            ++nodes;
+            const BvhNode& node = bvh.nodes[current.index];
+            float entry[2];
+            const int hits = child_test.enter_children(node, bound, entry);
+            if (hits == 3) {
+                const int near = entry[0] <= entry[1] ? 0 : 1;
+                const int far = 1 - near;
+                stack[top++] = {node.child[far], node.count[far], entry[far]};
+                current = {node.child[near], node.count[near], entry[near]};
+                continue;
+            }
+            if (hits != 0) {
+                const int only = hits == 1 ? 0 : 1;
+                current = {node.child[only], node.count[only], entry[only]};
+                continue;
+            }
         }
-        ++nodes;
-        const BvhNode& node = bvh.nodes[pending.child.index];
-        double enter[2];
-        const bool hit0 = enters(box_ray, node.low[0], node.high[0], limit(), enter[0]);
-        const bool hit1 = enters(box_ray, node.low[1], node.high[1], limit(), enter[1]);
-        const BvhChild child0{node.child[0], node.count[0]};
-        const BvhChild child1{node.child[1], node.count[1]};
-        // Push the farther first, so the nearer is taken next.
-        if (hit0 && hit1) {
-            const bool first_nearer = enter[0] <= enter[1];
-            stack[top++] = first_nearer ? Pending{child1, enter[1]} : Pending{child0, enter[0]};
-            stack[top++] = first_nearer ? Pending{child0, enter[0]} : Pending{child1, enter[1]};
-        } else if (hit0) {
-            stack[top++] = {child0, enter[0]};
-        } else if (hit1) {
-            stack[top++] = {child1, enter[1]};
-        }
+        if (!next()) break;
     }
     if (stats) stats->nodes += nodes;
 }
@@ -121,19 +120,18 @@ std::optional<PrimitiveHit> Bvh::closest_hit(const Ray& ray, TraversalStats* sta
     Ray nearer = ray;
     std::optional<PrimitiveHit> best;
     std::uint64_t tests = 0;
-    walk(
-        *impl_, ray, stats, [&] { return search_limit(nearer.t_max); },
-        [&](std::uint32_t first, std::uint32_t count) {
-            for (std::uint32_t slot = first; slot < first + count; ++slot) {
-                ++tests;
-                const std::optional<PrimitiveHit> hit = test_slot(*impl_, slot, nearer);
-                if (hit && (!best || comes_before(*hit, *best))) {
-                    best = hit;
-                    nearer.t_max = hit->hit.t;
-                }
+    walk(*impl_, ray, stats, [&](std::uint32_t first, std::uint32_t count, float& bound) {
+        for (std::uint32_t slot = first; slot < first + count; ++slot) {
+            ++tests;
+            const std::optional<PrimitiveHit> hit = test_slot(*impl_, slot, nearer);
+            if (hit && (!best || comes_before(*hit, *best))) {
+                best = hit;
+                nearer.t_max = hit->hit.t;
+                bound = rounded_up(search_limit(nearer.t_max));
             }
-            return false;
-        });
+        }
+        return false;
+    });
     if (stats) stats->primitive_tests += tests;
     return best;
 }
@@ -141,15 +139,13 @@ std::optional<PrimitiveHit> Bvh::closest_hit(const Ray& ray, TraversalStats* sta
 bool Bvh::occluded(const Ray& ray, TraversalStats* stats) const {
     bool found = false;
     std::uint64_t tests = 0;
-    walk(
-        *impl_, ray, stats, [&] { return search_limit(ray.t_max); },
-        [&](std::uint32_t first, std::uint32_t count) {
-            for (std::uint32_t slot = first; slot < first + count; ++slot) {
-                ++tests;
-                if (test_slot(*impl_, slot, ray)) return found = true;
-            }
-            return false;
-        });
+    walk(*impl_, ray, stats, [&](std::uint32_t first, std::uint32_t count, float&) {
+        for (std::uint32_t slot = first; slot < first + count; ++slot) {
+            ++tests;
+            if (test_slot(*impl_, slot, ray)) return found = true;
+        }
+        return false;
+    });
     if (stats) stats->primitive_tests += tests;
     return found;
 }

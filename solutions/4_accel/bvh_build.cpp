@@ -173,15 +173,20 @@ private:
     std::vector<BuildNode> nodes_;
 };
 
-// Float bounds that contain the double ones: rounded down for minima, up for maxima.
-void store_box(const Aabb& box, float low[3], float high[3]) {
+// Child c's box in the node, in float bounds that contain the double ones: rounded down for
+// minima, up for maxima.
+void store_box(const Aabb& box, BvhNode& node, int c) {
     for (int axis = 0; axis < 3; ++axis) {
-        float l = static_cast<float>(box.min[axis]);
-        float h = static_cast<float>(box.max[axis]);
-        if (static_cast<double>(l) > box.min[axis]) l = std::nextafter(l, -std::numeric_limits<float>::infinity());
-        if (static_cast<double>(h) < box.max[axis]) h = std::nextafter(h, std::numeric_limits<float>::infinity());
-        low[axis] = l;
-        high[axis] = h;
+        float low = static_cast<float>(box.min[axis]);
+        float high = static_cast<float>(box.max[axis]);
+        if (static_cast<double>(low) > box.min[axis]) {
+            low = std::nextafter(low, -std::numeric_limits<float>::infinity());
+        }
+        if (static_cast<double>(high) < box.max[axis]) {
+            high = std::nextafter(high, std::numeric_limits<float>::infinity());
+        }
+        node.planes[2 * axis][c] = low;
+        node.planes[2 * axis + 1][c] = high;
     }
 }
 
@@ -195,7 +200,7 @@ BvhChild emit(const std::vector<BuildNode>& tree, int index, Bvh::Impl& bvh) {
     bvh.nodes.push_back({});
     for (int c = 0; c < 2; ++c) {
         const BuildNode& child = tree[static_cast<std::size_t>(node.children[c])];
-        store_box(child.box, bvh.nodes[packed].low[c], bvh.nodes[packed].high[c]);
+        store_box(child.box, bvh.nodes[packed], c);
     }
     for (int c = 0; c < 2; ++c) {
         const BvhChild ref = emit(tree, node.children[c], bvh);

@@ -11,10 +11,12 @@
 namespace raystep {
 
 /// One inner node: the boxes of its two children, in float rounded outward (a box may grow by an
-/// ulp, never shrink, so no hit is lost), and where each child is.
+/// ulp, never shrink, so no hit is lost), and where each child is. planes[2 axis + side][c] is
+/// child c's minimum (side 0) or maximum (side 1) along the axis: a ray picks its near plane on
+/// each axis by the sign of its direction, without comparing, and finds both children's side by
+/// side, to test them together.
 struct alignas(64) BvhNode {
-    float low[2][3];
-    float high[2][3];
+    float planes[6][2];
     std::uint32_t child[2];  ///< an inner child's node index, or a leaf's first primitive slot
     std::uint32_t count[2];  ///< 0 for an inner child; a leaf's number of primitives
 };
