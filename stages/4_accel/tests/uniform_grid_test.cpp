@@ -1,0 +1,474 @@
+// Public tests for stage 4, the uniform grid. Run them with `ctest --preset release -L stage4`.
+//
+// A grid must give exactly closest_hit's answer: the same primitive and the same t, compared
+// with ==. Both call the same stage-3 tests; only the order differs.
+
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <random>
+
+#include "core/testing/catch.h"
+#include "stages/4_accel/uniform_grid.h"
+
+using namespace raystep;
+
+namespace {
+
+Vec3 random_point(std::mt19937_64& rng, double extent) {
+    std::uniform_real_distribution<double> u(-extent, extent);
+    return {u(rng), u(rng), u(rng)};
+}
+
+// n small random triangles, n / 4 spheres and a few large triangles across the whole scene, all in
+// [-5, 5]^3. The large ones lie in many cells: a ray meets them in one cell and hits them in
+// another.
+PrimitiveList random_scene(std::mt19937_64& rng, int n) {
+    PrimitiveList list;
+    std::uniform_real_distribution<double> size(0.05, 1.0);
+    for (int k = 0; k < n; ++k) {
+        const Vec3 c = random_point(rng, 4.0);
+        const double s = size(rng);
+        list.triangles.push_back({c + s * random_point(rng, 1.0), c + s * random_point(rng, 1.0),
+                                  c + s * random_point(rng, 1.0)});
+    }
+    for (int k = 0; k < 5; ++k) {
+        list.triangles.push_back(
+            {random_point(rng, 5.0), random_point(rng, 5.0), random_point(rng, 5.0)});
+    }
+    for (int k = 0; k < n / 4; ++k)
+        list.spheres.push_back({random_point(rng, 4.0), 0.5 * size(rng)});
+    return list;
+}
+
+// From outside the scene, aimed at a point in it.
+Ray ray_from_outside(std::mt19937_64& rng) {
+    const Vec3 origin = random_point(rng, 9.0);
+    return {origin, random_point(rng, 5.0) - origin};
+}
+
+// From inside the scene, in any direction.
+Ray ray_from_inside(std::mt19937_64& rng) {
+    return {random_point(rng, 4.5), random_point(rng, 1.0)};
+}
+
+// The grid's answer is closest_hit's, bit for bit.
+void check_same(const std::optional<PrimitiveHit>& got,
+                const std::optional<PrimitiveHit>& expected) {
+    REQUIRE(got.has_value() == expected.has_value());
+    if (!got) return;
+    CHECK(got->kind == expected->kind);
+    CHECK(got->index == expected->index);
+    CHECK(got->hit.t == expected->hit.t);
+}
+
+int primitive_count(const PrimitiveList& list) {
+    return static_cast<int>(list.spheres.size() + list.triangles.size());
+}
+
+}  // namespace
+
+TEST_CASE("grid_resolution: a cube with 9 primitives gets 3 x 3 x 3 cells", "[stage4]") {
+    // 3 cells per primitive, 27 in all: 3 per axis. Where the cube is and how big does not matter.
+    CHECK(grid_resolution({{0, 0, 0}, {1, 1, 1}}, 9) == glm::ivec3(3, 3, 3));
+    CHECK(grid_resolution({{2, 2, 2}, {4, 4, 4}}, 9) == glm::ivec3(3, 3, 3));
+    CHECK(grid_resolution({{-1e6, -1e6, -1e6}, {-0.5e6, -0.5e6, -0.5e6}}, 9) == glm::ivec3(3));
+}
+
+TEST_CASE(
+    "grid_resolution: a long box gets cells in proportion, as near cubes as whole numbers allow",
+    "[stage4]") {
+    // 4 x 1 x 1, 12 primitives: k = cbrt(36 / 4) = 2.08 cells per unit, so 8.3 x 2.08 x 2.08.
+    CHECK(grid_resolution({{0, 0, 0}, {4, 1, 1}}, 12) == glm::ivec3(8, 2, 2));
+    // 1 x 2 x 3, 16 primitives: k = cbrt(48 / 6) = 2 exactly.
+    CHECK(grid_resolution({{0, 0, 0}, {1, 2, 3}}, 16) == glm::ivec3(2, 4, 6));
+}
+
+TEST_CASE("grid_resolution: a flat box shares the cells among its long axes", "[stage4]") {
+    // 4 x 4 x 0, 12 primitives: 36 cells over the area, k = sqrt(36 / 16) = 1.5: 6 x 6 x 1.
+    CHECK(grid_resolution({{0, 0, 0}, {4, 4, 0}}, 12) == glm::ivec3(6, 6, 1));
+    CHECK(grid_resolution({{0, 0, 0}, {4, 0, 4}}, 12) == glm::ivec3(6, 1, 6));
+    // Nearly flat is flat: z is far too thin for a whole cell, so x and y share the 36. The cube
+    // formula alone would give k = cbrt(36 / 16e-9) = 1.3e3 and 256 x 256 x 1 cells.
+    CHECK(grid_resolution({{0, 0, 0}, {4, 4, 1e-9}}, 12) == glm::ivec3(6, 6, 1));
+    // A line: all 9 cells along it.
+    CHECK(grid_resolution({{0, 0, 0}, {4, 0, 0}}, 3) == glm::ivec3(9, 1, 1));
+    // 4 x 4 x 0.1 with 12: z would get 0.28 of a cell, so it is flat too.
+    CHECK(grid_resolution({{0, 0, 0}, {4, 4, 0.1}}, 12) == glm::ivec3(6, 6, 1));
+}
+
+TEST_CASE("grid_resolution: no primitives, one primitive, a point or an empty box get one cell",
+          "[stage4]") {
+    CHECK(grid_resolution({{0, 0, 0}, {1, 1, 1}}, 0) == glm::ivec3(1, 1, 1));
+    CHECK(grid_resolution({{0, 0, 0}, {1, 1, 1}}, 1) == glm::ivec3(1, 1, 1));  // cbrt(3) = 1.44
+    CHECK(grid_resolution({{1, 2, 3}, {1, 2, 3}}, 5) == glm::ivec3(1, 1, 1));
+    CHECK(grid_resolution(Aabb{}, 5) == glm::ivec3(1, 1, 1));
+}
+
+TEST_CASE("grid_resolution: at most 256 cells along an axis, however many primitives", "[stage4]") {
+    CHECK(grid_resolution({{0, 0, 0}, {1, 1, 1}}, 10'000'000) == glm::ivec3(256, 256, 256));
+    CHECK(grid_resolution({{0, 0, 0}, {1, 1, 1}}, std::numeric_limits<std::size_t>::max()) ==
+          glm::ivec3(256, 256, 256));
+    // 1000 x 1 x 1 with a million: k = cbrt(3e6 / 1000) = 14.4; x is capped, y and z are not.
+    CHECK(grid_resolution({{0, 0, 0}, {1000, 1, 1}}, 1'000'000) == glm::ivec3(256, 14, 14));
+}
+
+TEST_CASE("UniformGrid::resolution: grid_resolution of the primitives' bounds", "[stage4]") {
+    std::mt19937_64 rng(1);
+    const PrimitiveList list = random_scene(rng, 400);
+    Aabb bounds;
+    for (const Sphere& s : list.spheres)
+        bounds.add(bounds_of(s));
+    for (const Triangle& t : list.triangles)
+        bounds.add(bounds_of(t));
+    const glm::ivec3 expected =
+        grid_resolution(bounds, list.spheres.size() + list.triangles.size());
+    CHECK(UniformGrid(list).resolution() == expected);
+    CHECK(UniformGrid(PrimitiveList{}).resolution() == glm::ivec3(1, 1, 1));
+}
+
+TEST_CASE("UniformGrid::closest_hit: equals closest_hit on random scenes, from outside and inside",
+          "[stage4]") {
+    for (const int seed : {1, 2, 3}) {
+        std::mt19937_64 rng(static_cast<std::uint64_t>(seed));
+        const PrimitiveList list = random_scene(rng, 400);
+        const UniformGrid grid(list);
+        for (int k = 0; k < 1000; ++k) {
+            const Ray ray = k % 2 == 0 ? ray_from_outside(rng) : ray_from_inside(rng);
+            CAPTURE(seed, k);
+            check_same(grid.closest_hit(ray), closest_hit(ray, list));
+        }
+    }
+}
+
+TEST_CASE("UniformGrid::closest_hit: equals closest_hit on tiny, huge and far-off scenes",
+          "[stage4]") {
+    // The same scenes scaled by 1e-3 and 1e3 and moved 1e5 away: cell sizes, crossings and
+    // rounding all scale with them, and nothing may be tuned to scenes of size 10 at the origin.
+    for (const double scale : {1e-3, 1e3}) {
+        for (const double offset : {0.0, 1e5}) {
+            std::mt19937_64 rng(10);
+            PrimitiveList list = random_scene(rng, 300);
+            const Vec3 shift(offset, -offset, 0.5 * offset);
+            for (Sphere& s : list.spheres)
+                s = {shift + scale * s.center, scale * s.radius};
+            for (Triangle& t : list.triangles) {
+                t = {shift + scale * t.p0, shift + scale * t.p1, shift + scale * t.p2};
+            }
+            const UniformGrid grid(list);
+            for (int k = 0; k < 500; ++k) {
+                Ray ray = k % 2 == 0 ? ray_from_outside(rng) : ray_from_inside(rng);
+                ray.origin = shift + scale * ray.origin;
+                CAPTURE(scale, offset, k);
+                check_same(grid.closest_hit(ray), closest_hit(ray, list));
+            }
+        }
+    }
+}
+
+TEST_CASE("UniformGrid::closest_hit: axis-parallel rays and short rays", "[stage4]") {
+    std::mt19937_64 rng(4);
+    const PrimitiveList list = random_scene(rng, 300);
+    const UniformGrid grid(list);
+    for (int k = 0; k < 600; ++k) {
+        CAPTURE(k);
+        const Vec3 origin = random_point(rng, 6.0);
+        Vec3 axis(0.0);
+        axis[k % 3] = k % 2 == 0 ? 1.0 : -1.0;
+        const Ray axis_ray{origin, axis};
+        check_same(grid.closest_hit(axis_ray), closest_hit(axis_ray, list));
+        const Ray short_ray{origin, random_point(rng, 1.0), 0.0, 2.0};
+        check_same(grid.closest_hit(short_ray), closest_hit(short_ray, list));
+        const Ray late_ray{origin, random_point(rng, 1.0), 3.0};  // t_min past the origin
+        check_same(grid.closest_hit(late_ray), closest_hit(late_ray, list));
+    }
+}
+
+TEST_CASE("UniformGrid::closest_hit: rays that start on, run along or hit the planes between cells",
+          "[stage4]") {
+    // 20 triangles in [0, 4]^3, so 4 x 4 x 4 cells whose planes are at (or, with the grid's small
+    // growth of its box, a hair from) x, y, z = 0, 1, 2, 3, 4. On each plane x, y or z = 1, 2, 3:
+    // the square [1, 3]^2 of the other two coordinates, as two triangles, whose edges lie on
+    // planes between cells. Two small triangles at the corners stretch the bounds to [0, 4]^3.
+    PrimitiveList list;
+    for (int axis = 0; axis < 3; ++axis) {
+        for (int plane = 1; plane <= 3; ++plane) {
+            const auto at = [&](double u, double v) {
+                Vec3 p;
+                p[axis] = plane;
+                p[(axis + 1) % 3] = u;
+                p[(axis + 2) % 3] = v;
+                return p;
+            };
+            list.triangles.push_back({at(1, 1), at(3, 1), at(1, 3)});
+            list.triangles.push_back({at(3, 3), at(1, 3), at(3, 1)});
+        }
+    }
+    list.triangles.push_back({{0, 0, 0}, {0.5, 0, 0}, {0, 0.5, 0}});
+    list.triangles.push_back({{4, 4, 4}, {3.5, 4, 4}, {4, 3.5, 4}});
+    const UniformGrid grid(list);
+    REQUIRE(grid.resolution() == glm::ivec3(4, 4, 4));
+
+    // Origins on the planes (and off the grid, at -1 and 5), each coordinate nudged by -1, 0 or
+    // +1 ulp so that some land exactly on the grid's own planes, whatever its growth; directions
+    // along the axes (running inside a plane), along diagonals, and general ones.
+    const double values[] = {-1, 0, 1, 1.5, 2, 2.5, 3, 4, 5};
+    const Vec3 directions[] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},       {0, -1, 0},
+                               {0, 0, 1},  {0, 0, -1}, {1, 1, 0},       {0, -1, 1},
+                               {1, 0, -1}, {1, 1, 1},  {-1, 0.5, 0.25}, {0.3, -1, 0.7}};
+    std::mt19937_64 rng(5);
+    std::uniform_int_distribution<int> nudge(-1, 1);
+    const auto nudged = [&](double x) {
+        const int n = nudge(rng);
+        return n == 0 ? x : std::nextafter(x, n * std::numeric_limits<double>::infinity());
+    };
+    int hits = 0;
+    for (const double x : values) {
+        for (const double y : values) {
+            for (const double z : values) {
+                for (const Vec3& direction : directions) {
+                    const Ray ray{{nudged(x), nudged(y), nudged(z)}, direction};
+                    CAPTURE(ray.origin.x, ray.origin.y, ray.origin.z);
+                    CAPTURE(direction.x, direction.y, direction.z);
+                    const std::optional<PrimitiveHit> expected = closest_hit(ray, list);
+                    hits += expected.has_value();
+                    check_same(grid.closest_hit(ray), expected);
+                }
+            }
+        }
+    }
+    CHECK(hits > 1200);  // the loop compared hits, not only misses
+}
+
+TEST_CASE("UniformGrid::closest_hit: ties go to the primitive closest_hit picks", "[stage4]") {
+    // closest_hit keeps, of hits at the same t, the primitive listed first (spheres, then
+    // triangles, each in list order); the grid meets them in another order. Small spheres at the
+    // edges give the grid its cells.
+    PrimitiveList list;
+    for (const double z : {-3.0, -1.0, 1.0, 3.0}) {  // with the triangles: 4 x 4 x 4 cells
+        for (const double x : {-3.0, 3.0}) {
+            for (const double y : {-3.0, 3.0})
+                list.spheres.push_back({{x, y, z}, 0.1});
+        }
+    }
+    const Triangle t{{-2, -2, 0}, {2, -2, 0}, {0, 2, 0}};
+    list.triangles = {t, t, t};
+    const Ray down{{0, 0, 5}, {0, 0, -1}};
+    SECTION("three copies: the first") {
+        const UniformGrid grid(list);
+        REQUIRE(grid.resolution() == glm::ivec3(4, 4, 4));
+        for (int k = 0; k < 25; ++k) {
+            // Points well inside the triangle (at height y it spans |x| <= (2 - y) / 2), from
+            // its bottom edge to near its top vertex, through several cells
+            const double y = -1.8 + 0.6 * (k / 5);
+            const double x = (2 - y) / 2 * (-0.8 + 0.4 * (k % 5));
+            const Ray ray{{x, y, 5}, {0.01 * (k % 3), 0.01, -1}};
+            CAPTURE(k);
+            check_same(grid.closest_hit(ray), closest_hit(ray, list));
+            REQUIRE(grid.closest_hit(ray));
+            CHECK(grid.closest_hit(ray)->index == 0);
+        }
+    }
+    SECTION("a sphere touching at the same t: the sphere") {
+        // The sphere's t is exactly 5 when intersect_sphere rounds well (the reference's does);
+        // whatever it is, the grid must pick what closest_hit picks.
+        list.spheres.push_back({{0, 0, -1}, 1.0});
+        const UniformGrid grid(list);
+        check_same(grid.closest_hit(down), closest_hit(down, list));
+    }
+}
+
+TEST_CASE(
+    "UniformGrid::closest_hit: a tie met in a later cell still goes to the primitive listed first",
+    "[stage4]") {
+    // Triangle 1, large, and triangle 0, small, both in z = 0; spheres at the corners give the
+    // grid 5 x 5 x 1 cells, 2.44 wide. The ray comes down at a slant into cell x = 2, which holds
+    // triangle 1 but not triangle 0, and hits both at x = 2, in cell x = 3. The grid meets
+    // triangle 1 first; with the reference's triangle test both hits are at t = 4 exactly (from
+    // this ray, every triangle in z = 0 gives t = 4), and closest_hit keeps triangle 0.
+    PrimitiveList list;
+    for (const double z : {-1.5, 1.5}) {
+        for (const double x : {-6.0, 6.0}) {
+            for (const double y : {-6.0, 6.0})
+                list.spheres.push_back({{x, y, z}, 0.1});
+        }
+    }
+    list.triangles = {{{1.9, -0.1, 0}, {2.1, -0.1, 0}, {2, 0.1, 0}},
+                      {{-2, -2, 0}, {4, -2, 0}, {1, 4, 0}}};
+    const UniformGrid grid(list);
+    REQUIRE(grid.resolution() == glm::ivec3(5, 5, 1));
+    const Ray slant{{-1, 0, 4}, {0.75, 0, -1}};
+    check_same(grid.closest_hit(slant), closest_hit(slant, list));
+}
+
+TEST_CASE("UniformGrid: a large triangle across many cells is tested once per ray (mailboxing)",
+          "[stage4]") {
+    // The triangle covers the bottom of the grid, z = 0, so it is in every cell of the bottom
+    // layer; small spheres in the top corner give the grid 4 x 4 x 4 cells.
+    PrimitiveList list;
+    list.triangles.push_back({{0, 0, 0}, {10, 0, 0}, {0, 10, 0}});
+    for (int k = 0; k < 27; ++k) {
+        list.spheres.push_back(
+            {{9 + 0.4 * (k % 3), 9 + 0.4 * (k / 3 % 3), 9 + 0.4 * (k / 9)}, 0.1});
+    }
+    const UniformGrid grid(list);
+    SECTION("a ray above it, parallel, through the whole bottom layer") {
+        const Ray ray{{-1, 1, 0.5}, {1, 0, 0}};
+        TraversalStats stats;
+        CHECK_FALSE(grid.closest_hit(ray, &stats));
+        CHECK(stats.nodes >= 3);
+        CHECK(stats.primitive_tests == 1);
+    }
+    SECTION("a ray that meets it in the first cell and hits it in the last") {
+        // Into the bottom layer at x = 0, down to z = 0 at x = 9: the hit is 3 cells on.
+        const Ray ray{{-1, 1, 0.5}, {1, 0, -0.05}};
+        TraversalStats stats;
+        check_same(grid.closest_hit(ray, &stats), closest_hit(ray, list));
+        REQUIRE(grid.closest_hit(ray));
+        CHECK(stats.nodes >= 3);
+        CHECK(stats.primitive_tests == 1);
+    }
+    SECTION("random rays: no primitive is tested twice") {
+        std::mt19937_64 rng(6);
+        for (int k = 0; k < 500; ++k) {
+            const Vec3 origin = Vec3(5.0) + random_point(rng, 8.0);
+            const Ray ray{origin, Vec3(5.0) + random_point(rng, 5.0) - origin};
+            TraversalStats stats;
+            CAPTURE(k);
+            check_same(grid.closest_hit(ray, &stats), closest_hit(ray, list));
+            CHECK(stats.primitive_tests <= static_cast<std::uint64_t>(primitive_count(list)));
+        }
+    }
+}
+
+TEST_CASE("UniformGrid::closest_hit: empty, single, coincident, flat and lopsided scenes",
+          "[stage4]") {
+    std::mt19937_64 rng(7);
+    const auto check_rays = [&](const PrimitiveList& list) {
+        const UniformGrid grid(list);
+        for (int k = 0; k < 300; ++k) {
+            const Ray ray = k % 2 == 0 ? ray_from_outside(rng) : ray_from_inside(rng);
+            CAPTURE(k);
+            check_same(grid.closest_hit(ray), closest_hit(ray, list));
+        }
+    };
+    SECTION("no primitives") {
+        const UniformGrid grid(PrimitiveList{});
+        CHECK_FALSE(grid.closest_hit({{0, 0, 5}, {0, 0, -1}}));
+        CHECK_FALSE(grid.occluded({{0, 0, 5}, {0, 0, -1}}));
+    }
+    SECTION("one sphere, one triangle") {
+        PrimitiveList sphere;
+        sphere.spheres = {{{0.5, -0.5, 1}, 2.0}};
+        check_rays(sphere);
+        PrimitiveList triangle;
+        triangle.triangles = {{{-3, -3, 0}, {3, -3, 1}, {0, 3, -1}}};
+        check_rays(triangle);
+    }
+    SECTION("everything at one point") {
+        PrimitiveList stacked;
+        for (int k = 0; k < 50; ++k)
+            stacked.spheres.push_back({{1, 1, 1}, 0.5 + 0.05 * k});
+        check_rays(stacked);
+        PrimitiveList points;  // degenerate triangles: every test misses them
+        for (int k = 0; k < 50; ++k)
+            points.triangles.push_back({{1, 1, 1}, {1, 1, 1}, {1, 1, 1}});
+        check_rays(points);
+    }
+    SECTION("a flat scene: a 20 x 20 floor of triangles in z = 0") {
+        PrimitiveList floor;
+        for (int i = 0; i < 20; ++i) {
+            for (int j = 0; j < 20; ++j) {
+                const Vec3 a(i - 10, j - 10, 0), b(i - 9, j - 10, 0), c(i - 9, j - 9, 0),
+                    d(i - 10, j - 9, 0);
+                floor.triangles.push_back({a, b, c});
+                floor.triangles.push_back({a, c, d});
+            }
+        }
+        check_rays(floor);
+        const UniformGrid grid(floor);
+        CHECK(grid.resolution().z == 1);
+        for (int k = 0; k < 400; ++k) {  // straight down through edges and vertices
+            const Ray ray{{0.5 * (k % 40) - 10, 0.5 * (k / 20) - 10, 3}, {0, 0, -1}};
+            CAPTURE(k);
+            check_same(grid.closest_hit(ray), closest_hit(ray, floor));
+        }
+    }
+    SECTION("a huge sphere beside small triangles") {
+        PrimitiveList lopsided = random_scene(rng, 200);
+        lopsided.spheres.push_back({{0, 0, -1e4 - 6}, 1e4});
+        check_rays(lopsided);
+    }
+}
+
+TEST_CASE("UniformGrid: a zero direction, or a ray that misses the grid's box, visits no cell",
+          "[stage4]") {
+    std::mt19937_64 rng(8);
+    const PrimitiveList list = random_scene(rng, 100);
+    const UniformGrid grid(list);
+    TraversalStats stats;
+    CHECK_FALSE(grid.closest_hit({{0, 0, 0}, {0, 0, 0}}, &stats));
+    CHECK_FALSE(grid.occluded({{0, 0, 0}, {0, 0, 0}}, &stats));
+    CHECK_FALSE(grid.closest_hit({{0, 0, 100}, {0, 0, 1}}, &stats));  // pointing away
+    CHECK_FALSE(grid.closest_hit({{0, 100, 0}, {1, 0, 0}}, &stats));  // passing beside it
+    CHECK(stats.nodes == 0);
+    CHECK(stats.primitive_tests == 0);
+}
+
+TEST_CASE("UniformGrid::occluded: agrees with closest_hit, before, at and after the first hit",
+          "[stage4]") {
+    std::mt19937_64 rng(9);
+    const PrimitiveList list = random_scene(rng, 300);
+    const UniformGrid grid(list);
+    int hits = 0;
+    for (int k = 0; k < 1000; ++k) {
+        Ray ray = k % 2 == 0 ? ray_from_outside(rng) : ray_from_inside(rng);
+        CAPTURE(k);
+        const std::optional<PrimitiveHit> first = closest_hit(ray, list);
+        CHECK(grid.occluded(ray) == first.has_value());
+        if (!first) continue;
+        ++hits;
+        for (const double cut : {0.5, 1.0, 2.0}) {  // t_max = first t is still a hit: closed
+            CAPTURE(cut);
+            ray.t_max = cut * first->hit.t;
+            CHECK(grid.occluded(ray) == closest_hit(ray, list).has_value());
+        }
+    }
+    CHECK(hits > 200);
+}
+
+TEST_CASE("UniformGrid: a ray that misses everything visits cells but tests few primitives",
+          "[stage4]") {
+    // 125 spheres of radius 0.2 on the integer points of [0, 4]^3: 7 x 7 x 7 cells. The ray runs
+    // between the rows at y = z = 0.5, 0.7 from every centre, across the whole grid.
+    PrimitiveList lattice;
+    for (int k = 0; k < 125; ++k)
+        lattice.spheres.push_back({{k % 5, k / 5 % 5, k / 25}, 0.2});
+    const UniformGrid grid(lattice);
+    TraversalStats stats;
+    CHECK_FALSE(grid.closest_hit({{-1, 0.5, 0.5}, {1, 0, 0}}, &stats));
+    CHECK(stats.nodes >= 5);
+    CHECK(stats.primitive_tests <= 125 / 10);  // brute force tests all 125
+    // The walk ends where the ray does: t_max = 1.5 ends it at x = 0.5, in the second cell.
+    TraversalStats short_ray;
+    CHECK_FALSE(grid.closest_hit({{-1, 0.5, 0.5}, {1, 0, 0}, 0.0, 1.5}, &short_ray));
+    CHECK(short_ray.nodes <= 3);
+}
+
+TEST_CASE("UniformGrid: a ray through an empty region tests no primitive", "[stage4]") {
+    // Two walls of spheres, at x = 0 and x = 10; the ray crosses the gap between them.
+    PrimitiveList walls;
+    for (int k = 0; k < 25; ++k) {
+        walls.spheres.push_back({{0, k % 5, k / 5}, 0.3});
+        walls.spheres.push_back({{10, k % 5, k / 5}, 0.3});
+    }
+    const UniformGrid grid(walls);
+    TraversalStats stats;
+    CHECK_FALSE(grid.closest_hit({{5, -2, 2}, {0, 1, 0}}, &stats));
+    CHECK_FALSE(grid.occluded({{5, 2, -2}, {0, 0, 1}}, &stats));
+    // From below, above the left wall: it enters the grid at x = 2.9, in the gap, and leaves
+    // through the top at x = 4.1. The walk starts where the ray enters, not above its origin.
+    CHECK_FALSE(grid.closest_hit({{0, 2.5, -12}, {1, 0, 4}}, &stats));
+    CHECK(stats.nodes > 0);
+    CHECK(stats.primitive_tests == 0);
+}
