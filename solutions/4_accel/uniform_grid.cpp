@@ -30,9 +30,6 @@ struct UniformGrid::Impl {
 
 namespace {
 
-// The most cells along one axis. 256^3 cells, 16.7 million, already take 134 MB of offsets, and
-// a scene that needs finer cells in one place than in another wants a BVH anyway.
-constexpr double kMaxCellsPerAxis = 256.0;
 
 // How far beyond its box a primitive is entered in cells. Two roundings must not lose a hit that
 // closest_hit finds:
@@ -157,7 +154,7 @@ glm::ivec3 grid_resolution(const Aabb& bounds, std::size_t n) {
     for (int axis = 0; axis < 3; ++axis) {
         if (!shares[axis]) continue;
         const double exact = std::exp(std::log(extent[axis]) + log_k);
-        cells[axis] = static_cast<int>(std::clamp(std::round(exact), 1.0, kMaxCellsPerAxis));
+        cells[axis] = static_cast<int>(std::clamp(std::round(exact), 1.0, static_cast<double>(kMaxCellsPerAxis)));
     }
     return cells;
 }

@@ -24,8 +24,8 @@ public:
     UniformGrid& operator=(UniformGrid&&) noexcept;
 
     /// Exactly what closest_hit returns for the same spheres and triangles (same primitive, same
-    /// t, ties broken by comes_before). A primitive that spans several cells is found once and
-    /// reported in the cell where its hit is; the walk stops once no nearer cell is left.
+    /// t, ties broken by comes_before). A primitive that spans several cells is tested once; the
+    /// walk stops once no cell that could hold a nearer hit is left.
     std::optional<PrimitiveHit> closest_hit(const Ray& ray, TraversalStats* stats = nullptr) const;
 
     /// True when any sphere or triangle has a hit in [ray.t_min, ray.t_max].
@@ -40,12 +40,16 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
-/// The cells along each axis for n primitives in a box: about `kCellsPerPrimitive` n cells in
-/// all, shaped like the box (cubes as near as whole numbers allow), at least 1 and at most 256
-/// per axis. docs/stage4.md, "Grid resolution", says where the numbers come from.
-glm::ivec3 grid_resolution(const Aabb& bounds, std::size_t n);
-
 /// Cells per primitive in a uniform grid.
 inline constexpr double kCellsPerPrimitive = 3.0;
+
+/// The most cells along one axis: 256^3 cells already take 134 MB of cell offsets.
+inline constexpr int kMaxCellsPerAxis = 256;
+
+/// The cells along each axis for n primitives in a box: about kCellsPerPrimitive n cells in all,
+/// shaped like the box (cubes as near as whole numbers allow), at least 1 and at most
+/// kMaxCellsPerAxis per axis; an axis too thin for a whole cell gets one, and the others share
+/// the rest. docs/stage4.md, "Grid resolution", says where the numbers come from.
+glm::ivec3 grid_resolution(const Aabb& bounds, std::size_t n);
 
 }  // namespace raystep

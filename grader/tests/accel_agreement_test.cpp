@@ -1,0 +1,127 @@
+// The reference acceleration structures against brute force: on every stage-3 family, on a closed
+// mesh far from the origin, and (node_test.h) the two builds of the BVH's inner loop against each
+// other. Each must give exactly closest_hit's answer: same primitive, same t, compared with ==.
+
+#include <random>
+#include <cstring>
+#include <string>
+
+#include <glm/ext/matrix_transform.hpp>
+
+#include "core/testing/catch.h"
+#include "grader/families/closed_mesh.h"
+#include "grader/families/stage3_families.h"
+#include "solutions/4_accel/node_test.h"
+#include "stages/4_accel/bvh.h"
+#include "stages/4_accel/uniform_grid.h"
+
+using namespace raystep;
+
+namespace {
+
+// The case's spheres and triangles (acceleration structures leave planes out).
+PrimitiveList bounded_primitives(const RayCase& ray_case) {
+    PrimitiveList list;
+    for (const CasePrimitive& primitive : ray_case.primitives) {
+        if (const auto* sphere = std::get_if<Sphere>(&primitive.shape)) list.spheres.push_back(*sphere);
+        if (const auto* triangle = std::get_if<Triangle>(&primitive.shape)) {
+            list.triangles.push_back(*triangle);
+        }
+    }
+    return list;
+}
+
+bool same(const std::optional<PrimitiveHit>& a, const std::optional<PrimitiveHit>& b) {
+    if (a.has_value() != b.has_value()) return false;
+    return !a || (a->kind == b->kind && a->index == b->index && a->hit.t == b->hit.t);
+}
+
+}  // namespace
+
+TEST_CASE("accel: the BVHs and the grid give closest_hit's answer on every stage-3 family", "[accel]") {
+    for (const Stage3Family& family : stage3_families()) {
+        const CaseFamily cases = generate_cases(family, 77, 300);
+        for (const RayCase& ray_case : cases.cases) {
+            const PrimitiveList list = bounded_primitives(ray_case);
+            if (list.spheres.empty() && list.triangles.empty()) continue;
+            CAPTURE(family.name, ray_case.index);
+            const std::optional<PrimitiveHit> expected = closest_hit(ray_case.ray, list);
+            CHECK(same(Bvh(list, BvhSplit::sah).closest_hit(ray_case.ray), expected));
+            CHECK(same(Bvh(list, BvhSplit::median).closest_hit(ray_case.ray), expected));
+            CHECK(same(UniformGrid(list).closest_hit(ray_case.ray), expected));
+        }
+    }
+}
+
+TEST_CASE("accel: rays through the edges and vertices of a closed mesh 1e5 away", "[accel]") {
+    // An icosphere of 1280 triangles, scaled, turned and placed 3e5 from the origin, as one
+    // structure; rays from around it through its edges and vertices.
+    const ClosedMesh mesh = icosphere(3);
+    const glm::dmat4 place = glm::rotate(glm::translate(glm::dmat4(1.0), Vec3(3e5, -1e5, 2e5)),
+                                         0.7, Vec3(1, 2, 3)) *
+                             glm::scale(glm::dmat4(1.0), Vec3(2.5));
+    std::vector<Vec3> vertices;
+    for (const Vec3& v : mesh.vertices) vertices.push_back(Vec3(place * glm::dvec4(v, 1.0)));
+    PrimitiveList list;
+    for (const auto& [a, b, c] : mesh.faces) list.triangles.push_back({vertices[a], vertices[b], vertices[c]});
+    const Vec3 centre(place * glm::dvec4(0, 0, 0, 1));
+
+    const Bvh sah(list, BvhSplit::sah);
+    const Bvh median(list, BvhSplit::median);
+    const UniformGrid grid(list);
+    std::mt19937_64 rng(78);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    std::uniform_real_distribution<double> along(0.0, 1.0);
+    int hits = 0;
+    for (int k = 0; k < 4000; ++k) {
+        const ClosedMesh::Edge& edge = mesh.edges[static_cast<std::size_t>(k) % mesh.edges.size()];
+        const Vec3 target = k % 4 == 0 ? vertices[edge.a]
+                                       : vertices[edge.a] + along(rng) * (vertices[edge.b] - vertices[edge.a]);
+        const Vec3 origin = centre + 10.0 * Vec3(u(rng), u(rng), u(rng));
+        const Ray ray{origin, target - origin};
+        CAPTURE(k);
+        const std::optional<PrimitiveHit> expected = closest_hit(ray, list);
+        hits += expected.has_value();
+        CHECK(same(sah.closest_hit(ray), expected));
+        CHECK(same(median.closest_hit(ray), expected));
+        CHECK(same(grid.closest_hit(ray), expected));
+        CHECK(sah.occluded(ray) == expected.has_value());
+        CHECK(grid.occluded(ray) == expected.has_value());
+    }
+    CHECK(hits > 3000);
+}
+
+#ifdef RAYSTEP_BVH_SSE2
+TEST_CASE("accel: the BVH's SSE2 node test computes what the plain one does, bit for bit", "[accel]") {
+    std::mt19937_64 rng(79);
+    std::uniform_real_distribution<float> coordinate(-10.0f, 10.0f);
+    std::uniform_real_distribution<double> direction(-1.0, 1.0);
+    for (int k = 0; k < 20000; ++k) {
+        BvhNode node{};
+        for (int c = 0; c < 2; ++c) {
+            for (int axis = 0; axis < 3; ++axis) {
+                const float a = coordinate(rng);
+                const float b = coordinate(rng);
+                node.planes[2 * axis][c] = std::min(a, b);
+                node.planes[2 * axis + 1][c] = std::max(a, b);
+            }
+        }
+        Vec3 d{direction(rng), direction(rng), direction(rng)};
+        Vec3 o{coordinate(rng), coordinate(rng), coordinate(rng)};
+        // Zero components, some with the origin exactly on a plane (0 * inf = NaN).
+        if (k % 3 == 0) d[k % 3] = 0.0;
+        if (k % 6 == 0) o[k % 3] = node.planes[k % 2][0];
+        const NodeRay ray(Ray{o, d});
+        float entry_scalar[2];
+        float entry_sse[2];
+        const float limit = k % 5 == 0 ? 3.0f : std::numeric_limits<float>::infinity();
+        const int hits_scalar = ChildTestScalar(ray).enter_children(node, limit, entry_scalar);
+        const int hits_sse = ChildTestSse(ray).enter_children(node, limit, entry_sse);
+        CAPTURE(k);
+        REQUIRE(hits_scalar == hits_sse);
+        for (int c = 0; c < 2; ++c) {
+            if (hits_scalar & (1 << c)) CHECK(std::memcmp(&entry_scalar[c], &entry_sse[c], sizeof(float)) == 0);
+        }
+    }
+}
+#endif
