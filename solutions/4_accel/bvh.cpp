@@ -21,14 +21,16 @@ namespace {
 constexpr double kPruneSlack = 0x1p-40;
 
 // The far end of the search: the best hit so far (or t_max), widened by the slack.
-double search_limit(double t) { return t + kPruneSlack * std::abs(t); }
+double search_limit(double t) {
+    return t + kPruneSlack * std::abs(t);
+}
 
 // The queries share one walk: nearer children first, a stack of the others, skipping any whose
 // entry lies beyond `bound`, the float search limit. `Visit` tests a leaf's primitives, may lower
 // the bound (after a nearer hit), and returns true to stop.
 //
-// The node test (node_test.h) takes both children at once, and the stack is a plain array, never
-// initialized: this loop is where the time goes (docs/stage4.md, "Measurements").
+// The node test (node_test.h) takes all four children at once, and the stack is a plain array,
+// never initialized: this loop is where the time goes (docs/stage4.md, "Measurements").
 template <class Visit>
 void walk(const Bvh::Impl& bvh, const Ray& ray, TraversalStats* stats, Visit visit) {
     if (bvh.slots.empty()) return;
@@ -46,7 +48,8 @@ void walk(const Bvh::Impl& bvh, const Ray& ray, TraversalStats* stats, Visit vis
     const ChildTest child_test(node_ray);
     float bound = rounded_up(search_limit(ray.t_max));
 
-    // The node at hand stays in `current`; only the farther child of two waits on the stack.
+    // The node at hand stays in `current`; the other children it enters wait on the stack,
+    // farthest deepest, so the nearest comes next.
     struct Pending {
         std::uint32_t index;
         std::uint32_t count;  ///< 0: an inner node
@@ -68,25 +71,33 @@ void walk(const Bvh::Impl& bvh, const Ray& ray, TraversalStats* stats, Visit vis
     for (;;) {
         if (current.count > 0) {
             if (visit(current.index, current.count, bound)) break;
-        } else {
-            ++nodes;
-            const BvhNode& node = bvh.nodes[current.index];
-            float entry[2];
-            const int hits = child_test.enter_children(node, bound, entry);
-            if (hits == 3) {
-                const int near = entry[0] <= entry[1] ? 0 : 1;
-                const int far = 1 - near;
-                stack[top++] = {node.child[far], node.count[far], entry[far]};
-                current = {node.child[near], node.count[near], entry[near]};
-                continue;
-            }
-            if (hits != 0) {
-                const int only = hits == 1 ? 0 : 1;
-                current = {node.child[only], node.count[only], entry[only]};
-                continue;
-            }
+            if (!next()) break;
+            continue;
         }
-        if (!next()) break;
+        ++nodes;
+        const BvhNode& node = bvh.nodes[current.index];
+        float entry[BvhNode::kWidth];
+        int hits = child_test.enter_children(node, bound, entry);
+        if (hits == 0) {
+            if (!next()) break;
+            continue;
+        }
+        // The children entered, sorted by entry, farthest first (at most four: insertion).
+        Pending entered[BvhNode::kWidth];
+        int n = 0;
+        for (int c = 0; c < BvhNode::kWidth; ++c, hits >>= 1) {
+            if ((hits & 1) == 0) continue;
+            const Pending child{node.child[c], node.count[c], entry[c]};
+            int k = n++;
+            while (k > 0 && entered[k - 1].enter < child.enter) {
+                entered[k] = entered[k - 1];
+                --k;
+            }
+            entered[k] = child;
+        }
+        for (int k = 0; k < n - 1; ++k)
+            stack[top++] = entered[k];
+        current = entered[n - 1];
     }
     if (stats) stats->nodes += nodes;
 }
@@ -150,6 +161,8 @@ bool Bvh::occluded(const Ray& ray, TraversalStats* stats) const {
     return found;
 }
 
-std::size_t Bvh::node_count() const { return impl_->nodes.size(); }
+std::size_t Bvh::node_count() const {
+    return impl_->nodes.size();
+}
 
 }  // namespace raystep

@@ -1,5 +1,6 @@
 // Stage 4 reference solution: building the BVH, top down, with the binned surface area heuristic
-// (Wald 2007, "On fast construction of SAH-based bounding volume hierarchies") or at the median.
+// (Wald 2007, "On fast construction of SAH-based bounding volume hierarchies") or at the median;
+// then collapsing the binary tree to four children per node.
 
 #include <algorithm>
 #include <array>
@@ -13,7 +14,7 @@ namespace raystep {
 namespace {
 
 // The SAH's cost model: visiting a node costs 1, testing a primitive kIntersectionCost. Tests are
-// dearer than box checks (a double-precision triangle test against two boxes in one cache line),
+// dearer than box checks (a double-precision triangle test against four float boxes in one node),
 // which favours smaller leaves.
 constexpr double kIntersectionCost = 2.0;
 constexpr int kBins = 16;
@@ -93,7 +94,7 @@ Split best_sah_split(const std::vector<BuildPrimitive>& primitives, std::size_t 
 }
 
 class BvhBuilder {
-public:
+  public:
     BvhBuilder(std::vector<BuildPrimitive> primitives, BvhSplit split)
         : primitives_(std::move(primitives)), split_(split) {}
 
@@ -106,7 +107,7 @@ public:
 
     const std::vector<BuildPrimitive>& primitives() const { return primitives_; }
 
-private:
+  private:
     int build_node(std::size_t begin, std::size_t end, int depth) {
         const int index = static_cast<int>(nodes_.size());
         nodes_.push_back({});
@@ -134,7 +135,8 @@ private:
                          int depth) {
         const std::size_t count = end - begin;
         const Vec3 extent = centroids.extent();
-        const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+        const int axis =
+            extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
 
         // All centroids at one point: no plane separates them, so split by order, and only when
         // the leaf would be too big.
@@ -147,7 +149,8 @@ private:
         const double leaf_cost = kIntersectionCost * static_cast<double>(count);
         if (split.axis < 0 || (split.cost >= leaf_cost && count <= kMaxLeafSize)) return begin;
         const auto middle = std::partition(
-            primitives_.begin() + static_cast<long>(begin), primitives_.begin() + static_cast<long>(end),
+            primitives_.begin() + static_cast<long>(begin),
+            primitives_.begin() + static_cast<long>(end),
             [&split](const BuildPrimitive& p) { return p.centroid[split.axis] < split.position; });
         const auto at = static_cast<std::size_t>(middle - primitives_.begin());
         // Rounding can put a centroid on the other side of the plane than its bin: never leave a
@@ -190,20 +193,49 @@ void store_box(const Aabb& box, BvhNode& node, int c) {
     }
 }
 
-// Writes the build tree as packed nodes, depth first; returns how the parent refers to it.
+// Up to four descendants of a binary inner node to become one wide node's children: open the
+// child with the largest surface area (the one a random ray most likely enters) until there are
+// four, or only leaves are left.
+std::vector<int> wide_children(const std::vector<BuildNode>& tree, int index) {
+    const auto at = [&tree](int k) -> const BuildNode& {
+        return tree[static_cast<std::size_t>(k)];
+    };
+    std::vector<int> children = {at(index).children[0], at(index).children[1]};
+    while (children.size() < BvhNode::kWidth) {
+        auto largest = children.end();
+        double largest_area = -1.0;
+        for (auto child = children.begin(); child != children.end(); ++child) {
+            const BuildNode& candidate = at(*child);
+            if (candidate.children[0] >= 0 && candidate.box.surface_area() > largest_area) {
+                largest = child;
+                largest_area = candidate.box.surface_area();
+            }
+        }
+        if (largest == children.end()) break;
+        const BuildNode& opened = at(*largest);
+        *largest = opened.children[0];
+        children.push_back(opened.children[1]);
+    }
+    return children;
+}
+
+// Writes the build tree as wide nodes, depth first; returns how the parent refers to it.
 BvhChild emit(const std::vector<BuildNode>& tree, int index, Bvh::Impl& bvh) {
     const BuildNode& node = tree[static_cast<std::size_t>(index)];
     if (node.children[0] < 0) {
-        return {static_cast<std::uint32_t>(node.begin), static_cast<std::uint32_t>(node.end - node.begin)};
+        return {static_cast<std::uint32_t>(node.begin),
+                static_cast<std::uint32_t>(node.end - node.begin)};
     }
+    const std::vector<int> children = wide_children(tree, index);
     const std::size_t packed = bvh.nodes.size();
     bvh.nodes.push_back({});
-    for (int c = 0; c < 2; ++c) {
-        const BuildNode& child = tree[static_cast<std::size_t>(node.children[c])];
-        store_box(child.box, bvh.nodes[packed], c);
+    for (std::size_t c = 0; c < BvhNode::kWidth; ++c) {
+        const Aabb box =
+            c < children.size() ? tree[static_cast<std::size_t>(children[c])].box : Aabb{};
+        store_box(box, bvh.nodes[packed], static_cast<int>(c));
     }
-    for (int c = 0; c < 2; ++c) {
-        const BvhChild ref = emit(tree, node.children[c], bvh);
+    for (std::size_t c = 0; c < children.size(); ++c) {
+        const BvhChild ref = emit(tree, children[c], bvh);
         bvh.nodes[packed].child[c] = ref.index;
         bvh.nodes[packed].count[c] = ref.count;
     }
@@ -236,7 +268,8 @@ void build_bvh(Bvh::Impl& bvh, const PrimitiveList& primitives, BvhSplit split) 
     for (std::size_t slot = 0; slot < ordered.size(); ++slot) {
         const std::uint32_t id = ordered[slot].id;
         bvh.slots[slot] = id;
-        if (id >= bvh.sphere_count) bvh.slot_triangles[slot] = primitives.triangles[id - bvh.sphere_count];
+        if (id >= bvh.sphere_count)
+            bvh.slot_triangles[slot] = primitives.triangles[id - bvh.sphere_count];
     }
     bvh.nodes.clear();
     if (tree.empty()) return;

@@ -1,7 +1,9 @@
 #pragma once
 
-// The reference BVH's memory layout: a binary tree stored depth-first, each node holding its two
-// children's boxes so that one 64-byte cache line decides which children a ray enters.
+// The reference BVH's memory layout. The tree is built binary, as the lecture builds it, then
+// collapsed to four children per node: a ray then visits about half as many nodes, and every
+// visit is a dependent memory read and a branch the processor cannot predict, which is what
+// single-ray traversal waits on (docs/stage4.md, "Measurements").
 
 #include <cstdint>
 #include <vector>
@@ -10,17 +12,19 @@
 
 namespace raystep {
 
-/// One inner node: the boxes of its two children, in float rounded outward (a box may grow by an
-/// ulp, never shrink, so no hit is lost), and where each child is. planes[2 axis + side][c] is
-/// child c's minimum (side 0) or maximum (side 1) along the axis: a ray picks its near plane on
-/// each axis by the sign of its direction, without comparing, and finds both children's side by
-/// side, to test them together.
+/// An inner node: the boxes of its four children, in float rounded outward (a box may grow by
+/// an ulp, never shrink, so no hit is lost), and where each child is. planes[2 axis + side][c]
+/// is child c's minimum (side 0) or maximum (side 1) along the axis: a ray picks its near plane
+/// on each axis by the sign of its direction, without comparing, and reads the four children's
+/// side by side, to test them together. An unused child has the empty box (min +inf, max -inf),
+/// which no ray enters.
 struct alignas(64) BvhNode {
-    float planes[6][2];
-    std::uint32_t child[2];  ///< an inner child's node index, or a leaf's first primitive slot
-    std::uint32_t count[2];  ///< 0 for an inner child; a leaf's number of primitives
+    static constexpr int kWidth = 4;
+    float planes[6][kWidth];
+    std::uint32_t child[kWidth];  ///< an inner child's node index, or a leaf's first slot
+    std::uint32_t count[kWidth];  ///< 0 for an inner child; a leaf's number of primitives
 };
-static_assert(sizeof(BvhNode) == 64, "one node, one cache line");
+static_assert(sizeof(BvhNode) == 128, "one node, two cache lines");
 
 /// A child of a node, or the root: an inner node or a range of leaf slots.
 struct BvhChild {
@@ -42,9 +46,9 @@ struct Bvh::Impl {
     std::uint32_t sphere_count = 0;
 };
 
-/// The deepest tree build_bvh makes is 97 levels (bvh_build.cpp, kSahDepth): a traversal keeps
-/// at most one pending node per level.
-inline constexpr int kBvhStackSize = 128;
+/// The deepest binary tree build_bvh makes is 97 levels (bvh_build.cpp, kSahDepth); collapsing
+/// keeps depth no greater, and a traversal keeps at most three pending nodes per level.
+inline constexpr int kBvhStackSize = 3 * 97 + 1;
 
 /// Builds the tree over the primitives with the given split rule.
 void build_bvh(Bvh::Impl& bvh, const PrimitiveList& primitives, BvhSplit split);
