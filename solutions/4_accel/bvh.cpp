@@ -77,27 +77,25 @@ void walk(const Bvh::Impl& bvh, const Ray& ray, TraversalStats* stats, Visit vis
         ++nodes;
         const BvhNode& node = bvh.nodes[current.index];
         float entry[BvhNode::kWidth];
-        int hits = child_test.enter_children(node, bound, entry);
+        const int hits = child_test.enter_children(node, bound, entry);
         if (hits == 0) {
             if (!next()) break;
             continue;
         }
-        // The children entered, sorted by entry, farthest first (at most four: insertion).
-        Pending entered[BvhNode::kWidth];
-        int n = 0;
-        for (int c = 0; c < BvhNode::kWidth; ++c, hits >>= 1) {
-            if ((hits & 1) == 0) continue;
+        // The children entered go on the stack sorted by entry, farthest deepest (insertion
+        // sort of at most four), and the nearest comes straight back off it.
+        const int base = top;
+        for (int c = 0; c < BvhNode::kWidth; ++c) {
+            if ((hits >> c & 1) == 0) continue;
             const Pending child{node.child[c], node.count[c], entry[c]};
-            int k = n++;
-            while (k > 0 && entered[k - 1].enter < child.enter) {
-                entered[k] = entered[k - 1];
+            int k = top++;
+            while (k > base && stack[k - 1].enter < child.enter) {
+                stack[k] = stack[k - 1];
                 --k;
             }
-            entered[k] = child;
+            stack[k] = child;
         }
-        for (int k = 0; k < n - 1; ++k)
-            stack[top++] = entered[k];
-        current = entered[n - 1];
+        current = stack[--top];
     }
     if (stats) stats->nodes += nodes;
 }
