@@ -10,6 +10,8 @@ packages=(
     libglm-dev catch2 libopenimageio-dev openimageio-tools libcli11-dev libtinyobjloader-dev
     # the grader's exact oracle
     libcgal-dev libgmp-dev libmpfr-dev
+    # raystep-reference bench: the Embree baseline, and the bunny mesh (CGAL's demo data)
+    libembree-dev libcgal-demo
 )
 
 if ! command -v apt-get >/dev/null || ! command -v dpkg-query >/dev/null; then

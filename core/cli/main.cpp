@@ -3,6 +3,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "core/cli/bench_command.h"
 #include "core/cli/check_command.h"
 #include "core/cli/info_command.h"
 #include "core/cli/render_command.h"
@@ -21,10 +22,12 @@ int main(int argc, char** argv) {
     InfoArguments info;
     TraceArguments trace;
     CheckArguments check;
+    BenchArguments bench;
     CLI::App* render_command = add_render_command(app, render);
     CLI::App* info_command = add_info_command(app, info);
     CLI::App* trace_command = add_trace_command(app, trace);
     CLI::App* check_command = add_check_command(app, check);
+    CLI::App* bench_command = add_bench_command(app, bench);
 
     if (argc == 1) {
         std::fputs(app.help().c_str(), stderr);
@@ -42,6 +45,7 @@ int main(int argc, char** argv) {
         if (info_command->parsed()) return run_info(info);
         if (trace_command->parsed()) return run_trace(trace);
         if (check_command->parsed()) return run_check(check);
+        if (bench_command->parsed()) return run_bench(bench);
     } catch (const NotImplemented& stub) {
         std::fprintf(stderr, "raystep: %s\n", stub.what());
     } catch (const InputError& error) {

@@ -1,0 +1,30 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace raystep {
+
+/// `raystep bench [--workload NAME]... [--growth] [--threshold] [--threads N] [--quick]`
+struct BenchArguments {
+    std::vector<std::string> workloads;  ///< scenes or workloads; none: every one
+    bool growth = false;                 ///< the growth table
+    bool threshold = false;              ///< where a BVH starts to pay
+    int threads = 0;     ///< the all-threads columns' threads; 0: every hardware thread
+    bool quick = false;  ///< an eighth of the rays, for smoke tests
+};
+
+/// Adds the `bench` subcommand to `app`; parsing fills `arguments`. An unknown workload or a
+/// thread count out of range is a command-line error (exit 2).
+CLI::App* add_bench_command(CLI::App& app, BenchArguments& arguments);
+
+/// Measures our acceleration structures, and any registered baseline (Embree in
+/// raystep-reference), and prints a table per workload: docs/stage4.md, "raystep bench". Without
+/// --workload, --growth or --threshold, runs them all. A structure that is a stub or fails gets
+/// its reason in its row and the others go on. Exit code 0; 1 when a cross-check found two
+/// structures that return different hits.
+int run_bench(const BenchArguments& arguments);
+
+}  // namespace raystep
