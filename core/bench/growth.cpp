@@ -89,11 +89,12 @@ std::string growth_table(const std::vector<GrowthRow>& rows) {
         table.add_row(cells);
     }
 
-    std::string text = table.text();
+    // A blank line first: Markdown would read a line right under a table as one more row
+    std::string text = table.text() + (notes.empty() && failures.empty() ? "" : "\n");
     for (const std::string& note : notes)
-        text += note + "\n";
+        text += "- " + note + "\n";
     for (const std::string& failure : failures)
-        text += failure + "\n";
+        text += "- " + failure + "\n";
     return text;
 }
 

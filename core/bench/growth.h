@@ -29,7 +29,8 @@ std::vector<GrowthRow> measure_growth(const std::vector<BenchCandidate>& candida
                                       std::size_t rays, const MeasureOptions& options);
 
 /// The table: a row per mesh, and for each structure its build ms and Mrays/s on one thread;
-/// "-" where a structure was skipped. Lines after it name the structures that failed, and why.
+/// "-" where a structure was skipped. A list after it says where a structure ran on a subsample
+/// of the rays, and which structures failed, and why.
 std::string growth_table(const std::vector<GrowthRow>& rows);
 
 }  // namespace raystep

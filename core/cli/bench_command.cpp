@@ -140,14 +140,14 @@ bool run_scene(const std::string& name, const BenchArguments& arguments,
                     ray_sets[k].description.c_str(),
                     workload_table(measurements, k, options.threads).c_str());
         for (const std::string& note : workload_notes(measurements, k, ray_sets[k].rays.size())) {
-            std::printf("%s\n", note.c_str());
+            std::printf("- %s\n", note.c_str());
             if (note.rfind("WARNING", 0) == 0) agreed = false;
         }
     }
     const std::vector<std::string> bar = speed_bar_lines(name, measurements, ray_sets);
     if (!bar.empty()) std::printf("\n");
     for (const std::string& line : bar)
-        std::printf("%s\n", line.c_str());
+        std::printf("- %s\n", line.c_str());
     return agreed;
 }
 

@@ -137,6 +137,20 @@ TEST_CASE("growth_table: build ms and Mrays/s per structure, '-' where skipped",
           "    - |");
 }
 
+TEST_CASE("growth_table: a stub's cells read '-' and its message follows the table", "[bench]") {
+    StructureMeasurement stub;
+    stub.name = "grid";
+    stub.failure = "not implemented: stage 4: UniformGrid";
+    const GrowthRow small{1024, {stub}};
+    const GrowthRow large{4096, {stub}};
+    const std::vector<std::string> lines = lines_of(growth_table({small, large}));
+    REQUIRE(lines.size() == 6);
+    CHECK(lines[3] == "| 4,096     |             - |            - |");
+    // A blank line, or Markdown would read the message as one more row
+    CHECK(lines[4].empty());
+    CHECK(lines[5] == "- grid: not implemented: stage 4: UniformGrid");
+}
+
 TEST_CASE("threshold_report: the table and the n from which the BVH pays", "[bench]") {
     ThresholdCurve curve;
     curve.kind = "spheres";
