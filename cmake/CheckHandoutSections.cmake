@@ -1,6 +1,6 @@
 # Every stub names a handout section: RAYSTEP_TODO(N, "function", "Section") sends the student to
-# docs/stageN.md, section "Section". This check fails when a stub names a section that the
-# handout does not have as a heading. Run by ctest: cmake -DROOT=<repo> -P CheckHandoutSections.cmake
+# docs/stageN.md, section "Section". This check fails when a stub, or any comment or handout that
+# writes docs/stageN.md, "Section", names a section that the handout does not have as a heading. Run by ctest: cmake -DROOT=<repo> -P CheckHandoutSections.cmake
 file(GLOB stubs ${ROOT}/stages/*/*.cpp)
 set(problems "")
 set(count 0)
@@ -32,7 +32,35 @@ endforeach()
 if(count EQUAL 0)
     message(FATAL_ERROR "no RAYSTEP_TODO found under ${ROOT}/stages: the check would prove nothing")
 endif()
+
+# Code and handouts point at sections too, as docs/stageN.md, "Section": each must exist.
+file(GLOB_RECURSE sources ${ROOT}/core/*.h ${ROOT}/core/*.cpp ${ROOT}/stages/*.h ${ROOT}/stages/*.cpp
+     ${ROOT}/solutions/*.h ${ROOT}/solutions/*.cpp ${ROOT}/grader/*.h ${ROOT}/grader/*.cpp
+     ${ROOT}/docs/*.md)
+set(references 0)
+foreach(source IN LISTS sources)
+    file(STRINGS ${source} lines REGEX "docs/stage[0-9]+\\.md, \"[^\"]+\"")
+    foreach(line IN LISTS lines)
+        string(REGEX MATCHALL "docs/stage[0-9]+\\.md, \"[^\"]+\"" cited "${line}")
+        foreach(citation IN LISTS cited)
+            math(EXPR references "${references} + 1")
+            string(REGEX REPLACE "docs/stage([0-9]+)\\.md, \"([^\"]+)\"" "\\1" stage "${citation}")
+            string(REGEX REPLACE "docs/stage([0-9]+)\\.md, \"([^\"]+)\"" "\\2" section "${citation}")
+            file(STRINGS ${ROOT}/docs/stage${stage}.md headings REGEX "^#+ ")
+            set(found FALSE)
+            foreach(heading IN LISTS headings)
+                string(REGEX REPLACE "^#+ " "" heading "${heading}")
+                if(heading STREQUAL section)
+                    set(found TRUE)
+                endif()
+            endforeach()
+            if(NOT found)
+                string(APPEND problems "\n${source}: ${citation}: no such heading")
+            endif()
+        endforeach()
+    endforeach()
+endforeach()
 if(problems)
-    message(FATAL_ERROR "stubs that send students to a missing section:${problems}")
+    message(FATAL_ERROR "references to handout sections that do not exist:${problems}")
 endif()
-message(STATUS "${count} stubs, each naming a handout section that exists")
+message(STATUS "${count} stubs and ${references} other references, each naming a handout section that exists")

@@ -125,6 +125,6 @@ function(raystep_add_stage folder)
                                                                    raystep_testing)
         raystep_set_compile_options(raystep_stage${number}_tests)
         catch_discover_tests(raystep_stage${number}_tests
-                             PROPERTIES LABELS "stage${number};public")
+                             PROPERTIES LABELS "stage${number}")
     endif()
 endfunction()

@@ -3,8 +3,9 @@
 #   1. A student release: this tree without solutions/ and grader/, built as a student would.
 #      Every public test must fail with a NotImplemented message and no test binary may crash;
 #      `raystep render` and `raystep trace` must stop with the message of the stub that stopped
-#      them; `raystep check` must report every stage-3 function as not implemented; `raystep info`,
-#      which runs no stage code, must work.
+#      them; `raystep check` must report every stage-3 function as not implemented; `raystep bench`
+#      must report the stubs in its rows and exit 0; `raystep info`, which runs no stage code, must
+#      work.
 #   2. A mixed build, RAYSTEP_STUDENT_STAGES=1: the reference stage 2 must call the student's
 #      stage 1, so a render stops at a stage-1 stub.
 set -euo pipefail
@@ -73,6 +74,13 @@ check_command "raystep trace stops at the stub" 1 "^stopped: $stub_message" \
 check_command "raystep check reports every stage-3 function as a stub" 1 \
     "nothing was checked: 7 methods are not implemented" "$bin/raystep" check --stage 3
 check_command "raystep info needs no stage" 0 "^primitives" "$bin/raystep" info "$scene"
+check_command "raystep render of the full image names the stub" 1 "^raystep: $stub_message" \
+    "$bin/raystep" render "$scene" -o "$release/full.png"
+check_command "raystep bench reports each stub in its row and goes on" 0 \
+    "[|] BVH SAH +[|] not implemented: $stub_message" \
+    "$bin/raystep" bench --quick --workload spheres-primary
+check_command "raystep bench --epsilon reports the stub that stopped each scene" 0 \
+    "^- stopped: $stub_message" "$bin/raystep" bench --epsilon
 
 cmake -S "$root" -B "$root/build/student-stage1" -G Ninja -DCMAKE_BUILD_TYPE=Release \
     -DRAYSTEP_STUDENT_STAGES=1 -DRAYSTEP_WARNINGS_AS_ERRORS=ON >/dev/null

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # The first command of README.md: installs what is missing, builds, and renders every scene
 # under scenes/ with the reference code into out/, one folder per scene and one image per view.
+# A scene names the views that show its idea on a comment line `# views: depth normal ...`;
+# without one it gets the finished image, `full`.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -9,15 +11,15 @@ cmake --preset release >/dev/null
 cmake --build --preset release
 
 raystep=build/release/bin/raystep-reference
-views=(rays depth normal barycentric)
 count=0
 while IFS= read -r scene; do
     relative=${scene#scenes/}
     folder="out/${relative%.test}"
-    for view in "${views[@]}"; do
+    views=$(sed -n 's/^# views: *//p' "$scene" | head -n 1)
+    for view in ${views:-full}; do
         "$raystep" render "$scene" --view "$view" -o "$folder/$view.png" >/dev/null
     done
-    echo "rendered $scene into $folder/"
+    echo "rendered $scene into $folder/ (${views:-full})"
     count=$((count + 1))
 done < <(find scenes -name '*.test' | sort)
 

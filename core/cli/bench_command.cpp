@@ -9,6 +9,7 @@
 
 #include "core/bench/baseline_registry.h"
 #include "core/bench/bench_scenes.h"
+#include "core/bench/epsilon_measure.h"
 #include "core/bench/growth.h"
 #include "core/bench/number_text.h"
 #include "core/bench/our_structures.h"
@@ -181,6 +182,34 @@ void run_threshold(const BenchArguments& arguments) {
         threshold_report(curves, options).c_str());
 }
 
+// The acne scenes of stage 6, at the three scales the study compares.
+std::vector<std::filesystem::path> acne_scenes() {
+    const std::filesystem::path folder =
+        std::filesystem::path(RAYSTEP_SOURCE_DIR) / "scenes/stage6";
+    return {folder / "acne-scale-1e-3.test", folder / "acne-scale-1.test",
+            folder / "acne-scale-1e4.test"};
+}
+
+void run_epsilon(const BenchArguments& arguments) {
+    const std::vector<double> epsilons = study_epsilons();
+    std::printf(
+        "\n### epsilon: acne (lit pixels whose shadow ray says blocked) and leaks (shadowed pixels "
+        "whose shadow ray reaches the light) of each ray offset rule, against the exact answer\n");
+    std::vector<EpsilonSceneResult> results;
+    for (const std::filesystem::path& scene : acne_scenes()) {
+        ProgressLine().show("the epsilon study: " + scene.filename().string());
+        results.push_back(measure_epsilon_scene(scene, epsilons));
+        ProgressLine().clear();
+        std::printf("\n#### %s\n\n%s\n- %s\n", scene.filename().string().c_str(),
+                    epsilon_table(results.back()).c_str(), epsilon_notes(results.back()).c_str());
+    }
+    if (arguments.chart.empty()) return;
+    std::ofstream chart(arguments.chart);
+    chart << epsilon_chart_svg(results);
+    if (!chart) throw std::runtime_error("could not write the chart to " + arguments.chart);
+    std::printf("\n- the chart: %s\n", arguments.chart.c_str());
+}
+
 }  // namespace
 
 CLI::App* add_bench_command(CLI::App& app, BenchArguments& arguments) {
@@ -196,6 +225,14 @@ CLI::App* add_bench_command(CLI::App& app, BenchArguments& arguments) {
                       "The growth table: build and query cost from 1k to 1M triangles");
     command->add_flag("--threshold", arguments.threshold,
                       "The scene size from which a BVH pays for its build, against brute force");
+    CLI::Option* epsilon = command->add_flag(
+        "--epsilon", arguments.epsilon,
+        "The epsilon study: acne and light leaks of each ray offset rule on the acne scenes "
+        "(docs/stage6.md)");
+    command
+        ->add_option("--chart", arguments.chart,
+                     "With --epsilon: also draw the study as an SVG chart into this file")
+        ->needs(epsilon);
     command
         ->add_option("--threads", arguments.threads,
                      "Threads of the all-threads columns (default: every hardware thread)")
@@ -219,8 +256,8 @@ int run_bench(const BenchArguments& arguments) {
     print_header(options.threads, candidates);
 
     // Nothing named: every workload, the growth table and the threshold
-    const bool everything =
-        arguments.workloads.empty() && !arguments.growth && !arguments.threshold;
+    const bool everything = arguments.workloads.empty() && !arguments.growth &&
+                            !arguments.threshold && !arguments.epsilon;
     bool agreed = true;
     if (everything || !arguments.workloads.empty()) {
         for (const std::string& name : bench_scene_names()) {
@@ -234,6 +271,7 @@ int run_bench(const BenchArguments& arguments) {
         run_growth(arguments, candidates, options);
     }
     if (everything || arguments.threshold) run_threshold(arguments);
+    if (everything || arguments.epsilon) run_epsilon(arguments);
 
     if (!agreed) {
         std::printf("\nStructures disagree (the WARNING lines above): one of them has a bug.\n");

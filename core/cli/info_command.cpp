@@ -64,10 +64,16 @@ int run_info(const InfoArguments& arguments) {
     row("meshes", f.meshes == 0 ? "none"
                                 : counted(f.meshes, "mesh", "meshes") + " with " +
                                       counted(f.mesh_triangles, "triangle", "triangles"));
-    row("transforms", f.uses_transforms()
-                          ? counted(f.transformed_objects, "object", "objects") + " under " +
-                                counted(f.transforms, "transform", "transforms")
-                          : "none");
+    row("transforms",
+        f.uses_transforms()
+            ? counted(f.transformed_objects, "object", "objects") + " under " +
+                  counted(f.transforms, "transform", "transforms") +
+                  (f.transformed_spheres > 0
+                       ? "; " + counted(f.transformed_spheres, "ellipsoid", "ellipsoids") +
+                             " (spheres under a transform, each intersected in "
+                             "the sphere's own frame, outside the BVH)"
+                       : "")
+            : "none");
     row("lights", f.uses_lights()
                       ? counted(f.point_lights, "point light", "point lights") + ", " +
                             counted(f.directional_lights, "directional light", "directional lights")
@@ -76,16 +82,20 @@ int run_info(const InfoArguments& arguments) {
                           ? counted(f.reflective_objects, "mirror object", "mirror objects") +
                                 ", up to " + std::to_string(scene.max_depth) + " bounces"
                           : "none");
-    const std::size_t bounded = f.spheres + f.triangles;
-    row("structure", uses_bvh(f)
-                         ? "a BVH (SAH) over the " + std::to_string(bounded) +
-                               " spheres and triangles: it pays from " +
-                               std::to_string(kBvhFromPrimitives) +
-                               " (measured by raystep bench --threshold)"
-                         : "none: " + std::to_string(bounded) +
-                               " spheres and triangles are tested one by one, faster below " +
-                               std::to_string(kBvhFromPrimitives));
-    row("stages", "full image " + stage_list(stages_for_view(f, View::full)) +
+    const std::size_t bounded = bvh_primitives(f);
+    row("structure",
+        uses_bvh(f)
+            ? "a BVH (SAH) over the " + std::to_string(bounded) + " spheres and triangles (from " +
+                  std::to_string(kBvhFromPrimitives) +
+                  " on; docs/stage4.md, \"When a structure pays\")"
+            : "none: " + counted(bounded, "sphere or triangle", "spheres and triangles") +
+                  ", tested one by one (a BVH from " + std::to_string(kBvhFromPrimitives) + " on)");
+    row("ray offset",
+        std::string(offset_rule_name(scene.ray_offset.rule)) +
+            (uses_epsilon(scene.ray_offset.rule) ? ", epsilon " + to_text(scene.ray_offset.epsilon)
+                                                 : " (no epsilon to tune)"));
+    row("stages", "full image " + stage_list(stages_for_view(f, View::full)) + "; shaded view " +
+                      stage_list(stages_for_view(f, View::shaded)) +
                       "; depth, normal and barycentric views " +
                       stage_list(stages_for_view(f, View::normal)) + "; rays view " +
                       stage_list(stages_for_view(f, View::rays)));

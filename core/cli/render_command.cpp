@@ -27,11 +27,13 @@ CLI::App* add_render_command(CLI::App& app, RenderArguments& arguments) {
         ->add_option("--view", arguments.view,
                      "What to show: the stage whose output you want to see")
         ->check(CLI::IsMember(view_names()));
+    add_ray_offset_options(*command, arguments.ray_offset);
     return command;
 }
 
 int run_render(const RenderArguments& arguments) {
-    const Scene scene = load_scene(arguments.scene);
+    Scene scene = load_scene(arguments.scene);
+    apply_ray_offset(arguments.ray_offset, scene);
     const View view = *parse_view(arguments.view);
 
     std::filesystem::path output = arguments.output;

@@ -4,14 +4,17 @@
 
 #include <CLI/CLI.hpp>
 
+#include "core/cli/ray_offset_option.h"
+
 namespace raystep {
 
-/// `raystep render SCENE [-o FILE] [--threads N] [--view VIEW]`
+/// `raystep render SCENE [-o FILE] [--threads N] [--view VIEW] [--ray-offset RULE [--epsilon E]]`
 struct RenderArguments {
     std::string scene;
     std::string output;
     int threads = 0;
     std::string view = "full";
+    RayOffsetArguments ray_offset;
 };
 
 CLI::App* add_render_command(CLI::App& app, RenderArguments& arguments);

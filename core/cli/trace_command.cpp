@@ -24,7 +24,8 @@ struct TraceResult {
 };
 
 TraceResult trace_pixel(const TraceArguments& arguments) {
-    const Scene scene = load_scene(arguments.scene);
+    Scene scene = load_scene(arguments.scene);
+    apply_ray_offset(arguments.ray_offset, scene);
     if (arguments.x < 0 || arguments.x >= scene.width || arguments.y < 0 ||
         arguments.y >= scene.height) {
         throw std::invalid_argument("pixel (" + std::to_string(arguments.x) + ", " +
@@ -66,7 +67,8 @@ std::string shell_argument(const std::string& text) {
     return "\"" + text + "\"";
 #else
     std::string quoted = "'";
-    for (const char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    for (const char c : text)
+        quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
     return quoted + "'";
 #endif
 }
@@ -87,8 +89,8 @@ std::string reference_executable(const TraceArguments& arguments) {
 std::filesystem::path private_folder() {
     std::random_device entropy;
     for (int attempt = 0; attempt < 100; ++attempt) {
-        const std::filesystem::path folder = std::filesystem::temp_directory_path() /
-                                             ("raystep-trace-" + std::to_string(entropy()));
+        const std::filesystem::path folder =
+            std::filesystem::temp_directory_path() / ("raystep-trace-" + std::to_string(entropy()));
         if (std::filesystem::create_directory(folder)) return folder;
     }
     throw std::runtime_error("cannot create a temporary folder for the reference trace");
@@ -103,9 +105,9 @@ std::vector<std::string> reference_trace(const TraceArguments& arguments) {
     }
     const std::filesystem::path folder = private_folder();
     const std::filesystem::path output = folder / "trace.txt";
-    std::string command = shell_argument(executable) + " trace " +
-                          shell_argument(arguments.scene) + " " + std::to_string(arguments.x) +
-                          " " + std::to_string(arguments.y) + " --view " + arguments.view +
+    std::string command = shell_argument(executable) + " trace " + shell_argument(arguments.scene) +
+                          " " + std::to_string(arguments.x) + " " + std::to_string(arguments.y) +
+                          " --view " + arguments.view + arguments.ray_offset.command_line() +
                           " > " + shell_argument(output.string()) + " 2>&1";
 #ifdef _WIN32
     command = "\"" + command + "\"";  // cmd /c strips one outer pair of quotes
@@ -115,7 +117,8 @@ std::vector<std::string> reference_trace(const TraceArguments& arguments) {
 
     std::vector<std::string> lines;
     std::ifstream in(output);
-    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    for (std::string line; std::getline(in, line);)
+        lines.push_back(line);
     in.close();
     std::filesystem::remove_all(folder, error);
     if (lines.empty()) throw std::runtime_error("the reference build printed no trace: " + command);
@@ -173,6 +176,7 @@ CLI::App* add_trace_command(CLI::App& app, TraceArguments& arguments) {
                       "line where they differ");
     command->add_option("--reference", arguments.reference,
                         "The reference raystep to compare with (default: the one built here)");
+    add_ray_offset_options(*command, arguments.ray_offset);
     return command;
 }
 
@@ -182,7 +186,8 @@ int run_trace(const TraceArguments& arguments) {
         const bool same = print_side_by_side(ours.lines, reference_trace(arguments));
         return same && !ours.stopped ? 0 : 1;
     }
-    for (const std::string& line : ours.lines) std::printf("%s\n", line.c_str());
+    for (const std::string& line : ours.lines)
+        std::printf("%s\n", line.c_str());
     return ours.stopped ? 1 : 0;
 }
 

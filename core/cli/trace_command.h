@@ -4,9 +4,12 @@
 
 #include <CLI/CLI.hpp>
 
+#include "core/cli/ray_offset_option.h"
+
 namespace raystep {
 
-/// `raystep trace SCENE X Y [--view VIEW] [--compare] [--reference PATH]`
+/// `raystep trace SCENE X Y [--view VIEW] [--ray-offset RULE [--epsilon E]] [--compare]
+/// [--reference PATH]`
 struct TraceArguments {
     std::string scene;
     int x = 0;
@@ -14,6 +17,7 @@ struct TraceArguments {
     std::string view = "full";
     bool compare = false;
     std::string reference;  ///< the reference build's raystep; empty means the one built here
+    RayOffsetArguments ray_offset;
 };
 
 CLI::App* add_trace_command(CLI::App& app, TraceArguments& arguments);

@@ -4,10 +4,10 @@
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <stdexcept>
 #include <string>
 
 #include "core/math/to_text.h"
+#include "core/render/shade_hit.h"
 
 namespace raystep {
 
@@ -25,18 +25,21 @@ std::string describe(const Hit& hit) {
     return text;
 }
 
-// Each primitive of one kind, tested on its own with the stage-3 function closest_hit uses.
-template <class Shape, class Intersect>
+// Each primitive of one kind, tested on its own with the stage-3 function closest_hit uses;
+// `scene_index` maps a list position to the primitive's place in the scene.
+template <class Shape, class Intersect, class SceneIndex>
 void trace_each(const RenderScene& render_scene, const Ray& ray, PrimitiveKind kind,
-                const std::vector<Shape>& shapes, Intersect intersect, TraceLog& trace) {
+                const std::vector<Shape>& shapes, Intersect intersect, SceneIndex scene_index,
+                TraceLog& trace) {
     const bool list_all = shapes.size() <= kTraceEveryPrimitiveUpTo;
     std::size_t misses = 0;
     for (std::size_t k = 0; k < shapes.size(); ++k) {
         const std::optional<Hit> hit = intersect(ray, shapes[k]);
         if (!hit) ++misses;
         if (hit || list_all) {
-            trace.add(std::string(kind_name(kind)) + " " + std::to_string(k) + " (line " +
-                      std::to_string(attributes_of(render_scene, kind, k).line) +
+            const std::size_t index = scene_index(k);
+            trace.add(std::string(kind_name(kind)) + " " + std::to_string(index) + " (line " +
+                      std::to_string(attributes_of(render_scene, kind, index).line) +
                       "): " + (hit ? describe(*hit) : "miss"));
         }
     }
@@ -45,16 +48,60 @@ void trace_each(const RenderScene& render_scene, const Ray& ray, PrimitiveKind k
     }
 }
 
+// A sphere under a transform, with the ray in its own frame: where stage 5 goes wrong, the
+// object-frame ray shows it.
+void trace_ellipsoids(const RenderScene& render_scene, const Ray& ray, TraceLog& trace) {
+    for (const TransformedSphere& s : render_scene.transformed_spheres) {
+        const Ray object = ray_to_object(s.transform, ray);
+        const std::optional<Hit> hit = intersect_transformed_sphere(ray, s.sphere, s.transform);
+        trace.add("sphere " + std::to_string(s.index) + " (line " +
+                  std::to_string(render_scene.scene->spheres[s.index].attributes.line) +
+                  ", under a transform): object-frame ray origin " + to_text(object.origin) +
+                  " direction " + to_text(object.direction) + ": " +
+                  (hit ? describe(*hit) : "miss"));
+    }
+}
+
 void trace_primitives(const RenderScene& render_scene, const Ray& ray, TraceLog& trace) {
     const PrimitiveList& list = render_scene.primitives;
-    trace_each(render_scene, ray, PrimitiveKind::sphere, list.spheres, intersect_sphere, trace);
-    trace_each(render_scene, ray, PrimitiveKind::triangle, list.triangles, intersect_triangle,
+    const auto same = [](std::size_t k) { return k; };
+    trace_each(
+        render_scene, ray, PrimitiveKind::sphere, list.spheres, intersect_sphere,
+        [&](std::size_t k) { return render_scene.sphere_index[k]; }, trace);
+    trace_ellipsoids(render_scene, ray, trace);
+    trace_each(render_scene, ray, PrimitiveKind::triangle, list.triangles, intersect_triangle, same,
                trace);
-    trace_each(render_scene, ray, PrimitiveKind::plane, list.planes, intersect_plane, trace);
+    trace_each(render_scene, ray, PrimitiveKind::plane, list.planes, intersect_plane, same, trace);
 }
 
 Color direction_color(const Vec3& direction) {
     return 0.5 * (direction + Vec3(1.0));
+}
+
+// The finished image: stage 6's colour, and where something reflects, stage 7's recursion over
+// it. The eye ray's hit is already known; every later ray is found and shaded here.
+Color full_colour(const RenderScene& render_scene, const Ray& eye_ray,
+                  const std::optional<PrimitiveHit>& eye_hit, TraceLog* trace) {
+    if (render_scene.bounces == 0) {
+        return eye_hit ? shade_hit(render_scene, eye_ray, *eye_hit, trace).local : Color(0.0);
+    }
+    int rays = 0;
+    const ShadeFunction shade = [&](const Ray& ray) -> std::optional<ShadedHit> {
+        const std::optional<PrimitiveHit> hit =
+            rays++ == 0 ? eye_hit : scene_closest_hit(render_scene, ray, nullptr);
+        if (trace && rays > 1) {
+            trace->add("reflected ray " + std::to_string(rays - 1) + ": origin " +
+                       to_text(ray.origin) + " direction " + to_text(ray.direction) +
+                       (hit ? " hits " + std::string(kind_name(hit->kind)) + " " +
+                                  std::to_string(hit->index) + " at t=" + to_text(hit->hit.t)
+                            : std::string(" leaves the scene")));
+        }
+        if (!hit) return std::nullopt;
+        return shade_hit(render_scene, ray, *hit, trace);
+    };
+    const Color colour = radiance(shade, eye_ray, render_scene.bounces, render_scene.ray_offset);
+    if (trace) trace->add("colour " + to_text(colour));
+    return colour;
 }
 
 }  // namespace
@@ -100,10 +147,11 @@ Color render_pixel(const RenderScene& render_scene, View view, int i, int j, Tra
             if (closest->kind != PrimitiveKind::triangle) return Color(0.25);
             return {1.0 - closest->hit.beta - closest->hit.gamma, closest->hit.beta,
                     closest->hit.gamma};
+        case View::shaded:
+            if (!closest) return Color(0.0);
+            return shade_hit(render_scene, ray, *closest, trace).local;
         case View::full:
-            throw std::runtime_error(
-                "the full image needs stage 6 (shading), not yet part of raystep; choose "
-                "--view rays, depth, normal, barycentric or cost");
+            return full_colour(render_scene, ray, closest, trace);
         case View::rays:
             break;
     }

@@ -2,8 +2,12 @@
 
 namespace raystep {
 
+std::size_t bvh_primitives(const SceneFeatures& features) {
+    return features.spheres - features.transformed_spheres + features.triangles;
+}
+
 bool uses_bvh(const SceneFeatures& features) {
-    return features.spheres + features.triangles >= kBvhFromPrimitives;
+    return bvh_primitives(features) >= kBvhFromPrimitives;
 }
 
 std::vector<int> stages_for_view(const SceneFeatures& features, View view) {
@@ -12,9 +16,9 @@ std::vector<int> stages_for_view(const SceneFeatures& features, View view) {
     stages.push_back(3);
     if (uses_bvh(features)) stages.push_back(4);
     if (features.uses_transforms()) stages.push_back(5);
-    if (view != View::full) return stages;
+    if (view != View::shaded && view != View::full) return stages;
     stages.push_back(6);
-    if (features.uses_reflection()) stages.push_back(7);
+    if (view == View::full && features.uses_reflection()) stages.push_back(7);
     return stages;
 }
 

@@ -1,5 +1,7 @@
 #include "core/render/render_scene.h"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "core/render/render_plan.h"
@@ -7,13 +9,89 @@
 
 namespace raystep {
 
-RenderScene prepare_render_scene(const Scene& scene) {
-    if (scene_features(scene).uses_transforms()) {
-        throw std::runtime_error(scene.path +
-                                 ": this scene places objects with translate, rotate or scale, "
-                                 "which needs stage 5 (transforms), not yet part of raystep");
-    }
+namespace {
 
+// The transform of a node, composed by stage 5 the first time an object under it is met.
+const Transform& transform_of(const Scene& scene, std::uint32_t node,
+                              std::unordered_map<std::uint32_t, Transform>& transforms) {
+    auto found = transforms.find(node);
+    if (found == transforms.end()) {
+        found = transforms.emplace(node, compose(transform_ops(scene, node))).first;
+    }
+    return found->second;
+}
+
+double inverse_residual(const Transform& transform) {
+    const Mat4 product = transform.inverse * transform.matrix;
+    double largest = 0.0;
+    for (int column = 0; column < 4; ++column) {
+        for (int row = 0; row < 4; ++row) {
+            const double expected = row == column ? 1.0 : 0.0;
+            largest = std::max(largest, std::abs(product[column][row] - expected));
+        }
+    }
+    return largest;
+}
+
+void gather_primitives(const Scene& scene, RenderScene& render_scene) {
+    PrimitiveList& list = render_scene.primitives;
+    for (std::size_t k = 0; k < scene.spheres.size(); ++k) {
+        const SceneSphere& s = scene.spheres[k];
+        if (s.attributes.transform == 0) {
+            render_scene.sphere_slot.push_back(list.spheres.size());
+            list.spheres.push_back(s.shape);
+            render_scene.sphere_index.push_back(k);
+            continue;
+        }
+        render_scene.sphere_slot.push_back(render_scene.transformed_spheres.size());
+        const Transform& t = transform_of(scene, s.attributes.transform, render_scene.transforms);
+        render_scene.transformed_spheres.push_back({s.shape, t, k, inverse_residual(t)});
+    }
+    // Flat primitives stay flat under any transform: moved into the world once, they need no
+    // matrix per ray and go into the BVH with the rest.
+    list.triangles.reserve(scene.triangles.size());
+    for (const SceneTriangle& t : scene.triangles) {
+        if (t.attributes.transform == 0) {
+            list.triangles.push_back(t.shape);
+            continue;
+        }
+        const Transform& m = transform_of(scene, t.attributes.transform, render_scene.transforms);
+        list.triangles.push_back({point_to_world(m, t.shape.p0), point_to_world(m, t.shape.p1),
+                                  point_to_world(m, t.shape.p2)});
+    }
+    list.planes.reserve(scene.planes.size());
+    for (const ScenePlane& p : scene.planes) {
+        if (p.attributes.transform == 0) {
+            list.planes.push_back(p.shape);
+            continue;
+        }
+        const Transform& m = transform_of(scene, p.attributes.transform, render_scene.transforms);
+        list.planes.push_back(
+            {point_to_world(m, p.shape.point), normal_to_world(m, p.shape.normal)});
+    }
+}
+
+// `candidate` replaces `best` when closest_hit would have picked it.
+void keep_nearer(std::optional<PrimitiveHit>& best, const std::optional<PrimitiveHit>& candidate) {
+    if (candidate && (!best || comes_before(*candidate, *best))) best = candidate;
+}
+
+// The ray cut at the best hit so far: nothing beyond it can win.
+Ray cut_at(const Ray& ray, const std::optional<PrimitiveHit>& best) {
+    Ray cut = ray;
+    if (best) cut.t_max = best->hit.t;
+    return cut;
+}
+
+std::optional<PrimitiveHit> transformed_sphere_hit(const TransformedSphere& s, const Ray& ray) {
+    const std::optional<Hit> hit = intersect_transformed_sphere(ray, s.sphere, s.transform);
+    if (!hit) return std::nullopt;
+    return PrimitiveHit{*hit, PrimitiveKind::sphere, s.index};
+}
+
+}  // namespace
+
+RenderScene prepare_render_scene(const Scene& scene) {
     RenderScene render_scene;
     render_scene.scene = &scene;
 
@@ -27,42 +105,52 @@ RenderScene prepare_render_scene(const Scene& scene) {
                                                       scene.width, scene.height);
     }
 
-    PrimitiveList& list = render_scene.primitives;
-    list.spheres.reserve(scene.spheres.size());
-    for (const SceneSphere& s : scene.spheres)
-        list.spheres.push_back(s.shape);
-    list.triangles.reserve(scene.triangles.size());
-    for (const SceneTriangle& t : scene.triangles)
-        list.triangles.push_back(t.shape);
-    list.planes.reserve(scene.planes.size());
-    for (const ScenePlane& p : scene.planes)
-        list.planes.push_back(p.shape);
-
-    if (uses_bvh(scene_features(scene))) {
-        render_scene.bvh.emplace(list, BvhSplit::sah);
-        render_scene.planes.planes = list.planes;
+    gather_primitives(scene, render_scene);
+    const SceneFeatures features = scene_features(scene);
+    if (uses_bvh(features)) {
+        render_scene.bvh.emplace(render_scene.primitives, BvhSplit::sah);
+        render_scene.planes.planes = render_scene.primitives.planes;
     }
+    render_scene.ray_offset = scene.ray_offset;
+    render_scene.bounces = features.uses_reflection() ? scene.max_depth : 0;
     return render_scene;
 }
 
 std::optional<PrimitiveHit> scene_closest_hit(const RenderScene& render_scene, const Ray& ray,
                                               TraversalStats* stats) {
     const PrimitiveList& list = render_scene.primitives;
-    if (!render_scene.bvh) {
-        if (stats)
-            stats->primitive_tests +=
-                list.spheres.size() + list.triangles.size() + list.planes.size();
-        return closest_hit(ray, list);
+    std::optional<PrimitiveHit> best;
+    if (render_scene.bvh) {
+        best = render_scene.bvh->closest_hit(ray, stats);
+    } else {
+        best = closest_hit(ray, list);
+        if (stats) stats->primitive_tests += list.spheres.size() + list.triangles.size();
     }
-    std::optional<PrimitiveHit> best = render_scene.bvh->closest_hit(ray, stats);
-    // The planes come after spheres and triangles in closest_hit's order, so on a tie the BVH's
-    // hit stays, and a plane must be strictly nearer.
-    Ray nearer = ray;
-    if (best) nearer.t_max = best->hit.t;
-    const std::optional<PrimitiveHit> plane = closest_hit(nearer, render_scene.planes);
-    if (stats) stats->primitive_tests += list.planes.size();
-    if (plane && (!best || comes_before(*plane, *best))) best = plane;
+    if (best && best->kind == PrimitiveKind::sphere) {
+        best->index = render_scene.sphere_index[best->index];
+    }
+    if (render_scene.bvh) {
+        keep_nearer(best, closest_hit(cut_at(ray, best), render_scene.planes));
+    }
+    for (const TransformedSphere& s : render_scene.transformed_spheres) {
+        keep_nearer(best, transformed_sphere_hit(s, cut_at(ray, best)));
+    }
+    if (stats)
+        stats->primitive_tests += list.planes.size() + render_scene.transformed_spheres.size();
     return best;
+}
+
+bool scene_occluded(const RenderScene& render_scene, const Ray& ray) {
+    if (render_scene.bvh) {
+        if (render_scene.bvh->occluded(ray, nullptr)) return true;
+        if (closest_hit(ray, render_scene.planes)) return true;
+    } else if (closest_hit(ray, render_scene.primitives)) {
+        return true;
+    }
+    for (const TransformedSphere& s : render_scene.transformed_spheres) {
+        if (intersect_transformed_sphere(ray, s.sphere, s.transform)) return true;
+    }
+    return false;
 }
 
 Ray camera_ray(const RenderScene& render_scene, int i, int j) {

@@ -7,12 +7,13 @@ namespace raystep {
 
 namespace {
 
-constexpr std::array<std::pair<View, std::string_view>, 6> kViews = {{
+constexpr std::array<std::pair<View, std::string_view>, 7> kViews = {{
     {View::rays, "rays"},
     {View::depth, "depth"},
     {View::normal, "normal"},
     {View::barycentric, "barycentric"},
     {View::cost, "cost"},
+    {View::shaded, "shaded"},
     {View::full, "full"},
 }};
 

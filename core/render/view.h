@@ -15,7 +15,9 @@ enum class View {
     normal,       ///< stage 3: the geometric normal at the nearest hit as a colour, 0.5 (n + 1)
     barycentric,  ///< stage 3: (1 - beta - gamma, beta, gamma) on triangles, grey elsewhere
     cost,         ///< stage 4: BVH nodes visited plus primitives tested, as a heat map
-    full,         ///< the finished image
+    shaded,       ///< stage 6: the local model with shadows, no reflection
+    full,         ///< the finished image: stage 6, and stage 7's reflections where the scene has
+                  ///< mirrors
 };
 
 /// The view's name on the command line.

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/math/types.h"
+#include "core/scene/ray_offset.h"
 #include "core/scene/shapes.h"
 
 namespace raystep {
@@ -140,6 +141,7 @@ struct Scene {
     int max_depth = 5;   ///< `maxdepth`: mirror bounces after the first hit
     std::string output;  ///< `output`; empty when the file names none
     CameraSpec camera;
+    RayOffset ray_offset;  ///< `rayoffset`
 
     std::vector<Material> materials;
     std::vector<TransformNode> transforms{TransformNode{}};

@@ -35,6 +35,9 @@ SceneFeatures scene_features(const Scene& scene) {
     count_objects(scene, scene.triangles, features, transforms);
     count_objects(scene, scene.planes, features, transforms);
     features.transforms = transforms.size();
+    for (const SceneSphere& sphere : scene.spheres) {
+        if (sphere.attributes.transform != 0) ++features.transformed_spheres;
+    }
     return features;
 }
 

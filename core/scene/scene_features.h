@@ -16,6 +16,7 @@ struct SceneFeatures {
     std::size_t planes = 0;
     std::size_t transforms = 0;           ///< distinct non-identity transforms in use
     std::size_t transformed_objects = 0;  ///< primitives under one of them
+    std::size_t transformed_spheres = 0;  ///< of those, spheres: ellipsoids, outside the BVH
     std::size_t point_lights = 0;
     std::size_t directional_lights = 0;
     std::size_t reflective_objects = 0;  ///< specular > 0 with maxdepth > 0: mirrors

@@ -14,8 +14,8 @@
 #include "core/math/parallel_sine.h"
 #include "core/math/to_text.h"
 #include "core/scene/mesh_loader.h"
-#include "core/scene/text_file.h"
 #include "core/scene/text_fields.h"
+#include "core/scene/text_file.h"
 
 namespace raystep {
 
@@ -47,15 +47,18 @@ double largest_magnitude(const Vec3& v) {
 // such ops needs no matrix at all.
 bool is_identity(const TransformOp& op) {
     switch (op.kind) {
-        case TransformOp::Kind::translate: return op.vector == Vec3(0.0);
-        case TransformOp::Kind::scale: return op.vector == Vec3(1.0);
-        case TransformOp::Kind::rotate: return op.angle_degrees == 0.0;
+        case TransformOp::Kind::translate:
+            return op.vector == Vec3(0.0);
+        case TransformOp::Kind::scale:
+            return op.vector == Vec3(1.0);
+        case TransformOp::Kind::rotate:
+            return op.angle_degrees == 0.0;
     }
     return false;
 }
 
 class SceneParser {
-public:
+  public:
     SceneParser(std::string name, std::filesystem::path folder)
         : name_(std::move(name)), folder_(std::move(folder)) {
         scene_.path = name_;
@@ -68,10 +71,15 @@ public:
 
         const Command& command = find_command(fields_[0]);
         const std::size_t given = fields_.size() - 1;
-        if (given != command.argument_count) {
-            fail("'" + std::string(command.name) + "' takes " +
-                 std::to_string(command.argument_count) + " argument" +
-                 (command.argument_count == 1 ? "" : "s") +
+        if (given < command.argument_count ||
+            given > command.argument_count + command.optional_count) {
+            const std::string count =
+                command.optional_count == 0
+                    ? std::to_string(command.argument_count)
+                    : std::to_string(command.argument_count) + " or " +
+                          std::to_string(command.argument_count + command.optional_count);
+            fail("'" + std::string(command.name) + "' takes " + count + " argument" +
+                 (count == "1" ? "" : "s") +
                  (command.arguments.empty() ? "" : " (" + std::string(command.arguments) + ")") +
                  ", found " + std::to_string(given));
         }
@@ -86,19 +94,22 @@ public:
         return std::move(scene_);
     }
 
-private:
+  private:
     struct Command {
         std::string_view name;
-        std::string_view arguments;  // names of the arguments, separated by spaces
+        std::string_view arguments;  // names of the arguments, separated by spaces; [optional]
         void (SceneParser::*handle)();
-        std::size_t argument_count;
+        std::size_t argument_count = 0;
+        std::size_t optional_count = 0;
 
         Command(std::string_view command, std::string_view argument_names,
                 void (SceneParser::*handler)())
             : name(command), arguments(argument_names), handle(handler) {
             std::vector<std::string_view> names;
             split_fields(arguments, names);
-            argument_count = names.size();
+            for (const std::string_view argument : names) {
+                ++(argument.front() == '[' ? optional_count : argument_count);
+            }
         }
     };
 
@@ -109,6 +120,7 @@ private:
             {"output", "filename", &SceneParser::output},
             {"camera", "fromx fromy fromz atx aty atz upx upy upz fovy", &SceneParser::camera},
             {"ortho", "left right bottom top", &SceneParser::ortho},
+            {"rayoffset", "rule [epsilon]", &SceneParser::rayoffset},
             {"sphere", "x y z radius", &SceneParser::sphere},
             {"plane", "x y z nx ny nz", &SceneParser::plane},
             {"maxverts", "count", &SceneParser::maxverts},
@@ -239,6 +251,26 @@ private:
         scene_.output = std::string(fields_[1]);
     }
 
+    void rayoffset() {
+        once(rayoffset_line_, "rayoffset");
+        const std::optional<OffsetRule> rule = parse_offset_rule(fields_[1]);
+        if (!rule) {
+            fail("unknown ray offset rule " + quoted_field(fields_[1]) +
+                 "; the rules are along-ray, along-normal and error-bound");
+        }
+        scene_.ray_offset.rule = *rule;
+        if (!uses_epsilon(*rule)) {
+            if (fields_.size() > 2) fail("error-bound takes no epsilon: it needs no tuning");
+            return;
+        }
+        if (fields_.size() < 3) {
+            fail(std::string(offset_rule_name(*rule)) + " needs an epsilon, the offset distance");
+        }
+        const double epsilon = number(2, "epsilon");
+        if (!(epsilon > 0.0)) fail("epsilon " + quoted_field(fields_[2]) + " must be positive");
+        scene_.ray_offset.epsilon = epsilon;
+    }
+
     void camera() {
         once(camera_line_, "camera");
         CameraSpec& c = scene_.camera;
@@ -347,8 +379,8 @@ private:
         for (std::size_t k = 0; k < 3; ++k) {
             const long index = count(k + 1, "a vertex index");
             if (static_cast<std::size_t>(index) >= available) {
-                fail("vertex index " + std::to_string(index) + " is out of range: " +
-                     std::to_string(available) + " " + std::string(pile) +
+                fail("vertex index " + std::to_string(index) +
+                     " is out of range: " + std::to_string(available) + " " + std::string(pile) +
                      " defined so far, numbered from 0");
             }
             result[k] = static_cast<std::size_t>(index);
@@ -508,6 +540,7 @@ private:
     std::uint32_t output_line_ = 0;
     std::uint32_t camera_line_ = 0;
     std::uint32_t ortho_line_ = 0;
+    std::uint32_t rayoffset_line_ = 0;
     std::optional<OrthoWindow> ortho_;
 
     Material material_;

@@ -128,10 +128,13 @@ TEST_CASE(
 
 TEST_CASE("render: the image is the same for any number of threads", "[core]") {
     const Scene scene = parse_scene(
-        "size 97 61\ncamera 1 2 6 0 0 0 0 1 0 50\nsphere 0 0 0 1\nsphere 1.5 0.5 -1 0.7\n"
+        "size 97 61\ncamera 1 2 6 0 0 0 0 1 0 50\npoint 2 4 3 1 1 1\ndiffuse 0.3 0.5 0.2\n"
+        "specular 0.4 0.4 0.4\nsphere 0 0 0 1\nsphere 1.5 0.5 -1 0.7\npushTransform\n"
+        "translate -1.5 0.5 -1\nscale 1 0.5 1\nsphere 0 0 0 0.7\npopTransform\n"
         "vertex -3 -1 -3\nvertex 3 -1 -3\nvertex 0 -1 3\ntri 0 1 2\nplane 0 -2 0 0 1 0\n",
         "threads.test", ".");
-    for (const View view : {View::rays, View::depth, View::normal, View::barycentric}) {
+    for (const View view :
+         {View::rays, View::depth, View::normal, View::barycentric, View::shaded, View::full}) {
         CAPTURE(view_name(view));
         const Image one = render_view(scene, view, 1);
         for (const int threads : {2, 3, 8}) {
@@ -142,12 +145,15 @@ TEST_CASE("render: the image is the same for any number of threads", "[core]") {
     }
 }
 
-TEST_CASE("render: a stub's NotImplemented stops the render and reaches the caller", "[core]") {
-    // The full image needs stage 6, which this build does not have yet: the error must come out
-    // of the worker threads intact.
+TEST_CASE("render: an error in a worker thread stops the render and reaches the caller", "[core]") {
+    // The point light sits exactly where the centre pixel's ray meets the sphere, (0, 0, 1):
+    // sample_light has no direction to it and throws, and the error must come out of the worker
+    // threads intact (as a stub's NotImplemented does in a student's build).
     const Scene scene =
-        parse_scene("size 8 8\ncamera 0 0 5 0 0 0 0 1 0 45\nsphere 0 0 0 1\n", "full.test", ".");
-    CHECK_THROWS_WITH(render_view(scene, View::full, 4), Catch::Matchers::Contains("stage 6"));
+        parse_scene("size 1 1\ncamera 0 0 5 0 0 0 0 1 0 45\npoint 0 0 1 1 1 1\nsphere 0 0 0 1\n",
+                    "light_on_surface.test", ".");
+    CHECK_THROWS_WITH(render_view(scene, View::shaded, 4),
+                      Catch::Matchers::Contains("is at the light"));
 }
 
 TEST_CASE("render_pixel: the rays view shows the direction as 0.5 (d + 1)", "[core]") {
@@ -188,19 +194,23 @@ TEST_CASE("render: the normal and barycentric views colour a triangle as expecte
     CHECK(barycentric.at(0, 0) == Color(0.0));  // (-4.4, 4.4): a miss
 }
 
-TEST_CASE("scene_closest_hit: through the BVH, the same hit as closest_hit at every pixel", "[core]") {
+TEST_CASE("scene_closest_hit: through the BVH, the same hit as closest_hit at every pixel",
+          "[core]") {
     // 200 triangles and 50 spheres: a BVH scene. Every camera ray must get closest_hit's answer.
     std::string text = "size 48 36\ncamera 0 1 12 0 0 0 0 1 0 50\nplane 0 -3 0 0 1 0\n";
     for (int k = 0; k < 200; ++k) {
         const double x = (k % 20) * 0.5 - 5.0;
         const double y = (k / 20) * 0.5 - 2.5;
-        text += "vertex " + std::to_string(x) + " " + std::to_string(y) + " " + std::to_string(0.1 * (k % 7)) + "\n";
+        text += "vertex " + std::to_string(x) + " " + std::to_string(y) + " " +
+                std::to_string(0.1 * (k % 7)) + "\n";
     }
     for (int k = 0; k + 21 < 200; ++k) {
-        text += "tri " + std::to_string(k) + " " + std::to_string(k + 1) + " " + std::to_string(k + 21) + "\n";
+        text += "tri " + std::to_string(k) + " " + std::to_string(k + 1) + " " +
+                std::to_string(k + 21) + "\n";
     }
     for (int k = 0; k < 50; ++k) {
-        text += "sphere " + std::to_string((k % 10) - 4.5) + " " + std::to_string(k / 10 - 2.0) + " 1.5 0.3\n";
+        text += "sphere " + std::to_string((k % 10) - 4.5) + " " + std::to_string(k / 10 - 2.0) +
+                " 1.5 0.3\n";
     }
     const Scene scene = parse_scene(text, "bvh.test", ".");
     const RenderScene render_scene = prepare_render_scene(scene);

@@ -1,5 +1,7 @@
 #include "core/scene/scene_features.h"
 
+#include <string>
+
 #include "core/render/render_plan.h"
 #include "core/scene/scene_loader.h"
 #include "core/testing/catch.h"
@@ -52,5 +54,19 @@ TEST_CASE("stages_for_view: each view runs its stages and only what the scene us
     const SceneFeatures rich = scene_features(
         parse("point 0 5 0 1 1 1\nspecular 1 1 1\ntranslate 0 1 0\nsphere 0 0 0 1\n"));
     CHECK(stages_for_view(rich, View::depth) == std::vector<int>{1, 2, 3, 5});
+    CHECK(stages_for_view(rich, View::shaded) == std::vector<int>{1, 2, 3, 5, 6});
     CHECK(stages_for_view(rich, View::full) == std::vector<int>{1, 2, 3, 5, 6, 7});
+}
+
+TEST_CASE("uses_bvh: spheres under a transform stay out of the BVH", "[core]") {
+    std::string ellipsoids = "scale 1 2 1\n";
+    std::string spheres;
+    for (std::size_t k = 0; k < kBvhFromPrimitives; ++k) {
+        ellipsoids += "sphere " + std::to_string(3 * k) + " 0 0 1\n";
+        spheres += "sphere " + std::to_string(3 * k) + " 0 0 1\n";
+    }
+    const SceneFeatures transformed = scene_features(parse(ellipsoids));
+    CHECK(transformed.transformed_spheres == kBvhFromPrimitives);
+    CHECK_FALSE(uses_bvh(transformed));
+    CHECK(uses_bvh(scene_features(parse(spheres))));
 }

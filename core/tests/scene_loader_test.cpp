@@ -228,6 +228,16 @@ TEST_CASE("parse_scene: plane and ortho extensions", "[core]") {
     CHECK(scene.planes[0].shape.normal == Vec3(0, 1, 0));
 }
 
+TEST_CASE("parse_scene: rayoffset picks the rule shadow and mirror rays start by", "[core]") {
+    CHECK(parse(kCamera).ray_offset == RayOffset{OffsetRule::error_bound, 0.0});
+    CHECK(parse(kCamera + "rayoffset along-ray 1e-4\n").ray_offset ==
+          RayOffset{OffsetRule::along_ray, 1e-4});
+    CHECK(parse(kCamera + "rayoffset along-normal 0.5\n").ray_offset ==
+          RayOffset{OffsetRule::along_normal, 0.5});
+    CHECK(parse(kCamera + "rayoffset error-bound\n").ray_offset ==
+          RayOffset{OffsetRule::error_bound, 0.0});
+}
+
 TEST_CASE("parse_scene: mesh loads a file relative to the scene and records it", "[core]") {
     const Scene scene = parse(kCamera + "diffuse 0 1 0\nmesh meshes/square.off\nsphere 0 0 0 1\n");
     REQUIRE(scene.meshes.size() == 1);

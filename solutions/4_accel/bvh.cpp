@@ -30,7 +30,8 @@ double search_limit(double t) {
 // the bound (after a nearer hit), and returns true to stop.
 //
 // The node test (node_test.h) takes all four children at once, and the stack is a plain array,
-// never initialized: this loop is where the time goes (docs/stage4.md, "Measurements").
+// never initialized: this loop is where the time goes (`raystep bench`, docs/stage4.md,
+// "Measured on the development machine").
 template <class Visit>
 void walk(const Bvh::Impl& bvh, const Ray& ray, TraversalStats* stats, Visit visit) {
     if (bvh.slots.empty()) return;

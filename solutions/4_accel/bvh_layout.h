@@ -3,7 +3,7 @@
 // The reference BVH's memory layout. The tree is built binary, as the lecture builds it, then
 // collapsed to four children per node: a ray then visits about half as many nodes, and every
 // visit is a dependent memory read and a branch the processor cannot predict, which is what
-// single-ray traversal waits on (docs/stage4.md, "Measurements").
+// single-ray traversal waits on (docs/stage4.md, "Measured on the development machine").
 
 #include <cstdint>
 #include <vector>

@@ -5,7 +5,7 @@
 
 namespace raystep {
 
-// Stage 2: cameras. Handout: docs/stage2.md, "Cameras".
+// Stage 2: cameras. Handout: docs/stage2.md, "The perspective camera".
 //
 // Pixels: (i, j) is column i from the left and row j from the top, i in [0, width),
 // j in [0, height); row 0 is the top row of the image file. A ray goes through the pixel's

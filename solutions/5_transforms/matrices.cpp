@@ -1,0 +1,73 @@
+// Stage 5 reference solution: the transform matrices and the stack's product.
+
+#include <cmath>
+#include <stdexcept>
+
+#include <glm/trigonometric.hpp>
+
+#include "stages/1_vectors/vectors.h"
+#include "stages/5_transforms/transform.h"
+
+namespace raystep {
+
+Mat4 translation(const Vec3& offset) {
+    Mat4 m(1.0);
+    m[3] = Vec4(offset, 1.0);
+    return m;
+}
+
+Mat4 rotation(const Vec3& axis, double degrees) {
+    if (axis == Vec3(0.0)) throw std::invalid_argument("rotation: the axis is zero");
+    const Vec3 a = normalize(axis);
+    const double theta = glm::radians(degrees);
+    const double c = std::cos(theta);
+    const double s = std::sin(theta);
+    // Rodrigues: c I + (1 - c) a a^T + s A*, written out column by column (m[column][row]).
+    Mat4 m(1.0);
+    for (int column = 0; column < 3; ++column) {
+        for (int row = 0; row < 3; ++row) {
+            m[column][row] = (row == column ? c : 0.0) + (1.0 - c) * a[row] * a[column];
+        }
+    }
+    m[1][0] -= s * a.z;
+    m[2][0] += s * a.y;
+    m[0][1] += s * a.z;
+    m[2][1] -= s * a.x;
+    m[0][2] -= s * a.y;
+    m[1][2] += s * a.x;
+    return m;
+}
+
+Mat4 scaling(const Vec3& factors) {
+    return Mat4(Vec4(factors.x, 0, 0, 0), Vec4(0, factors.y, 0, 0), Vec4(0, 0, factors.z, 0),
+                Vec4(0, 0, 0, 1));
+}
+
+namespace {
+
+// An op's matrix and its inverse, the inverse in closed form: no division by a determinant.
+Transform op_transform(const TransformOp& op) {
+    switch (op.kind) {
+        case TransformOp::Kind::translate:
+            return {translation(op.vector), translation(-op.vector)};
+        case TransformOp::Kind::rotate:
+            return {rotation(op.vector, op.angle_degrees), rotation(op.vector, -op.angle_degrees)};
+        case TransformOp::Kind::scale:
+            return {scaling(op.vector), scaling(1.0 / op.vector)};
+    }
+    throw std::logic_error("compose: unknown transform op");
+}
+
+}  // namespace
+
+Transform compose(const std::vector<TransformOp>& ops) {
+    Transform result{Mat4(1.0), Mat4(1.0)};
+    for (const TransformOp& op : ops) {
+        const Transform step = op_transform(op);
+        result.matrix = result.matrix * step.matrix;
+        result.inverse = step.inverse * result.inverse;
+    }
+    return result;
+}
+
+}  // namespace raystep

@@ -1,0 +1,251 @@
+// Public tests for stage 5. Run them with `ctest --test-dir build/release -L stage5`, or run
+// build/release/bin/raystep_stage5_tests directly to see every failure in full.
+
+#include <cmath>
+#include <random>
+#include <stdexcept>
+#include <vector>
+
+#include <glm/ext/matrix_transform.hpp>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "core/testing/catch.h"
+#include "core/testing/vec3_matchers.h"
+#include "stages/5_transforms/transform.h"
+
+using namespace raystep;
+using raystep::testing::IsNear;
+
+namespace {
+
+constexpr double kTight = 1e-14;
+
+Vec3 apply_to_point(const Mat4& m, const Vec3& p) {
+    return Vec3(m * Vec4(p, 1.0));
+}
+
+Vec3 apply_to_direction(const Mat4& m, const Vec3& d) {
+    return Vec3(m * Vec4(d, 0.0));
+}
+
+TransformOp translate_op(const Vec3& offset) {
+    return {TransformOp::Kind::translate, offset, 0.0};
+}
+
+TransformOp rotate_op(const Vec3& axis, double degrees) {
+    return {TransformOp::Kind::rotate, axis, degrees};
+}
+
+TransformOp scale_op(const Vec3& factors) {
+    return {TransformOp::Kind::scale, factors, 0.0};
+}
+
+}  // namespace
+
+TEST_CASE("translation: moves points and leaves directions alone", "[stage5]") {
+    const Mat4 m = translation({1, -2, 3});
+    CHECK_THAT(apply_to_point(m, {10, 20, 30}), IsNear(Vec3(11, 18, 33), 0.0));
+    CHECK_THAT(apply_to_direction(m, {10, 20, 30}), IsNear(Vec3(10, 20, 30), 0.0));
+}
+
+TEST_CASE("scaling: multiplies each coordinate by its factor", "[stage5]") {
+    const Mat4 m = scaling({2, 3, -4});
+    CHECK_THAT(apply_to_point(m, {1, 1, 1}), IsNear(Vec3(2, 3, -4), 0.0));
+    CHECK(m[3] == Vec4(0, 0, 0, 1));
+}
+
+TEST_CASE("rotation: a quarter turn about z takes x to y (right-hand rule)", "[stage5]") {
+    const Mat4 m = rotation({0, 0, 1}, 90.0);
+    CHECK_THAT(apply_to_point(m, {1, 0, 0}), IsNear(Vec3(0, 1, 0), kTight));
+    CHECK_THAT(apply_to_point(m, {0, 1, 0}), IsNear(Vec3(-1, 0, 0), kTight));
+    CHECK_THAT(apply_to_point(m, {0, 0, 1}), IsNear(Vec3(0, 0, 1), kTight));
+}
+
+TEST_CASE("rotation: about x and y, the right-hand rule too", "[stage5]") {
+    CHECK_THAT(apply_to_point(rotation({1, 0, 0}, 90.0), {0, 1, 0}), IsNear(Vec3(0, 0, 1), kTight));
+    CHECK_THAT(apply_to_point(rotation({0, 1, 0}, 90.0), {0, 0, 1}), IsNear(Vec3(1, 0, 0), kTight));
+}
+
+TEST_CASE("rotation: the axis need not be unit length", "[stage5]") {
+    const Mat4 unit = rotation({0, 0, 1}, 30.0);
+    const Mat4 long_axis = rotation({0, 0, 7}, 30.0);
+    CHECK_THAT(apply_to_point(long_axis, {1, 2, 3}),
+               IsNear(apply_to_point(unit, {1, 2, 3}), kTight));
+}
+
+TEST_CASE("rotation: agrees with glm::rotate about random axes", "[stage5]") {
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (int k = 0; k < 200; ++k) {
+        const Vec3 axis{u(rng), u(rng), u(rng)};
+        const double degrees = 360.0 * u(rng);
+        const Vec3 p{u(rng), u(rng), u(rng)};
+        CAPTURE(k, axis.x, axis.y, axis.z, degrees);
+        const Mat4 ours = rotation(axis, degrees);
+        const Mat4 theirs = glm::rotate(Mat4(1.0), glm::radians(degrees), axis);
+        CHECK_THAT(apply_to_point(ours, p), IsNear(apply_to_point(theirs, p), 1e-13));
+    }
+}
+
+TEST_CASE("rotation: keeps lengths and the axis itself", "[stage5]") {
+    const Vec3 axis{1, 2, 2};
+    const Mat4 m = rotation(axis, 123.0);
+    CHECK_THAT(apply_to_point(m, axis), IsNear(axis, 1e-14));
+    const Vec3 p{3, -1, 4};
+    CHECK(glm::length(apply_to_point(m, p)) == Approx(glm::length(p)).epsilon(kTight));
+}
+
+TEST_CASE("rotation: a zero axis is an error", "[stage5]") {
+    CHECK_THROWS_AS(rotation({0, 0, 0}, 45.0), std::invalid_argument);
+}
+
+TEST_CASE("compose: no ops is the identity", "[stage5]") {
+    const Transform t = compose({});
+    CHECK(t.matrix == Mat4(1.0));
+    CHECK(t.inverse == Mat4(1.0));
+}
+
+TEST_CASE("compose: right-multiplies, so the last op written acts first", "[stage5]") {
+    // translate 1 0 0, then scale 2 2 2: M = T S, the point is scaled, then moved.
+    const Transform translate_then_scale = compose({translate_op({1, 0, 0}), scale_op({2, 2, 2})});
+    CHECK_THAT(apply_to_point(translate_then_scale.matrix, {1, 1, 1}), IsNear(Vec3(3, 2, 2), 0.0));
+    // The other order, M = S T: moved, then scaled.
+    const Transform scale_then_translate = compose({scale_op({2, 2, 2}), translate_op({1, 0, 0})});
+    CHECK_THAT(apply_to_point(scale_then_translate.matrix, {1, 1, 1}), IsNear(Vec3(4, 2, 2), 0.0));
+}
+
+TEST_CASE("compose: translate then rotate turns the object in place, then moves it", "[stage5]") {
+    // The classic scene idiom: `translate 5 0 0` then `rotate 0 0 1 90` spins the object about
+    // its own centre and puts it at x = 5, not on a circle about the world's origin.
+    const Transform t = compose({translate_op({5, 0, 0}), rotate_op({0, 0, 1}, 90.0)});
+    CHECK_THAT(apply_to_point(t.matrix, {1, 0, 0}), IsNear(Vec3(5, 1, 0), kTight));
+}
+
+TEST_CASE("compose: the inverse undoes the matrix", "[stage5]") {
+    std::mt19937_64 rng(55);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    std::uniform_real_distribution<double> factor(0.25, 4.0);
+    for (int k = 0; k < 200; ++k) {
+        std::vector<TransformOp> ops;
+        for (int n = 0; n < 5; ++n) {
+            switch ((k + n) % 3) {
+                case 0:
+                    ops.push_back(translate_op({u(rng), u(rng), u(rng)}));
+                    break;
+                case 1:
+                    ops.push_back(rotate_op({u(rng), u(rng), u(rng)}, 180.0 * u(rng)));
+                    break;
+                default:
+                    ops.push_back(scale_op({factor(rng), factor(rng), factor(rng)}));
+            }
+        }
+        const Transform t = compose(ops);
+        const Vec3 p{u(rng), u(rng), u(rng)};
+        CAPTURE(k);
+        CHECK_THAT(apply_to_point(t.inverse, apply_to_point(t.matrix, p)), IsNear(p, 1e-12));
+        CHECK_THAT(apply_to_point(t.matrix, apply_to_point(t.inverse, p)), IsNear(p, 1e-12));
+    }
+}
+
+TEST_CASE("compose: the inverse comes from the ops, exact where they are", "[stage5]") {
+    // Scale by 1e-3 and translate by 1e4: inverting the product would divide by a determinant of
+    // 1e-9; the ops' own inverses (scale by 1000, translate by -1e4) need no division at all.
+    const Transform t = compose({translate_op({1e4, 0, 0}), scale_op({1e-3, 1e-3, 1e-3})});
+    CHECK(t.inverse == scaling({1.0 / 1e-3, 1.0 / 1e-3, 1.0 / 1e-3}) * translation({-1e4, 0, 0}));
+}
+
+TEST_CASE("ray_to_object: the direction is not renormalized, so t is the same in both frames",
+          "[stage5]") {
+    const Transform t = compose({translate_op({1, 2, 3}), scale_op({2, 2, 2})});
+    const Ray world{{0, 0, 10}, {0, 0, -1}, 0.5, 20.0};
+    const Ray object = ray_to_object(t, world);
+    // Scaling by 2 makes object distances half: the object direction has length 1/2.
+    CHECK(glm::length(object.direction) == Approx(0.5).epsilon(kTight));
+    CHECK(object.t_min == 0.5);
+    CHECK(object.t_max == 20.0);
+    for (const double s : {0.0, 1.0, 7.25}) {
+        CAPTURE(s);
+        CHECK_THAT(point_to_world(t, object.at(s)), IsNear(world.at(s), 1e-13));
+    }
+}
+
+TEST_CASE("ray_to_object: a translation moves the origin and not the direction", "[stage5]") {
+    const Transform t = compose({translate_op({1, 2, 3})});
+    const Ray object = ray_to_object(t, Ray{{1, 1, 1}, {0, 1, 0}});
+    CHECK_THAT(object.origin, IsNear(Vec3(0, -1, -2), 0.0));
+    CHECK_THAT(object.direction, IsNear(Vec3(0, 1, 0), 0.0));
+}
+
+TEST_CASE("point_to_world: applies the whole matrix, translation included", "[stage5]") {
+    const Transform t = compose({translate_op({1, 0, 0}), scale_op({2, 3, 4})});
+    CHECK_THAT(point_to_world(t, {1, 1, 1}), IsNear(Vec3(3, 3, 4), 0.0));
+}
+
+TEST_CASE("normal_to_world: under a non-uniform scale M^-T n stays perpendicular, M n does not",
+          "[stage5]") {
+    // The plane x + y = 0 has normal n = (1, 1, 0) and contains the tangent (1, -1, 0).
+    // Squash y by 4: the tangent becomes M t = (1, -4, 0).
+    const Transform t = compose({scale_op({1, 4, 1})});
+    const Vec3 n{1, 1, 0};
+    const Vec3 tangent = apply_to_direction(t.matrix, {1, -1, 0});
+    // The tempting answer, M n = (1, 4, 0), is visibly off: (1, 4, 0) . (1, -4, 0) = -15.
+    CHECK(glm::dot(apply_to_direction(t.matrix, n), tangent) == -15.0);
+    // M^-T n = (1, 1/4, 0), normalized: perpendicular to the squashed surface.
+    const Vec3 world = normal_to_world(t, n);
+    CHECK(glm::dot(world, tangent) == Approx(0.0).margin(kTight));
+    CHECK_THAT(world, IsNear(glm::normalize(Vec3(1, 0.25, 0)), kTight));
+}
+
+TEST_CASE("normal_to_world: unit length, and a translation leaves normals alone", "[stage5]") {
+    const Transform moved = compose({translate_op({5, 6, 7})});
+    CHECK_THAT(normal_to_world(moved, {0, 0, 1}), IsNear(Vec3(0, 0, 1), 0.0));
+    const Transform scaled = compose({scale_op({3, 3, 3})});
+    CHECK(glm::length(normal_to_world(scaled, {0, 2, 0})) == Approx(1.0).epsilon(kTight));
+}
+
+TEST_CASE("intersect_transformed_sphere: t along a unit world ray is the world distance",
+          "[stage5]") {
+    // A unit sphere squashed to half its height in z: its top is at z = 0.5.
+    const Transform t = compose({scale_op({2, 1, 0.5})});
+    const Sphere unit{{0, 0, 0}, 1.0};
+    const std::optional<Hit> hit =
+        intersect_transformed_sphere(Ray{{0, 0, 10}, {0, 0, -1}}, unit, t);
+    REQUIRE(hit);
+    CHECK(hit->t == Approx(9.5).epsilon(kTight));
+    CHECK_THAT(hit->normal, IsNear(Vec3(0, 0, 1), kTight));
+}
+
+TEST_CASE("intersect_transformed_sphere: the normal is the ellipsoid's analytic normal",
+          "[stage5]") {
+    // The unit sphere scaled by (a, b, c) is the ellipsoid x^2/a^2 + y^2/b^2 + z^2/c^2 = 1, moved
+    // by `centre`. Its normal at p is the gradient (x/a^2, y/b^2, z/c^2), normalized.
+    const Vec3 radii{3, 1, 0.5};
+    const Vec3 centre{1, -2, 0.5};
+    const Transform t = compose({translate_op(centre), scale_op(radii)});
+    const Sphere unit{{0, 0, 0}, 1.0};
+    std::mt19937_64 rng(17);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    int hits = 0;
+    for (int k = 0; k < 500; ++k) {
+        const Vec3 origin = centre + 10.0 * glm::normalize(Vec3(u(rng), u(rng), u(rng)));
+        const Vec3 target = centre + 0.5 * radii * Vec3(u(rng), u(rng), u(rng));
+        const Ray ray{origin, glm::normalize(target - origin)};
+        const std::optional<Hit> hit = intersect_transformed_sphere(ray, unit, t);
+        CAPTURE(k);
+        REQUIRE(hit);  // every ray aims inside the ellipsoid
+        ++hits;
+        const Vec3 q = (ray.at(hit->t) - centre) / radii;
+        CHECK(glm::dot(q, q) == Approx(1.0).epsilon(1e-12));
+        const Vec3 gradient = (ray.at(hit->t) - centre) / (radii * radii);
+        CHECK_THAT(hit->normal, IsNear(glm::normalize(gradient), 1e-12));
+    }
+    CHECK(hits == 500);
+}
+
+TEST_CASE("intersect_transformed_sphere: a ray past the ellipsoid misses", "[stage5]") {
+    const Transform t = compose({scale_op({2, 1, 0.5})});
+    const Sphere unit{{0, 0, 0}, 1.0};
+    // The line x = 1, z = 0.6 along y: (1/2)^2 + (0.6/0.5)^2 = 1.69 > 1, outside at every y.
+    CHECK_FALSE(intersect_transformed_sphere(Ray{{1.0, -10, 0.6}, {0, 1, 0}}, unit, t));
+}
