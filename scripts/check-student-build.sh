@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # What students meet, checked.
-#   1. A student release: this tree without solutions/ and grader/, built as a student would.
+#   1. A student release, as `raystep-grade release` writes it (no solutions/, no grader/, the
+#      reference images in scenes/), built as a student would.
 #      Every public test must fail with a NotImplemented message and no test binary may crash;
 #      `raystep render` and `raystep trace` must stop with the message of the stub that stopped
 #      them; `raystep check` must report every stage-3 function as not implemented; `raystep bench`
@@ -16,9 +17,12 @@ stub_message='stage [0-9]+: [A-Za-z_:]+ is not implemented yet, see docs/stage[0
 
 release=$(mktemp -d)
 trap 'rm -rf "$release"' EXIT
-tar -C "$root" --exclude=./build --exclude=./out --exclude=./.git --exclude=./solutions \
-    --exclude=./grader -cf - . |
-    tar -C "$release" -xf -
+rmdir "$release"
+build/release/bin/raystep-grade release "$release" >/dev/null
+if [ -e "$release/solutions" ] || [ -e "$release/grader" ]; then
+    echo "FAIL the release holds solutions/ or grader/"
+    exit 1
+fi
 cmake -S "$release" -B "$release/build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
     -DRAYSTEP_WARNINGS_AS_ERRORS=ON >/dev/null
 cmake --build "$release/build"

@@ -8,8 +8,11 @@ packages=(
     cmake ninja-build g++ pkg-config
     # the stage libraries, their tests and the raystep command
     libglm-dev catch2 libopenimageio-dev openimageio-tools libcli11-dev libtinyobjloader-dev
-    # the grader's exact oracle
-    libcgal-dev libgmp-dev libmpfr-dev
+    # the grader: its exact oracle, the probe protocol, the sandbox, and its report tests (the XML
+    # parsed back, the HTML report shown in a headless browser)
+    libcgal-dev libgmp-dev libmpfr-dev nlohmann-json3-dev bubblewrap libxml2-dev chromium
+    # its Gradescope test, which measures the autograder's memory
+    time
     # raystep-reference bench: the Embree baseline, and the bunny mesh (CGAL's demo data)
     libembree-dev libcgal-demo
 )

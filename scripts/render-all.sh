@@ -11,6 +11,13 @@ cmake --preset release >/dev/null
 cmake --build --preset release
 
 raystep=build/release/bin/raystep-reference
+if [ ! -x "$raystep" ]; then
+    echo
+    echo "This is a student release: there is no reference build to render with. The reference"
+    echo "images are in scenes/<stage>/reference/; render with your own code with"
+    echo "  build/release/bin/raystep render SCENE --view VIEW -o FILE"
+    exit 0
+fi
 count=0
 while IFS= read -r scene; do
     relative=${scene#scenes/}

@@ -1,0 +1,114 @@
+#include "grader/grade/batch.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+
+#include "grader/grade/report_json.h"
+
+namespace raystep::grade {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A report written completely by an earlier run, or nothing.
+std::optional<GradeReport> finished_report(const fs::path& folder) {
+    std::ifstream in(folder / "report.json");
+    if (!in) return std::nullopt;
+    try {
+        return report_from_json(nlohmann::json::parse(in));
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+}
+
+std::string csv_field(const std::string& text) {
+    if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+    std::string quoted = "\"";
+    for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return quoted + "\"";
+}
+
+std::string number(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2f", x);
+    return text;
+}
+
+}  // namespace
+
+std::vector<fs::path> class_submissions(const fs::path& folder) {
+    std::vector<fs::path> entries;
+    for (const auto& entry : fs::directory_iterator(folder)) {
+        const fs::file_status status = entry.symlink_status();
+        if (fs::is_directory(status) ||
+            (fs::is_regular_file(status) && entry.path().extension() == ".zip")) {
+            entries.push_back(entry.path());
+        }
+    }
+    std::sort(entries.begin(), entries.end());
+    return entries;
+}
+
+std::string grades_csv(const std::vector<GradeReport>& reports) {
+    std::string csv = "student,score,max_score";
+    for (int stage = 1; stage <= 7; ++stage) csv += ",stage" + std::to_string(stage);
+    csv += ",pipeline,checks_passed,checks,seconds\r\n";
+    for (const GradeReport& r : reports) {
+        const std::vector<std::pair<double, double>> stages = r.stage_scores();
+        const std::size_t passed = static_cast<std::size_t>(std::count_if(
+            r.checks.begin(), r.checks.end(), [](const CheckResult& c) { return c.outcome == Outcome::passed; }));
+        csv += csv_field(r.student) + "," + number(r.score()) + "," + number(r.max_score());
+        for (int stage = 1; stage <= 7; ++stage) {
+            csv += "," + (static_cast<std::size_t>(stage) < stages.size() ? number(stages[static_cast<std::size_t>(stage)].first) : "0.00");
+        }
+        csv += "," + number(stages.empty() ? 0.0 : stages[0].first) + "," + std::to_string(passed) +
+               "," + std::to_string(r.checks.size()) + "," +
+               number(r.times.intake + r.times.build + r.times.checks + r.times.reports) + "\r\n";
+    }
+    return csv;
+}
+
+BatchTally grade_class(const BatchOptions& options, const Rubric& rubric,
+                       const ProbeToolchain& toolchain) {
+    const std::vector<fs::path> submissions = class_submissions(options.folder);
+    BatchTally tally;
+    std::vector<GradeReport> reports;
+    for (std::size_t k = 0; k < submissions.size(); ++k) {
+        const fs::path& path = submissions[k];
+        const std::string name = path.stem().string();
+        const fs::path folder = options.output / name;
+        if (options.progress) {
+            std::fprintf(stderr, "\r\033[K[%zu/%zu] %s", k + 1, submissions.size(), name.c_str());
+        }
+        if (std::optional<GradeReport> done = finished_report(folder)) {
+            reports.push_back(std::move(*done));
+            ++tally.resumed;
+            continue;
+        }
+        try {
+            GradeOptions one;
+            one.submission = path;
+            one.output = folder;
+            one.jobs = options.jobs;
+            one.reference_probe = options.reference_probe;
+            one.reproduce = "raystep-grade submission " + path.string();
+            GradeReport report = grade_submission(one, rubric, toolchain);
+            write_reports(report, folder);
+            fs::remove_all(folder / "work");
+            reports.push_back(std::move(report));
+            ++tally.graded;
+        } catch (const std::exception& error) {
+            std::fprintf(stderr, "\nraystep-grade: %s: %s\n", path.string().c_str(), error.what());
+            ++tally.failed;
+        }
+    }
+    if (options.progress) std::fputs("\r\033[K", stderr);
+    fs::create_directories(options.output);
+    std::ofstream csv(options.output / "grades.csv", std::ios::binary);
+    csv << grades_csv(reports);
+    return tally;
+}
+
+}  // namespace raystep::grade

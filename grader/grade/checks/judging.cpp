@@ -1,0 +1,79 @@
+#include "grader/grade/checks/judging.h"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace raystep::grade {
+
+CheckDefinition case_check(std::string id, int stage, std::string kind, std::string name,
+                           std::function<std::vector<ProbeCase>()> make_cases) {
+    return {id, stage, std::move(kind), std::move(name),
+            [id, make_cases = std::move(make_cases)](const GradingContext& context, const BuiltProbe& probe) {
+                return run_cases(context, id, probe, make_cases());
+            }};
+}
+
+WideVec widen(const Vec3& v) {
+    return {v.x, v.y, v.z};
+}
+
+Vec3 narrow(const WideVec& v) {
+    return {static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)};
+}
+
+std::string full_text(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", x);
+    return text;
+}
+
+std::string full_text(const Vec3& v) {
+    return "(" + full_text(v.x) + ", " + full_text(v.y) + ", " + full_text(v.z) + ")";
+}
+
+std::string ray_text(const Ray& r) {
+    return "origin " + full_text(r.origin) + ", direction " + full_text(r.direction) + ", t in [" +
+           full_text(r.t_min) + ", " + full_text(r.t_max) + "]";
+}
+
+double result_number(const ProbeAnswer& answer) {
+    if (answer.kind != ProbeAnswer::Kind::result) throw std::invalid_argument("no result");
+    return probe::number_from(answer.value);
+}
+
+Vec3 result_vec3(const ProbeAnswer& answer) {
+    if (answer.kind != ProbeAnswer::Kind::result) throw std::invalid_argument("no result");
+    return probe::vec3_from(answer.value);
+}
+
+Judgement near_number(const ProbeAnswer& answer, double expected, double tolerance) {
+    if (answer.kind != ProbeAnswer::Kind::result) return wrong(full_text(expected), "");
+    const double got = result_number(answer);
+    if (std::abs(got - expected) <= tolerance) return right();
+    return wrong(full_text(expected) + " (within " + full_text(tolerance) + ")", full_text(got));
+}
+
+Judgement near_vec3(const ProbeAnswer& answer, const Vec3& expected, double tolerance) {
+    if (answer.kind != ProbeAnswer::Kind::result) return wrong(full_text(expected), "");
+    const Vec3 got = result_vec3(answer);
+    for (int k = 0; k < 3; ++k) {
+        if (!(std::abs(got[k] - expected[k]) <= tolerance)) {
+            return wrong(full_text(expected) + " (within " + full_text(tolerance) + ")", full_text(got));
+        }
+    }
+    return right();
+}
+
+Judgement threw(const ProbeAnswer& answer, const std::string& type) {
+    if (answer.kind == ProbeAnswer::Kind::threw && answer.exception_type == type) return right();
+    return wrong("std::" + type + " thrown", "");
+}
+
+std::string vectors_text(std::initializer_list<Vec3> vectors) {
+    std::string text;
+    for (const Vec3& v : vectors) text += (text.empty() ? "" : ", ") + full_text(v);
+    return text;
+}
+
+}  // namespace raystep::grade

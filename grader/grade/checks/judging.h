@@ -1,0 +1,50 @@
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "grader/grade/check_definition.h"
+
+namespace raystep::grade {
+
+// Judges shared by the stages' checks: a probe's answer against the grader's expectation.
+
+/// A check that sends the probe of `stage` the cases `make_cases` writes and judges each answer
+/// (run_cases); the cases are made when the check runs, not when the checks are listed.
+CheckDefinition case_check(std::string id, int stage, std::string kind, std::string name,
+                           std::function<std::vector<ProbeCase>()> make_cases);
+
+// Expectations are worked out in long double (64-bit mantissa on x86-64): 11 more bits than a
+// double, so that the expectation's own rounding is far below the tolerances a check allows.
+using Wide = long double;
+using WideVec = glm::vec<3, Wide>;
+
+WideVec widen(const Vec3& v);
+Vec3 narrow(const WideVec& v);
+
+/// The result as a number, vector or ray; throws (an unreadable answer) when it is not one.
+double result_number(const ProbeAnswer& answer);
+Vec3 result_vec3(const ProbeAnswer& answer);
+
+/// Within `tolerance` of the expected number (absolute).
+Judgement near_number(const ProbeAnswer& answer, double expected, double tolerance);
+
+/// Every component within `tolerance` of the expected vector's (absolute).
+Judgement near_vec3(const ProbeAnswer& answer, const Vec3& expected, double tolerance);
+
+/// The call threw the named standard exception ("domain_error", ...), as the contract says.
+Judgement threw(const ProbeAnswer& answer, const std::string& type);
+
+/// A number or vector with every digit (17 significant), so that a counterexample shows the
+/// difference, however small, and can be typed back in.
+std::string full_text(double x);
+std::string full_text(const Vec3& v);
+std::string ray_text(const Ray& r);
+
+/// The case's vectors written out for a report.
+std::string vectors_text(std::initializer_list<Vec3> vectors);
+
+}  // namespace raystep::grade

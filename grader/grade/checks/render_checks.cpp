@@ -1,0 +1,130 @@
+// Render checks: a scene's view as the submission renders it, diffed with the same view from the
+// reference, rendered here in the grader. Each stage is graded on the view that shows its work
+// (docs/design, "Checks per stage"), with every other stage from the reference; the pipeline
+// checks render with every stage from the submission.
+
+#include <cmath>
+#include <filesystem>
+
+#include "core/image/image_io.h"
+#include "core/render/tile_renderer.h"
+#include "core/scene/scene_loader.h"
+#include "grader/grade/checks/stage_checks.h"
+#include "grader/grade/image_diff.h"
+#include "grader/protocol/image_json.h"
+
+namespace raystep::grade {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Renders at most this wide: enough to see a stage's mistakes, small enough that a slow
+// submission still renders every check within its time.
+constexpr int kWidth = 160;
+// A channel differing by more than this is a differing pixel (8-bit output rounds at 1/255).
+constexpr float kThreshold = 0.02f;
+// A render passes with at most this share of its pixels differing: an alternative method that is
+// right may decide pixels exactly on an edge or a shadow boundary the other way.
+constexpr double kEdgePixels = 0.005;
+
+Scene scaled_scene(const fs::path& path) {
+    Scene scene = load_scene(path);
+    if (scene.width > kWidth) {
+        const double scale = static_cast<double>(kWidth) / scene.width;
+        scene.width = kWidth;
+        scene.height = std::max(1, static_cast<int>(std::lround(scene.height * scale)));
+    }
+    return scene;
+}
+
+Image reference_render(const fs::path& path, View view) {
+    const Scene scene = scaled_scene(path);
+    RenderOptions options;
+    options.view = view;
+    options.threads = 1;
+    return render_image(prepare_render_scene(scene), options);
+}
+
+CheckMeasure measure_render(const GradingContext& context, const BuiltProbe& probe,
+                            const std::string& id, const std::string& scene, View view) {
+    const fs::path path = context.source / "scenes" / scene;
+    // The judge keeps the image; the diff comes once the run is over.
+    std::optional<Image> student;
+    ProbeCase render_case{scene + ", " + std::string(view_name(view)) + " view",
+                          {"render",
+                           {{"scene", path.string()},
+                            {"view", std::string(view_name(view))},
+                            {"max_width", kWidth}}},
+                          [&student](const ProbeAnswer& answer) {
+                              if (answer.kind != ProbeAnswer::Kind::result) return wrong("an image", "");
+                              student = probe::image_from(answer.value,
+                                                          static_cast<std::size_t>(kWidth) * kWidth * 4);
+                              return right();
+                          }};
+    ProbeRunLimits limits;
+    limits.readable = {context.source / "scenes"};
+    CheckMeasure measure = run_cases(context, id, probe, {render_case}, limits);
+    if (!student) return measure;
+
+    const Image reference = reference_render(path, view);
+    const ImageDiff diff = compare_images(reference, *student, kThreshold);
+    const fs::path folder = context.report_folder / "renders" / id;
+    write_image(reference, folder / "reference.png");
+    write_image(*student, folder / "student.png");
+    write_image(difference_heat_map(reference, *student, 0.25f), folder / "difference.png");
+    measure.images = {"renders/" + id + "/reference.png", "renders/" + id + "/student.png",
+                      "renders/" + id + "/difference.png"};
+    const double share = diff.pixels == 0 ? 1.0 : static_cast<double>(diff.pixels_over) / diff.pixels;
+    measure.fraction = 1.0 - share;
+    measure.metrics = {{"mean absolute error", diff.mean_error},
+                       {"rmse", diff.rms_error},
+                       {"psnr", diff.psnr},
+                       {"pixels over threshold", static_cast<double>(diff.pixels_over)},
+                       {"perceptually different pixels", static_cast<double>(diff.perceptual_failures)},
+                       {"pixels", static_cast<double>(diff.pixels)}};
+    measure.outcome = share <= kEdgePixels ? Outcome::passed : Outcome::failed;
+    char text[160];
+    std::snprintf(text, sizeof text, "%zu of %zu pixels differ by more than %.2f (%.2f%%); RMSE %.4f",
+                  diff.pixels_over, diff.pixels, static_cast<double>(kThreshold), 100.0 * share,
+                  diff.rms_error);
+    measure.summary = diff.same_size ? text : "the image has the wrong size";
+    return measure;
+}
+
+CheckDefinition render_check(int stage, const std::string& scene, View view) {
+    const std::string stem = fs::path(scene).stem().string();
+    const std::string id = (stage == 0 ? std::string("pipeline") : "stage" + std::to_string(stage)) +
+                           ".render." + stem + "." + std::string(view_name(view));
+    return {id, stage, "render",
+            "the " + std::string(view_name(view)) + " view of scenes/" + scene +
+                (stage == 0 ? ", every stage from the submission" : ""),
+            [=](const GradingContext& context, const BuiltProbe& probe) {
+                return measure_render(context, probe, id, scene, view);
+            }};
+}
+
+}  // namespace
+
+std::vector<CheckDefinition> render_checks() {
+    return {
+        render_check(2, "stage2/perspective-wide.test", View::rays),
+        render_check(2, "stage2/orthographic.test", View::rays),
+        render_check(3, "stage3/spheres-on-plane.test", View::depth),
+        render_check(3, "stage3/spheres-on-plane.test", View::normal),
+        render_check(3, "stage3/triangle-fan.test", View::barycentric),
+        render_check(4, "stage4/sphere-field.test", View::depth),
+        render_check(5, "stage5/ellipsoids.test", View::normal),
+        render_check(5, "stage5/table.test", View::depth),
+        render_check(6, "stage6/cornell-box.test", View::shaded),
+        render_check(6, "stage6/shininess-row.test", View::shaded),
+        render_check(6, "stage6/acne-scale-1e4.test", View::shaded),
+        render_check(7, "stage7/mirror-spheres.test", View::full),
+        render_check(7, "stage7/facing-mirrors-depth5.test", View::full),
+        render_check(0, "stage6/cornell-box.test", View::full),
+        render_check(0, "stage7/mirror-spheres.test", View::full),
+        render_check(0, "stage5/table.test", View::full),
+    };
+}
+
+}  // namespace raystep::grade

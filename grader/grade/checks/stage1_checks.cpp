@@ -1,0 +1,165 @@
+// Stage 1 checks: the vector functions on hand-worked values (public and hidden), and against
+// long-double arithmetic on random vectors of every magnitude.
+
+#include <cmath>
+#include <random>
+
+#include "grader/grade/checks/judging.h"
+#include "grader/grade/checks/stage_checks.h"
+
+namespace raystep::grade {
+
+namespace {
+
+using probe::Json;
+
+constexpr double kUnit = 0x1p-53;
+
+ProbeCase vector_case(const std::string& call, std::initializer_list<Vec3> args,
+                      std::function<Judgement(const ProbeAnswer&)> judge) {
+    Json json_args = Json::array();
+    for (const Vec3& v : args) json_args.push_back(probe::vec3(v));
+    return {call + vectors_text(args), {call, json_args}, std::move(judge)};
+}
+
+ProbeCase exact_vector(const std::string& call, std::initializer_list<Vec3> args, Vec3 expected,
+                       double tolerance = 0.0) {
+    return vector_case(call, args, [=](const ProbeAnswer& a) { return near_vec3(a, expected, tolerance); });
+}
+
+ProbeCase exact_number(const std::string& call, std::initializer_list<Vec3> args, double expected,
+                       double tolerance = 0.0) {
+    return vector_case(call, args, [=](const ProbeAnswer& a) { return near_number(a, expected, tolerance); });
+}
+
+ProbeCase throws_domain_error(const std::string& call, std::initializer_list<Vec3> args) {
+    return vector_case(call, args, [](const ProbeAnswer& a) { return threw(a, "domain_error"); });
+}
+
+// orthonormal_frame(a, b) against the frame worked out by hand.
+ProbeCase frame_case(const Vec3& a, const Vec3& b, const Vec3& u, const Vec3& v, const Vec3& w) {
+    return vector_case("orthonormal_frame", {a, b}, [=](const ProbeAnswer& answer) {
+        if (answer.kind != ProbeAnswer::Kind::result) return wrong("a frame", "");
+        const Vec3 got[3] = {probe::vec3_from(answer.value.at("u")),
+                             probe::vec3_from(answer.value.at("v")),
+                             probe::vec3_from(answer.value.at("w"))};
+        const Vec3 expected[3] = {u, v, w};
+        for (int k = 0; k < 3; ++k) {
+            for (int c = 0; c < 3; ++c) {
+                if (!(std::abs(got[k][c] - expected[k][c]) <= 4 * kUnit)) {
+                    return wrong("u " + full_text(u) + " v " + full_text(v) + " w " + full_text(w),
+                                 "u " + full_text(got[0]) + " v " + full_text(got[1]) + " w " +
+                                     full_text(got[2]));
+                }
+            }
+        }
+        return right();
+    });
+}
+
+std::vector<ProbeCase> public_cases() {
+    const double r2 = std::sqrt(0.5);
+    return {
+        exact_number("dot", {{1, 2, 3}, {4, -5, 6}}, 12.0),
+        exact_vector("cross", {{1, 0, 0}, {0, 1, 0}}, {0, 0, 1}),
+        exact_vector("cross", {{0, 1, 0}, {1, 0, 0}}, {0, 0, -1}),
+        exact_number("length", {{3, 4, 0}}, 5.0),
+        exact_number("length", {{3e200, 4e200, 0}}, 5e200, 4 * kUnit * 5e200),
+        exact_number("length", {{3e-200, 4e-200, 0}}, 5e-200, 4 * kUnit * 5e-200),
+        exact_vector("normalize", {{0, 3, 4}}, {0, 0.6, 0.8}, 2 * kUnit),
+        exact_vector("normalize", {{1e-300, 0, 0}}, {1, 0, 0}, 2 * kUnit),
+        throws_domain_error("normalize", {{0, 0, 0}}),
+        exact_vector("reflect", {{1, -1, 0}, {0, 1, 0}}, {1, 1, 0}),
+        exact_vector("project_onto", {{2, 3, 4}, {0, 2, 0}}, {0, 3, 0}),
+        throws_domain_error("project_onto", {{2, 3, 4}, {0, 0, 0}}),
+        exact_vector("perpendicular_to", {{2, 3, 4}, {0, 2, 0}}, {2, 0, 4}),
+        frame_case({0, 0, 5}, {0, 1, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}),
+        frame_case({1, 0, 1}, {0, 1, 0}, {r2, 0, -r2}, {0, 1, 0}, {r2, 0, r2}),
+        throws_domain_error("orthonormal_frame", {{0, 0, 1}, {0, 0, 3}}),
+    };
+}
+
+// The hidden ones: the contract's edge cases a student's own tests may not reach.
+std::vector<ProbeCase> hidden_cases() {
+    const double inf = HUGE_VAL;
+    return {
+        exact_number("length", {{1e-320, 0, 0}}, 1e-320),
+        exact_number("length", {{1e300, 1e300, 1e300}}, std::sqrt(3.0) * 1e300, 4 * kUnit * 2e300),
+        throws_domain_error("normalize", {{inf, 0, 0}}),
+        throws_domain_error("normalize", {{std::nan(""), 1, 0}}),
+        exact_vector("normalize", {{-2e250, 0, 0}}, {-1, 0, 0}, 2 * kUnit),
+        exact_vector("reflect", {{3, -4, 5}, {0, 0, 1}}, {3, -4, -5}),
+        throws_domain_error("perpendicular_to", {{1, 2, 3}, {0, 0, 0}}),
+        throws_domain_error("orthonormal_frame", {{0, 0, 0}, {0, 1, 0}}),
+        throws_domain_error("orthonormal_frame", {{1, 1, 0}, {-2, -2, 0}}),
+        // Parallel, but w = a / |a| is rounded, so b x w is a few 1e-16, not zero
+        throws_domain_error("orthonormal_frame", {{1, 2, 3}, {2, 4, 6}}),
+        throws_domain_error("orthonormal_frame", {{0.1, 0.2, 0.3}, {-3, -6, -9}}),
+        frame_case({0, 0, 1e-150}, {0, 1e150, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}),
+    };
+}
+
+// Random vectors whose components span 1e-100 to 1e100 in magnitude, either sign.
+Vec3 random_vector(std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> mantissa(1.0, 10.0);
+    std::uniform_int_distribution<int> exponent(-100, 100);
+    std::bernoulli_distribution negative(0.5);
+    Vec3 v;
+    for (int k = 0; k < 3; ++k) {
+        v[k] = mantissa(rng) * std::pow(10.0, exponent(rng)) * (negative(rng) ? -1.0 : 1.0);
+    }
+    return v;
+}
+
+using Wide = long double;
+
+// dot and cross against long double, each within a few roundings of the sizes of its terms:
+// cancellation can take every digit, so the bound is relative to sum |a_i b_i|, not to the answer.
+std::vector<ProbeCase> oracle_cases() {
+    std::mt19937_64 rng(1701);
+    std::vector<ProbeCase> cases;
+    for (int k = 0; k < 200; ++k) {
+        // Components within 1e±50 of each other, so that products stay in range.
+        Vec3 a = random_vector(rng) * 1e-50;
+        Vec3 b = random_vector(rng) * 1e-50;
+        const Wide exact = Wide(a.x) * b.x + Wide(a.y) * b.y + Wide(a.z) * b.z;
+        const Wide size = std::abs(Wide(a.x) * b.x) + std::abs(Wide(a.y) * b.y) + std::abs(Wide(a.z) * b.z);
+        cases.push_back(exact_number("dot", {a, b}, static_cast<double>(exact),
+                                     static_cast<double>(4 * kUnit * size)));
+        const Vec3 c{static_cast<double>(Wide(a.y) * b.z - Wide(a.z) * b.y),
+                     static_cast<double>(Wide(a.z) * b.x - Wide(a.x) * b.z),
+                     static_cast<double>(Wide(a.x) * b.y - Wide(a.y) * b.x)};
+        const double cross_size = static_cast<double>(4 * kUnit *
+            (std::abs(Wide(a.x)) + std::abs(Wide(a.y)) + std::abs(Wide(a.z))) *
+            (std::abs(Wide(b.x)) + std::abs(Wide(b.y)) + std::abs(Wide(b.z))));
+        cases.push_back(exact_vector("cross", {a, b}, c, cross_size));
+    }
+    for (int k = 0; k < 200; ++k) {
+        // Every magnitude, squares far beyond a double's range: length must not overflow.
+        const Vec3 v = random_vector(rng) * (k % 2 ? 1e150 : 1e-150);
+        const Wide exact = std::sqrt(Wide(v.x) * v.x + Wide(v.y) * v.y + Wide(v.z) * v.z);
+        cases.push_back(exact_number("length", {v}, static_cast<double>(exact),
+                                     static_cast<double>(3 * kUnit * exact)));
+        const Vec3 unit{static_cast<double>(v.x / exact), static_cast<double>(v.y / exact),
+                        static_cast<double>(v.z / exact)};
+        cases.push_back(exact_vector("normalize", {v}, unit, 4 * kUnit));
+    }
+    return cases;
+}
+
+}  // namespace
+
+std::vector<CheckDefinition> stage1_checks() {
+    return {
+        case_check("stage1.unit", 1, "unit", "vector functions on hand-worked values",
+                   public_cases),
+        case_check("stage1.hidden", 1, "unit", "vector functions on the contract's edge cases",
+                   hidden_cases),
+        case_check("stage1.oracle", 1, "oracle",
+                   "dot, cross, length and normalize against long double on random vectors of "
+                   "every magnitude",
+                   oracle_cases),
+    };
+}
+
+}  // namespace raystep::grade

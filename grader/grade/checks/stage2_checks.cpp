@@ -1,0 +1,369 @@
+// Stage 2 checks: Ray::at and both cameras on hand-worked values (public and hidden), and the
+// rays of random cameras against the same rays computed in long double.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <random>
+#include <string>
+
+#include <glm/geometric.hpp>
+
+#include "grader/grade/checks/judging.h"
+#include "grader/grade/checks/stage_checks.h"
+
+namespace raystep::grade {
+
+namespace {
+
+using probe::Json;
+
+constexpr double kUnit = 0x1p-53;
+// A camera ray's direction is unit length within 4 ulps of 1 (2^-52 each): every normalization
+// a student may write (stage 1's, glm's, v / |v|) lands within 3.
+constexpr double kUnitLength = 4 * 0x1p-52;
+constexpr Wide kPi = 3.141592653589793238462643383279502884L;
+const double kInf = std::numeric_limits<double>::infinity();
+
+// A camera as the probe's camera calls take it: fovy for a perspective one, the window for an
+// orthographic one.
+struct CameraSpec {
+    Vec3 lookfrom;
+    Vec3 lookat;
+    Vec3 up;
+    int width = 1;
+    int height = 1;
+    bool orthographic = false;
+    double fovy = 0.0;
+    double left = 0.0;
+    double right = 0.0;
+    double bottom = 0.0;
+    double top = 0.0;
+};
+
+CameraSpec perspective(const Vec3& lookfrom, const Vec3& lookat, const Vec3& up, double fovy,
+                       int width, int height) {
+    CameraSpec c{lookfrom, lookat, up, width, height};
+    c.fovy = fovy;
+    return c;
+}
+
+CameraSpec orthographic(const Vec3& lookfrom, const Vec3& lookat, const Vec3& up, double left,
+                        double right, double bottom, double top, int width, int height) {
+    CameraSpec c{lookfrom, lookat, up, width, height};
+    c.orthographic = true;
+    c.left = left;
+    c.right = right;
+    c.bottom = bottom;
+    c.top = top;
+    return c;
+}
+
+std::string camera_text(const CameraSpec& c, int i, int j) {
+    std::string text = c.orthographic ? "orthographic camera" : "perspective camera";
+    text +=
+        " from " + full_text(c.lookfrom) + " at " + full_text(c.lookat) + " up " + full_text(c.up);
+    text += c.orthographic ? ", window [" + full_text(c.left) + ", " + full_text(c.right) +
+                                 "] x [" + full_text(c.bottom) + ", " + full_text(c.top) + "]"
+                           : ", fovy " + full_text(c.fovy);
+    return text + ", " + std::to_string(c.width) + " x " + std::to_string(c.height) +
+           " pixels, pixel (" + std::to_string(i) + ", " + std::to_string(j) + ")";
+}
+
+ProbeQuery camera_query(const CameraSpec& c, int i, int j) {
+    Json args = {{"lookfrom", probe::vec3(c.lookfrom)},
+                 {"lookat", probe::vec3(c.lookat)},
+                 {"up", probe::vec3(c.up)},
+                 {"width", c.width},
+                 {"height", c.height},
+                 {"pixels", Json::array({Json::array({i, j})})}};
+    if (!c.orthographic) {
+        args["fovy"] = probe::number(c.fovy);
+        return {"perspective_rays", args};
+    }
+    args["left"] = probe::number(c.left);
+    args["right"] = probe::number(c.right);
+    args["bottom"] = probe::number(c.bottom);
+    args["top"] = probe::number(c.top);
+    return {"orthographic_rays", args};
+}
+
+// The camera's frame, exactly enough: w = a / |a|, u = (up x w) / |up x w|, v = w x u, and the
+// sine between up and the view direction, by which the frame's rounding in double is magnified.
+struct WideFrame {
+    WideVec u;
+    WideVec v;
+    WideVec w;
+    Wide up_sine;
+};
+
+WideFrame wide_frame(const CameraSpec& c) {
+    const WideVec a = widen(c.lookfrom) - widen(c.lookat);
+    const WideVec w = a / glm::length(a);
+    const WideVec up_cross_w = glm::cross(widen(c.up), w);
+    const Wide sine = glm::length(up_cross_w);
+    const WideVec u = up_cross_w / sine;
+    return {u, glm::cross(w, u), w, sine / glm::length(widen(c.up))};
+}
+
+// A camera ray as the judge expects it: t over [0, infinity), a unit direction.
+struct ExpectedRay {
+    Vec3 origin;
+    double origin_tolerance;  ///< per coordinate, absolute
+    Vec3 direction;
+    double direction_tolerance;
+};
+
+Judgement judge_camera_ray(const ProbeAnswer& answer, const ExpectedRay& e) {
+    const std::string expected = "origin " + full_text(e.origin) + " (within " +
+                                 full_text(e.origin_tolerance) + "), unit direction " +
+                                 full_text(e.direction) + " (within " +
+                                 full_text(e.direction_tolerance) + "), t in [0, inf]";
+    if (answer.kind != ProbeAnswer::Kind::result || !answer.value.is_array() ||
+        answer.value.size() != 1) {
+        return wrong(expected, "");
+    }
+    const Ray got = probe::ray_from(answer.value[0]);
+    const WideVec d = widen(got.direction);
+    // Written so that a NaN anywhere fails
+    bool ok = got.t_min == 0.0 && got.t_max == kInf &&
+              std::abs(std::sqrt(glm::dot(d, d)) - 1) <= kUnitLength;
+    for (int k = 0; k < 3; ++k) {
+        ok = ok && std::abs(got.origin[k] - e.origin[k]) <= e.origin_tolerance &&
+             std::abs(got.direction[k] - e.direction[k]) <= e.direction_tolerance;
+    }
+    return ok ? right() : wrong(expected, ray_text(got));
+}
+
+// The point of the image plane (at distance 1 from the eye) through pixel (i, j)'s centre, in
+// world directions; the half width scaled by `width_factor`.
+WideVec image_plane_point(const WideFrame& f, const CameraSpec& c, Wide half_angle,
+                          Wide width_factor, int i, int j) {
+    const Wide half_height = std::tan(half_angle);
+    const Wide half_width = half_height * c.width / c.height * width_factor;
+    const Wide alpha = 2 * (i + 0.5L) / c.width - 1;
+    const Wide beta = 1 - 2 * (j + 0.5L) / c.height;
+    return alpha * half_width * f.u + beta * half_height * f.v - f.w;
+}
+
+ExpectedRay expected_perspective(const CameraSpec& c, int i, int j) {
+    const WideFrame f = wide_frame(c);
+    const Wide half_angle = c.fovy * kPi / 360;
+    const WideVec through = image_plane_point(f, c, half_angle, 1, i, j);
+    const WideVec direction = through / glm::length(through);
+
+    // What a right implementation cannot help: its half angle is a few roundings off, which the
+    // tangent magnifies near 90 degrees; and the half width, taken by the CSE167 route
+    // tan(atan(half_height width / height)) as often as directly, inherits atan's rounding
+    // magnified the same way. The directions within those perturbations are all right.
+    const Wide phi = std::atan(std::tan(half_angle) * c.width / c.height);
+    const Wide width_spread = 4 * kUnit * phi / (std::sin(phi) * std::cos(phi));
+    const Wide perturbations[4][2] = {
+        {1 - 4 * kUnit, 1}, {1 + 4 * kUnit, 1}, {1, 1 - width_spread}, {1, 1 + width_spread}};
+    Wide spread = 0;
+    for (const auto& p : perturbations) {
+        const WideVec other = image_plane_point(f, c, half_angle * p[0], p[1], i, j);
+        const WideVec moved = other / glm::length(other) - direction;
+        spread = std::max({spread, std::abs(moved.x), std::abs(moved.y), std::abs(moved.z)});
+    }
+    // Each term of the image-plane point rounds at a few ulps of the half extents and of 1, the
+    // frame's vectors at a few ulps over the sine between up and the view; normalizing divides
+    // by the point's length.
+    const Wide half_height = std::tan(half_angle);
+    const Wide size =
+        (half_height * c.width / c.height + half_height + 1) / (glm::length(through) * f.up_sine);
+    return {c.lookfrom, 0.0, narrow(direction), static_cast<double>(8 * kUnit * size + spread)};
+}
+
+ExpectedRay expected_orthographic(const CameraSpec& c, int i, int j) {
+    const WideFrame f = wide_frame(c);
+    const Wide x = c.left + (Wide(c.right) - c.left) * (i + 0.5L) / c.width;
+    const Wide y = c.top - (Wide(c.top) - c.bottom) * (j + 0.5L) / c.height;
+    const WideVec origin = widen(c.lookfrom) + x * f.u + y * f.v;
+    // The window coordinates round at a few ulps of its edges, u and v carry the frame's
+    // rounding, and the sum rounds at the eye's ulps.
+    const Wide window = std::abs(Wide(c.left)) + std::abs(Wide(c.right)) +
+                        std::abs(Wide(c.bottom)) + std::abs(Wide(c.top));
+    const Wide eye = std::max(
+        {std::abs(Wide(c.lookfrom.x)), std::abs(Wide(c.lookfrom.y)), std::abs(Wide(c.lookfrom.z))});
+    return {narrow(origin), static_cast<double>(8 * kUnit * (eye + window / f.up_sine)),
+            narrow(-f.w), 8 * kUnit};
+}
+
+ProbeCase camera_ray(const CameraSpec& c, int i, int j) {
+    const ExpectedRay e =
+        c.orthographic ? expected_orthographic(c, i, j) : expected_perspective(c, i, j);
+    return {camera_text(c, i, j), camera_query(c, i, j),
+            [e](const ProbeAnswer& a) { return judge_camera_ray(a, e); }};
+}
+
+// No pixels asked: the camera's maker must throw, not the rays it would make later.
+ProbeCase no_camera(const CameraSpec& c) {
+    ProbeQuery query = camera_query(c, 0, 0);
+    query.args["pixels"] = Json::array();
+    const std::string text = camera_text(c, 0, 0);
+    return {text.substr(0, text.rfind(", pixel")) + ": no such camera", query,
+            [](const ProbeAnswer& a) { return threw(a, "domain_error"); }};
+}
+
+// R(t) = A + t D, within `tolerance` of `expected` per coordinate.
+ProbeCase ray_at(const Ray& ray, double t, const Vec3& expected, double tolerance = 0.0) {
+    return {"Ray{" + ray_text(ray) + "}.at(" + full_text(t) + ")",
+            {"ray_at", {{"ray", probe::ray(ray)}, {"t", probe::number(t)}}},
+            [=](const ProbeAnswer& a) { return near_vec3(a, expected, tolerance); }};
+}
+
+std::vector<ProbeCase> public_cases() {
+    // From the origin looking down -z, +y up: u = +x, v = +y, w = +z.
+    const auto front = [](double fovy, int width, int height) {
+        return perspective({0, 0, 0}, {0, 0, -3}, {0, 1, 0}, fovy, width, height);
+    };
+    // From (2, 0, 0) looking down +x with +z up: w = (-1, 0, 0), u = up x w = (0, -1, 0),
+    // v = w x u = (0, 0, 1).
+    const CameraSpec along_x = perspective({2, 0, 0}, {7, 0, 0}, {0, 0, 1}, 60, 3, 3);
+    return {
+        // (1, -2, 0.5) + 1.5 (2, 0.25, -4) = (4, -1.625, -5.5); every step exact.
+        ray_at({{1, -2, 0.5}, {2, 0.25, -4}}, 1.5, {4, -1.625, -5.5}),
+        // (0.5, 0, 3) - 2 (0, 1.25, -0.5) = (0.5, -2.5, 4): t may be negative.
+        ray_at({{0.5, 0, 3}, {0, 1.25, -0.5}}, -2.0, {0.5, -2.5, 4}),
+        // fovy 90 over 4 x 4: the image plane spans [-1, 1]^2 and pixel centres sit at
+        // +-0.25 and +-0.75. Pixel (0, 0), top left: normalize(-0.75, 0.75, -1).
+        camera_ray(front(90, 4, 4), 0, 0),
+        // Pixel (3, 3), bottom right: normalize(0.75, -0.75, -1).
+        camera_ray(front(90, 4, 4), 3, 3),
+        // Pixel (1, 2): alpha = 2 * 1.5 / 4 - 1 = -0.25, beta = 1 - 2 * 2.5 / 4 = -0.25.
+        camera_ray(front(90, 4, 4), 1, 2),
+        // 6 x 2 at fovy 90: half_width = 3. Pixel (5, 0): alpha = 2 * 5.5 / 6 - 1 = 5/6, so
+        // x = 2.5; beta = 1 - 2 * 0.5 / 2 = 0.5: normalize(2.5, 0.5, -1).
+        camera_ray(front(90, 6, 2), 5, 0),
+        camera_ray(front(90, 6, 2), 0, 1),
+        // Pixel (2, 0) of 3 x 3 at fovy 60: alpha = beta = 2/3, half extents tan 30 = 1/sqrt 3:
+        // (2/3)(1/sqrt 3) u + (2/3)(1/sqrt 3) v - w, a direction along +x, to the right (-y)
+        // and up (+z).
+        camera_ray(along_x, 2, 0),
+        camera_ray(along_x, 1, 1),
+        no_camera(front(180, 4, 4)),
+        no_camera(front(-45, 4, 4)),
+        no_camera(front(60, 0, 4)),
+        // up along the view direction (backwards here): no frame.
+        no_camera(perspective({0, 0, 5}, {0, 0, 0}, {0, 0, -2}, 60, 4, 4)),
+        // Window [-2, 2] x [-1, 1] over 4 x 2 pixels: pixel (0, 0) starts at
+        // x = -2 + 4 * 0.5 / 4 = -1.5, y = 1 - 2 * 0.5 / 2 = 0.5, so at (-1.5, 0.5, 5), along -z.
+        camera_ray(orthographic({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, -2, 2, -1, 1, 4, 2), 0, 0),
+        camera_ray(orthographic({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, -2, 2, -1, 1, 4, 2), 3, 1),
+        // Looking down +y with +z up: w = (0, -1, 0), u = (1, 0, 0), v = (0, 0, 1). Window
+        // [0, 2]^2 over 2 x 2, pixel (1, 0): x = 1.5, y = 1.5, origin (2.5, 2, 4.5), along +y.
+        camera_ray(orthographic({1, 2, 3}, {1, 7, 3}, {0, 0, 1}, 0, 2, 0, 2, 2, 2), 1, 0),
+        no_camera(orthographic({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 2, -2, -1, 1, 4, 2)),
+    };
+}
+
+// The hidden ones: the contract's edge cases a student's own tests may not reach.
+std::vector<ProbeCase> hidden_cases() {
+    const auto front = [](double fovy, int width, int height) {
+        return perspective({0, 0, 0}, {0, 0, -3}, {0, 1, 0}, fovy, width, height);
+    };
+    return {
+        // A far point along a long ray: t D and the sum each round once, at ulps of 1e10.
+        ray_at({{1e6, -3, 0.1}, {0.1, 0.7, -0.3}}, 1e10,
+               narrow(widen({1e6, -3, 0.1}) + Wide(1e10) * widen({0.1, 0.7, -0.3})),
+               2 * kUnit * 1e10),
+        // fovy near 0: distinct, finite, nearly parallel rays, their sideways parts ~1e-9.
+        camera_ray(front(1e-7, 64, 48), 0, 0),
+        camera_ray(front(1e-7, 64, 48), 63, 47),
+        // fovy near 180: the image plane is ~1e6 across, the corner rays nearly sideways.
+        camera_ray(front(179.9999, 64, 64), 0, 0),
+        camera_ray(front(179.9999, 64, 64), 40, 10),
+        no_camera(front(180.0001, 4, 4)),
+        no_camera(front(std::nan(""), 4, 4)),
+        no_camera(front(kInf, 4, 4)),
+        // One pixel: its centre is the image's, straight down -w.
+        camera_ray(front(75, 1, 1), 0, 0),
+        // One column: alpha = 0; row 4 of 5: beta = 1 - 2 * 4.5 / 5 = -0.8.
+        camera_ray(front(75, 1, 5), 0, 4),
+        no_camera(front(60, 5, 0)),
+        no_camera(front(60, -3, 5)),
+        // up not perpendicular to the view: only its part across the view counts.
+        camera_ray(perspective({0, 0, 0}, {0, 0, -1}, {0, 3, 3}, 90, 4, 4), 0, 0),
+        // up 1e-6 off the view direction: well clear of kParallelSine (1e-8), a valid frame
+        // (u = (0, -1, 0), v = (1, 0, 0)).
+        camera_ray(perspective({0, 0, 0}, {0, 0, -1}, {1e-6, 0, 1}, 90, 4, 2), 3, 0),
+        // 1e-12 off: parallel as orthonormal_frame counts it.
+        no_camera(perspective({0, 0, 0}, {0, 0, -1}, {1e-12, 0, 1}, 90, 4, 4)),
+        no_camera(perspective({-2, 3, 0.5}, {-2, 3, 0.5}, {0, 1, 0}, 90, 4, 4)),
+        // A wide image's last column: x = -1 + 2 * 999.5 / 1000 = 0.999.
+        camera_ray(orthographic({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, -1, 1, -0.5, 0.5, 1000, 1), 999,
+                   0),
+        // Far from the origin, a window of one unit: the origin rounds at the eye's ulps.
+        camera_ray(
+            orthographic({1e6, -1e6, 5e5}, {0, 0, 0}, {0, 0, 1}, -0.5, 0.5, -0.25, 0.25, 8, 4), 5,
+            3),
+        no_camera(orthographic({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, -1, 1, 0.5, 0.5, 4, 2)),
+        no_camera(orthographic({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, -1, 1, -1, 1, 0, 2)),
+    };
+}
+
+Vec3 uniform(std::mt19937_64& rng, double low, double high) {
+    std::uniform_real_distribution<double> u(low, high);
+    return {u(rng), u(rng), u(rng)};
+}
+
+// A random camera at a random scale: lookat 0.1 to 10 scales away, up at least 3 degrees off
+// the view direction.
+CameraSpec random_camera(std::mt19937_64& rng, bool ortho) {
+    const double scale = std::pow(10.0, std::uniform_int_distribution<int>(-3, 4)(rng));
+    std::uniform_real_distribution<double> distance(0.1, 10.0);
+    std::uniform_int_distribution<int> size(1, 4000);
+    for (;;) {
+        const Vec3 from = scale * uniform(rng, -1, 1);
+        const Vec3 at = from + scale * distance(rng) * glm::normalize(uniform(rng, -1, 1));
+        const Vec3 up = uniform(rng, -1, 1);
+        const double sine = glm::length(glm::cross(glm::normalize(up), glm::normalize(from - at)));
+        if (!(sine > 0.05)) continue;
+        const int width = size(rng);
+        const int height = std::bernoulli_distribution(0.2)(rng) ? width : size(rng);
+        if (!ortho) {
+            // Mostly ordinary fields of view, some nearly 0, some nearly 180.
+            std::uniform_real_distribution<double> choice(0.0, 1.0);
+            const double pick = choice(rng);
+            const double fovy = pick < 0.1   ? std::pow(10.0, -6 + 6 * choice(rng))
+                                : pick < 0.2 ? 179.99 - std::pow(10.0, -2 + 3 * choice(rng))
+                                             : 1 + 178 * choice(rng);
+            return perspective(from, at, up, fovy, width, height);
+        }
+        std::uniform_real_distribution<double> edge(-2.0, 2.0);
+        const double l = scale * edge(rng);
+        const double b = scale * edge(rng);
+        return orthographic(from, at, up, l, l + scale * distance(rng), b,
+                            b + scale * distance(rng), width, height);
+    }
+}
+
+std::vector<ProbeCase> oracle_cases() {
+    std::mt19937_64 rng(0x5EED'0002);
+    std::vector<ProbeCase> cases;
+    for (int k = 0; k < 400; ++k) {
+        const CameraSpec c = random_camera(rng, k >= 300);
+        const int i = std::uniform_int_distribution<int>(0, c.width - 1)(rng);
+        const int j = std::uniform_int_distribution<int>(0, c.height - 1)(rng);
+        cases.push_back(camera_ray(c, i, j));
+    }
+    return cases;
+}
+
+}  // namespace
+
+std::vector<CheckDefinition> stage2_checks() {
+    return {
+        case_check("stage2.unit", 2, "unit", "Ray::at and camera rays on hand-worked values",
+                   public_cases),
+        case_check("stage2.hidden", 2, "unit", "camera rays on the contract's edge cases",
+                   hidden_cases),
+        case_check("stage2.oracle", 2, "oracle",
+                   "perspective and orthographic rays of random cameras against long double",
+                   oracle_cases),
+    };
+}
+
+}  // namespace raystep::grade

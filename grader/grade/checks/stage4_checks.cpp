@@ -1,0 +1,353 @@
+// Stage 4 checks: the BVH (both splits) and the grid must return exactly closest_hit's answer
+// (same primitive, same t) on seeded scenes made to break them: random soups, shared edges met by
+// axis-parallel rays, coincident primitives (ties), flat and degenerate ones; occluded must agree
+// with the closest hit; the slab test on the cases the formula gets wrong. The expected answers
+// come from the reference closest_hit, run here in the grader. Speed: the submission's BVH
+// against the reference's on the same rays, timed from outside the probe.
+
+#include <chrono>
+#include <random>
+
+#include "grader/grade/checks/judging.h"
+#include "grader/grade/checks/stage_checks.h"
+#include "stages/3_intersect/intersect.h"
+#include "stages/4_accel/traversal.h"
+
+namespace raystep::grade {
+
+namespace {
+
+using probe::Json;
+
+struct AccelScene {
+    std::string name;
+    PrimitiveList primitives;
+    std::vector<Ray> rays;
+};
+
+Vec3 uniform(std::mt19937_64& rng, double low, double high) {
+    std::uniform_real_distribution<double> u(low, high);
+    return {u(rng), u(rng), u(rng)};
+}
+
+AccelScene random_soup(std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    AccelScene s{"random soup", {}, {}};
+    for (int k = 0; k < 300; ++k) {
+        const Vec3 c = uniform(rng, -1, 1);
+        s.primitives.triangles.push_back({c, c + uniform(rng, -0.2, 0.2), c + uniform(rng, -0.2, 0.2)});
+    }
+    std::uniform_real_distribution<double> radius(0.01, 0.15);
+    for (int k = 0; k < 60; ++k) s.primitives.spheres.push_back({uniform(rng, -1, 1), radius(rng)});
+    for (int k = 0; k < 600; ++k) {
+        // Half from outside the scene, half from inside it.
+        const Vec3 origin = k % 2 ? uniform(rng, -1, 1) : 3.0 * glm::normalize(uniform(rng, -1, 1));
+        s.rays.push_back({origin, uniform(rng, -1, 1) - origin});
+    }
+    return s;
+}
+
+// A grid of quads sharing edges and vertices, met by axis-parallel rays through the shared edges:
+// where slab tests with 0 * inf and children met at the same t go wrong.
+AccelScene shared_edges() {
+    AccelScene s{"shared edges, axis-parallel rays", {}, {}};
+    for (int i = 0; i < 8; ++i) {
+        for (int j = 0; j < 8; ++j) {
+            const Vec3 a(i, j, 0), b(i + 1, j, 0), c(i + 1, j + 1, 0), d(i, j + 1, 0);
+            s.primitives.triangles.push_back({a, b, c});
+            s.primitives.triangles.push_back({a, c, d});
+        }
+    }
+    for (int i = 0; i <= 8; ++i) {
+        for (int j = 0; j <= 8; ++j) {
+            s.rays.push_back({Vec3(i, j, 5), Vec3(0, 0, -1)});
+            s.rays.push_back({Vec3(i + 0.5, j, 5), Vec3(0, 0, -1)});
+            s.rays.push_back({Vec3(i, -1, 0), Vec3(0, 1, 0)});  // in the plane: misses
+        }
+    }
+    return s;
+}
+
+// Coincident and stacked primitives: equal t on different primitives, which only comes_before's
+// order settles; degenerate triangles and zero-radius spheres, which are misses.
+AccelScene ties_and_degenerates(std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    AccelScene s{"ties and degenerate primitives", {}, {}};
+    for (int k = 0; k < 40; ++k) {
+        const Vec3 c = uniform(rng, -1, 1);
+        const Triangle t{c, c + Vec3(0.3, 0, 0), c + Vec3(0, 0.3, 0)};
+        s.primitives.triangles.push_back(t);
+        s.primitives.triangles.push_back(t);                                  // the same twice
+        s.primitives.triangles.push_back({c, c + Vec3(0.3, 0, 0), c + Vec3(0.6, 0, 0)});  // flat
+        s.primitives.spheres.push_back({c, 0.1});
+        s.primitives.spheres.push_back({c, 0.1});
+        s.primitives.spheres.push_back({c + Vec3(0, 0, 0.5), 0.0});
+    }
+    for (int k = 0; k < 400; ++k) {
+        const Vec3 target = s.primitives.triangles[static_cast<std::size_t>(3 * (k % 40))].p0 +
+                            uniform(rng, 0, 0.15);
+        const Vec3 origin = target + 2.0 * glm::normalize(uniform(rng, -1, 1));
+        Ray r{origin, target - origin};
+        if (k % 4 == 0) r.t_max = 0.9;  // stop short of some hits
+        s.rays.push_back(r);
+    }
+    return s;
+}
+
+std::vector<AccelScene> scenes() {
+    return {random_soup(0xB7A1), shared_edges(), ties_and_degenerates(0x7135)};
+}
+
+std::string hit_text(const std::optional<PrimitiveHit>& h) {
+    if (!h) return "a miss";
+    return std::string(h->kind == PrimitiveKind::sphere ? "sphere" : h->kind == PrimitiveKind::triangle ? "triangle" : "plane") +
+           " " + std::to_string(h->index) + " at t = " + full_text(h->hit.t);
+}
+
+std::string ray_text(const std::string& scene, std::size_t k, const Ray& r) {
+    return scene + ", ray " + std::to_string(k) + ": origin " + full_text(r.origin) + " direction " +
+           full_text(r.direction) + " t in [" + full_text(r.t_min) + ", " + full_text(r.t_max) + "]";
+}
+
+// One structure over every scene: each ray's answer must be exactly the reference's.
+CheckMeasure measure_structure(const GradingContext& context, const BuiltProbe& probe,
+                               const std::string& id, const std::string& call,
+                               const std::string& split, bool occluded) {
+    std::size_t rays = 0;
+    std::size_t right_rays = 0;
+    std::vector<Counterexample> counterexamples;
+    std::vector<ProbeCase> cases;
+    const std::vector<AccelScene> all = scenes();
+    for (std::size_t s = 0; s < all.size(); ++s) {
+        const AccelScene& scene = all[s];
+        Json ray_list = Json::array();
+        for (const Ray& r : scene.rays) ray_list.push_back(probe::ray(r));
+        Json args = {{"primitives", probe::primitive_list(scene.primitives)}, {"rays", ray_list},
+                     {"occluded", occluded}};
+        if (!split.empty()) args["split"] = split;
+        rays += scene.rays.size();
+        cases.push_back({scene.name, {call, args}, [&, s, scene_ptr = &all[s]](const ProbeAnswer& answer) {
+            const AccelScene& sc = *scene_ptr;
+            if (answer.kind != ProbeAnswer::Kind::result || !answer.value.is_array() ||
+                answer.value.size() != sc.rays.size()) {
+                return wrong(std::to_string(sc.rays.size()) + " answers", "");
+            }
+            bool all_right = true;
+            for (std::size_t k = 0; k < sc.rays.size(); ++k) {
+                const std::optional<PrimitiveHit> expected = closest_hit(sc.rays[k], sc.primitives);
+                std::string expected_text;
+                std::string got_text;
+                bool ok = false;
+                if (occluded) {
+                    const bool got = answer.value[k].is_boolean() && answer.value[k].get<bool>();
+                    ok = answer.value[k].is_boolean() && got == expected.has_value();
+                    expected_text = expected ? "occluded" : "not occluded";
+                    got_text = answer.value[k].is_boolean() ? (got ? "occluded" : "not occluded") : "not a boolean";
+                } else {
+                    const std::optional<PrimitiveHit> got = probe::primitive_hit_from(answer.value[k]);
+                    ok = got.has_value() == expected.has_value() &&
+                         (!got || (got->kind == expected->kind && got->index == expected->index &&
+                                   got->hit.t == expected->hit.t));
+                    expected_text = hit_text(expected);
+                    got_text = hit_text(got);
+                }
+                if (ok) {
+                    ++right_rays;
+                    continue;
+                }
+                all_right = false;
+                if (counterexamples.size() < 5) {
+                    counterexamples.push_back({ray_text(sc.name, k, sc.rays[k]), expected_text, got_text,
+                                               context.reproduce + " --check " + id + " --case " +
+                                                   std::to_string(s)});
+                }
+            }
+            return all_right ? right() : wrong("every ray right", "");
+        }});
+    }
+    // A student's structure may build slowly (a full SAH sweep): more room than a unit check.
+    ProbeRunLimits limits;
+    limits.cpu_seconds = 30;
+    limits.wall = std::chrono::seconds(60);
+    CheckMeasure measure = run_cases(context, id, probe, cases, limits);
+    if (measure.outcome == Outcome::did_not_compile || measure.outcome == Outcome::not_implemented) {
+        return measure;
+    }
+    measure.counterexamples = counterexamples;
+    measure.fraction = rays == 0 ? 0.0 : static_cast<double>(right_rays) / rays;
+    measure.metrics = {{"rays", static_cast<double>(rays)}, {"right", static_cast<double>(right_rays)}};
+    const std::string ending = measure.outcome == Outcome::crashed || measure.outcome == Outcome::timed_out
+                                   ? "; " + measure.details
+                                   : "";
+    measure.summary = std::to_string(right_rays) + " of " + std::to_string(rays) +
+                      " rays answered exactly as closest_hit" + ending;
+    return measure;
+}
+
+// The slab test where the formula goes wrong: 0 * inf at a slab plane, rays along a face, boxes
+// that are points or empty.
+std::vector<ProbeCase> slab_cases() {
+    const double inf = HUGE_VAL;
+    struct Slab {
+        Ray ray;
+        Vec3 min;
+        Vec3 max;
+        bool hit;
+    };
+    const Slab slabs[] = {
+        {{{0, 0, -5}, {0, 0, 1}}, {-1, -1, -1}, {1, 1, 1}, true},
+        {{{1, 0, -5}, {0, 0, 1}}, {-1, -1, -1}, {1, 1, 1}, true},    // on the x = 1 face's plane
+        {{{1.5, 0, -5}, {0, 0, 1}}, {-1, -1, -1}, {1, 1, 1}, false},
+        {{{-1, -1, -5}, {0, 0, 1}}, {-1, -1, -1}, {1, 1, 1}, true},  // along an edge
+        {{{0, 0, -5}, {0, 0, 1}}, {0, 0, 0}, {0, 0, 0}, true},       // a point box on the ray
+        {{{0, 0, -5}, {0, 0, 1}}, {inf, inf, inf}, {-inf, -inf, -inf}, false},  // the empty box
+        {{{0, 0, 5}, {0, 0, 1}}, {-1, -1, -1}, {1, 1, 1}, false},    // behind the origin
+        {{{0, 0, 0}, {0, 0, 1}}, {-1, -1, -1}, {1, 1, 1}, true},     // from inside
+        {{{0, 0, -5}, {0, 0, 1}, 0.0, 3.0}, {-1, -1, -1}, {1, 1, 1}, false},  // stops short
+    };
+    std::vector<ProbeCase> cases;
+    for (const Slab& slab : slabs) {
+        cases.push_back({"ray " + full_text(slab.ray.origin) + " + t " + full_text(slab.ray.direction) +
+                             ", box " + full_text(slab.min) + " to " + full_text(slab.max),
+                         {"intersect_aabb",
+                          {{"ray", probe::ray(slab.ray)}, {"min", probe::vec3(slab.min)},
+                           {"max", probe::vec3(slab.max)}}},
+                         [hit = slab.hit](const ProbeAnswer& answer) {
+                             if (answer.kind != ProbeAnswer::Kind::result) return wrong(hit ? "a hit" : "a miss", "");
+                             return answer.value.is_null() != hit ? right() : wrong(hit ? "a hit" : "a miss", "");
+                         }});
+    }
+    return cases;
+}
+
+// A workload timed from outside: the best of three runs minus the same run with no passes
+// (starting, reading the scene, building), and the checksum the passes answered.
+struct WorkloadTime {
+    double seconds = 0.0;
+    Json checksum;
+    bool answered = true;
+};
+
+WorkloadTime timed_workload(const std::filesystem::path& program, const std::string& call,
+                            const Json& args, int repeat) {
+    WorkloadTime timed;
+    const auto run_once = [&](int passes) {
+        Json a = args;
+        a["repeat"] = passes;
+        ProbeRunLimits limits;
+        limits.cpu_seconds = 60;
+        limits.wall = std::chrono::seconds(90);
+        const ProbeSession session = ask_probe(program, {{call, a}}, limits);
+        if (session.answers[0].kind != ProbeAnswer::Kind::result) {
+            timed.answered = false;
+        } else if (passes > 0) {
+            timed.checksum = session.answers[0].value;
+        }
+        return session.run.wall_seconds;
+    };
+    double best = HUGE_VAL;
+    double setup = HUGE_VAL;
+    for (int k = 0; k < 3 && timed.answered; ++k) {
+        setup = std::min(setup, run_once(0));
+        best = std::min(best, run_once(repeat));
+    }
+    timed.seconds = std::max(1e-6, best - setup);
+    return timed;
+}
+
+// The structure's speed against the reference's on the same rays, in the same run, scored; and
+// against no structure at all (stage 3's closest_hit over every primitive), reported. A structure
+// whose hits differ from the reference's earns nothing for speed: fast and wrong is not fast.
+CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& probe,
+                           const std::string& structure) {
+    CheckMeasure measure;
+    if (!probe.program) {
+        measure.outcome = Outcome::did_not_compile;
+        measure.details = probe.failure;
+        return measure;
+    }
+    AccelScene scene = random_soup(0x5BEED);
+    std::mt19937_64 rng(3);
+    // Many rays through a scene big enough that the structure is what costs.
+    for (int k = 0; k < 3000; ++k) {
+        const Vec3 c = uniform(rng, -1, 1);
+        scene.primitives.triangles.push_back({c, c + uniform(rng, -0.05, 0.05), c + uniform(rng, -0.05, 0.05)});
+    }
+    constexpr int kRays = 20000;
+    constexpr int kPasses = 20;
+    constexpr int kBruteForceRays = 1000;  // each costs a test per primitive: a few suffice
+    Json rays = Json::array();
+    Json brute_force_rays = Json::array();
+    for (int k = 0; k < kRays; ++k) {
+        const Vec3 origin = 3.0 * glm::normalize(uniform(rng, -1, 1));
+        rays.push_back(probe::ray({origin, uniform(rng, -0.8, 0.8) - origin}));
+        if (k < kBruteForceRays) brute_force_rays.push_back(rays.back());
+    }
+    const Json primitives = probe::primitive_list(scene.primitives);
+    const Json args = {{"primitives", primitives}, {"rays", rays}, {"split", "sah"}};
+    const std::string call = structure + "_workload";
+    const WorkloadTime reference = timed_workload(context.reference_probe, call, args, kPasses);
+    const WorkloadTime student = timed_workload(*probe.program, call, args, kPasses);
+    if (!student.answered || !reference.answered) {
+        measure.outcome = Outcome::failed;
+        measure.summary = !student.answered
+                              ? "the " + structure + " did not answer the workload (a stub, a crash or a timeout)"
+                              : "the reference did not answer the workload";
+        return measure;
+    }
+    if (student.checksum != reference.checksum) {
+        measure.outcome = Outcome::failed;
+        measure.summary = "the " + structure + " found " + student.checksum.dump() +
+                          " hits where the reference finds " + reference.checksum.dump() +
+                          ": a structure with wrong answers earns nothing for speed";
+        return measure;
+    }
+    const WorkloadTime brute_force = timed_workload(
+        *probe.program, "brute_force_workload",
+        {{"primitives", primitives}, {"rays", brute_force_rays}}, 1);
+    const double ratio = reference.seconds / student.seconds;
+    const double per_ray = student.seconds / (double(kPasses) * kRays);
+    const double brute_force_ratio =
+        brute_force.answered ? brute_force.seconds / kBruteForceRays / per_ray : 0.0;
+    measure.fraction = std::min(1.0, ratio);
+    measure.metrics = {{"speed against the reference", ratio},
+                       {"speed against brute force", brute_force_ratio},
+                       {"reference seconds", reference.seconds},
+                       {"submission seconds", student.seconds}};
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  " traced %d rays through %zu primitives %d times at %.2f times the reference's "
+                  "speed and %.0f times brute force's",
+                  kRays, scene.primitives.triangles.size() + scene.primitives.spheres.size(), kPasses,
+                  ratio, brute_force_ratio);
+    measure.summary = "the " + structure + text;
+    measure.outcome = Outcome::passed;
+    return measure;
+}
+
+}  // namespace
+
+std::vector<CheckDefinition> stage4_checks() {
+    const auto structure = [](const std::string& id, const std::string& name, const std::string& call,
+                              const std::string& split, bool occluded) {
+        return CheckDefinition{id, 4, "oracle", name,
+                               [=](const GradingContext& context, const BuiltProbe& probe) {
+                                   return measure_structure(context, probe, id, call, split, occluded);
+                               }};
+    };
+    return {
+        {"stage4.unit.slab", 4, "unit", "intersect_aabb where the slab formula goes wrong",
+         [](const GradingContext& c, const BuiltProbe& p) { return run_cases(c, "stage4.unit.slab", p, slab_cases()); }},
+        structure("stage4.oracle.bvh_sah", "the SAH BVH's closest hit, exactly closest_hit's", "bvh", "sah", false),
+        structure("stage4.oracle.bvh_median", "the median BVH's closest hit, exactly closest_hit's", "bvh", "median", false),
+        structure("stage4.oracle.bvh_occluded", "the BVH's occluded, as the closest hit says", "bvh", "sah", true),
+        structure("stage4.oracle.grid", "the grid's closest hit, exactly closest_hit's", "grid", "", false),
+        structure("stage4.oracle.grid_occluded", "the grid's occluded, as the closest hit says", "grid", "", true),
+        {"stage4.speed.bvh", 4, "speed", "the SAH BVH's speed against the reference's and brute force's, on the same rays",
+         [](const GradingContext& c, const BuiltProbe& p) { return measure_speed(c, p, "bvh"); }},
+        {"stage4.speed.grid", 4, "speed", "the grid's speed against the reference's and brute force's, on the same rays",
+         [](const GradingContext& c, const BuiltProbe& p) { return measure_speed(c, p, "grid"); }},
+    };
+}
+
+}  // namespace raystep::grade

@@ -1,0 +1,580 @@
+// Stage 6 checks: lights, the local model and rays that leave a surface, on hand-worked values
+// (public and hidden), and on random inputs against the same sums computed in long double; for
+// the error-bound rule, what the contract promises (an origin strictly beyond the error box
+// along the leaving side's normal, within a few ulps of it), decided in long double.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <random>
+#include <string>
+
+#include <glm/geometric.hpp>
+
+#include "grader/grade/checks/judging.h"
+#include "grader/grade/checks/stage_checks.h"
+
+namespace raystep::grade {
+
+namespace {
+
+using probe::Json;
+
+constexpr double kUnit = 0x1p-53;
+constexpr Wide kWideUnit = 0x1p-53L;
+const double kInf = std::numeric_limits<double>::infinity();
+
+bool near(const Vec3& got, const WideVec& expected, const WideVec& tolerance) {
+    for (int k = 0; k < 3; ++k) {
+        if (!(std::abs(got[k] - expected[k]) <= tolerance[k])) return false;
+    }
+    return true;
+}
+
+// A colour or vector within a tolerance per channel.
+Judgement near_channels(const ProbeAnswer& answer, const WideVec& expected,
+                        const WideVec& tolerance) {
+    const std::string text =
+        full_text(narrow(expected)) + " (within " + full_text(narrow(tolerance)) + ")";
+    if (answer.kind != ProbeAnswer::Kind::result) return wrong(text, "");
+    const Vec3 got = probe::vec3_from(answer.value);
+    return near(got, expected, tolerance) ? right() : wrong(text, full_text(got));
+}
+
+Material material(const Color& ambient, const Color& diffuse, const Color& specular,
+                  const Color& emission, double shininess) {
+    Material m;
+    m.ambient = ambient;
+    m.diffuse = diffuse;
+    m.specular = specular;
+    m.emission = emission;
+    m.shininess = shininess;
+    return m;
+}
+
+// A lit point for shading: the shading normal is the geometric one unless given.
+SurfacePoint lit_point(const Vec3& normal, const Vec3& to_eye) {
+    return {{0, 0, 0}, {0, 0, 0}, normal, normal, to_eye};
+}
+
+std::string material_text(const Material& m) {
+    return "ambient " + full_text(m.ambient) + ", diffuse " + full_text(m.diffuse) + ", specular " +
+           full_text(m.specular) + ", emission " + full_text(m.emission) + ", shininess " +
+           full_text(m.shininess);
+}
+
+std::string point_text(const SurfacePoint& p) {
+    return "point " + full_text(p.position) + " error " + full_text(p.error) + " normal " +
+           full_text(p.normal) + " shading normal " + full_text(p.shading_normal) + " to eye " +
+           full_text(p.to_eye);
+}
+
+std::string light_text(const LightSample& l) {
+    return "light from " + full_text(l.direction) + " at " + full_text(l.distance) +
+           ", intensity " + full_text(l.intensity);
+}
+
+// --- Lights
+
+ProbeCase attenuation_case(const Attenuation& a, double distance) {
+    // Every term is non-negative: the sum of three roundings or so of each.
+    const Wide d = distance;
+    const Wide expected = a.constant + a.linear * d + a.quadratic * d * d;
+    const double tolerance = static_cast<double>(6 * kUnit * expected);
+    return {"attenuation(" + full_text(Vec3(a.constant, a.linear, a.quadratic)) + ", " +
+                full_text(distance) + ")",
+            {"attenuation", Json::array({probe::attenuation(a), probe::number(distance)})},
+            [=](const ProbeAnswer& answer) {
+                return near_number(answer, static_cast<double>(expected), tolerance);
+            }};
+}
+
+// The light sample's direction, distance and intensity, each within its tolerance, and an
+// exact distance where one is asked (infinity for a directional light).
+Judgement judge_sample(const ProbeAnswer& answer, const WideVec& direction, Wide distance,
+                       const WideVec& intensity, const WideVec& intensity_tolerance) {
+    const WideVec direction_tolerance(8 * kUnit);
+    const Wide distance_tolerance = std::isinf(distance) ? 0 : 8 * kUnit * distance;
+    const std::string text =
+        "direction " + full_text(narrow(direction)) + " (within " + full_text(8 * kUnit) +
+        "), distance " + full_text(static_cast<double>(distance)) + " (within " +
+        full_text(static_cast<double>(distance_tolerance)) + "), intensity " +
+        full_text(narrow(intensity)) + " (within " + full_text(narrow(intensity_tolerance)) + ")";
+    if (answer.kind != ProbeAnswer::Kind::result) return wrong(text, "");
+    const LightSample got = probe::light_sample_from(answer.value);
+    const bool distance_ok = std::isinf(distance)
+                                 ? got.distance == kInf
+                                 : std::abs(got.distance - distance) <= distance_tolerance;
+    return distance_ok && near(got.direction, direction, direction_tolerance) &&
+                   near(got.intensity, intensity, intensity_tolerance)
+               ? right()
+               : wrong(text, light_text(got));
+}
+
+ProbeCase point_light_case(const PointLight& light, const Vec3& point) {
+    const WideVec to_light = widen(light.position) - widen(point);
+    const Wide distance = glm::length(to_light);
+    const Attenuation& a = light.attenuation;
+    const Wide attenuation = a.constant + a.linear * distance + a.quadratic * distance * distance;
+    const WideVec intensity = widen(light.color) / attenuation;
+    // The distance is a few ulps off, its square twice that; the division rounds once more.
+    const WideVec tolerance = 24 * kWideUnit * glm::abs(intensity);
+    return {"sample_light(point light at " + full_text(light.position) + ", colour " +
+                full_text(light.color) + ", attenuation " +
+                full_text(Vec3(a.constant, a.linear, a.quadratic)) + ") from " + full_text(point),
+            {"sample_point_light", Json::array({probe::point_light(light), probe::vec3(point)})},
+            [=](const ProbeAnswer& answer) {
+                return judge_sample(answer, to_light / distance, distance, intensity, tolerance);
+            }};
+}
+
+ProbeCase at_the_light_case(const PointLight& light) {
+    return {"sample_light(point light at " + full_text(light.position) + ") from the light itself",
+            {"sample_point_light",
+             Json::array({probe::point_light(light), probe::vec3(light.position)})},
+            [](const ProbeAnswer& answer) { return threw(answer, "domain_error"); }};
+}
+
+// Never attenuated: the intensity is the colour itself, the distance infinite.
+ProbeCase directional_light_case(const DirectionalLight& light) {
+    const WideVec direction = widen(light.direction) / glm::length(widen(light.direction));
+    return {"sample_light(directional light towards " + full_text(light.direction) + ", colour " +
+                full_text(light.color) + ")",
+            {"sample_directional_light", Json::array({probe::directional_light(light)})},
+            [=](const ProbeAnswer& answer) {
+                return judge_sample(answer, direction, kInf, widen(light.color), WideVec(0.0L));
+            }};
+}
+
+// --- Blinn-Phong
+
+// One light's term in long double, and how far a right implementation may round it: the cosines
+// by a few ulps, which (N . H)^s multiplies by s / (N . H); each product and sum once more.
+struct WideTerm {
+    WideVec value;
+    WideVec tolerance;
+};
+
+WideTerm wide_blinn_phong(const Material& m, const SurfacePoint& p, const LightSample& l) {
+    const WideVec n = widen(p.shading_normal);
+    const WideVec light = widen(l.direction);
+    const Wide n_dot_l = glm::dot(n, light);
+    if (!(n_dot_l > 0)) return {WideVec(0.0L), WideVec(0.0L)};
+    const WideVec half = glm::normalize(light + widen(p.to_eye));
+    const Wide n_dot_h = std::max(glm::dot(n, half), Wide(0));
+    const Wide highlight = std::pow(n_dot_h, Wide(m.shininess));
+    const Wide highlight_error =
+        highlight * (4 * kUnit + (m.shininess == 0 ? 0 : 8 * kUnit * m.shininess / n_dot_h));
+    const WideVec intensity = widen(l.intensity);
+    const WideVec diffuse = widen(m.diffuse);
+    const WideVec specular = widen(m.specular);
+    const WideVec value = intensity * (diffuse * n_dot_l + specular * highlight);
+    const WideVec tolerance = glm::abs(intensity) * (glm::abs(diffuse) * Wide(8 * kUnit) +
+                                                     glm::abs(specular) * highlight_error) +
+                              Wide(4 * kUnit) * glm::abs(value);
+    return {value, tolerance};
+}
+
+ProbeCase blinn_phong_case(const Material& m, const SurfacePoint& p, const LightSample& l) {
+    const WideTerm e = wide_blinn_phong(m, p, l);
+    return {"blinn_phong(" + material_text(m) + "; " + point_text(p) + "; " + light_text(l) + ")",
+            {"blinn_phong",
+             Json::array({probe::material(m), probe::surface_point(p), probe::light_sample(l)})},
+            [=](const ProbeAnswer& answer) { return near_channels(answer, e.value, e.tolerance); }};
+}
+
+ProbeCase local_shading_case(const Material& m, const SurfacePoint& p,
+                             const std::vector<LightSample>& lights) {
+    WideVec value = widen(m.ambient) + widen(m.emission);
+    WideVec size = glm::abs(widen(m.ambient)) + glm::abs(widen(m.emission));
+    WideVec tolerance(0.0L);
+    Json samples = Json::array();
+    std::string text;
+    for (const LightSample& l : lights) {
+        const WideTerm term = wide_blinn_phong(m, p, l);
+        value += term.value;
+        size += glm::abs(term.value);
+        tolerance += term.tolerance;
+        samples.push_back(probe::light_sample(l));
+        text += "; " + light_text(l);
+    }
+    // The sum of the terms rounds once per term, in whatever order.
+    tolerance += Wide(4 * kUnit * (lights.size() + 2)) * size;
+    return {"local_shading(" + material_text(m) + "; " + point_text(p) + text + ")",
+            {"local_shading", Json::array({probe::material(m), probe::surface_point(p), samples})},
+            [=](const ProbeAnswer& answer) { return near_channels(answer, value, tolerance); }};
+}
+
+// --- Rays that leave a surface
+
+std::string ray_text(const Ray& r) {
+    return "origin " + full_text(r.origin) + ", direction " + full_text(r.direction) + ", t in [" +
+           full_text(r.t_min) + ", " + full_text(r.t_max) + "]";
+}
+
+std::string offset_text(const RayOffset& o) {
+    return std::string(offset_rule_name(o.rule)) +
+           (o.rule == OffsetRule::error_bound ? "" : " epsilon " + full_text(o.epsilon));
+}
+
+// The geometric normal on the side a ray along `direction` leaves to; in the tangent plane, the
+// normal as given.
+WideVec leaving_normal(const SurfacePoint& p, const Vec3& direction) {
+    const WideVec n = widen(p.normal);
+    return glm::dot(n, widen(direction)) < 0 ? -n : n;
+}
+
+// The ray spawn_ray must give, judged by its rule:
+// - along_ray: origin the point itself, t over [epsilon, distance];
+// - along_normal: origin P + epsilon n, n on the leaving side, within the rounding of that sum;
+// - error_bound: with d = sum |n_i| error_i, the origin strictly beyond d along n (decided in
+//   long double: origin and point differ by a few ulps and d, so their difference is exact and its
+//   dot product with n rounds some 2^-64 of d, far below the half ulp the rule's step adds), no
+//   more than 4 ulps of the point's size (or of d, if larger) beyond it, and within as many of
+//   the line along n (rounding and the one-ulp step move it sideways; the step's direction is not
+//   judged); t over [0, distance].
+// Every rule keeps the direction (a few ulps allowed for renormalizing a unit vector) and ends at
+// exactly `distance`.
+Judgement judge_spawned(const ProbeAnswer& answer, const SurfacePoint& p, const Vec3& direction,
+                        double distance, const RayOffset& offset) {
+    const WideVec n = leaving_normal(p, direction);
+    const Wide d = glm::dot(glm::abs(n), widen(p.error));
+    const double size = std::max({std::abs(p.position.x), std::abs(p.position.y),
+                                  std::abs(p.position.z), static_cast<double>(d)});
+    const double ulps = 4 * std::ldexp(size, -52);
+    const WideVec along_normal = widen(p.position) + Wide(offset.epsilon) * n;
+    const WideVec along_normal_tolerance =
+        Wide(4 * kUnit) * (glm::abs(widen(p.position)) + glm::abs(Wide(offset.epsilon) * n));
+    std::string text;
+    switch (offset.rule) {
+        case OffsetRule::along_ray:
+            text = "origin " + full_text(p.position) + ", t in [" + full_text(offset.epsilon);
+            break;
+        case OffsetRule::along_normal:
+            text = "origin " + full_text(narrow(along_normal)) + " (within " +
+                   full_text(narrow(along_normal_tolerance)) + "), t in [0";
+            break;
+        case OffsetRule::error_bound:
+            text = "origin more than " + full_text(static_cast<double>(d)) + " and at most " +
+                   full_text(static_cast<double>(d) + ulps) + " along " + full_text(narrow(n)) +
+                   " from the point, within " + full_text(ulps) + " of that line, t in [0";
+            break;
+    }
+    text += ", " + full_text(distance) + "], direction " + full_text(direction);
+    if (answer.kind != ProbeAnswer::Kind::result) return wrong(text, "");
+    const Ray got = probe::ray_from(answer.value);
+
+    bool ok = got.t_max == distance && near(got.direction, widen(direction), WideVec(8 * kUnit));
+    switch (offset.rule) {
+        case OffsetRule::along_ray:
+            ok = ok && got.origin == p.position && got.t_min == offset.epsilon;
+            break;
+        case OffsetRule::along_normal:
+            ok = ok && near(got.origin, along_normal, along_normal_tolerance) && got.t_min == 0.0;
+            break;
+        case OffsetRule::error_bound: {
+            const WideVec moved = widen(got.origin) - widen(p.position);
+            const Wide along = glm::dot(moved, n);
+            const Wide sideways = glm::length(moved - along * n);
+            ok = ok && along > d && along <= d + ulps && sideways <= ulps && got.t_min == 0.0;
+            break;
+        }
+    }
+    return ok ? right() : wrong(text, ray_text(got));
+}
+
+ProbeCase spawn_case(const SurfacePoint& p, const Vec3& direction, double distance,
+                     const RayOffset& offset) {
+    return {"spawn_ray(" + point_text(p) + "; direction " + full_text(direction) + ", distance " +
+                full_text(distance) + ", " + offset_text(offset) + ")",
+            {"spawn_ray", Json::array({probe::surface_point(p), probe::vec3(direction),
+                                       probe::number(distance), probe::ray_offset(offset)})},
+            [=](const ProbeAnswer& answer) {
+                return judge_spawned(answer, p, direction, distance, offset);
+            }};
+}
+
+ProbeCase shadow_case(const SurfacePoint& p, const LightSample& l, const RayOffset& offset) {
+    return {"shadow_ray(" + point_text(p) + "; " + light_text(l) + ", " + offset_text(offset) + ")",
+            {"shadow_ray", Json::array({probe::surface_point(p), probe::light_sample(l),
+                                        probe::ray_offset(offset)})},
+            [=](const ProbeAnswer& answer) {
+                return judge_spawned(answer, p, l.direction, l.distance, offset);
+            }};
+}
+
+const RayOffset kErrorBound{OffsetRule::error_bound, 0.0};
+
+RayOffset along_ray(double epsilon) {
+    return {OffsetRule::along_ray, epsilon};
+}
+
+RayOffset along_normal(double epsilon) {
+    return {OffsetRule::along_normal, epsilon};
+}
+
+std::vector<ProbeCase> public_cases() {
+    const Vec3 up{0, 1, 0};
+    const Material no_light = material(Color(0.0), Color(0.0), Color(0.0), Color(0.0), 1.0);
+    // On the plane x = -1, facing -x, whose x may be off by 2e-15 (9 ulps of 1).
+    const SurfacePoint wall{{-1, 4, 2}, {2e-15, 0, 0}, {-1, 0, 0}, {-1, 0, 0}, {-0.6, 0, 0.8}};
+    SurfacePoint coarse_wall = wall;
+    coarse_wall.error = {2e-12, 0, 0};
+    const Vec3 out{-0.8, 0, 0.6};   // n . out = 0.8: leaves on the normal's side
+    const Vec3 back{0.8, 0, 0.6};   // n . back = -0.8: through the wall
+    const Vec3 along{0, 0.6, 0.8};  // n . along = 0: in the tangent plane
+    const Material mixed = material({0.1, 0.1, 0.1}, Color(0.5), Color(0.0), {0, 0.25, 0}, 1.0);
+    return {
+        // 1 + 0.5 * 3 + 0.25 * 9 = 1 + 1.5 + 2.25.
+        attenuation_case({1, 0.5, 0.25}, 3),
+        attenuation_case({2, 0, 0}, 123.456),
+        // From (-1, 1, -1) to (2, 5, -1): (3, 4, 0), 5 away, L = (0.6, 0.8, 0);
+        // att = 1 + 0.2 * 5 + 0.04 * 25 = 3, so the intensity is (3, 1.5, 0.75) / 3.
+        point_light_case({{2, 5, -1}, {3, 1.5, 0.75}, {1, 0.2, 0.04}}, {-1, 1, -1}),
+        at_the_light_case({{-2, 0.5, 7}, {1, 1, 1}, {1, 0, 0}}),
+        // (0, -6, 8) has length 10: L = (0, -0.6, 0.8), at infinity, the colour unchanged.
+        directional_light_case({{0, -6, 8}, {0.3, 0.6, 0.9}}),
+        // Lambert: N . L = 0.6 for L = (0.8, 0.6, 0) over the floor y = 0; Kd = (0.5, 1, 0.25),
+        // intensity (2, 1, 4): (2 * 0.5, 1 * 1, 4 * 0.25) * 0.6 = (0.6, 0.6, 0.6).
+        blinn_phong_case(material(Color(0.0), {0.5, 1, 0.25}, Color(0.0), Color(0.0), 1.0),
+                         lit_point(up, up), {{0.8, 0.6, 0}, 10.0, {2, 1, 4}}),
+        // The highlight, seen from straight above: L + V = (0.8, 1.6, 0), of squared length 3.2,
+        // so (N . H)^2 = 2.56 / 3.2 = 0.8 and (N . H)^4 = 0.64: Ks (0.64) = (0.64, 0.32, 0.16).
+        // (Unnormalized, N . (L + V))^4 = 1.6^4 = 6.5536; Phong's (R . V)^4 = 0.6^4 = 0.1296.)
+        blinn_phong_case(material(Color(0.0), Color(0.0), {1, 0.5, 0.25}, Color(0.0), 4.0),
+                         lit_point(up, up), {{0.8, 0.6, 0}, 10.0, Color(1.0)}),
+        // A light below the floor: N . L = -0.8, black, though N . H = 0.2 / sqrt(0.4) > 0
+        // would show a highlight through the floor.
+        blinn_phong_case(material(Color(0.0), Color(1.0), Color(1.0), Color(0.0), 1.0),
+                         lit_point(up, up), {{0.6, -0.8, 0}, 10.0, Color(1.0)}),
+        // Shininess 0: max(N . H, 0)^0 = 1, so the highlight is Ks wherever the light reaches:
+        // 0.5 * 0.6 + (0.2, 0.4, 0.6) = (0.5, 0.7, 0.9).
+        blinn_phong_case(material(Color(0.0), Color(0.5), {0.2, 0.4, 0.6}, Color(0.0), 0.0),
+                         lit_point(up, up), {{0.8, 0.6, 0}, 10.0, Color(1.0)}),
+        // The shading normal (0.6, 0.8, 0) points at the light: N . L = 1, I = Kd. By the
+        // geometric normal, N . L would be 0.8.
+        blinn_phong_case(material(Color(0.0), {0.5, 0.25, 1}, Color(0.0), Color(0.0), 1.0),
+                         {{0, 0, 0}, {0, 0, 0}, up, {0.6, 0.8, 0}, up},
+                         {{0.6, 0.8, 0}, 10.0, Color(1.0)}),
+        // A + E + 0.5 * 1 * (1, 1, 1) + 0.5 * 0.6 * (0.5, 1, 2)
+        // = (0.1, 0.35, 0.1) + (0.5, 0.5, 0.5) + (0.15, 0.3, 0.6) = (0.75, 1.15, 1.2).
+        local_shading_case(mixed, lit_point(up, up),
+                           {{up, 10.0, Color(1.0)}, {{0.8, 0.6, 0}, kInf, {0.5, 1, 2}}}),
+        local_shading_case(no_light, lit_point(up, up), {}),
+        spawn_case(wall, out, 3.0, along_ray(0.125)),
+        // (-1, 4, 2) + 0.125 (-1, 0, 0) = (-1.125, 4, 2).
+        spawn_case(wall, out, 3.0, along_normal(0.125)),
+        // Through the wall: (-1, 4, 2) + 0.125 (1, 0, 0) = (-0.875, 4, 2).
+        spawn_case(wall, back, 3.0, along_normal(0.125)),
+        // In the tangent plane the normal as given: (-1.125, 4, 2) again.
+        spawn_case(wall, along, 3.0, along_normal(0.125)),
+        // d = 1 * 2e-15: x beyond -1 - 2e-15, and for the back beyond -1 + 2e-15.
+        spawn_case(wall, out, 3.0, kErrorBound),
+        spawn_case(wall, back, 3.0, kErrorBound),
+        // 1000 times the error, 1000 times the offset: d = 2e-12.
+        spawn_case(coarse_wall, out, 3.0, kErrorBound),
+        // To a point light 2.5 away, and to a directional one, unbounded.
+        shadow_case(wall, {out, 2.5, Color(1.0)}, kErrorBound),
+        shadow_case(wall, {out, kInf, Color(1.0)}, along_normal(0.125)),
+    };
+}
+
+// The hidden ones: the contract's edge cases a student's own tests may not reach.
+std::vector<ProbeCase> hidden_cases() {
+    const Vec3 up{0, 1, 0};
+    const Vec3 z{0, 0, 1};
+    // N = (1, 0, 0), L = (0.6, 0.8, 0), V = (-0.6, 0, 0.8): L + V = (0, 0.8, 0.8), so N . H = 0
+    // exactly while N . L = 0.6 (the geometric normal (0.6, 0, 0.8) faces the eye).
+    const SurfacePoint grazing_half{{0, 0, 0}, {0, 0, 0}, {0.6, 0, 0.8}, {1, 0, 0}, {-0.6, 0, 0.8}};
+    const Material matte_floor =
+        material({0.05, 0.1, 0.15}, Color(1.0), Color(0.0), Color(0.0), 1.0);
+    const SurfacePoint exact_point{{0, 2.5, -7}, {0, 0, 0}, {1, 0, 0}, {1, 0, 0}, {1, 0, 0}};
+    const SurfacePoint far_point{{1e6, 3, -2}, {1e-12, 0, 0}, {1, 0, 0}, {1, 0, 0}, {1, 0, 0}};
+    const SurfacePoint oblique{
+        {1e5, -2e5, 3e4}, {1e-10, 5e-11, 3e-10}, {0.6, 0, -0.8}, {0.6, 0, -0.8}, {0.6, 0, -0.8}};
+    const SurfacePoint bent{{0.5, 0.5, 0}, {0, 0, 1e-12}, z, {0.6, 0, 0.8}, z};
+    const SurfacePoint distant{
+        {2e7, -1e7, 5e6}, Vec3(3e-9), {0.6, 0.8, 0}, {0.6, 0.8, 0}, {0.6, 0.8, 0}};
+    SurfacePoint coarse_distant = distant;
+    coarse_distant.error = Vec3(3e-6);
+    const SurfacePoint ceiling{{3, -1, 0.5}, Vec3(1e-15), {0, 0, -1}, {0, 0, -1}, {0, 0, -1}};
+    const SurfacePoint ledge{{0, 1, 0}, Vec3(1e-16), up, up, up};
+    return {
+        attenuation_case({0.5, 2, 3}, 0),
+        // 1 + 0.5e6, exact.
+        attenuation_case({1, 0.5, 0}, 1e6),
+        // 5e160 away: its square overflows, its length must not (stage 1's length handles it).
+        point_light_case({{0, 3e160, 4e160}, {0.25, 0.5, 1}, {1, 0, 0}}, {0, 0, 0}),
+        at_the_light_case({{1e10, -3, 0.5}, {1, 1, 1}, {0, 0, 1}}),
+        // (-2, -2, 1) / 3.
+        directional_light_case({{-2, -2, 1}, {0.7, 0.2, 0.1}}),
+        // N . H = 0 exactly, shininess 0: 0^0 = 1, so I (Kd 0.6 + Ks)
+        // = (1 (0.15 + 0.5), 2 (0.15 + 0.25), 0.5 (0.15 + 1)) = (0.65, 0.8, 0.575).
+        blinn_phong_case(material(Color(0.0), Color(0.25), {0.5, 0.25, 1}, Color(0.0), 0.0),
+                         grazing_half, {{0.6, 0.8, 0}, 10.0, {1, 2, 0.5}}),
+        // A light behind, shininess 0: black, not Ks.
+        blinn_phong_case(material(Color(0.0), Color(1.0), Color(1.0), Color(0.0), 0.0),
+                         lit_point(z, z), {{0.28, 0, -0.96}, 10.0, Color(1.0)}),
+        // The geometric normal sees the light (N . L = 0.28) but the shading normal does not
+        // (0.6 * -0.96 + 0.8 * 0.28 = -0.352): black.
+        blinn_phong_case(material(Color(0.0), Color(1.0), Color(1.0), Color(0.0), 8.0),
+                         {{0, 0, 0}, {0, 0, 0}, up, {0.6, 0.8, 0}, up},
+                         {{-0.96, 0.28, 0}, 10.0, Color(1.0)}),
+        // The eye in the mirror direction: H = N, (N . H)^1000 = 1; 0.5 * 0.8 + Ks.
+        blinn_phong_case(material(Color(0.0), Color(0.5), {0.25, 0.5, 0.75}, Color(0.0), 1000.0),
+                         lit_point(up, {-0.6, 0.8, 0}), {{0.6, 0.8, 0}, 10.0, Color(1.0)}),
+        // A light behind the floor among the visible ones adds nothing: A + 0.5 + 0 + 0.1
+        // + 0.6 (0.25, 0.5, 1) = (0.8, 1, 1.35).
+        local_shading_case(matte_floor, lit_point(z, z),
+                           {{z, 10.0, Color(0.5)},
+                            {{0, 0.6, -0.8}, 10.0, Color(1.0)},
+                            {{std::sqrt(3.0) / 2, 0, 0.5}, kInf, Color(0.2)},
+                            {{0, 0.8, 0.6}, 5.0, {0.25, 0.5, 1}}}),
+        // Tangent, on a ceiling facing down: (3, -1, 0.5) - 0.25 (0, 0, 1).
+        spawn_case(ceiling, {0.6, 0.8, 0}, 2.0, along_normal(0.25)),
+        spawn_case(ceiling, {0.6, 0, -0.8}, kInf, along_ray(1e-4)),
+        // No rounding error at all (d = 0): the one-ulp step alone takes x off the plane x = 0.
+        spawn_case(exact_point, {0.6, 0.8, 0}, 1.0, kErrorBound),
+        // d = 1e-12 is below half an ulp of 1e6 (5.8e-11): P + d n rounds back to P, and only
+        // the ulp step puts the origin beyond d.
+        spawn_case(far_point, {0.8, 0.6, 0}, 1.0, kErrorBound),
+        spawn_case(oblique, {0, 0.6, -0.8}, 1.0, kErrorBound),
+        // The offset follows the geometric normal, not the shading one.
+        spawn_case(bent, {0, 0.6, 0.8}, 1.0, kErrorBound),
+        // x1000 error, x1000 offset, far from the origin: d = 1.4 * 3e-9 (ulps of 2e7 are 3.7e-9)
+        // and 1.4 * 3e-6.
+        spawn_case(distant, {0.6, 0.8, 0}, 1.0, kErrorBound),
+        spawn_case(coarse_distant, {0.6, 0.8, 0}, 1.0, kErrorBound),
+        // A light below the ledge: the shadow ray starts below it, (0, 0.5, 0), and ends at the
+        // light.
+        shadow_case(ledge, {{0.6, -0.8, 0}, 4.0, Color(1.0)}, along_normal(0.5)),
+        shadow_case(ledge, {{0.6, 0.8, 0}, kInf, Color(1.0)}, along_ray(0.5)),
+    };
+}
+
+Vec3 uniform(std::mt19937_64& rng, double low, double high) {
+    std::uniform_real_distribution<double> u(low, high);
+    return {u(rng), u(rng), u(rng)};
+}
+
+Vec3 random_unit(std::mt19937_64& rng) {
+    for (;;) {
+        const Vec3 v = uniform(rng, -1, 1);
+        const double length = glm::length(v);
+        if (length > 0.1 && length <= 1) return v / length;
+    }
+}
+
+Material random_material(std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    const double shininess[] = {0, 0.5, 1, 2.5, 10, 64, 200};
+    return material(uniform(rng, 0, 0.3), uniform(rng, 0, 1), uniform(rng, 0, 1),
+                    u(rng) < 0.3 ? uniform(rng, 0, 0.5) : Color(0.0),
+                    shininess[std::uniform_int_distribution<int>(0, 6)(rng)]);
+}
+
+// A light seen from a random point on a surface: a quarter of them behind it, none within 1e-3
+// of the tangent plane (where a rounding decides between lit and black) and no half vector
+// within 1e-3 of it either.
+struct LitScene {
+    SurfacePoint point;
+    LightSample light;
+};
+
+LitScene random_lit(std::mt19937_64& rng) {
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (;;) {
+        const Vec3 n = random_unit(rng);
+        const Vec3 l = random_unit(rng);
+        const Vec3 v = random_unit(rng);
+        const double n_dot_l = glm::dot(n, l);
+        const Vec3 sum = l + v;
+        if (glm::dot(n, v) < 0.05 || std::abs(n_dot_l) < 1e-3 || glm::length(sum) < 1e-3) continue;
+        if (n_dot_l < 0 && u(rng) < 0.67) continue;
+        if (n_dot_l > 0 && glm::dot(n, glm::normalize(sum)) < 1e-3) continue;
+        return {{uniform(rng, -10, 10), Vec3(0.0), n, n, v},
+                {l, 1 + 10 * u(rng), uniform(rng, 0, 2)}};
+    }
+}
+
+std::vector<ProbeCase> oracle_cases() {
+    std::mt19937_64 rng(0x5EED'0006);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<ProbeCase> cases;
+    for (int k = 0; k < 50; ++k) {
+        cases.push_back(attenuation_case({u(rng), u(rng), u(rng)}, 100 * u(rng)));
+    }
+    for (int k = 0; k < 100; ++k) {
+        const double scale = std::pow(10.0, 6 * u(rng) - 2);
+        const Vec3 light = scale * uniform(rng, -1, 1);
+        const Vec3 point = light + scale * uniform(rng, 0.01, 1) * random_unit(rng);
+        cases.push_back(
+            point_light_case({light, uniform(rng, 0, 2), {0.1 + u(rng), u(rng), u(rng)}}, point));
+    }
+    for (int k = 0; k < 150; ++k) {
+        const LitScene s = random_lit(rng);
+        cases.push_back(blinn_phong_case(random_material(rng), s.point, s.light));
+    }
+    for (int k = 0; k < 100; ++k) {
+        const LitScene s = random_lit(rng);
+        std::vector<LightSample> lights{s.light};
+        const int more = std::uniform_int_distribution<int>(0, 3)(rng);
+        for (int i = 0; i < more; ++i) {
+            // More lights at the same point: keep the point, take the other lights.
+            LitScene other = random_lit(rng);
+            while (std::abs(glm::dot(s.point.shading_normal, other.light.direction)) < 1e-3 ||
+                   glm::dot(s.point.shading_normal,
+                            glm::normalize(other.light.direction + s.point.to_eye)) < 1e-3) {
+                other = random_lit(rng);
+            }
+            lights.push_back(other.light);
+        }
+        cases.push_back(local_shading_case(random_material(rng), s.point, lights));
+    }
+    for (int k = 0; k < 300; ++k) {
+        // Points at scales 1e-3 to 1e7, with errors from none to 1e4 ulps of their size (and to
+        // ulps of a larger scene), directions at least 0.05 off the tangent plane.
+        const double scale = std::pow(10.0, std::uniform_int_distribution<int>(-3, 7)(rng));
+        SurfacePoint p;
+        p.position = scale * uniform(rng, -100, 100);
+        const double size =
+            std::max({std::abs(p.position.x), std::abs(p.position.y), std::abs(p.position.z)});
+        const double error_scale =
+            k % 10 == 0 ? 0.0 : std::ldexp(size, -52) * std::pow(10.0, 4 * u(rng));
+        p.error = error_scale * uniform(rng, 0, 1);
+        p.normal = random_unit(rng);
+        p.shading_normal = glm::normalize(p.normal + 0.3 * random_unit(rng));
+        p.to_eye = p.normal;
+        Vec3 direction = random_unit(rng);
+        while (std::abs(glm::dot(direction, p.normal)) < 0.05)
+            direction = random_unit(rng);
+        const RayOffset offset =
+            k % 3 == 1 ? along_normal(scale * std::pow(10.0, -4 * u(rng))) : kErrorBound;
+        if (k % 4 == 3) {
+            cases.push_back(shadow_case(p,
+                                        {direction, k % 8 == 3 ? kInf : scale * u(rng), Color(1.0)},
+                                        k % 3 == 2 ? along_ray(1e-3 * scale) : offset));
+        } else {
+            cases.push_back(spawn_case(p, direction, 1 + u(rng), offset));
+        }
+    }
+    return cases;
+}
+
+}  // namespace
+
+std::vector<CheckDefinition> stage6_checks() {
+    return {
+        case_check("stage6.unit", 6, "unit",
+                   "lights, Blinn-Phong, the local model and ray offsets on hand-worked values",
+                   public_cases),
+        case_check("stage6.hidden", 6, "unit",
+                   "shading and ray offsets on the contract's edge cases", hidden_cases),
+        case_check("stage6.oracle", 6, "oracle",
+                   "lights, shading and spawned rays on random inputs against long double",
+                   oracle_cases),
+    };
+}
+
+}  // namespace raystep::grade

@@ -1,0 +1,303 @@
+// Stage 7 checks: the mirror ray and the recursion. radiance is asked over a scripted scene (the
+// probe's shade returns the script's hits in turn, then misses), so the grader knows every ray
+// the recursion should ask about, in order, and the colour it should add up: hand-worked chains
+// (public and hidden) and random ones, the sums and the reflections computed in long double.
+
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "grader/grade/checks/judging.h"
+#include "grader/grade/checks/stage_checks.h"
+#include "stages/7_recursion/recursion.h"
+
+namespace raystep::grade {
+
+namespace {
+
+using probe::Json;
+
+constexpr double kUnit = 0x1p-53;
+const double kInf = std::numeric_limits<double>::infinity();
+
+// A ray as the judge expects it: each coordinate within its tolerance, the t range exact.
+struct ExpectedRay {
+    WideVec origin;
+    Wide origin_tolerance;
+    WideVec direction;
+    Wide direction_tolerance;
+    double t_min;
+    double t_max;
+};
+
+std::string expected_text(const ExpectedRay& e) {
+    return "origin " + full_text(narrow(e.origin)) + " (within " +
+           full_text(static_cast<double>(e.origin_tolerance)) + "), direction " +
+           full_text(narrow(e.direction)) + " (within " +
+           full_text(static_cast<double>(e.direction_tolerance)) + "), t in [" +
+           full_text(e.t_min) + ", " + full_text(e.t_max) + "]";
+}
+
+// Written so that a NaN anywhere fails.
+bool matches(const Ray& got, const ExpectedRay& e) {
+    bool ok = got.t_min == e.t_min && got.t_max == e.t_max;
+    for (int k = 0; k < 3; ++k) {
+        ok = ok && std::abs(got.origin[k] - e.origin[k]) <= e.origin_tolerance &&
+             std::abs(got.direction[k] - e.direction[k]) <= e.direction_tolerance;
+    }
+    return ok;
+}
+
+// The mirror ray at `p`, worked out in long double: -V reflected about the shading normal,
+// normalized, leaving by the offset's rule (stage 6's spawn_ray) with no upper bound. Only the
+// two fixed-epsilon rules, whose origins are plain sums; stage 6's checks cover the third.
+ExpectedRay expected_reflection(const SurfacePoint& p, const RayOffset& offset) {
+    const WideVec v = widen(p.to_eye);
+    const WideVec n = widen(p.shading_normal);
+    const WideVec d = glm::normalize(-v + 2 * glm::dot(v, n) * n);
+    const Wide size = std::max({std::abs(Wide(p.position.x)), std::abs(Wide(p.position.y)),
+                                std::abs(Wide(p.position.z)), Wide(offset.epsilon)});
+    ExpectedRay e{widen(p.position), 4 * kUnit * size, d, 8 * kUnit, offset.epsilon, kInf};
+    if (offset.rule == OffsetRule::along_normal) {
+        const WideVec normal = widen(p.normal);
+        e.origin += Wide(offset.epsilon) * (glm::dot(normal, d) < 0 ? -normal : normal);
+        e.t_min = 0.0;
+    }
+    return e;
+}
+
+std::string point_text(const SurfacePoint& p) {
+    return "point " + full_text(p.position) + " normal " + full_text(p.normal) +
+           " shading normal " + full_text(p.shading_normal) + " to eye " + full_text(p.to_eye);
+}
+
+std::string offset_text(const RayOffset& o) {
+    return std::string(offset_rule_name(o.rule)) + " " + full_text(o.epsilon);
+}
+
+ProbeCase reflected_ray_case(const SurfacePoint& p, const RayOffset& offset) {
+    const ExpectedRay e = expected_reflection(p, offset);
+    return {"reflected_ray(" + point_text(p) + ", " + offset_text(offset) + ")",
+            {"reflected_ray", Json::array({probe::surface_point(p), probe::ray_offset(offset)})},
+            [=](const ProbeAnswer& answer) {
+                if (answer.kind != ProbeAnswer::Kind::result) return wrong(expected_text(e), "");
+                const Ray got = probe::ray_from(answer.value);
+                return matches(got, e) ? right() : wrong(expected_text(e), ray_text(got));
+            }};
+}
+
+// --- radiance over a script
+
+/// What shade returns on each call in turn: a shaded hit, or nullopt for a miss (and past the
+/// end, misses).
+using Script = std::vector<std::optional<ShadedHit>>;
+
+ShadedHit mirror(const SurfacePoint& p, const Color& local, const Color& reflectance) {
+    return {p, local, reflectance};
+}
+
+// The colour and the rays that radiance should ask shade about, in order: the eye ray, then one
+// mirror ray per hit while bounces remain and the reflectance is not black.
+struct ExpectedRadiance {
+    WideVec colour{0};
+    WideVec colour_tolerance{0};
+    std::vector<ExpectedRay> rays;
+};
+
+ExpectedRadiance expected_radiance(const Script& script, const Ray& eye, int bounces,
+                                   const RayOffset& offset) {
+    ExpectedRadiance e;
+    e.rays.push_back({widen(eye.origin), 0, widen(eye.direction), 0, eye.t_min, eye.t_max});
+    WideVec weight(1);
+    // Each term is the local colour times a product of reflectances, all non-negative: a few
+    // roundings per product and one per sum, relative to the terms' sum.
+    WideVec terms(0);
+    int depth = 0;
+    for (std::size_t i = 0; i < script.size() && script[i]; ++i) {
+        const ShadedHit& hit = *script[i];
+        e.colour += weight * widen(hit.local);
+        terms += weight * glm::abs(widen(hit.local));
+        if (bounces - depth <= 0 || hit.reflectance == Color(0.0)) break;
+        weight *= widen(hit.reflectance);
+        e.rays.push_back(expected_reflection(hit.point, offset));
+        ++depth;
+    }
+    e.colour_tolerance = Wide(4 * (depth + 2) * kUnit) * terms;
+    return e;
+}
+
+std::string script_text(const Script& script) {
+    std::string text;
+    for (const std::optional<ShadedHit>& hit : script) {
+        text += text.empty() ? "" : "; ";
+        text += hit ? "hit at " + point_text(hit->point) + ", local " + full_text(hit->local) +
+                          ", reflectance " + full_text(hit->reflectance)
+                    : "miss";
+    }
+    return "[" + text + "]";
+}
+
+Json script_json(const Script& script) {
+    Json steps = Json::array();
+    for (const std::optional<ShadedHit>& hit : script) {
+        steps.push_back(hit ? Json{{"point", probe::surface_point(hit->point)},
+                                   {"local", probe::vec3(hit->local)},
+                                   {"reflectance", probe::vec3(hit->reflectance)}}
+                            : Json(nullptr));
+    }
+    return steps;
+}
+
+ProbeCase radiance_case(const Script& script, const Ray& eye, int bounces,
+                        const RayOffset& offset) {
+    const ExpectedRadiance e = expected_radiance(script, eye, bounces, offset);
+    const std::string text = "colour " + full_text(narrow(e.colour)) + " (within " +
+                             full_text(narrow(e.colour_tolerance)) + ") after asking about " +
+                             std::to_string(e.rays.size()) + " ray(s)";
+    return {"radiance(eye " + ray_text(eye) + ", bounces " + std::to_string(bounces) + ", " +
+                offset_text(offset) + ") over the scene " + script_text(script),
+            {"radiance",
+             Json{{"script", script_json(script)},
+                  {"ray", probe::ray(eye)},
+                  {"bounces", bounces},
+                  {"offset", probe::ray_offset(offset)}}},
+            [=](const ProbeAnswer& answer) {
+                if (answer.kind != ProbeAnswer::Kind::result) return wrong(text, "");
+                const Vec3 colour = probe::vec3_from(answer.value.at("colour"));
+                const Json& rays = answer.value.at("rays");
+                const std::string got = "colour " + full_text(colour) + " after asking about " +
+                                        std::to_string(rays.size()) + " ray(s)";
+                for (int k = 0; k < 3; ++k) {
+                    if (!(std::abs(colour[k] - e.colour[k]) <= e.colour_tolerance[k])) {
+                        return wrong(text, got);
+                    }
+                }
+                if (rays.size() != e.rays.size()) return wrong(text, got);
+                for (std::size_t i = 0; i < rays.size(); ++i) {
+                    const Ray ray = probe::ray_from(rays[i]);
+                    if (!matches(ray, e.rays[i])) {
+                        return wrong("ray " + std::to_string(i) + ": " + expected_text(e.rays[i]),
+                                     "ray " + std::to_string(i) + ": " + ray_text(ray));
+                    }
+                }
+                return right();
+            }};
+}
+
+// A point on the floor y = 0, seen from the direction `to_eye` (normalized here); the shading
+// normal is the geometric one unless given.
+SurfacePoint floor_point(const Vec3& position, const Vec3& to_eye,
+                         const Vec3& shading_normal = {0, 1, 0}) {
+    return {position, {0, 0, 0}, {0, 1, 0}, shading_normal, glm::normalize(to_eye)};
+}
+
+const Ray kEye{{0, 1, 0}, {1, -1, 0}, 0.0, kInf};
+
+std::vector<ProbeCase> public_cases() {
+    const RayOffset along_ray{OffsetRule::along_ray, 1e-4};
+    const RayOffset along_normal{OffsetRule::along_normal, 1e-4};
+    const SurfacePoint a = floor_point({1, 0, 0}, {-1, 1, 0});
+    const SurfacePoint b = floor_point({2, 0, 3}, {-1, 1, 0});
+    const SurfacePoint c = floor_point({-5, 0, 2}, {0, 1, 1});
+    const Color red{0.8, 0.1, 0.1};
+    const Color grey{0.5, 0.5, 0.5};
+    return {
+        reflected_ray_case(floor_point({0, 0, 0}, {1, 1, 0}), along_ray),
+        reflected_ray_case(floor_point({0, 0, 0}, {0, 1, 0}), along_ray),
+        reflected_ray_case(floor_point({3, 0, -2}, {1, 2, 3}), along_normal),
+        radiance_case({std::nullopt}, kEye, 5, along_ray),
+        radiance_case({mirror(a, red, grey)}, kEye, 0, along_ray),
+        radiance_case({mirror(a, red, grey), std::nullopt}, kEye, 1, along_ray),
+        radiance_case({mirror(a, red, grey), mirror(b, grey, Color(0.25))}, kEye, 5, along_normal),
+        radiance_case({mirror(a, red, {0.9, 0.5, 0.1}), mirror(b, grey, {0.2, 0.3, 0.4}),
+                       mirror(c, {0, 0, 1}, grey), mirror(a, Color(1), grey)},
+                      kEye, 2, along_ray),
+    };
+}
+
+// The hidden ones: the contract's edges a student's own tests may not reach.
+std::vector<ProbeCase> hidden_cases() {
+    const RayOffset along_ray{OffsetRule::along_ray, 1e-3};
+    const RayOffset along_normal{OffsetRule::along_normal, 1e-3};
+    const SurfacePoint a = floor_point({1, 0, 0}, {-1, 1, 0});
+    // A bent shading normal: the mirror follows it, not the geometric normal, and the reflected
+    // ray leaves below the floor, where along_normal must move the origin.
+    const SurfacePoint bent = floor_point({0, 0, 0}, {1, 0.2, 0}, glm::normalize(Vec3{1, 1, 0}));
+    Script deep;
+    for (int k = 0; k < 12; ++k) {
+        deep.push_back(mirror(floor_point({k, 0, 0}, {-1, 1, 0}), Color(0.1 * k), Color(0.9)));
+    }
+    return {
+        reflected_ray_case(bent, along_ray),
+        reflected_ray_case(bent, along_normal),
+        reflected_ray_case(floor_point({1e6, 0, -1e6}, {0.3, 1, -0.2}), along_normal),
+        radiance_case({mirror(a, Color(0.3), Color(0))}, kEye, 3, along_ray),
+        radiance_case({mirror(a, Color(0.3), {0, 0.5, 0}), mirror(a, Color(1), Color(0))}, kEye, 3,
+                      along_ray),
+        radiance_case({mirror(a, Color(0.3), Color(1))}, kEye, -1, along_ray),
+        radiance_case({mirror(bent, Color(0.2), Color(1)), mirror(a, Color(0.5), Color(1))}, kEye,
+                      4, along_normal),
+        radiance_case(deep, kEye, 10, along_ray),
+        radiance_case({mirror(a, Color(0.1), Color(1)), std::nullopt, mirror(a, Color(1), Color(1))},
+                      kEye, 5, along_ray),
+    };
+}
+
+Vec3 random_unit(std::mt19937_64& rng) {
+    std::normal_distribution<double> normal;
+    Vec3 v;
+    do {
+        v = {normal(rng), normal(rng), normal(rng)};
+    } while (glm::dot(v, v) < 1e-6);
+    return glm::normalize(v);
+}
+
+// Random chains of up to six mirrors, anywhere from the origin to 1e4 away, with random bounces
+// (some fewer than the chain, some more), reflectances (some black) and both fixed-epsilon rules.
+std::vector<ProbeCase> oracle_cases() {
+    std::mt19937_64 rng(7177);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    std::vector<ProbeCase> cases;
+    for (int k = 0; k < 200; ++k) {
+        Script script;
+        const int length = std::uniform_int_distribution<int>(0, 6)(rng);
+        for (int i = 0; i < length; ++i) {
+            SurfacePoint p;
+            p.position = random_unit(rng) * std::pow(10.0, 4 * unit(rng));
+            p.normal = random_unit(rng);
+            p.shading_normal = glm::normalize(p.normal + 0.2 * random_unit(rng));
+            p.to_eye = random_unit(rng);
+            if (glm::dot(p.to_eye, p.normal) < 0) p.to_eye = -p.to_eye;
+            const Color reflectance = i % 4 == 3 ? Color(0) : Color(unit(rng), unit(rng), unit(rng));
+            script.push_back(mirror(p, {unit(rng), unit(rng), unit(rng)}, reflectance));
+        }
+        if (k % 5 == 0) script.push_back(std::nullopt);
+        const Ray eye{random_unit(rng) * 10.0, random_unit(rng), 0.0, kInf};
+        const RayOffset offset{k % 2 ? OffsetRule::along_normal : OffsetRule::along_ray,
+                               std::pow(10.0, -6 + 4 * unit(rng))};
+        cases.push_back(
+            radiance_case(script, eye, std::uniform_int_distribution<int>(0, 6)(rng), offset));
+    }
+    return cases;
+}
+
+}  // namespace
+
+std::vector<CheckDefinition> stage7_checks() {
+    return {
+        case_check("stage7.unit", 7, "unit",
+                   "the mirror ray and the recursion over hand-worked chains", public_cases),
+        case_check("stage7.hidden", 7, "unit",
+                   "black mirrors, no bounces, bent shading normals and deep chains", hidden_cases),
+        case_check("stage7.oracle", 7, "oracle",
+                   "random mirror chains: every ray asked and the colour, against long double",
+                   oracle_cases),
+    };
+}
+
+}  // namespace raystep::grade

@@ -1,0 +1,53 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "grader/protocol/probe_json.h"
+#include "grader/sandbox/sandbox.h"
+
+namespace raystep::grade {
+
+/// One query for a probe: a call and its arguments (grader/probe/README.md).
+struct ProbeQuery {
+    std::string call;
+    probe::Json args;
+};
+
+/// What the probe said to one query.
+struct ProbeAnswer {
+    enum class Kind {
+        result,           ///< `value` holds it
+        not_implemented,  ///< a stub; `message` is its text
+        threw,            ///< `exception_type` and `message`
+        unanswered,       ///< the probe ended (crash, timeout, flood) before answering
+        malformed,        ///< an answer that is not what the protocol says
+    } kind = Kind::unanswered;
+    probe::Json value;
+    std::string exception_type;
+    std::string message;
+};
+
+/// A probe run: the answers in query order, and how the run ended.
+struct ProbeSession {
+    std::vector<ProbeAnswer> answers;
+    SandboxRun run;
+};
+
+/// Where a probe may look and how long it may run.
+// Every check's workload takes the reference well under a second: ten seconds of processor is
+// room for a slow but right submission, and a hostile one that never answers costs no more.
+struct ProbeRunLimits {
+    double cpu_seconds = 10.0;
+    std::chrono::milliseconds wall{20000};
+    std::size_t output_bytes = 128u << 20;
+    std::vector<std::filesystem::path> readable;  ///< e.g. the scenes a render call loads
+};
+
+/// Sends the queries to one run of the probe (in the sandbox) and reads its answers. Never throws
+/// for what the probe does: a crash leaves the remaining answers `unanswered`, and run says why.
+ProbeSession ask_probe(const std::filesystem::path& program, const std::vector<ProbeQuery>& queries,
+                       const ProbeRunLimits& limits);
+
+}  // namespace raystep::grade

@@ -1,0 +1,89 @@
+#include "grader/grade/release.h"
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "core/image/image_io.h"
+#include "core/render/tile_renderer.h"
+#include "core/scene/scene_loader.h"
+
+namespace raystep::grade {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// What a student's repository leaves out, relative to the repository's root.
+bool withheld(const fs::path& relative) {
+    const std::string first = relative.begin()->string();
+    if (first == "solutions" || first == "grader" || first == ".git" || first == ".ci" ||
+        first == "build" || first == "out") {
+        return true;
+    }
+    return relative == fs::path("docs/instructor.md") || relative == fs::path("scenes/meshes");
+}
+
+std::size_t copy_tree(const fs::path& source, const fs::path& output) {
+    std::size_t files = 0;
+    for (auto it = fs::recursive_directory_iterator(source); it != fs::recursive_directory_iterator(); ++it) {
+        const fs::path relative = fs::relative(it->path(), source);
+        if (withheld(relative)) {
+            if (it->is_directory()) it.disable_recursion_pending();
+            continue;
+        }
+        const fs::path target = output / relative;
+        if (it->is_directory()) {
+            fs::create_directories(target);
+        } else if (it->is_regular_file()) {
+            fs::copy_file(it->path(), target);
+            ++files;
+        }
+    }
+    return files;
+}
+
+std::vector<std::string> scene_views(const fs::path& scene) {
+    std::ifstream in(scene);
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind("# views:", 0) != 0) continue;
+        std::istringstream words(line.substr(8));
+        std::vector<std::string> views;
+        for (std::string view; words >> view;) views.push_back(view);
+        return views;
+    }
+    return {"full"};
+}
+
+}  // namespace
+
+ReleaseSummary make_release(const fs::path& source, const fs::path& output) {
+    if (fs::exists(output) && !fs::is_empty(output)) {
+        throw std::runtime_error(output.string() + " is not empty: a release goes into a new folder");
+    }
+    fs::create_directories(output);
+    ReleaseSummary summary;
+    summary.files = copy_tree(source, output);
+
+    for (const auto& entry : fs::recursive_directory_iterator(source / "scenes")) {
+        if (entry.path().extension() != ".test") continue;
+        const fs::path relative = fs::relative(entry.path(), source / "scenes");
+        const fs::path folder = output / "scenes" / relative.parent_path() / "reference";
+        try {
+            const Scene scene = load_scene(entry.path());
+            const RenderScene render_scene = prepare_render_scene(scene);
+            for (const std::string& name : scene_views(entry.path())) {
+                RenderOptions options;
+                options.view = *parse_view(name);
+                write_image(render_image(render_scene, options),
+                            folder / (entry.path().stem().string() + "." + name + ".png"));
+                ++summary.reference_images;
+            }
+        } catch (const std::exception& error) {
+            summary.skipped.push_back(relative.string() + ": " + error.what());
+        }
+    }
+    return summary;
+}
+
+}  // namespace raystep::grade

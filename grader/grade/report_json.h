@@ -1,0 +1,17 @@
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include "grader/report/grade_report.h"
+
+namespace raystep::grade {
+
+/// The whole report as JSON (report.json beside the other reports): every check with every field,
+/// and the phase times. `raystep-grade batch` reads it back to resume and to write the class CSV.
+nlohmann::json report_json(const GradeReport& report);
+
+/// Throws (nlohmann's json::exception, or std::invalid_argument) for anything that is not what
+/// report_json writes: a half-written file from an interrupted run is graded again.
+GradeReport report_from_json(const nlohmann::json& j);
+
+}  // namespace raystep::grade

@@ -1,0 +1,95 @@
+// Stage 4 calls: build a BVH or a grid over the primitives given and answer every ray, closest
+// hit or occluded; the slab test on boxes. A workload call answers the same rays `repeat` times
+// (with a BVH, a grid, or no structure at all) and returns only a checksum: the grader times the
+// whole probe from outside.
+
+#include <stdexcept>
+
+#include "grader/probe/call_table.h"
+#include "stages/4_accel/aabb.h"
+#include "stages/4_accel/bvh.h"
+#include "stages/4_accel/uniform_grid.h"
+
+namespace raystep::probe {
+
+namespace {
+
+BvhSplit split_from(const Json& j) {
+    if (j == "sah") return BvhSplit::sah;
+    if (j == "median") return BvhSplit::median;
+    throw std::invalid_argument("expected a split: sah or median");
+}
+
+std::vector<Ray> rays_from(const Json& j) {
+    std::vector<Ray> rays;
+    for (const Json& r : j) rays.push_back(ray_from(r));
+    return rays;
+}
+
+// The structure's answers for every ray: its closest hits, or whether each ray is occluded.
+template <class Structure>
+Json answer_rays(const Structure& structure, const Json& a) {
+    const bool occluded = a.value("occluded", false);
+    Json answers = Json::array();
+    for (const Ray& r : rays_from(a.at("rays"))) {
+        if (occluded) {
+            answers.push_back(structure.occluded(r));
+        } else {
+            answers.push_back(primitive_hit(structure.closest_hit(r)));
+        }
+    }
+    return answers;
+}
+
+// The same rays `repeat` times, counting hits so that no work can be optimized away.
+template <class Structure>
+Json run_workload(const Structure& structure, const Json& a) {
+    const std::vector<Ray> rays = rays_from(a.at("rays"));
+    const int repeat = a.at("repeat").get<int>();
+    std::size_t hits = 0;
+    for (int k = 0; k < repeat; ++k) {
+        for (const Ray& r : rays) hits += structure.closest_hit(r).has_value();
+    }
+    return hits;
+}
+
+// No structure: stage 3's closest_hit over every primitive, the baseline a structure must beat.
+struct BruteForce {
+    PrimitiveList primitives;
+    std::optional<PrimitiveHit> closest_hit(const Ray& ray) const {
+        return raystep::closest_hit(ray, primitives);
+    }
+};
+
+}  // namespace
+
+void add_accel_calls(CallTable& table) {
+    table["bvh"] = [](const Json& a) {
+        const Bvh bvh(primitive_list_from(a.at("primitives")), split_from(a.at("split")));
+        return answer_rays(bvh, a);
+    };
+    table["grid"] = [](const Json& a) {
+        const UniformGrid grid(primitive_list_from(a.at("primitives")));
+        return answer_rays(grid, a);
+    };
+    table["bvh_workload"] = [](const Json& a) {
+        const Bvh bvh(primitive_list_from(a.at("primitives")), split_from(a.at("split")));
+        return run_workload(bvh, a);
+    };
+    table["grid_workload"] = [](const Json& a) {
+        const UniformGrid grid(primitive_list_from(a.at("primitives")));
+        return run_workload(grid, a);
+    };
+    table["brute_force_workload"] = [](const Json& a) {
+        return run_workload(BruteForce{primitive_list_from(a.at("primitives"))}, a);
+    };
+    table["intersect_aabb"] = [](const Json& a) {
+        const Ray r = ray_from(a.at("ray"));
+        const Aabb box{vec3_from(a.at("min")), vec3_from(a.at("max"))};
+        const std::optional<Interval> inside = intersect_aabb(r, 1.0 / r.direction, box);
+        if (!inside) return Json(nullptr);
+        return Json{{"enter", number(inside->enter)}, {"exit", number(inside->exit)}};
+    };
+}
+
+}  // namespace raystep::probe

@@ -1,0 +1,34 @@
+// Whole images: a scene rendered in one view through every stage the view needs, at most
+// `max_width` pixels wide (the scene's own size scaled down, aspect kept), on one thread so that
+// a probe's CPU time is its own work.
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/render/tile_renderer.h"
+#include "core/scene/scene_loader.h"
+#include "grader/probe/call_table.h"
+#include "grader/protocol/image_json.h"
+
+namespace raystep::probe {
+
+void add_render_calls(CallTable& table) {
+    table["render"] = [](const Json& a) {
+        Scene scene = load_scene(a.at("scene").get<std::string>());
+        const std::optional<View> view = parse_view(a.at("view").get<std::string>());
+        if (!view) throw std::invalid_argument("no such view");
+        const int max_width = a.at("max_width").get<int>();
+        if (scene.width > max_width) {
+            const double scale = static_cast<double>(max_width) / scene.width;
+            scene.width = max_width;
+            scene.height = std::max(1, static_cast<int>(std::lround(scene.height * scale)));
+        }
+        RenderOptions options;
+        options.view = *view;
+        options.threads = 1;
+        return image(render_image(prepare_render_scene(scene), options));
+    };
+}
+
+}  // namespace raystep::probe

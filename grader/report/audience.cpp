@@ -1,0 +1,18 @@
+#include "grader/report/audience.h"
+
+namespace raystep::grade {
+
+bool shown_to(const CheckResult& check, Audience audience) {
+    return audience == Audience::instructor || check.visibility == Visibility::visible;
+}
+
+GradeReport seen_by(const GradeReport& report, Audience audience) {
+    GradeReport seen = report;
+    seen.checks.clear();
+    for (const CheckResult& check : report.checks) {
+        if (shown_to(check, audience)) seen.checks.push_back(check);
+    }
+    return seen;
+}
+
+}  // namespace raystep::grade

@@ -1,0 +1,21 @@
+#pragma once
+
+#include "grader/report/grade_report.h"
+
+namespace raystep::grade {
+
+/// Who reads a report: the student, or the instructor, who sees every check.
+enum class Audience { student, instructor };
+
+/// True when the check is shown to this audience. A student is shown only `visible` checks: a
+/// report cannot tell whether the due date has passed or the grades are published, so
+/// `after_due_date` and `after_published` checks are withheld from a student like `hidden` ones
+/// (Gradescope, which knows the dates, receives every check with its visibility and shows each
+/// in time).
+bool shown_to(const CheckResult& check, Audience audience);
+
+/// The report as this audience sees it: the same, minus the checks it is not shown, so that its
+/// scores add up only what the audience can see.
+GradeReport seen_by(const GradeReport& report, Audience audience);
+
+}  // namespace raystep::grade

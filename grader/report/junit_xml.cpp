@@ -1,0 +1,111 @@
+#include "grader/report/junit_xml.h"
+
+#include <cstdio>
+
+#include "grader/report/check_findings.h"
+#include "grader/report/markup_escape.h"
+#include "grader/report/report_text.h"
+
+namespace raystep::grade {
+
+namespace {
+
+// Text of one failure: a CI page shows it whole, so keep it to a few screens.
+constexpr std::size_t kMaxFailureBytes = 16000;
+
+// The stages in the order a student meets them; the whole pipeline's checks last.
+constexpr int kStageOrder[] = {1, 2, 3, 4, 5, 6, 7, 0};
+
+// count()'s stage for every check of the report.
+constexpr int kAllStages = -1;
+
+struct Counts {
+    int tests = 0;
+    int failures = 0;
+    int errors = 0;
+};
+
+// An answer that is wrong, and a stage left unwritten, are failures: the student's code did what
+// it was asked and got it wrong, or did not do it. Not implemented is not a skip: a skip reads as
+// "not applicable, nothing lost" on a CI dashboard and would show a submission missing a stage as
+// green. A crash, a timeout or a compile error stopped the check before it could judge anything:
+// JUnit's error.
+bool is_failure(Outcome outcome) {
+    return outcome == Outcome::failed || outcome == Outcome::not_implemented;
+}
+bool is_error(Outcome outcome) {
+    return outcome == Outcome::crashed || outcome == Outcome::timed_out ||
+           outcome == Outcome::did_not_compile;
+}
+
+Counts count(const GradeReport& report, int stage) {
+    Counts counts;
+    for (const CheckResult& check : report.checks) {
+        if (stage != kAllStages && check.stage != stage) continue;
+        ++counts.tests;
+        if (is_failure(check.outcome)) ++counts.failures;
+        if (is_error(check.outcome)) ++counts.errors;
+    }
+    return counts;
+}
+
+std::string count_attributes(const Counts& counts) {
+    // JUnit's skipped: nothing the grader does is ever skipped (see is_failure).
+    return " tests=\"" + std::to_string(counts.tests) + "\" failures=\"" +
+           std::to_string(counts.failures) + "\" errors=\"" + std::to_string(counts.errors) +
+           "\" skipped=\"0\"";
+}
+
+std::string property(const std::string& name, const std::string& value) {
+    return "      <property name=\"" + name + "\" value=\"" + markup_attribute(value) + "\"/>\n";
+}
+
+std::string testcase(const CheckResult& check) {
+    std::string xml = "    <testcase classname=\"" +
+                      markup_attribute(stage_label(check.stage) + "." + check.kind) + "\" name=\"" +
+                      markup_attribute(check.id) + "\">\n";
+    if (check.outcome != Outcome::passed) {
+        const char* element = is_error(check.outcome) ? "error" : "failure";
+        xml += std::string("      <") + element + " message=\"" +
+               markup_attribute(clipped_text(check.summary, kMaxFieldBytes)) + "\" type=\"" +
+               markup_attribute(outcome_name(check.outcome)) + "\">" +
+               markup_text(check_findings(check, kMaxFailureBytes)) + "</" + element + ">\n";
+    }
+    std::string out =
+        outcome_name(check.outcome) + ", " + score_out_of(check.score, check.max_score) + " points";
+    if (!check.name.empty()) out += "\n" + check.name;
+    if (!check.summary.empty()) out += "\n" + clipped_text(check.summary, kMaxFieldBytes);
+    xml += "      <system-out>" + markup_text(out) + "</system-out>\n";
+    return xml + "    </testcase>\n";
+}
+
+}  // namespace
+
+std::string junit_xml(const GradeReport& report, Audience audience) {
+    const GradeReport seen = seen_by(report, audience);
+    const PhaseTimes& times = report.times;
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%.3f",
+                  times.intake + times.build + times.checks + times.reports);
+    const std::string who = report.student.empty() ? report.submission : report.student;
+
+    std::string xml = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+    xml += "<testsuites name=\"" + markup_attribute("raystep-grade: " + who) + "\"" +
+           count_attributes(count(seen, kAllStages)) + " time=\"" + seconds + "\">\n";
+    const std::vector<std::pair<double, double>> scores = seen.stage_scores();
+    for (const int stage : kStageOrder) {
+        const Counts counts = count(seen, stage);
+        if (counts.tests == 0) continue;
+        const auto& [score, max_score] = scores[static_cast<std::size_t>(stage)];
+        xml += "  <testsuite name=\"" + stage_label(stage) + "\"" + count_attributes(counts) +
+               ">\n    <properties>\n" + property("score", score_text(score)) +
+               property("max_score", score_text(max_score)) + "    </properties>\n";
+        for (const CheckResult& check : seen.checks) {
+            if (check.stage == stage) xml += testcase(check);
+        }
+        xml += "  </testsuite>\n";
+    }
+    return xml + "</testsuites>\n";
+}
+
+}  // namespace raystep::grade

@@ -1,0 +1,248 @@
+#include "grader/sandbox/child_process.h"
+
+#include <fcntl.h>
+#include <grp.h>
+#include <pthread.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+
+namespace raystep::grade {
+
+namespace {
+
+// The child's steps between fork and exec, in order; a failing one is reported to the parent.
+enum class Step : int { signals, stdio, descriptors, session, limits, identity, directory, exec };
+
+const char* step_name(Step step) {
+    switch (step) {
+        case Step::signals:
+            return "resetting its signal handling";
+        case Step::stdio:
+            return "connecting stdin, stdout and stderr";
+        case Step::descriptors:
+            return "closing the grader's descriptors";
+        case Step::session:
+            return "starting a session";
+        case Step::limits:
+            return "setting its resource limits";
+        case Step::identity:
+            return "switching to the sandbox's user";
+        case Step::directory:
+            return "entering its working folder";
+        case Step::exec:
+            return "executing it";
+    }
+    return "starting it";
+}
+
+struct ChildFailure {
+    Step step;
+    int error;
+};
+
+struct Pipe {
+    UniqueFd read;
+    UniqueFd write;
+};
+
+[[noreturn]] void throw_errno(const std::string& what) {
+    throw std::runtime_error("sandbox: " + what + ": " + std::strerror(errno));
+}
+
+// A pipe whose ends are close-on-exec and numbered 3 or more, so that the child's dup2 onto 0, 1
+// and 2 never overwrites one of them before it is used (a grader started with stdin closed gets
+// descriptor 0 from pipe()).
+Pipe make_pipe() {
+    int fds[2];
+    if (pipe2(fds, O_CLOEXEC) != 0) throw_errno("cannot make a pipe");
+    Pipe pipe{UniqueFd(fds[0]), UniqueFd(fds[1])};
+    for (UniqueFd* end : {&pipe.read, &pipe.write}) {
+        if (end->get() >= 3) continue;
+        const int moved = fcntl(end->get(), F_DUPFD_CLOEXEC, 3);
+        if (moved < 0) throw_errno("cannot move a pipe");
+        end->reset(moved);
+    }
+    return pipe;
+}
+
+void make_non_blocking(const UniqueFd& fd) {
+    const int flags = fcntl(fd.get(), F_GETFL);
+    if (flags < 0 || fcntl(fd.get(), F_SETFL, flags | O_NONBLOCK) < 0) {
+        throw_errno("cannot make a pipe non-blocking");
+    }
+}
+
+// NULL-terminated pointers into `strings`, for execve.
+std::vector<char*> c_strings(std::vector<std::string>& strings) {
+    std::vector<char*> pointers;
+    for (std::string& s : strings)
+        pointers.push_back(s.data());
+    pointers.push_back(nullptr);
+    return pointers;
+}
+
+// In the child: tell the parent which step failed, and stop. Only async-signal-safe calls.
+[[noreturn]] void report_failure(int report_fd, Step step) {
+    const ChildFailure failure{step, errno};
+    // A write that fails means the parent is gone, and there is no one left to tell.
+    [[maybe_unused]] const ssize_t told = write(report_fd, &failure, sizeof failure);
+    _exit(127);
+}
+
+// Lowers a limit of the child; never above the hard limit it already has (only root may raise
+// one, and the grader's own limits are a ceiling for what it starts).
+bool lower_limit(int resource, rlim_t soft, rlim_t hard) {
+    struct rlimit now {};
+    if (getrlimit(resource, &now) != 0) return false;
+    const struct rlimit wanted { std::min(soft, now.rlim_max), std::min(hard, now.rlim_max) };
+    return setrlimit(resource, &wanted) == 0;
+}
+
+struct ChildEnds {
+    int stdin_read;
+    int stdout_write;
+    int stderr_write;
+    int report_write;
+};
+
+// The child, from fork to exec. Only async-signal-safe calls: another thread of the grader may
+// have held a lock (malloc's, say) at the fork, and it is never released here.
+[[noreturn]] void become_program(const ChildSpec& spec, char* const* argv, char* const* envp,
+                                 const ChildEnds& ends, long open_max) {
+    // Default signal handling: a handler of the grader must not run in the child before the exec,
+    // and an ignored signal stays ignored across it (a grader ignoring SIGPIPE would hand that
+    // on). The parent blocked every signal across the fork; unblock them at the exec.
+    for (int sig = 1; sig < NSIG; ++sig) {
+        struct sigaction action {};
+        if (sigaction(sig, nullptr, &action) != 0 || action.sa_handler == SIG_DFL) continue;
+        action = {};
+        action.sa_handler = SIG_DFL;
+        sigemptyset(&action.sa_mask);
+        if (sigaction(sig, &action, nullptr) != 0) report_failure(ends.report_write, Step::signals);
+    }
+
+    // Its stdin, stdout and stderr are our pipes.
+    if (dup2(ends.stdin_read, 0) < 0 || dup2(ends.stdout_write, 1) < 0 ||
+        dup2(ends.stderr_write, 2) < 0) {
+        report_failure(ends.report_write, Step::stdio);
+    }
+
+    // No other descriptor of the grader's: some may not be close-on-exec (a report being written,
+    // say), and the program could read or write them, or hold a pipe of another run open. The
+    // report pipe moves to 3 and closes itself at the exec.
+    int report_fd = ends.report_write;
+    if (report_fd != 3) {
+        if (dup3(report_fd, 3, O_CLOEXEC) < 0) report_failure(report_fd, Step::descriptors);
+        report_fd = 3;
+    }
+    if (close_range(4, ~0U, 0) != 0) {  // Linux 5.9; older kernels close one by one
+        for (long fd = 4; fd < open_max; ++fd)
+            close(static_cast<int>(fd));
+    }
+
+    // A new session, and so a new process group whose id is our pid: the parent can kill the
+    // whole group at once, and no terminal of the grader's can signal it or be read by it.
+    if (setsid() < 0) report_failure(report_fd, Step::session);
+
+    // The limits. The soft CPU limit sends SIGXCPU, which a program may catch or ignore; the hard
+    // one, a second later, sends SIGKILL, which it cannot. No core files: they are big, slow to
+    // write and of no use to a grade.
+    if (!lower_limit(RLIMIT_CPU, spec.cpu_seconds, spec.cpu_seconds + 1) ||
+        !lower_limit(RLIMIT_AS, spec.address_space_bytes, spec.address_space_bytes) ||
+        !lower_limit(RLIMIT_NPROC, spec.tasks, spec.tasks) ||
+        !lower_limit(RLIMIT_FSIZE, spec.file_size_bytes, spec.file_size_bytes) ||
+        !lower_limit(RLIMIT_CORE, 0, 0)) {
+        report_failure(report_fd, Step::limits);
+    }
+
+    // The identity, groups first (setgid and setgroups need the privilege setuid gives up).
+    if (spec.identity) {
+        if (setgroups(0, nullptr) != 0 || setgid(spec.identity->gid) != 0 ||
+            setuid(spec.identity->uid) != 0 || getuid() != spec.identity->uid ||
+            geteuid() != spec.identity->uid) {
+            report_failure(report_fd, Step::identity);
+        }
+    }
+
+    if (!spec.working_directory.empty() && chdir(spec.working_directory.c_str()) != 0) {
+        report_failure(report_fd, Step::directory);
+    }
+
+    sigset_t none;
+    sigemptyset(&none);
+    sigprocmask(SIG_SETMASK, &none, nullptr);
+    execve(spec.executable.c_str(), argv, envp);
+    report_failure(report_fd, Step::exec);
+}
+
+void reap(pid_t pid) {
+    while (waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
+    }
+}
+
+}  // namespace
+
+ChildProcess start_child(const ChildSpec& spec) {
+    // Everything the child needs, made before the fork.
+    std::vector<std::string> argv_strings = spec.argv;
+    std::vector<std::string> env_strings = spec.environment;
+    const std::vector<char*> argv = c_strings(argv_strings);
+    const std::vector<char*> envp = c_strings(env_strings);
+    Pipe in = make_pipe();
+    Pipe out = make_pipe();
+    Pipe err = make_pipe();
+    Pipe report = make_pipe();
+    for (const UniqueFd* ours : {&in.write, &out.read, &err.read})
+        make_non_blocking(*ours);
+    const long open_max = sysconf(_SC_OPEN_MAX);
+    const ChildEnds ends{in.read.get(), out.write.get(), err.write.get(), report.write.get()};
+
+    // Block every signal across the fork, so that none reaches a handler of the grader's in the
+    // child before it has reset them all.
+    sigset_t all;
+    sigset_t previous;
+    sigfillset(&all);
+    pthread_sigmask(SIG_SETMASK, &all, &previous);
+    const pid_t pid = fork();
+    if (pid == 0) become_program(spec, argv.data(), envp.data(), ends, open_max);
+    const int fork_error = errno;
+    pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+    if (pid < 0) {
+        throw std::runtime_error("sandbox: cannot start " + spec.executable +
+                                 ": fork: " + std::strerror(fork_error));
+    }
+
+    // The child's ends are the child's. The report pipe closes at its exec; a failure arrives
+    // before that.
+    in.read.reset();
+    out.write.reset();
+    err.write.reset();
+    report.write.reset();
+    ChildFailure failure{};
+    ssize_t got = 0;
+    do {
+        got = read(report.read.get(), &failure, sizeof failure);
+    } while (got < 0 && errno == EINTR);
+    if (got > 0) {
+        reap(pid);
+        std::string what =
+            "sandbox: cannot start " + spec.executable + ": " + step_name(failure.step);
+        if (failure.step == Step::directory) what += " " + spec.working_directory;
+        throw std::runtime_error(what + ": " + std::strerror(failure.error));
+    }
+
+    ChildProcess child;
+    child.pid = pid;
+    child.stdin_write = std::move(in.write);
+    child.stdout_read = std::move(out.read);
+    child.stderr_read = std::move(err.read);
+    return child;
+}
+
+}  // namespace raystep::grade

@@ -1,0 +1,50 @@
+#pragma once
+
+#include <sys/resource.h>
+#include <sys/types.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "grader/sandbox/unique_fd.h"
+
+namespace raystep::grade {
+
+/// A kernel user and group to run as.
+struct Identity {
+    uid_t uid = 0;
+    gid_t gid = 0;
+};
+
+/// What the child runs and under which limits: all decided before fork, so that the child only
+/// makes async-signal-safe calls (the grader may have other threads, and a fork copies only ours).
+struct ChildSpec {
+    std::string executable;                ///< an absolute path, executed as it is
+    std::vector<std::string> argv;         ///< argv[0] included
+    std::vector<std::string> environment;  ///< "NAME=value": all the environment it gets
+    std::string working_directory;         ///< empty: stay in ours
+    rlim_t cpu_seconds = 1;                ///< RLIMIT_CPU, soft; the hard limit is one more
+    rlim_t address_space_bytes = RLIM_INFINITY;
+    rlim_t tasks = RLIM_INFINITY;  ///< RLIMIT_NPROC: processes and threads of the child's user
+    rlim_t file_size_bytes = RLIM_INFINITY;
+    std::optional<Identity> identity;  ///< switch to it before exec; nullopt keeps ours
+};
+
+/// A started child: its pid, which is also its process group and session, and our ends of its
+/// stdin, stdout and stderr: non-blocking, and close-on-exec so that no other program the grader
+/// starts holds them.
+struct ChildProcess {
+    pid_t pid = -1;
+    UniqueFd stdin_write;
+    UniqueFd stdout_read;
+    UniqueFd stderr_read;
+};
+
+/// Forks; the child gets pipes for stdin, stdout and stderr and no other descriptor of ours,
+/// default signal handling, a new session, the limits and the identity, then execs. Throws
+/// std::runtime_error naming the step that failed, and why, when the program could not be
+/// started; the child is reaped before.
+ChildProcess start_child(const ChildSpec& spec);
+
+}  // namespace raystep::grade

@@ -1,0 +1,172 @@
+#include "grader/sandbox/sandbox.h"
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <system_error>
+#include <utility>
+
+#include "grader/sandbox/bubblewrap_command.h"
+#include "grader/sandbox/child_process.h"
+#include "grader/sandbox/sandbox_paths.h"
+#include "grader/sandbox/sandbox_user.h"
+#include "grader/sandbox/supervise.h"
+
+namespace raystep::grade {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// stderr is kept up to this: enough for a compiler's first errors, and it bounds our memory.
+constexpr std::size_t kErrorBytes = std::size_t{1} << 20;
+
+// The policy with every path absolute_normal, as bubblewrap takes them and is_within compares.
+SandboxPolicy normalized(const SandboxPolicy& policy) {
+    SandboxPolicy normal = policy;
+    for (fs::path& path : normal.read_only)
+        path = absolute_normal(path);
+    if (!normal.writable.empty()) normal.writable = absolute_normal(normal.writable);
+    normal.working_directory = absolute_normal(normal.working_directory);
+    return normal;
+}
+
+// The policy's paths must exist, with bubblewrap or without: bubblewrap would fail on a missing
+// one as if the program had, and a mistake of the grader's should show wherever it runs.
+void require_paths(const SandboxPolicy& policy) {
+    std::error_code error;
+    for (const fs::path& path : policy.read_only) {
+        if (!fs::exists(path, error)) {
+            throw std::runtime_error("sandbox: the read-only path " + path.string() +
+                                     " does not exist");
+        }
+    }
+    if (!policy.writable.empty() && !fs::is_directory(policy.writable, error)) {
+        throw std::runtime_error("sandbox: the writable folder " + policy.writable.string() +
+                                 " is not a folder");
+    }
+}
+
+// The limits and identity every run has, with or without bubblewrap.
+ChildSpec limited_spec(const SandboxLimits& limits, bool isolated) {
+    ChildSpec spec;
+    spec.environment = {std::string("PATH=") + kSandboxPath};
+    // RLIMIT_CPU counts whole seconds: a fraction rounds up, and no limit is below one second.
+    spec.cpu_seconds = static_cast<rlim_t>(std::max(1.0, std::ceil(limits.cpu_seconds)));
+    spec.address_space_bytes = limits.address_space_bytes;
+    spec.file_size_bytes = limits.file_size_bytes;
+    spec.identity = program_identity();
+    // A fork bomb is held by RLIMIT_NPROC, which the kernel enforces on every uid but 0: hence a
+    // program that is never root (sandbox_user.h), bubblewrap's included (inside its user
+    // namespace it has uid 65534, and outside it is nobody or the grader's own user, never the
+    // root that a root grader would map in). The limit counts every task of that real uid, not
+    // those of one run, so what the user already runs (the grader's own processes when it is not
+    // root, other sandboxes as nobody) is added, or the program could not start one process.
+    // Inside bubblewrap the kernel also counts per user namespace, so there the limit holds for
+    // the sandbox alone. Whatever a run leaves is then killed with it (supervise.h).
+    const uid_t uid = spec.identity ? spec.identity->uid : getuid();
+    spec.tasks = tasks_of(uid) + static_cast<rlim_t>(std::max(0, limits.processes)) +
+                 (isolated ? kBubblewrapTasks : 0);
+    return spec;
+}
+
+// How the program ended, from the status of the process we started.
+void read_status(const Supervision& supervision, bool isolated, SandboxRun& run) {
+    if (!supervision.wait_status) return;
+    const int status = *supervision.wait_status;
+    if (WIFSIGNALED(status)) {
+        run.signal = WTERMSIG(status);
+    } else if (WIFEXITED(status)) {
+        const int code = WEXITSTATUS(status);
+        // bubblewrap hands the program's end on as a shell does: its exit code, or 128 plus the
+        // signal that killed it.
+        if (isolated && code > 128 && code - 128 < NSIG) {
+            run.signal = code - 128;
+        } else {
+            run.exit_code = code;
+        }
+    }
+}
+
+// Whether the CPU limit ended the program. SIGXCPU comes at the soft limit; SIGKILL a second
+// later, at the hard one, for a program that caught or ignored SIGXCPU. A SIGKILL can have other
+// senders (the OOM killer, the program itself), so it counts when the CPU time reached the limit.
+// bubblewrap does not pass its program's CPU time on to us (its rusage leaves it out), so there the
+// wall-clock time stands in for it: a single thread cannot reach the hard limit sooner.
+bool at_cpu_limit(const SandboxRun& run, const Supervision& supervision, double soft_seconds) {
+    if (run.signal == SIGXCPU) return true;
+    if (run.signal != SIGKILL) return false;
+    return run.isolated ? run.wall_seconds >= soft_seconds + 1.0
+                        : supervision.cpu_seconds >= soft_seconds;
+}
+
+}  // namespace
+
+SandboxRun run_sandboxed(const std::vector<std::string>& argv, const std::string& input,
+                         const SandboxPolicy& policy) {
+    if (argv.empty()) throw std::runtime_error("sandbox: no program to run");
+    const fs::path program = find_executable(argv.front());
+    const SandboxPolicy normal = normalized(policy);
+    require_paths(normal);
+    const bool isolated = policy.isolate && bubblewrap_available();
+
+    // What to execute: bubblewrap with the program inside, or the program itself. Its argv[0] is
+    // its absolute path, which means the same inside and out.
+    ChildSpec spec = limited_spec(policy.limits, isolated);
+    const std::vector<std::string> arguments(argv.begin() + 1, argv.end());
+    if (isolated) {
+        spec.argv = bubblewrap_command(find_executable("bwrap"), program, arguments, normal);
+    } else {
+        spec.argv = {program.string()};
+        spec.argv.insert(spec.argv.end(), arguments.begin(), arguments.end());
+        spec.working_directory = normal.working_directory.string();
+        spec.environment.push_back("PWD=" + spec.working_directory);  // as bubblewrap sets it
+    }
+    spec.executable = spec.argv.front();
+    if (spec.identity && !normal.writable.empty()) hand_over(normal.writable, *spec.identity);
+
+    const Clock::time_point start = Clock::now();
+    ChildProcess child = start_child(spec);
+    Supervision supervision = supervise(child, input, start + policy.limits.wall,
+                                        {policy.limits.output_bytes, kErrorBytes});
+
+    SandboxRun run;
+    run.isolated = isolated;
+    run.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    read_status(supervision, isolated, run);
+    run.timed_out = supervision.killed_at_wall ||
+                    at_cpu_limit(run, supervision, static_cast<double>(spec.cpu_seconds));
+    run.output_capped = supervision.output_capped;
+    run.output = std::move(supervision.output);
+    run.errors = std::move(supervision.errors);
+    return run;
+}
+
+bool bubblewrap_available() {
+    // Asked once: the answer holds while the grader runs, and asking starts a sandbox. The
+    // question is the command every isolated run uses, with `true` for the program, so that a
+    // kernel without unprivileged user namespaces, or a bubblewrap too old for an option we
+    // pass, says no here instead of failing every run as if the program had.
+    static const bool available = [] {
+        SandboxPolicy policy;
+        policy.isolate = false;
+        policy.limits.cpu_seconds = 5;
+        policy.limits.wall = std::chrono::seconds(10);
+        try {
+            const std::vector<std::string> command = bubblewrap_command(
+                find_executable("bwrap"), find_executable("true"), {}, normalized(policy));
+            return run_sandboxed(command, "", policy).exit_code == 0;
+        } catch (const std::runtime_error&) {
+            return false;
+        }
+    }();
+    return available;
+}
+
+}  // namespace raystep::grade

@@ -1,0 +1,85 @@
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace raystep::grade {
+
+// Running untrusted programs (a submission's probe, or the compiler on a submission's files) so
+// that nothing they do reaches beyond their run: docs/design, "The grader: trust split".
+//
+// Always (Linux; the grader runs there): rlimits on CPU time, address space, processes and file
+// size, a wall-clock timeout after which the whole process group is killed, and a cap on the
+// output read (the rest is drained and thrown away, so a flood neither fills memory nor blocks).
+// Where bubblewrap (`bwrap`) is installed and works: a new user, PID, IPC, UTS and network
+// namespace (no network), a new session, an unprivileged uid, a private /tmp, and a filesystem
+// made only of read-only binds of the paths the policy names plus one writable folder.
+//
+// The program never runs as root: when the grader is root, it runs as nobody (uid and gid 65534)
+// with or without bubblewrap. So the paths in read_only must be readable by others, with every
+// folder above them searchable, and the writable folder is given to nobody (chown, the folder
+// only) before the run. Its environment is PATH (/usr/local/bin:/usr/bin:/bin) and PWD, nothing
+// of the grader's. A run ends when the program's first process exits; whatever it left running
+// is killed then (without bubblewrap, only what stayed in its process group).
+//
+// Limits: rlimits bound each process, not the run. Memory a program holds outside its address
+// space (SysV shared memory, memfd files, pipe buffers) is bounded only by a cgroup, which this
+// sandbox does not make; nor is the number of files it writes in the writable folder. Without
+// bubblewrap, a process that starts a session of its own escapes the kill of the group, and
+// concurrent runs share one user, so they can see each other's writable folders.
+
+struct SandboxLimits {
+    double cpu_seconds = 10.0;
+    std::chrono::milliseconds wall{20000};
+    std::size_t address_space_bytes = std::size_t{2} << 30;
+    /// RLIMIT_NPROC: processes and threads, beyond those its user already runs.
+    int processes = 64;
+    /// RLIMIT_FSIZE: the largest file it may write; with bubblewrap, also the size of its /tmp.
+    std::size_t file_size_bytes = 64u << 20;
+    std::size_t output_bytes = 64u << 20;  ///< stdout read at most; stderr at most 1 MiB
+};
+
+struct SandboxPolicy {
+    SandboxLimits limits;
+    /// Paths visible inside, read-only, at the same place (the system's /usr, /lib... are added
+    /// by the sandbox itself).
+    std::vector<std::filesystem::path> read_only;
+    /// The one folder the program may write, visible at the same place; empty for none.
+    std::filesystem::path writable;
+    /// The working folder inside.
+    std::filesystem::path working_directory = "/";
+    /// Use bubblewrap when it is installed and works; false runs with rlimits and timeout only.
+    bool isolate = true;
+};
+
+struct SandboxRun {
+    int exit_code = -1;  ///< the program's, when it exited
+    /// The signal that killed it, or 0. With bubblewrap, which passes on 128 + the signal as its
+    /// exit code, an exit code of 129 to 192 is read as that signal.
+    int signal = 0;
+    /// Killed at the wall-clock limit, or by SIGXCPU/SIGKILL at the CPU limit (with bubblewrap,
+    /// which hides the program's CPU time, a SIGKILL counts once the wall time reached the limit).
+    bool timed_out = false;
+    bool output_capped = false;  ///< it wrote more than output_bytes
+    std::string output;          ///< stdout, up to the cap
+    std::string errors;          ///< stderr, up to 1 MiB
+    double wall_seconds = 0.0;
+    bool isolated = false;  ///< bubblewrap was used
+};
+
+/// Runs argv[0] with arguments, `input` on its stdin, under the policy. argv[0] without a slash is
+/// looked up in the sandbox's PATH; the program gets its absolute path as argv[0]. Never throws
+/// for what the program does; throws std::runtime_error only when the program cannot be started
+/// at all (not found, a path of the policy missing, the program or working folder outside what
+/// bubblewrap would show), and says why.
+SandboxRun run_sandboxed(const std::vector<std::string>& argv, const std::string& input,
+                         const SandboxPolicy& policy);
+
+/// True when bubblewrap is installed and can make a sandbox here (it needs user namespaces):
+/// asked once, by running `true` in the sandbox every isolated run gets.
+bool bubblewrap_available();
+
+}  // namespace raystep::grade

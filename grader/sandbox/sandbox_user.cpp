@@ -1,0 +1,65 @@
+#include "grader/sandbox/sandbox_user.h"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+
+namespace raystep::grade {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+bool all_digits(const std::string& name) {
+    return !name.empty() && name.find_first_not_of("0123456789") == std::string::npos;
+}
+
+// The number after `field` ("Uid:", "Threads:") in a /proc/PID/status file; the first of them.
+std::optional<unsigned long> status_field(const std::string& status, const std::string& field) {
+    const std::size_t at = status.find("\n" + field);
+    if (at == std::string::npos) return std::nullopt;
+    std::istringstream value(status.substr(at + 1 + field.size()));
+    unsigned long number = 0;
+    if (!(value >> number)) return std::nullopt;
+    return number;
+}
+
+}  // namespace
+
+std::optional<Identity> program_identity() {
+    if (geteuid() != 0) return std::nullopt;
+    return Identity{kSandboxUid, kSandboxGid};
+}
+
+rlim_t tasks_of(uid_t uid) {
+    rlim_t tasks = 0;
+    std::error_code error;
+    for (fs::directory_iterator it("/proc", error), end; !error && it != end; it.increment(error)) {
+        if (!all_digits(it->path().filename().string())) continue;
+        // A process may end while we read: its file is then empty or gone, and it counts 0.
+        std::ifstream file(it->path() / "status");
+        std::stringstream text;
+        text << file.rdbuf();
+        const std::string status = "\n" + text.str();
+        const std::optional<unsigned long> real_uid = status_field(status, "Uid:");
+        const std::optional<unsigned long> threads = status_field(status, "Threads:");
+        if (real_uid == uid && threads) tasks += *threads;
+    }
+    return tasks;
+}
+
+void hand_over(const fs::path& folder, const Identity& identity) {
+    if (lchown(folder.c_str(), identity.uid, identity.gid) != 0) {
+        throw std::runtime_error("sandbox: cannot give the writable folder " + folder.string() +
+                                 " to uid " + std::to_string(identity.uid) + ": " +
+                                 std::strerror(errno));
+    }
+}
+
+}  // namespace raystep::grade

@@ -1,0 +1,266 @@
+// The grader against its corpus (grader/tests/submissions/README.md): the model submission gets
+// full marks; every mutant loses points in its own stage; every correct alternative gets full
+// marks; every hostile submission ends in bounded time with a low score and a complete report,
+// reads nothing secret and writes nothing outside its output folder.
+//
+// Each entry is graded by the real raystep-grade, as an instructor would run it, a few at a time.
+// A mutant, alternative or hostile entry is a diff against the model: the submission is the
+// model's files of the diff's stage, with the diff applied (git apply), graded on that stage.
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include "grader/grade/report_json.h"
+#include "grader/grade/stage_manifests.h"
+
+namespace fs = std::filesystem;
+using raystep::grade::CheckResult;
+using raystep::grade::GradeReport;
+using raystep::grade::Outcome;
+
+namespace {
+
+const fs::path kSource = RAYSTEP_SOURCE_DIR;
+const fs::path kCorpus = kSource / "grader/tests/submissions";
+const fs::path kWork = RAYSTEP_CORPUS_WORK;
+// What the write-outside-sandbox submission tries to leave everywhere.
+const std::string kMark = "raystep-hostile-was-here";
+
+std::string shell_quoted(const fs::path& path) {
+    return "'" + path.string() + "'";
+}
+
+std::string read_text(const fs::path& path) {
+    std::ifstream file(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+}
+
+// One graded entry: its report (absent when raystep-grade wrote none), how long grading took.
+struct Graded {
+    fs::path diff;
+    int stage = 0;
+    fs::path output;
+    std::optional<GradeReport> report;
+    double seconds = 0.0;
+    std::string problem;  ///< why there is no report
+};
+
+// "4-bvh-skips-far-child.diff" is stage 4's.
+int stage_of(const fs::path& diff) {
+    return diff.filename().string().front() - '0';
+}
+
+std::vector<fs::path> diffs_in(const std::string& folder) {
+    std::vector<fs::path> diffs;
+    for (const fs::directory_entry& entry : fs::directory_iterator(kCorpus / folder)) {
+        if (entry.path().extension() == ".diff") diffs.push_back(entry.path());
+    }
+    std::sort(diffs.begin(), diffs.end());
+    return diffs;
+}
+
+// Runs raystep-grade on `submission`; `arguments` narrow it (--stage N --no-speed).
+void grade(Graded& entry, const fs::path& submission, const std::string& arguments) {
+    fs::remove_all(entry.output);
+    fs::create_directories(entry.output.parent_path());
+    const auto start = std::chrono::steady_clock::now();
+    const std::string command = shell_quoted(RAYSTEP_GRADE_PROGRAM) + " submission " +
+                                shell_quoted(submission) + " -o " + shell_quoted(entry.output) +
+                                " --jobs 1 " + arguments + " > " +
+                                shell_quoted(entry.output.string() + ".log") + " 2>&1";
+    const int status = std::system(command.c_str());
+    entry.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    try {
+        entry.report = raystep::grade::report_from_json(
+            nlohmann::json::parse(read_text(entry.output / "report.json")));
+    } catch (const std::exception& error) {
+        entry.problem = "raystep-grade exited with " + std::to_string(status) +
+                        " and no readable report.json (" + error.what() + "); its output is in " +
+                        entry.output.string() + ".log";
+    }
+}
+
+// The model's files of the diff's stage, the diff applied.
+fs::path mutated_submission(const fs::path& diff, const fs::path& folder) {
+    fs::remove_all(folder);
+    const int stage = stage_of(diff);
+    for (const raystep::grade::StageManifest& manifest : raystep::grade::read_stage_manifests(kSource)) {
+        if (manifest.number != stage) continue;
+        fs::create_directories(folder / "stages");
+        fs::copy(kCorpus / "model/stages" / manifest.folder, folder / "stages" / manifest.folder,
+                 fs::copy_options::recursive);
+    }
+    const std::string apply = "cd " + shell_quoted(folder) + " && git apply -p1 " + shell_quoted(diff);
+    if (std::system(apply.c_str()) != 0) throw std::runtime_error("git apply failed for " + diff.string());
+    return folder;
+}
+
+// Grades every diff of a folder of the corpus on its own stage, a few at a time.
+std::vector<Graded> grade_corpus(const std::string& folder) {
+    const std::vector<fs::path> diffs = diffs_in(folder);
+    std::vector<Graded> graded(diffs.size());
+    std::atomic<std::size_t> next{0};
+    const auto work = [&] {
+        for (std::size_t k = next++; k < diffs.size(); k = next++) {
+            Graded& entry = graded[k];
+            entry.diff = diffs[k];
+            entry.stage = stage_of(diffs[k]);
+            const fs::path base = kWork / folder / diffs[k].stem();
+            entry.output = base / "report";
+            try {
+                const fs::path submission = mutated_submission(diffs[k], base / "submission");
+                grade(entry, submission,
+                      "--stage " + std::to_string(entry.stage) + " --no-speed");
+            } catch (const std::exception& error) {
+                entry.problem = error.what();
+            }
+        }
+    };
+    // Grading is mostly compiling and waiting on probes: one more than the processors.
+    std::vector<std::thread> workers(std::max(2u, std::thread::hardware_concurrency()) + 1);
+    for (std::thread& worker : workers) worker = std::thread(work);
+    for (std::thread& worker : workers) worker.join();
+    return graded;
+}
+
+std::pair<double, double> stage_score(const GradeReport& report, int stage) {
+    return report.stage_scores().at(static_cast<std::size_t>(stage));
+}
+
+std::string describe(const Graded& entry) {
+    std::string text = entry.diff.filename().string();
+    if (!entry.report) return text + ": " + entry.problem;
+    const auto [score, max] = stage_score(*entry.report, entry.stage);
+    text += ": stage " + std::to_string(entry.stage) + " " + std::to_string(score) + " / " +
+            std::to_string(max) + " in " + std::to_string(entry.seconds) + " s";
+    for (const CheckResult& check : entry.report->checks) {
+        text += "\n  " + check.id + " " + std::to_string(check.score) + "/" +
+                std::to_string(check.max_score) + ": " + check.summary;
+    }
+    return text;
+}
+
+const CheckResult* find_check(const GradeReport& report, const std::string& id) {
+    for (const CheckResult& check : report.checks) {
+        if (check.id == id) return &check;
+    }
+    return nullptr;
+}
+
+// Every folder above `output`, and the other places a submission might try to write.
+std::vector<fs::path> places_outside(const fs::path& output) {
+    std::vector<fs::path> places = {"/tmp", "/autograder", "/autograder/results", kSource,
+                                    fs::current_path()};
+    if (const char* home = std::getenv("HOME")) places.push_back(home);
+    for (fs::path p = output; p.has_relative_path(); p = p.parent_path()) places.push_back(p.parent_path());
+    return places;
+}
+
+}  // namespace
+
+TEST_CASE("the model submission gets full marks on every check", "[corpus]") {
+    Graded model;
+    model.output = kWork / "model/report";
+    grade(model, kCorpus / "model", "");
+    INFO(describe(model));
+    REQUIRE(model.report);
+    REQUIRE(model.report->checks.size() > 40);
+    for (const CheckResult& check : model.report->checks) {
+        // Full marks, which is not always every case passed: the lecture's triangle tests lose a
+        // few slivers by design, and the rubric allows for it.
+        INFO(check.id << ": " << check.summary);
+        CHECK(check.score == check.max_score);
+    }
+}
+
+TEST_CASE("every mutant loses points in its own stage", "[corpus]") {
+    const std::vector<Graded> graded = grade_corpus("mutants");
+    REQUIRE(graded.size() >= 30);
+    std::vector<int> stages;
+    for (const Graded& entry : graded) {
+        INFO(describe(entry));
+        REQUIRE(entry.report);
+        const auto [score, max] = stage_score(*entry.report, entry.stage);
+        CHECK(max > 0.0);
+        CHECK(score < max);
+        stages.push_back(entry.stage);
+    }
+    for (int stage = 1; stage <= 7; ++stage) {
+        INFO("stage " << stage);
+        CHECK(std::count(stages.begin(), stages.end(), stage) >= 2);
+    }
+}
+
+TEST_CASE("every correct alternative gets full marks in its stage", "[corpus]") {
+    const std::vector<Graded> graded = grade_corpus("alternatives");
+    REQUIRE(graded.size() >= 5);
+    for (const Graded& entry : graded) {
+        INFO(describe(entry));
+        REQUIRE(entry.report);
+        const auto [score, max] = stage_score(*entry.report, entry.stage);
+        CHECK(max > 0.0);
+        CHECK(score == max);
+    }
+}
+
+TEST_CASE("every hostile submission ends in bounded time with a low score, a complete report, "
+          "and nothing read or written outside its sandbox",
+          "[corpus]") {
+    for (const fs::path& diff : diffs_in("hostile")) {
+        for (const fs::path& place : places_outside(kWork / "hostile" / diff.stem() / "report")) {
+            std::error_code ignored;
+            fs::remove(place / kMark, ignored);
+        }
+    }
+    const std::vector<Graded> graded = grade_corpus("hostile");
+    REQUIRE(graded.size() >= 10);
+    // Lines of the reference solution, the hidden checks and the rubric: none may reach a report.
+    const std::vector<std::string> secrets = {
+        "Stage 1 reference solution", "the contract's edge cases a student's own tests may not reach",
+        "The rubric raystep-grade scores by"};
+    for (const Graded& entry : graded) {
+        INFO(describe(entry));
+        REQUIRE(entry.report);
+        // Each check's probe runs end within their limits (20 s of processor, 40 s of wall
+        // clock): three checks, one after another, and the build.
+        CHECK(entry.seconds < 150.0);
+        // dot is in the first case of the unit and oracle checks: both must fail.
+        for (const std::string id : {"stage1.unit", "stage1.oracle"}) {
+            const CheckResult* check = find_check(*entry.report, id);
+            REQUIRE(check);
+            INFO(id << ": " << check->summary);
+            CHECK(check->outcome != Outcome::passed);
+            CHECK(check->score < check->max_score);
+        }
+        // A complete report: every file, and the Gradescope score is the grader's own.
+        for (const char* file : {"results.json", "prairielearn.json", "junit.xml", "index.html",
+                                 "instructor.html", "report.json"}) {
+            INFO(file);
+            CHECK(fs::is_regular_file(entry.output / file));
+        }
+        const nlohmann::json results = nlohmann::json::parse(read_text(entry.output / "results.json"));
+        CHECK(results.at("score").get<double>() == Approx(entry.report->score()));
+        const std::string everything = read_text(entry.output / "report.json") +
+                                       read_text(entry.output / "instructor.html");
+        for (const std::string& secret : secrets) {
+            INFO("the report holds \"" << secret << "\"");
+            CHECK(everything.find(secret) == std::string::npos);
+        }
+        for (const fs::path& place : places_outside(entry.output)) {
+            INFO("written outside the output folder: " << (place / kMark));
+            CHECK_FALSE(fs::exists(place / kMark));
+        }
+    }
+}

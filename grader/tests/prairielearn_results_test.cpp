@@ -1,0 +1,115 @@
+#include "grader/report/prairielearn_results.h"
+
+#include "core/testing/catch.h"
+#include "grader/report/report_text.h"
+#include "report_example.h"
+
+using namespace raystep::grade;
+using raystep::testing::example_report;
+using raystep::testing::kHiddenSecret;
+using raystep::testing::kHostile;
+
+namespace {
+
+nlohmann::json written(const GradeReport& report) {
+    return nlohmann::json::parse(prairielearn_results(report).dump());
+}
+
+}  // namespace
+
+// https://prairielearn.readthedocs.io/en/latest/externalGrading/, "Grading results".
+TEST_CASE("prairielearn_results: the fields and types PrairieLearn reads", "[report]") {
+    const nlohmann::json results = written(example_report());
+    CHECK(results.at("gradable") == true);
+    CHECK(results.at("score").is_number());
+    CHECK(results.at("score").get<double>() == Approx(16.5 / 40.0));
+    CHECK(results.at("message").is_string());
+    CHECK(results.at("output").is_string());
+    CHECK_FALSE(results.contains("format_errors"));
+    REQUIRE(results.at("tests").is_array());
+    for (const nlohmann::json& test : results.at("tests")) {
+        CAPTURE(test.dump());
+        CHECK(test.at("name").is_string());
+        CHECK(test.at("description").is_string());
+        CHECK(test.at("points").is_number());
+        CHECK(test.at("max_points").is_number());
+        CHECK(test.at("message").is_string());
+        CHECK(test.at("output").is_string());
+    }
+}
+
+TEST_CASE("prairielearn_results: withheld checks become one test per stage, points kept",
+          "[report]") {
+    const nlohmann::json results = written(example_report());
+    const nlohmann::json& tests = results.at("tests");
+    REQUIRE(tests.size() == 9 + 3);  // the visible checks, then stages 3, 6 and 7's withheld ones
+    CHECK(tests[9].at("name") == "stage 3: hidden checks");
+    CHECK(tests[9].at("points") == 0);
+    CHECK(tests[9].at("max_points") == 4);
+    CHECK(tests[9].at("output") == "");
+    CHECK(tests[10].at("name") == "stage 6: hidden checks");
+    CHECK(tests[11].at("name") == "stage 7: hidden checks");
+    CHECK(tests[11].at("description") == "1 check whose name and inputs are not shown");
+    double points = 0.0;
+    double max_points = 0.0;
+    for (const nlohmann::json& test : tests) {
+        points += test.at("points").get<double>();
+        max_points += test.at("max_points").get<double>();
+    }
+    CHECK(points / max_points == results.at("score").get<double>());
+    // Nothing of the hidden check but its points.
+    CHECK_THAT(results.dump(), !Catch::Matchers::Contains(kHiddenSecret));
+}
+
+TEST_CASE("prairielearn_results: a visible check's test", "[report]") {
+    const nlohmann::json test = written(example_report()).at("tests")[3];
+    CHECK(test.at("name") == "stage3.oracle.shared-edges");
+    CHECK(test.at("description") == "rays through shared edges of closed meshes");
+    CHECK(test.at("points") == 1.5);
+    CHECK(test.at("max_points") == 5);
+    CHECK_THAT(test.at("message").get<std::string>(),
+               Catch::Matchers::StartsWith("failed: 97 of 100"));
+    CHECK_THAT(test.at("output").get<std::string>(),
+               Catch::Matchers::Contains("--case 17") && Catch::Matchers::Contains("--case 64") &&
+                   Catch::Matchers::Contains(displayable_text(kHostile)));
+}
+
+TEST_CASE("prairielearn_results: nothing compiled is not gradable, with the compiler's lines",
+          "[report]") {
+    GradeReport report;
+    for (int stage = 1; stage <= 2; ++stage) {
+        CheckResult check;
+        check.id = "stage" + std::to_string(stage) + ".unit.x";
+        check.stage = stage;
+        check.outcome = Outcome::did_not_compile;
+        check.max_score = 2;
+        check.details = "error in stage " + std::to_string(stage);
+        report.checks.push_back(check);
+        report.checks.push_back(check);  // a stage's checks share its compiler output
+    }
+    const nlohmann::json results = written(report);
+    CHECK(results.at("gradable") == false);
+    CHECK(results.at("format_errors") == nlohmann::json({"error in stage 1", "error in stage 2"}));
+
+    // One stage that compiles makes the submission gradable: the rest score zero.
+    report.checks[0].outcome = Outcome::failed;
+    CHECK(written(report).at("gradable") == true);
+}
+
+TEST_CASE("prairielearn_results: an empty report scores 0, and a huge one stays under 1 MB",
+          "[report]") {
+    CHECK(written(GradeReport{}).at("score") == 0.0);
+
+    GradeReport huge;
+    for (int k = 0; k < 300; ++k) {
+        CheckResult check;
+        check.id = "stage3.unit.case" + std::to_string(k);
+        check.stage = 3;
+        check.max_score = 1;
+        check.details = std::string(1'000'000, 'd');
+        check.counterexamples.assign(5, {std::string(100'000, 'i'), "e", kHostile, "r"});
+        huge.checks.push_back(check);
+    }
+    const std::string text = prairielearn_results(huge).dump();
+    CHECK(text.size() < 1'000'000);
+}

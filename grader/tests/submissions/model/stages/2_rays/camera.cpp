@@ -1,0 +1,87 @@
+// Stage 2: cameras. Handout: docs/stage2.md.
+
+#include "stages/2_rays/camera.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace raystep {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+void check_image_size(int width, int height) {
+    if (width < 1 || height < 1) {
+        throw std::domain_error("camera: the image " + std::to_string(width) + " x " +
+                                std::to_string(height) + " has no pixels");
+    }
+}
+
+// The pixel centre (i + 0.5, j + 0.5) as a fraction of the image: 0 at the left and bottom
+// edges, 1 at the right and top ones. Row 0 is the top row.
+double column_fraction(int i, int width) {
+    return (i + 0.5) / width;
+}
+double row_fraction(int j, int height) {
+    return 1.0 - (j + 0.5) / height;
+}
+
+}  // namespace
+
+PerspectiveCamera make_perspective_camera(const Vec3& lookfrom, const Vec3& lookat, const Vec3& up,
+                                          double fovy_degrees, int width, int height) {
+    if (!(fovy_degrees > 0.0 && fovy_degrees < 180.0)) {
+        throw std::domain_error("camera: fovy must be strictly between 0 and 180 degrees");
+    }
+    check_image_size(width, height);
+    PerspectiveCamera camera;
+    camera.eye = lookfrom;
+    camera.frame = orthonormal_frame(lookfrom - lookat, up);
+    const double fovy = fovy_degrees * kPi / 180.0;
+    camera.half_height = std::tan(fovy / 2.0);
+    camera.half_width = camera.half_height * width / height;
+    camera.width = width;
+    camera.height = height;
+    return camera;
+}
+
+Ray perspective_ray(const PerspectiveCamera& camera, int i, int j) {
+    const double alpha = 2.0 * column_fraction(i, camera.width) - 1.0;
+    const double beta = 2.0 * row_fraction(j, camera.height) - 1.0;
+    const Frame& f = camera.frame;
+    const Vec3 direction =
+        normalize(alpha * camera.half_width * f.u + beta * camera.half_height * f.v - f.w);
+    return Ray{camera.eye, direction, 0.0, kInfinity};
+}
+
+OrthographicCamera make_orthographic_camera(const Vec3& lookfrom, const Vec3& lookat,
+                                            const Vec3& up, double left, double right,
+                                            double bottom, double top, int width, int height) {
+    if (!(left < right) || !(bottom < top)) {
+        throw std::domain_error("camera: the window needs left < right and bottom < top");
+    }
+    check_image_size(width, height);
+    OrthographicCamera camera;
+    camera.eye = lookfrom;
+    camera.frame = orthonormal_frame(lookfrom - lookat, up);
+    camera.left = left;
+    camera.right = right;
+    camera.bottom = bottom;
+    camera.top = top;
+    camera.width = width;
+    camera.height = height;
+    return camera;
+}
+
+Ray orthographic_ray(const OrthographicCamera& camera, int i, int j) {
+    const double x = camera.left + (camera.right - camera.left) * column_fraction(i, camera.width);
+    const double y = camera.bottom + (camera.top - camera.bottom) * row_fraction(j, camera.height);
+    const Frame& f = camera.frame;
+    return Ray{camera.eye + x * f.u + y * f.v, -f.w, 0.0, kInfinity};
+}
+
+}  // namespace raystep
