@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include <glm/geometric.hpp>
+
 namespace raystep::grade {
 
 CheckDefinition case_check(std::string id, int stage, std::string kind, std::string name,
@@ -20,6 +22,19 @@ WideVec widen(const Vec3& v) {
 
 Vec3 narrow(const WideVec& v) {
     return {static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)};
+}
+
+Vec3 uniform(std::mt19937_64& rng, double low, double high) {
+    std::uniform_real_distribution<double> u(low, high);
+    return {u(rng), u(rng), u(rng)};
+}
+
+Vec3 random_unit(std::mt19937_64& rng) {
+    for (;;) {
+        const Vec3 v = uniform(rng, -1, 1);
+        const double length = glm::length(v);
+        if (length > 0.1 && length <= 1) return v / length;
+    }
 }
 
 std::string full_text(double x) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <functional>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,11 @@ using WideVec = glm::vec<3, Wide>;
 
 WideVec widen(const Vec3& v);
 Vec3 narrow(const WideVec& v);
+
+/// Random inputs: each component uniform in [low, high); a direction uniform on the sphere (by
+/// rejection from the cube, away from the origin).
+Vec3 uniform(std::mt19937_64& rng, double low, double high);
+Vec3 random_unit(std::mt19937_64& rng);
 
 /// The result as a number, vector or ray; throws (an unreadable answer) when it is not one.
 double result_number(const ProbeAnswer& answer);

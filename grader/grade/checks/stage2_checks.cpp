@@ -304,11 +304,6 @@ std::vector<ProbeCase> hidden_cases() {
     };
 }
 
-Vec3 uniform(std::mt19937_64& rng, double low, double high) {
-    std::uniform_real_distribution<double> u(low, high);
-    return {u(rng), u(rng), u(rng)};
-}
-
 // A random camera at a random scale: lookat 0.1 to 10 scales away, up at least 3 degrees off
 // the view direction.
 CameraSpec random_camera(std::mt19937_64& rng, bool ortho) {

@@ -25,11 +25,6 @@ struct AccelScene {
     std::vector<Ray> rays;
 };
 
-Vec3 uniform(std::mt19937_64& rng, double low, double high) {
-    std::uniform_real_distribution<double> u(low, high);
-    return {u(rng), u(rng), u(rng)};
-}
-
 AccelScene random_soup(std::uint64_t seed) {
     std::mt19937_64 rng(seed);
     AccelScene s{"random soup", {}, {}};

@@ -453,18 +453,6 @@ std::vector<ProbeCase> hidden_cases() {
     };
 }
 
-Vec3 uniform(std::mt19937_64& rng, double low, double high) {
-    std::uniform_real_distribution<double> u(low, high);
-    return {u(rng), u(rng), u(rng)};
-}
-
-Vec3 random_unit(std::mt19937_64& rng) {
-    for (;;) {
-        const Vec3 v = uniform(rng, -1, 1);
-        const double length = glm::length(v);
-        if (length > 0.1 && length <= 1) return v / length;
-    }
-}
 
 Material random_material(std::mt19937_64& rng) {
     std::uniform_real_distribution<double> u(0.0, 1.0);

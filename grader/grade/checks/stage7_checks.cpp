@@ -248,15 +248,6 @@ std::vector<ProbeCase> hidden_cases() {
     };
 }
 
-Vec3 random_unit(std::mt19937_64& rng) {
-    std::normal_distribution<double> normal;
-    Vec3 v;
-    do {
-        v = {normal(rng), normal(rng), normal(rng)};
-    } while (glm::dot(v, v) < 1e-6);
-    return glm::normalize(v);
-}
-
 // Random chains of up to six mirrors, anywhere from the origin to 1e4 away, with random bounces
 // (some fewer than the chain, some more), reflectances (some black) and both fixed-epsilon rules.
 std::vector<ProbeCase> oracle_cases() {
