@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <fstream>
 #include <thread>
 
@@ -11,8 +10,10 @@
 #include "core/bench/bench_scenes.h"
 #include "core/bench/epsilon_measure.h"
 #include "core/bench/growth.h"
+#include "core/bench/machine_description.h"
 #include "core/bench/number_text.h"
 #include "core/bench/our_structures.h"
+#include "core/bench/pareto_registry.h"
 #include "core/bench/speed_bar.h"
 #include "core/bench/threshold.h"
 #include "core/bench/workload_table.h"
@@ -28,38 +29,8 @@ constexpr double kQuickFraction = 1.0 / 8.0;
 // The growth table's incoherent rays per mesh: about a second per structure at 1M triangles.
 constexpr std::size_t kGrowthRays = std::size_t{1} << 16;
 
-// The processor's name from /proc/cpuinfo, where there is one; empty elsewhere.
-std::string processor_name() {
-    std::ifstream cpuinfo("/proc/cpuinfo");
-    for (std::string line; std::getline(cpuinfo, line);) {
-        if (line.rfind("model name", 0) != 0) continue;
-        const std::size_t colon = line.find(':');
-        if (colon != std::string::npos && colon + 2 <= line.size()) return line.substr(colon + 2);
-    }
-    return "";
-}
-
-// The one-minute load average from /proc/loadavg, where there is one: above 0, other programs
-// share the processors with the bench. Empty elsewhere.
-std::string load_average() {
-    std::ifstream loadavg("/proc/loadavg");
-    std::string one_minute;
-    loadavg >> one_minute;
-    return one_minute;
-}
-
-std::string local_time() {
-    const std::time_t now = std::time(nullptr);
-    char text[64];
-    std::strftime(text, sizeof text, "%Y-%m-%d %H:%M %Z", std::localtime(&now));
-    return text;
-}
-
 void print_header(int threads, const std::vector<BenchCandidate>& candidates) {
-    const unsigned hardware = std::max(1u, std::thread::hardware_concurrency());
-    const std::string processor = processor_name();
-    const std::string machine = std::to_string(hardware) + " hardware threads" +
-                                (processor.empty() ? "" : " (" + processor + ")");
+    const std::string machine = machine_description();
     const std::string load = load_average();
     std::printf("raystep bench: %s; all-threads columns use %d; %s build; %s%s\n", machine.c_str(),
                 threads, RAYSTEP_BUILD_TYPE, local_time().c_str(),
@@ -233,6 +204,21 @@ CLI::App* add_bench_command(CLI::App& app, BenchArguments& arguments) {
         ->add_option("--chart", arguments.chart,
                      "With --epsilon: also draw the study as an SVG chart into this file")
         ->needs(epsilon);
+    CLI::Option* pareto = command->add_flag(
+        "--pareto", arguments.pareto,
+        "The speed-against-error study: every triangle and sphere test in double and float on "
+        "decided ray cases, and the cost of each ray offset rule (docs/stage3.md; "
+        "raystep-reference only)");
+    pareto->excludes("--workload")->excludes("--growth")->excludes("--threshold")->excludes(epsilon);
+    command
+        ->add_option("--cases", arguments.cases,
+                     "With --pareto: case files, or folders of *.cases files (default: stage 3's "
+                     "own cases)")
+        ->needs(pareto);
+    command
+        ->add_option("--out", arguments.out,
+                     "With --pareto: the folder for the charts and pareto.json (default: pareto)")
+        ->needs(pareto);
     command
         ->add_option("--threads", arguments.threads,
                      "Threads of the all-threads columns (default: every hardware thread)")
@@ -242,6 +228,17 @@ CLI::App* add_bench_command(CLI::App& app, BenchArguments& arguments) {
 }
 
 int run_bench(const BenchArguments& arguments) {
+    if (arguments.pareto) {
+        const ParetoStudy study = registered_pareto_study();
+        if (!study) {
+            std::fprintf(stderr,
+                         "raystep bench --pareto: the study measures the reference's tests in "
+                         "double and float, which only raystep-reference links: run "
+                         "raystep-reference bench --pareto\n");
+            return 1;
+        }
+        return study({arguments.cases, arguments.out, arguments.quick});
+    }
     std::vector<BenchCandidate> candidates = our_structures();
     for (const BenchCandidate& baseline : registered_baselines())
         candidates.push_back(baseline);

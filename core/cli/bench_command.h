@@ -8,13 +8,16 @@
 namespace raystep {
 
 /// `raystep bench [--workload NAME]... [--growth] [--threshold] [--epsilon [--chart FILE]]
-/// [--threads N] [--quick]`
+/// [--threads N] [--quick]` or `raystep bench --pareto [--cases PATH]... [--out FOLDER] [--quick]`
 struct BenchArguments {
     std::vector<std::string> workloads;  ///< scenes or workloads; none: every one
     bool growth = false;                 ///< the growth table
     bool threshold = false;              ///< where a BVH starts to pay
     bool epsilon = false;                ///< the epsilon study of stage 6
     std::string chart;                   ///< where the epsilon study's SVG chart goes; empty: none
+    bool pareto = false;                 ///< the speed-against-error study, alone
+    std::vector<std::string> cases;      ///< its case files or folders; none: stage 3's own
+    std::string out;                     ///< where its charts and JSON go
     int threads = 0;     ///< the all-threads columns' threads; 0: every hardware thread
     bool quick = false;  ///< an eighth of the rays, for smoke tests
 };
@@ -26,7 +29,8 @@ CLI::App* add_bench_command(CLI::App& app, BenchArguments& arguments);
 /// Measures our acceleration structures, and any registered baseline (Embree in
 /// raystep-reference), and prints a table per workload: docs/stage4.md, "raystep bench"; with
 /// --epsilon, the acne and leaks of each ray offset rule on the acne scenes: docs/stage6.md,
-/// "Measuring acne". Without --workload, --growth, --threshold or --epsilon, runs them all. A
+/// "Measuring acne"; with --pareto, only the speed-against-error study of docs/stage3.md, which
+/// raystep-reference alone links (pareto_registry.h). Without --workload, --growth, --threshold or --epsilon, runs them all. A
 /// structure that is a stub or fails gets its reason in its row and the others go on. Exit code 0;
 /// 1 when a cross-check found two structures that return different hits.
 int run_bench(const BenchArguments& arguments);

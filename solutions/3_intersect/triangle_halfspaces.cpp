@@ -1,6 +1,7 @@
 // Stage 3 reference solution: lecture method 2, ray-plane then 3D edge half-spaces.
 
 #include "solutions/3_intersect/hit_building.h"
+#include "solutions/3_intersect/single_precision.h"
 
 namespace raystep {
 
@@ -8,35 +9,46 @@ namespace {
 
 // The inward normal of the edge a -> b: the part of (opposite - a) perpendicular to the edge.
 // Zero for a zero-length edge or a collinear opposite vertex.
-Vec3 inward_normal(const Vec3& a, const Vec3& b, const Vec3& opposite) {
-    const Vec3 edge = b - a;
-    const double edge_length = glm::length(edge);
-    if (edge_length == 0.0) return Vec3(0.0);
-    const Vec3 e = edge / edge_length;
-    const Vec3 to_opposite = opposite - a;
+template <class Vector>
+Vector inward_normal(const Vector& a, const Vector& b, const Vector& opposite) {
+    const Vector edge = b - a;
+    const auto edge_length = glm::length(edge);
+    if (edge_length == 0) return Vector(0);
+    const Vector e = edge / edge_length;
+    const Vector to_opposite = opposite - a;
     return to_opposite - glm::dot(to_opposite, e) * e;
 }
 
-}  // namespace
-
-std::optional<Hit> intersect_triangle_halfspaces(const Ray& ray, const Triangle& tri) {
+// Written once for double and float (hit_building.h).
+template <class RayType, class TriangleType, class Real = decltype(RayType::t_min)>
+std::optional<Hit> halfspaces(const RayType& ray, const TriangleType& tri) {
     // Step 1: where the ray crosses the supporting plane
-    const std::optional<PlaneCrossing> crossing = cross_supporting_plane(ray, tri);
+    const auto crossing = cross_supporting_plane(ray, tri);
     if (!crossing) return std::nullopt;  // parallel, a zero direction or area, or out of range
     const auto& [t, p, n] = *crossing;
 
     // One half-space per edge; the distance to the edge as a fraction of the opposite vertex's
     // distance is that vertex's barycentric weight.
-    const Vec3 n12 = inward_normal(tri.p1, tri.p2, tri.p0);
-    const Vec3 n20 = inward_normal(tri.p2, tri.p0, tri.p1);
-    const Vec3 n01 = inward_normal(tri.p0, tri.p1, tri.p2);
-    const double d0 = glm::dot(p - tri.p1, n12);
-    const double d1 = glm::dot(p - tri.p2, n20);
-    const double d2 = glm::dot(p - tri.p0, n01);
-    if (!(d0 >= 0.0 && d1 >= 0.0 && d2 >= 0.0)) return std::nullopt;  // also rejects NaN
-    const double beta = d1 / glm::dot(tri.p1 - tri.p2, n20);
-    const double gamma = d2 / glm::dot(tri.p2 - tri.p0, n01);
+    const auto n12 = inward_normal(tri.p1, tri.p2, tri.p0);
+    const auto n20 = inward_normal(tri.p2, tri.p0, tri.p1);
+    const auto n01 = inward_normal(tri.p0, tri.p1, tri.p2);
+    const Real d0 = glm::dot(p - tri.p1, n12);
+    const Real d1 = glm::dot(p - tri.p2, n20);
+    const Real d2 = glm::dot(p - tri.p0, n01);
+    if (!(d0 >= 0 && d1 >= 0 && d2 >= 0)) return std::nullopt;  // also rejects NaN
+    const Real beta = d1 / glm::dot(tri.p1 - tri.p2, n20);
+    const Real gamma = d2 / glm::dot(tri.p2 - tri.p0, n01);
     return triangle_hit(tri, t, beta, gamma);
+}
+
+}  // namespace
+
+std::optional<Hit> intersect_triangle_halfspaces(const Ray& ray, const Triangle& tri) {
+    return halfspaces(ray, tri);
+}
+
+std::optional<Hit> intersect_triangle_halfspaces_float(const Ray& ray, const Triangle& tri) {
+    return halfspaces(FloatRay(ray), FloatTriangle(tri));
 }
 
 }  // namespace raystep

@@ -2,10 +2,13 @@
 
 #include <utility>
 
-#include "solutions/3_intersect/intersect_methods.h"
 #include "solutions/3_intersect/hit_building.h"
+#include "solutions/3_intersect/intersect_methods.h"
+#include "solutions/3_intersect/single_precision.h"
 
 namespace raystep {
+
+namespace {
 
 // Why it is watertight: the ray becomes the +z axis of a sheared frame, and each edge function
 // is a 2D cross product of two sheared vertices. A vertex's sheared coordinates depend only on
@@ -15,46 +18,59 @@ namespace raystep {
 // edge is 0 for both and counts as inside; off it, exactly one side accepts it. This needs the
 // products rounded separately, which is why the build passes -ffp-contract=off (a fused
 // multiply-add would round one product and not the other).
-std::optional<Hit> intersect_triangle_watertight(const Ray& ray, const Triangle& tri) {
+//
+// Written once for double and float (hit_building.h).
+template <class RayType, class TriangleType, class Real = decltype(RayType::t_min)>
+std::optional<Hit> watertight(const RayType& ray, const TriangleType& tri) {
     // Name the axes so that z is the direction's largest component; swapping x and y when
     // D.z < 0 keeps the triangle's winding.
-    const Vec3& d = ray.direction;
-    const Vec3 magnitude = glm::abs(d);
+    const auto& d = ray.direction;
+    const auto magnitude = glm::abs(d);
     const int kz = magnitude.x > magnitude.y ? (magnitude.x > magnitude.z ? 0 : 2)
                                              : (magnitude.y > magnitude.z ? 1 : 2);
-    if (d[kz] == 0.0) return std::nullopt;  // a zero direction
+    if (d[kz] == 0) return std::nullopt;  // a zero direction
     int kx = (kz + 1) % 3;
     int ky = (kx + 1) % 3;
-    if (d[kz] < 0.0) std::swap(kx, ky);
+    if (d[kz] < 0) std::swap(kx, ky);
 
     // The shear that takes D to (0, 0, 1)
-    const double sx = d[kx] / d[kz];
-    const double sy = d[ky] / d[kz];
-    const double sz = 1.0 / d[kz];
+    const Real sx = d[kx] / d[kz];
+    const Real sy = d[ky] / d[kz];
+    const Real sz = 1 / d[kz];
 
     // The vertices relative to the origin, sheared
-    const Vec3 a = tri.p0 - ray.origin;
-    const Vec3 b = tri.p1 - ray.origin;
-    const Vec3 c = tri.p2 - ray.origin;
-    const double ax = a[kx] - sx * a[kz];
-    const double ay = a[ky] - sy * a[kz];
-    const double bx = b[kx] - sx * b[kz];
-    const double by = b[ky] - sy * b[kz];
-    const double cx = c[kx] - sx * c[kz];
-    const double cy = c[ky] - sy * c[kz];
+    const auto a = tri.p0 - ray.origin;
+    const auto b = tri.p1 - ray.origin;
+    const auto c = tri.p2 - ray.origin;
+    const Real ax = a[kx] - sx * a[kz];
+    const Real ay = a[ky] - sy * a[kz];
+    const Real bx = b[kx] - sx * b[kz];
+    const Real by = b[ky] - sy * b[kz];
+    const Real cx = c[kx] - sx * c[kz];
+    const Real cy = c[ky] - sy * c[kz];
 
     // Edge functions: the scaled barycentric weights of p0, p1, p2. Mixed signs: outside.
-    const double u = cx * by - cy * bx;
-    const double v = ax * cy - ay * cx;
-    const double w = bx * ay - by * ax;
-    if ((u < 0.0 || v < 0.0 || w < 0.0) && (u > 0.0 || v > 0.0 || w > 0.0)) return std::nullopt;
-    const double det = u + v + w;
-    if (det == 0.0) return std::nullopt;  // the ray lies in the plane, or zero area
+    const Real u = cx * by - cy * bx;
+    const Real v = ax * cy - ay * cx;
+    const Real w = bx * ay - by * ax;
+    if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return std::nullopt;
+    const Real det = u + v + w;
+    if (det == 0) return std::nullopt;  // the ray lies in the plane, or zero area
 
     // Distance along the ray, from the sheared z coordinates
-    const double t = (u * sz * a[kz] + v * sz * b[kz] + w * sz * c[kz]) / det;
+    const Real t = (u * sz * a[kz] + v * sz * b[kz] + w * sz * c[kz]) / det;
     if (!in_ray_range(ray, t)) return std::nullopt;
     return triangle_hit(tri, t, v / det, w / det);
+}
+
+}  // namespace
+
+std::optional<Hit> intersect_triangle_watertight(const Ray& ray, const Triangle& tri) {
+    return watertight(ray, tri);
+}
+
+std::optional<Hit> intersect_triangle_watertight_float(const Ray& ray, const Triangle& tri) {
+    return watertight(FloatRay(ray), FloatTriangle(tri));
 }
 
 }  // namespace raystep

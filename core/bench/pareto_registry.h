@@ -1,0 +1,35 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace raystep {
+
+// The speed-against-error study (`bench --pareto`) measures the reference's extra tests and
+// their float variants (solutions/3_intersect/single_precision.h) and writes JSON with
+// nlohmann/json: neither belongs in the student-facing `raystep`. raystep-reference links the
+// study as an object library whose static object registers it here, as the Embree baseline
+// registers itself (baseline_registry.h).
+
+/// `bench --pareto [--cases PATH]... [--out FOLDER] [--quick]`
+struct ParetoOptions {
+    std::vector<std::string> cases;  ///< case files or folders of them; none: stage 3's own
+    std::string out_folder;          ///< where the charts and JSON go
+    bool quick = false;              ///< shorter timing samples, for smoke tests
+};
+
+using ParetoStudy = int (*)(const ParetoOptions& options);
+
+/// Makes `study` the one `bench --pareto` runs.
+void register_pareto_study(ParetoStudy study);
+
+/// The registered study; null in a program that links none.
+ParetoStudy registered_pareto_study();
+
+/// Registers a study when constructed, from a static object (see baseline_registry.h for why
+/// its .cpp must be linked as an object, not from an archive).
+struct ParetoStudyRegistration {
+    explicit ParetoStudyRegistration(ParetoStudy study);
+};
+
+}  // namespace raystep

@@ -1,0 +1,155 @@
+#include "core/bench/pareto_study.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <variant>
+
+#include "core/bench/bench_timing.h"
+#include "core/bench/markdown_table.h"
+#include "core/bench/number_text.h"
+#include "core/check/case_scoring.h"
+
+namespace raystep {
+
+namespace {
+
+// The value below which a share `fraction` of the sorted values lie (nearest rank).
+double percentile(const std::vector<double>& sorted, double fraction) {
+    if (sorted.empty()) return 0.0;
+    const auto rank = static_cast<std::size_t>(fraction * static_cast<double>(sorted.size() - 1));
+    return sorted[rank];
+}
+
+// The timing runs on at most this many (ray, primitive) pairs, the family's first: about 300 KB,
+// which stays in the processor's second-level cache, so that the time is the test's arithmetic
+// and not the memory streaming a large case file past it, the same for every method.
+constexpr std::size_t kTimedPairs = 2048;
+
+// The family's first (ray, primitive) pairs that the method tests, in case order: the rays the
+// timing runs, the same for every method of a shape.
+struct TimedPairs {
+    std::vector<Ray> rays;
+    std::vector<CaseShape> shapes;
+};
+
+TimedPairs pairs_for(const Stage3Method& method, const CaseFamily& family) {
+    TimedPairs pairs;
+    for (const RayCase& ray_case : family.cases) {
+        for (const CasePrimitive& primitive : ray_case.primitives) {
+            if (!applies_to(method, primitive.shape)) continue;
+            if (pairs.rays.size() == kTimedPairs) return pairs;
+            pairs.rays.push_back(ray_case.ray);
+            pairs.shapes.push_back(primitive.shape);
+        }
+    }
+    return pairs;
+}
+
+// Runs the test on every pair once; the hits are counted so that the calls cannot be dropped.
+std::size_t run_pairs(const Stage3Method& method, const TimedPairs& pairs) {
+    std::size_t hits = 0;
+    for (std::size_t k = 0; k < pairs.rays.size(); ++k) {
+        if (method.kind == Stage3Method::Kind::sphere) {
+            hits += method.sphere(pairs.rays[k], std::get<Sphere>(pairs.shapes[k])).has_value();
+        } else {
+            hits += method.triangle(pairs.rays[k], std::get<Triangle>(pairs.shapes[k])).has_value();
+        }
+    }
+    return hits;
+}
+
+// Millions of tests a second: passes over the pairs are repeated until a sample lasts
+// timing.sample_seconds, and the fastest sample counts.
+double tests_per_microsecond(const Stage3Method& method, const TimedPairs& pairs,
+                             const ParetoTiming& timing) {
+    if (pairs.rays.empty()) return 0.0;
+    volatile std::size_t sink = 0;
+    std::size_t passes = 1;
+    while (seconds_of([&] {
+               for (std::size_t p = 0; p < passes; ++p) sink = sink + run_pairs(method, pairs);
+           }) < timing.sample_seconds) {
+        passes *= 2;
+    }
+    const double best = best_of(timing.samples, [&] {
+        for (std::size_t p = 0; p < passes; ++p) sink = sink + run_pairs(method, pairs);
+    });
+    return static_cast<double>(passes * pairs.rays.size()) / best * 1e-6;
+}
+
+ParetoPoint score_point(const ParetoMethod& entry, const CaseFamily& family) {
+    std::vector<CaseAnswer> answers;
+    answers.reserve(family.cases.size());
+    for (const RayCase& ray_case : family.cases) answers.push_back(run_method(entry.method, ray_case));
+    const MethodScore score = score_family(entry.method, family, answers, 0);
+    if (score.not_implemented) {
+        throw std::runtime_error(entry.method.name + ": " + score.not_implemented_message);
+    }
+
+    ParetoPoint point;
+    point.label = entry.label;
+    point.precision = entry.precision;
+    point.function = entry.method.name;
+    point.cases = score.cases;
+    point.false_hits = score.count(Verdict::false_hit);
+    point.false_misses = score.count(Verdict::false_miss) + score.count(Verdict::leak);
+    // A NaN t has no distance in ulps; the verdicts already counted it as wrong.
+    std::vector<double> ulps;
+    for (const double u : score.t_ulps) {
+        if (std::isfinite(u)) ulps.push_back(u);
+    }
+    std::sort(ulps.begin(), ulps.end());
+    point.t_ulps_median = percentile(ulps, 0.5);
+    point.t_ulps_p99 = percentile(ulps, 0.99);
+    point.t_ulps_max = ulps.empty() ? 0.0 : ulps.back();
+    return point;
+}
+
+// Ulps span 0 to 2^60: whole numbers below 10,000, powers of ten above (2.1e+09).
+std::string ulps_text(double ulps) {
+    if (ulps < 1e4) return grouped(static_cast<std::size_t>(ulps));
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1e", ulps);
+    return text;
+}
+
+}  // namespace
+
+double ParetoPoint::wrong_share() const {
+    if (cases == 0) return 0.0;
+    return static_cast<double>(false_hits + false_misses) / static_cast<double>(cases);
+}
+
+ParetoFamily measure_pareto_family(const CaseFamily& family,
+                                   const std::vector<ParetoMethod>& methods,
+                                   const ParetoTiming& timing) {
+    ParetoFamily result;
+    result.name = family.name;
+    result.description = family.description;
+    result.cases = family.cases.size();
+    for (const ParetoMethod& entry : methods) {
+        const TimedPairs pairs = pairs_for(entry.method, family);
+        if (pairs.rays.empty()) continue;
+        ParetoPoint point = score_point(entry, family);
+        point.mrays_per_second = tests_per_microsecond(entry.method, pairs, timing);
+        result.points.push_back(point);
+    }
+    return result;
+}
+
+std::string pareto_table(const std::vector<ParetoFamily>& families) {
+    MarkdownTable table({"family", "method", "precision", "cases", "Mrays/s", "false hits",
+                         "false misses", "wrong %", "t ulps median", "p99", "max"});
+    for (const ParetoFamily& family : families) {
+        for (const ParetoPoint& p : family.points) {
+            table.add_row({family.name, p.label, p.precision, grouped(p.cases),
+                           three_digits(p.mrays_per_second), grouped(p.false_hits),
+                           grouped(p.false_misses), fixed(100.0 * p.wrong_share(), 2), ulps_text(p.t_ulps_median),
+                           ulps_text(p.t_ulps_p99), ulps_text(p.t_ulps_max)});
+        }
+    }
+    return table.text();
+}
+
+}  // namespace raystep
