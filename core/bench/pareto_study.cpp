@@ -116,11 +116,6 @@ std::string ulps_text(double ulps) {
 
 }  // namespace
 
-double ParetoPoint::wrong_share() const {
-    if (cases == 0) return 0.0;
-    return static_cast<double>(false_hits + false_misses) / static_cast<double>(cases);
-}
-
 ParetoFamily measure_pareto_family(const CaseFamily& family,
                                    const std::vector<ParetoMethod>& methods,
                                    const ParetoTiming& timing) {

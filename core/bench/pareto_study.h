@@ -39,7 +39,10 @@ struct ParetoPoint {
     double mrays_per_second = 0.0;
 
     /// False hits and false misses, as a share of the cases: 0 to 1.
-    double wrong_share() const;
+    double wrong_share() const {
+        if (cases == 0) return 0.0;
+        return static_cast<double>(false_hits + false_misses) / static_cast<double>(cases);
+    }
 };
 
 struct ParetoFamily {

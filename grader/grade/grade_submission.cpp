@@ -10,6 +10,7 @@
 #include "grader/grade/check_definition.h"
 #include "grader/grade/probe_builder.h"
 #include "grader/grade/report_json.h"
+#include "grader/grade/speed_error_chart.h"
 #include "grader/grade/stage_manifests.h"
 #include "grader/grade/submission.h"
 #include "grader/report/gradescope_results.h"
@@ -135,8 +136,10 @@ void write_reports(const GradeReport& report, const fs::path& folder) {
     write("results.json", gradescope_results(report).dump(2) + "\n");
     write("prairielearn.json", prairielearn_results(report).dump(2) + "\n");
     write("junit.xml", junit_xml(report, Audience::instructor));
-    write_html_report(report, folder);
-    HtmlReportOptions instructor;
+    HtmlReportOptions student;
+    student.speed_error_chart_svg = speed_error_chart_svg(report, RAYSTEP_PARETO_REFERENCE);
+    write_html_report(report, folder, student);
+    HtmlReportOptions instructor = student;
     instructor.audience = Audience::instructor;
     write("instructor.html", html_report(report, folder, instructor));
     // Last: a complete report.json is how a resumed batch knows this submission is done.

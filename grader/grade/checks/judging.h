@@ -26,6 +26,18 @@ using WideVec = glm::vec<3, Wide>;
 WideVec widen(const Vec3& v);
 Vec3 narrow(const WideVec& v);
 
+/// A workload timed from outside the probe: the best of three runs minus the same run with no
+/// passes (starting, reading the input, building), and the checksum the passes answered.
+struct WorkloadTime {
+    double seconds = 0.0;
+    probe::Json checksum;
+    bool answered = true;  ///< false when a run ended without an answer (a stub, crash or timeout)
+};
+
+/// Asks `program` the `call` with `args` and "repeat" set to `repeat` passes, and to 0.
+WorkloadTime timed_workload(const std::filesystem::path& program, const std::string& call,
+                            const probe::Json& args, int repeat);
+
 /// Random inputs: each component uniform in [low, high); a direction uniform on the sphere (by
 /// rejection from the cube, away from the origin).
 Vec3 uniform(std::mt19937_64& rng, double low, double high);

@@ -189,6 +189,7 @@ std::vector<CheckDefinition> stage3_checks() {
                           return measure_methods(context, probe, stage3_methods(), decided_contract(),
                                                  "stage3.hidden");
                       }});
+    checks.push_back(stage3_speed_error_check());
     return checks;
 }
 

@@ -215,41 +215,6 @@ std::vector<ProbeCase> slab_cases() {
     return cases;
 }
 
-// A workload timed from outside: the best of three runs minus the same run with no passes
-// (starting, reading the scene, building), and the checksum the passes answered.
-struct WorkloadTime {
-    double seconds = 0.0;
-    Json checksum;
-    bool answered = true;
-};
-
-WorkloadTime timed_workload(const std::filesystem::path& program, const std::string& call,
-                            const Json& args, int repeat) {
-    WorkloadTime timed;
-    const auto run_once = [&](int passes) {
-        Json a = args;
-        a["repeat"] = passes;
-        ProbeRunLimits limits;
-        limits.cpu_seconds = 60;
-        limits.wall = std::chrono::seconds(90);
-        const ProbeSession session = ask_probe(program, {{call, a}}, limits);
-        if (session.answers[0].kind != ProbeAnswer::Kind::result) {
-            timed.answered = false;
-        } else if (passes > 0) {
-            timed.checksum = session.answers[0].value;
-        }
-        return session.run.wall_seconds;
-    };
-    double best = HUGE_VAL;
-    double setup = HUGE_VAL;
-    for (int k = 0; k < 3 && timed.answered; ++k) {
-        setup = std::min(setup, run_once(0));
-        best = std::min(best, run_once(repeat));
-    }
-    timed.seconds = std::max(1e-6, best - setup);
-    return timed;
-}
-
 // The structure's speed against the reference's on the same rays, in the same run, scored; and
 // against no structure at all (stage 3's closest_hit over every primitive), reported. A structure
 // whose hits differ from the reference's earns nothing for speed: fast and wrong is not fast.

@@ -17,4 +17,17 @@ std::vector<CheckDefinition> stage6_checks();
 std::vector<CheckDefinition> stage7_checks();
 std::vector<CheckDefinition> render_checks();
 
+/// Stage 3's intersect_triangle, its speed against its error on one family
+/// (stage3_speed_error.cpp), and the names of what it measures, which the report's chart reads
+/// back (grader/grade/speed_error_chart.h).
+CheckDefinition stage3_speed_error_check();
+inline constexpr const char* kSpeedErrorCheck = "stage3.speed.intersect_triangle";
+inline constexpr const char* kSpeedErrorFamily = "shared-edges";
+inline constexpr const char* kSpeedErrorCases = "cases";
+inline constexpr const char* kSpeedErrorFalseHits = "false hits";
+inline constexpr const char* kSpeedErrorFalseMisses = "false misses (leaks included)";
+inline constexpr const char* kSpeedErrorUlpsMedian = "t ulps, median";
+inline constexpr const char* kSpeedErrorUlpsP99 = "t ulps, 99th percentile";
+inline constexpr const char* kSpeedErrorAgainstCramer = "speed against the reference's Cramer";
+
 }  // namespace raystep::grade
