@@ -50,7 +50,8 @@ std::vector<OffsetRuleCost> measure_offset_costs(const std::filesystem::path& pa
             const SurfacePoint point = surface_point(render_scene, primary.ray, primary.hit);
             for (const PointLight& light : scene.point_lights) {
                 const LightSample sample = sample_light(light, point.position);
-                if (glm::dot(point.normal, sample.direction) > 0.0) queries.push_back({point, sample});
+                if (glm::dot(point.normal, sample.direction) > 0.0)
+                    queries.push_back({point, sample});
             }
         }
     });

@@ -60,7 +60,7 @@ std::string pareto_chart_svg(const ParetoFamily& family, const std::string& foot
         ScatterPoint point;
         point.x = p.mrays_per_second;
         point.colour = in_study(p) ? colour_of[p.label] : "black";
-        point.marker = !in_study(p)           ? ScatterPoint::Marker::diamond
+        point.marker = !in_study(p)              ? ScatterPoint::Marker::diamond
                        : p.precision == "double" ? ScatterPoint::Marker::filled
                                                  : ScatterPoint::Marker::open;
         point.label = p.label;
@@ -87,8 +87,8 @@ std::string pareto_chart_svg(const ParetoFamily& family, const std::string& foot
     for (std::size_t k = 0; k < labels.size(); ++k) {
         const double x = kLefts[0] + kLegendColumn * static_cast<double>(k % per_row);
         const double y = legend_top + 18.0 * static_cast<double>(k / per_row);
-        svg += svg_legend_entry(x, y, colour_of[labels[k]], ScatterPoint::Marker::filled,
-                                labels[k]);
+        svg +=
+            svg_legend_entry(x, y, colour_of[labels[k]], ScatterPoint::Marker::filled, labels[k]);
     }
     const double y = legend_top + 18.0 * rows + 8;
     svg += svg_legend_entry(kLefts[0], y, "#555", ScatterPoint::Marker::filled, "double");

@@ -57,18 +57,6 @@ void write_file(const fs::path& path, const std::string& text) {
     if (!out) throw std::runtime_error("could not write " + path.string());
 }
 
-const char* rule_name(OffsetRule rule) {
-    switch (rule) {
-        case OffsetRule::along_ray:
-            return "along-ray";
-        case OffsetRule::along_normal:
-            return "along-normal";
-        case OffsetRule::error_bound:
-            break;
-    }
-    return "error-bound";
-}
-
 // The errors of `offset` among the epsilon study's counts.
 OffsetErrors errors_of(const EpsilonSceneResult& study, const RayOffset& offset) {
     if (offset.rule == OffsetRule::error_bound) return study.error_bound;
@@ -82,7 +70,8 @@ OffsetErrors errors_of(const EpsilonSceneResult& study, const RayOffset& offset)
 std::vector<OffsetRuleResult> measure_offset_rules(std::string& notes) {
     const fs::path folder = fs::path(RAYSTEP_SOURCE_DIR) / "scenes/stage6";
     std::vector<RayOffset> offsets;
-    for (const double epsilon : kOffsetEpsilons) offsets.push_back({OffsetRule::along_ray, epsilon});
+    for (const double epsilon : kOffsetEpsilons)
+        offsets.push_back({OffsetRule::along_ray, epsilon});
     for (const double epsilon : kOffsetEpsilons) {
         offsets.push_back({OffsetRule::along_normal, epsilon});
     }
@@ -102,17 +91,18 @@ std::vector<OffsetRuleResult> measure_offset_rules(std::string& notes) {
                  " ns per primary hit\n";
         for (const OffsetRuleCost& cost : costs) {
             const OffsetErrors errors = errors_of(study, cost.offset);
-            results.push_back({fs::path(name).stem().string(), rule_name(cost.offset.rule),
-                               cost.offset.epsilon, cost.nanoseconds_per_ray, errors.acne,
-                               errors.leaks, study.lit + study.shadowed});
+            results.push_back({fs::path(name).stem().string(),
+                               std::string(offset_rule_name(cost.offset.rule)), cost.offset.epsilon,
+                               cost.nanoseconds_per_ray, errors.acne, errors.leaks,
+                               study.lit + study.shadowed});
         }
     }
     return results;
 }
 
 std::string offset_table(const std::vector<OffsetRuleResult>& rows) {
-    MarkdownTable table({"scene", "rule", "epsilon", "ns per shadow ray", "acne", "leaks",
-                         "decided pixel-lights"});
+    MarkdownTable table(
+        {"scene", "rule", "epsilon", "ns per shadow ray", "acne", "leaks", "decided pixel-lights"});
     for (const OffsetRuleResult& r : rows) {
         char epsilon[32];
         std::snprintf(epsilon, sizeof epsilon, "%g", r.epsilon);
@@ -216,7 +206,8 @@ int run_pareto_study(const ParetoOptions& options) {
     std::printf("\n### ray offset rules: cost against acne and leaks\n\n%s\n%s",
                 offset_table(offset_rules).c_str(), notes.c_str());
 
-    const fs::path out = options.out_folder.empty() ? fs::path("pareto") : fs::path(options.out_folder);
+    const fs::path out =
+        options.out_folder.empty() ? fs::path("pareto") : fs::path(options.out_folder);
     fs::create_directories(out);
     for (const ParetoFamily& family : families) {
         write_file(out / ("pareto-" + family.name + ".svg"), pareto_chart_svg(family, footnote));

@@ -12,18 +12,17 @@ nlohmann::json pareto_json(const std::string& machine, const std::string& date,
     for (const ParetoFamily& family : families) {
         nlohmann::json points = nlohmann::json::array();
         for (const ParetoPoint& p : family.points) {
-            points.push_back({{"label", p.label},
-                              {"precision", p.precision},
-                              {"function", p.function},
-                              {"cases", p.cases},
-                              {"false_hits", p.false_hits},
-                              {"false_misses", p.false_misses},
-                              {"wrong_share", p.wrong_share()},
-                              {"t_ulps",
-                               {{"median", p.t_ulps_median},
-                                {"p99", p.t_ulps_p99},
-                                {"max", p.t_ulps_max}}},
-                              {"mrays_per_second", p.mrays_per_second}});
+            points.push_back(
+                {{"label", p.label},
+                 {"precision", p.precision},
+                 {"function", p.function},
+                 {"cases", p.cases},
+                 {"false_hits", p.false_hits},
+                 {"false_misses", p.false_misses},
+                 {"wrong_share", p.wrong_share()},
+                 {"t_ulps",
+                  {{"median", p.t_ulps_median}, {"p99", p.t_ulps_p99}, {"max", p.t_ulps_max}}},
+                 {"mrays_per_second", p.mrays_per_second}});
         }
         json["families"].push_back({{"name", family.name},
                                     {"description", family.description},

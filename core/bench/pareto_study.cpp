@@ -68,12 +68,14 @@ double tests_per_microsecond(const Stage3Method& method, const TimedPairs& pairs
     volatile std::size_t sink = 0;
     std::size_t passes = 1;
     while (seconds_of([&] {
-               for (std::size_t p = 0; p < passes; ++p) sink = sink + run_pairs(method, pairs);
+               for (std::size_t p = 0; p < passes; ++p)
+                   sink = sink + run_pairs(method, pairs);
            }) < timing.sample_seconds) {
         passes *= 2;
     }
     const double best = best_of(timing.samples, [&] {
-        for (std::size_t p = 0; p < passes; ++p) sink = sink + run_pairs(method, pairs);
+        for (std::size_t p = 0; p < passes; ++p)
+            sink = sink + run_pairs(method, pairs);
     });
     return static_cast<double>(passes * pairs.rays.size()) / best * 1e-6;
 }
@@ -81,7 +83,8 @@ double tests_per_microsecond(const Stage3Method& method, const TimedPairs& pairs
 ParetoPoint score_point(const ParetoMethod& entry, const CaseFamily& family) {
     std::vector<CaseAnswer> answers;
     answers.reserve(family.cases.size());
-    for (const RayCase& ray_case : family.cases) answers.push_back(run_method(entry.method, ray_case));
+    for (const RayCase& ray_case : family.cases)
+        answers.push_back(run_method(entry.method, ray_case));
     const MethodScore score = score_family(entry.method, family, answers, 0);
     if (score.not_implemented) {
         throw std::runtime_error(entry.method.name + ": " + score.not_implemented_message);
@@ -140,8 +143,9 @@ std::string pareto_table(const std::vector<ParetoFamily>& families) {
         for (const ParetoPoint& p : family.points) {
             table.add_row({family.name, p.label, p.precision, grouped(p.cases),
                            three_digits(p.mrays_per_second), grouped(p.false_hits),
-                           grouped(p.false_misses), fixed(100.0 * p.wrong_share(), 2), ulps_text(p.t_ulps_median),
-                           ulps_text(p.t_ulps_p99), ulps_text(p.t_ulps_max)});
+                           grouped(p.false_misses), fixed(100.0 * p.wrong_share(), 2),
+                           ulps_text(p.t_ulps_median), ulps_text(p.t_ulps_p99),
+                           ulps_text(p.t_ulps_max)});
         }
     }
     return table.text();

@@ -25,7 +25,7 @@ struct ParetoMethod {
 struct ParetoPoint {
     std::string label;
     std::string precision;
-    std::string function;  ///< the C++ function's name, to find its code
+    std::string function;   ///< the C++ function's name, to find its code
     std::size_t cases = 0;  ///< the family's cases with a primitive this method tests
     std::size_t false_hits = 0;
     std::size_t false_misses = 0;  ///< leaks on watertight cases included: a hit nobody reported

@@ -43,11 +43,10 @@ std::string decade_text(int decade, const std::string& unit) {
     return "1e" + std::to_string(decade) + unit;
 }
 
-std::string marker_svg(double x, double y, const std::string& colour,
-                       ScatterPoint::Marker marker) {
+std::string marker_svg(double x, double y, const std::string& colour, ScatterPoint::Marker marker) {
     if (marker == ScatterPoint::Marker::diamond) {
-        return "<path d=\"M" + number(x) + "," + number(y - 7) +
-               " l7,7 l-7,7 l-7,-7 z\" fill=\"" + colour + "\"/>\n";
+        return "<path d=\"M" + number(x) + "," + number(y - 7) + " l7,7 l-7,7 l-7,-7 z\" fill=\"" +
+               colour + "\"/>\n";
     }
     const bool filled = marker == ScatterPoint::Marker::filled;
     return "<circle cx=\"" + number(x) + "\" cy=\"" + number(y) + "\" r=\"5\" fill=\"" +
@@ -65,12 +64,10 @@ double LogAxis::level(double value) const {
 
 std::string svg_scatter_panel(const ScatterPanel& panel, const std::vector<ScatterPoint>& points) {
     const auto x_of = [&](double x) { return panel.left + x / panel.x_max * panel.width; };
-    const auto y_of = [&](double y) {
-        return panel.top + panel.height * (1.0 - panel.y.level(y));
-    };
+    const auto y_of = [&](double y) { return panel.top + panel.height * (1.0 - panel.y.level(y)); };
     std::string svg = "<rect x=\"" + number(panel.left) + "\" y=\"" + number(panel.top) +
-                      "\" width=\"" + number(panel.width) + "\" height=\"" +
-                      number(panel.height) + "\" fill=\"none\" stroke=\"#999\"/>\n";
+                      "\" width=\"" + number(panel.width) + "\" height=\"" + number(panel.height) +
+                      "\" fill=\"none\" stroke=\"#999\"/>\n";
     svg += svg_text(panel.left + panel.width / 2, panel.top - 6, "middle", panel.title);
     svg += svg_text(panel.left - 6, y_of(0.0) + 4, "end", "0");
     for (int decade = panel.y.low; decade <= panel.y.high; ++decade) {
@@ -88,8 +85,7 @@ std::string svg_scatter_panel(const ScatterPanel& panel, const std::vector<Scatt
         const double y = y_of(p.y);
         if (p.whisker_to >= 0.0) {
             svg += "<line x1=\"" + number(x) + "\" y1=\"" + number(y) + "\" x2=\"" + number(x) +
-                   "\" y2=\"" + number(y_of(p.whisker_to)) + "\" stroke=\"" + p.colour +
-                   "\"/>\n";
+                   "\" y2=\"" + number(y_of(p.whisker_to)) + "\" stroke=\"" + p.colour + "\"/>\n";
         }
         svg += marker_svg(x, y, p.colour, p.marker);
         if (p.marker == ScatterPoint::Marker::diamond) {
@@ -108,8 +104,8 @@ std::string svg_start(double width, double height) {
 
 std::string svg_text(double x, double y, const std::string& anchor, const std::string& text,
                      const std::string& extra) {
-    return "<text x=\"" + number(x) + "\" y=\"" + number(y) + "\" text-anchor=\"" + anchor +
-           "\"" + extra + ">" + escaped(text) + "</text>\n";
+    return "<text x=\"" + number(x) + "\" y=\"" + number(y) + "\" text-anchor=\"" + anchor + "\"" +
+           extra + ">" + escaped(text) + "</text>\n";
 }
 
 std::string svg_legend_entry(double x, double y, const std::string& colour,

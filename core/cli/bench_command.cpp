@@ -209,7 +209,10 @@ CLI::App* add_bench_command(CLI::App& app, BenchArguments& arguments) {
         "The speed-against-error study: every triangle and sphere test in double and float on "
         "decided ray cases, and the cost of each ray offset rule (docs/stage3.md; "
         "raystep-reference only)");
-    pareto->excludes("--workload")->excludes("--growth")->excludes("--threshold")->excludes(epsilon);
+    pareto->excludes("--workload")
+        ->excludes("--growth")
+        ->excludes("--threshold")
+        ->excludes(epsilon);
     command
         ->add_option("--cases", arguments.cases,
                      "With --pareto: case files, or folders of *.cases files (default: stage 3's "

@@ -43,9 +43,8 @@ ParetoMethod blind_triangle_test() {
 
 const ParetoMethod& reference_method(const std::string& name) {
     static const std::vector<ParetoMethod> methods = reference_pareto_methods();
-    const auto found = std::find_if(methods.begin(), methods.end(), [&](const ParetoMethod& m) {
-        return m.method.name == name;
-    });
+    const auto found = std::find_if(methods.begin(), methods.end(),
+                                    [&](const ParetoMethod& m) { return m.method.name == name; });
     REQUIRE(found != methods.end());
     return *found;
 }

@@ -38,10 +38,9 @@ std::string speed_error_chart_svg(const GradeReport& report,
         return f.name == kSpeedErrorFamily;
     });
     if (family == families.end()) return "";
-    const auto cramer = std::find_if(family->points.begin(), family->points.end(),
-                                     [](const ParetoPoint& p) {
-                                         return p.function == "intersect_triangle_cramer";
-                                     });
+    const auto cramer = std::find_if(
+        family->points.begin(), family->points.end(),
+        [](const ParetoPoint& p) { return p.function == "intersect_triangle_cramer"; });
     if (cramer == family->points.end()) return "";
 
     ParetoPoint yours;
@@ -56,10 +55,10 @@ std::string speed_error_chart_svg(const GradeReport& report,
     yours.mrays_per_second = metric(*check, kSpeedErrorAgainstCramer) * cramer->mrays_per_second;
     family->points.push_back(yours);
 
-    const std::string footnote =
-        "Circles: raystep-reference bench --pareto, " + json.value("date", std::string("undated")) +
-        ". Diamond: yours on " + std::to_string(yours.cases) +
-        " cases, timed against the reference's Cramer.";
+    const std::string footnote = "Circles: raystep-reference bench --pareto, " +
+                                 json.value("date", std::string("undated")) +
+                                 ". Diamond: yours on " + std::to_string(yours.cases) +
+                                 " cases, timed against the reference's Cramer.";
     return pareto_chart_svg(*family, footnote);
 }
 

@@ -39,7 +39,8 @@ void add_intersect_calls(CallTable& table) {
             throw std::invalid_argument(method.name + " is not a triangle test");
         }
         std::vector<Ray> rays;
-        for (const Json& r : a.at("rays")) rays.push_back(ray_from(r));
+        for (const Json& r : a.at("rays"))
+            rays.push_back(ray_from(r));
         const std::vector<Triangle> triangles = primitive_list_from(a.at("primitives")).triangles;
         if (rays.size() != triangles.size()) throw std::invalid_argument("a ray per triangle");
         const int repeat = a.at("repeat").get<int>();

@@ -37,9 +37,9 @@ GradeReport report_with_measurement(Outcome outcome) {
     CheckResult check;
     check.id = kSpeedErrorCheck;
     check.outcome = outcome;
-    check.metrics = {{kSpeedErrorCases, 2000},   {kSpeedErrorFalseHits, 0},
+    check.metrics = {{kSpeedErrorCases, 2000},      {kSpeedErrorFalseHits, 0},
                      {kSpeedErrorFalseMisses, 200}, {kSpeedErrorUlpsMedian, 1},
-                     {kSpeedErrorUlpsP99, 20},  {kSpeedErrorAgainstCramer, 0.5}};
+                     {kSpeedErrorUlpsP99, 20},      {kSpeedErrorAgainstCramer, 0.5}};
     GradeReport report;
     report.checks = {check};
     return report;
@@ -49,8 +49,8 @@ GradeReport report_with_measurement(Outcome outcome) {
 
 TEST_CASE("speed_error_chart_svg: the submission is a labelled diamond at its speed ratio",
           "[report]") {
-    const std::string svg =
-        speed_error_chart_svg(report_with_measurement(Outcome::passed), write_reference("shared-edges"));
+    const std::string svg = speed_error_chart_svg(report_with_measurement(Outcome::passed),
+                                                  write_reference("shared-edges"));
     REQUIRE(!svg.empty());
     CHECK(svg.find(">your intersect_triangle</text>") != std::string::npos);
     CHECK(svg.find("Diamond: yours on 2000 cases") != std::string::npos);
@@ -61,12 +61,13 @@ TEST_CASE("speed_error_chart_svg: the submission is a labelled diamond at its sp
 
 TEST_CASE("speed_error_chart_svg: no chart without a measurement or a reference", "[report]") {
     const std::filesystem::path reference = write_reference("shared-edges");
-    CHECK(speed_error_chart_svg(report_with_measurement(Outcome::not_implemented), reference).empty());
+    CHECK(speed_error_chart_svg(report_with_measurement(Outcome::not_implemented), reference)
+              .empty());
     CHECK(speed_error_chart_svg(GradeReport{}, reference).empty());
     CHECK(speed_error_chart_svg(report_with_measurement(Outcome::passed),
                                 reference.string() + ".missing")
               .empty());
-    CHECK(speed_error_chart_svg(report_with_measurement(Outcome::passed),
-                                write_reference("slivers"))
-              .empty());
+    CHECK(
+        speed_error_chart_svg(report_with_measurement(Outcome::passed), write_reference("slivers"))
+            .empty());
 }

@@ -59,8 +59,9 @@ Json timed_pairs(const CaseFamily& family) {
 }
 
 double percentile(std::vector<double> values, double fraction) {
-    values.erase(std::remove_if(values.begin(), values.end(), [](double v) { return !std::isfinite(v); }),
-                 values.end());
+    values.erase(
+        std::remove_if(values.begin(), values.end(), [](double v) { return !std::isfinite(v); }),
+        values.end());
     if (values.empty()) return 0.0;
     std::sort(values.begin(), values.end());
     return values[static_cast<std::size_t>(fraction * static_cast<double>(values.size() - 1))];
@@ -78,7 +79,8 @@ CheckMeasure measure_speed_error(const GradingContext& context, const BuiltProbe
 
     // The errors, on every case
     Json questions = Json::array();
-    for (const RayCase& c : family.cases) questions.push_back(probe::case_question(c));
+    for (const RayCase& c : family.cases)
+        questions.push_back(probe::case_question(c));
     const ProbeSession session = ask_probe(
         *probe.program, {{"stage3_cases", {{"method", method.name}, {"cases", questions}}}}, {});
     const ProbeAnswer& answer = session.answers[0];
@@ -93,7 +95,8 @@ CheckMeasure measure_speed_error(const GradingContext& context, const BuiltProbe
         return measure;
     }
     std::vector<CaseAnswer> answers;
-    for (const Json& a : answer.value) answers.push_back(probe::case_answer_from(a));
+    for (const Json& a : answer.value)
+        answers.push_back(probe::case_answer_from(a));
     const MethodScore score = score_family(method, family, answers, 0);
 
     // The speed, against the reference's Cramer on the same pairs
@@ -102,7 +105,8 @@ CheckMeasure measure_speed_error(const GradingContext& context, const BuiltProbe
     student_args["method"] = "intersect_triangle";
     Json reference_args = pairs;
     reference_args["method"] = "intersect_triangle_cramer";
-    const WorkloadTime student = timed_workload(*probe.program, "triangle_workload", student_args, kPasses);
+    const WorkloadTime student =
+        timed_workload(*probe.program, "triangle_workload", student_args, kPasses);
     const WorkloadTime reference =
         timed_workload(context.reference_probe, "triangle_workload", reference_args, kPasses);
     if (!student.answered || !reference.answered) {
