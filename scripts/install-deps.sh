@@ -8,6 +8,8 @@ packages=(
     cmake ninja-build g++ pkg-config
     # the stage libraries, their tests and the raystep command
     libglm-dev catch2 libopenimageio-dev openimageio-tools libcli11-dev libtinyobjloader-dev
+    # the labels of `raystep demo` (OpenImageIO draws text only with a TrueType font it is given)
+    fonts-dejavu-core
     # the grader: its exact oracle, the probe protocol, the sandbox, and its report tests (the XML
     # parsed back, the HTML report shown in a headless browser)
     libcgal-dev libgmp-dev libmpfr-dev nlohmann-json3-dev bubblewrap libxml2-dev chromium

@@ -5,6 +5,7 @@
 
 #include "core/cli/bench_command.h"
 #include "core/cli/check_command.h"
+#include "core/cli/demo_command.h"
 #include "core/cli/info_command.h"
 #include "core/cli/render_command.h"
 #include "core/cli/trace_command.h"
@@ -23,11 +24,13 @@ int main(int argc, char** argv) {
     TraceArguments trace;
     CheckArguments check;
     BenchArguments bench;
+    DemoArguments demo;
     CLI::App* render_command = add_render_command(app, render);
     CLI::App* info_command = add_info_command(app, info);
     CLI::App* trace_command = add_trace_command(app, trace);
     CLI::App* check_command = add_check_command(app, check);
     CLI::App* bench_command = add_bench_command(app, bench);
+    CLI::App* demo_command = add_demo_command(app, demo);
 
     if (argc == 1) {
         std::fputs(app.help().c_str(), stderr);
@@ -46,6 +49,7 @@ int main(int argc, char** argv) {
         if (trace_command->parsed()) return run_trace(trace);
         if (check_command->parsed()) return run_check(check);
         if (bench_command->parsed()) return run_bench(bench);
+        if (demo_command->parsed()) return run_demo(demo);
     } catch (const NotImplemented& stub) {
         std::fprintf(stderr, "raystep: %s\n", stub.what());
     } catch (const InputError& error) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/math/to_text.h"
+#include "core/render/heat_map.h"
 #include "core/render/shade_hit.h"
 
 namespace raystep {
@@ -179,16 +180,6 @@ void finish_depth(Image& image) {
     }
 }
 
-// A heat map of the work per pixel, from black (none) through blue, red and yellow to white (the
-// image's most expensive pixel): stops spread so that equal steps of work are visible steps.
-Color heat(double fraction) {
-    static const Color kStops[] = {
-        {0, 0, 0}, {0.1, 0.1, 0.8}, {0.9, 0.1, 0.1}, {1, 0.9, 0}, {1, 1, 1}};
-    const double x = std::clamp(fraction, 0.0, 1.0) * 4.0;
-    const int k = std::min(3, static_cast<int>(x));
-    return kStops[k] + (x - k) * (kStops[k + 1] - kStops[k]);
-}
-
 void finish_cost(Image& image) {
     double most = 0.0;
     for (int j = 0; j < image.height(); ++j) {
@@ -197,7 +188,7 @@ void finish_cost(Image& image) {
     }
     for (int j = 0; j < image.height(); ++j) {
         for (int i = 0; i < image.width(); ++i) {
-            image.set(i, j, heat(most > 0.0 ? image.at(i, j).r / most : 0.0));
+            image.set(i, j, heat_colour(most > 0.0 ? image.at(i, j).r / most : 0.0));
         }
     }
 }

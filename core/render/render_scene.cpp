@@ -91,20 +91,20 @@ std::optional<PrimitiveHit> transformed_sphere_hit(const TransformedSphere& s, c
 
 }  // namespace
 
+SceneCamera make_scene_camera(const Scene& scene) {
+    const CameraSpec& c = scene.camera;
+    if (c.ortho) {
+        return make_orthographic_camera(c.lookfrom, c.lookat, c.up, c.ortho->left, c.ortho->right,
+                                        c.ortho->bottom, c.ortho->top, scene.width, scene.height);
+    }
+    return make_perspective_camera(c.lookfrom, c.lookat, c.up, c.fovy_degrees, scene.width,
+                                   scene.height);
+}
+
 RenderScene prepare_render_scene(const Scene& scene) {
     RenderScene render_scene;
     render_scene.scene = &scene;
-
-    const CameraSpec& c = scene.camera;
-    if (c.ortho) {
-        render_scene.camera =
-            make_orthographic_camera(c.lookfrom, c.lookat, c.up, c.ortho->left, c.ortho->right,
-                                     c.ortho->bottom, c.ortho->top, scene.width, scene.height);
-    } else {
-        render_scene.camera = make_perspective_camera(c.lookfrom, c.lookat, c.up, c.fovy_degrees,
-                                                      scene.width, scene.height);
-    }
-
+    render_scene.camera = make_scene_camera(scene);
     gather_primitives(scene, render_scene);
     const SceneFeatures features = scene_features(scene);
     if (uses_bvh(features)) {
@@ -153,11 +153,15 @@ bool scene_occluded(const RenderScene& render_scene, const Ray& ray) {
     return false;
 }
 
-Ray camera_ray(const RenderScene& render_scene, int i, int j) {
-    if (const auto* perspective = std::get_if<PerspectiveCamera>(&render_scene.camera)) {
+Ray camera_ray(const SceneCamera& camera, int i, int j) {
+    if (const auto* perspective = std::get_if<PerspectiveCamera>(&camera)) {
         return perspective_ray(*perspective, i, j);
     }
-    return orthographic_ray(std::get<OrthographicCamera>(render_scene.camera), i, j);
+    return orthographic_ray(std::get<OrthographicCamera>(camera), i, j);
+}
+
+Ray camera_ray(const RenderScene& render_scene, int i, int j) {
+    return camera_ray(render_scene.camera, i, j);
 }
 
 const ObjectAttributes& attributes_of(const RenderScene& render_scene, PrimitiveKind kind,

@@ -15,6 +15,9 @@
 
 namespace raystep {
 
+/// The camera of a scene, perspective or orthographic, as stage 2 builds it.
+using SceneCamera = std::variant<PerspectiveCamera, OrthographicCamera>;
+
 /// A sphere under a transform: an ellipsoid, intersected in its own frame by stage 5.
 struct TransformedSphere {
     Sphere sphere;  ///< as written, in its object frame
@@ -31,7 +34,7 @@ struct TransformedSphere {
 /// big enough to gain from one. `scene` keeps materials and lights.
 struct RenderScene {
     const Scene* scene = nullptr;
-    std::variant<PerspectiveCamera, OrthographicCamera> camera;
+    SceneCamera camera;
     /// Spheres without a transform, every triangle and plane, in Scene order: index k of
     /// triangles and planes is Scene's k-th, of spheres sphere_index[k].
     PrimitiveList primitives;
@@ -47,6 +50,10 @@ struct RenderScene {
     RayOffset ray_offset;    ///< how shadow and mirror rays leave a surface
     int bounces = 0;         ///< mirror bounces: maxdepth when something reflects, else 0
 };
+
+/// The scene's `camera` (and `ortho`) over its width x height pixels, built by stage 2, whose
+/// errors and stubs propagate.
+SceneCamera make_scene_camera(const Scene& scene);
 
 /// Builds the camera with stage 2 (whose errors and stubs propagate) and gathers the
 /// primitives, moved into the world by stage 5 where a transform places them.
@@ -64,6 +71,7 @@ std::optional<PrimitiveHit> scene_closest_hit(const RenderScene& render_scene, c
 bool scene_occluded(const RenderScene& render_scene, const Ray& ray);
 
 /// The camera ray through the centre of pixel (i, j), from stage 2.
+Ray camera_ray(const SceneCamera& camera, int i, int j);
 Ray camera_ray(const RenderScene& render_scene, int i, int j);
 
 /// The scene's record of a primitive the renderer hit.

@@ -77,7 +77,7 @@ class TileQueue {
     std::exception_ptr error_;
 };
 
-void render_tiles(const RenderScene& render_scene, View view, TileQueue& queue, Image& image) {
+void render_tiles(const PixelFunction& pixel, TileQueue& queue, Image& image) {
     try {
         int x0 = 0;
         int y0 = 0;
@@ -86,7 +86,7 @@ void render_tiles(const RenderScene& render_scene, View view, TileQueue& queue, 
             const int y1 = std::min(y0 + kTileSize, queue.height());
             for (int j = y0; j < y1; ++j) {
                 for (int i = x0; i < x1; ++i) {
-                    image.set(i, j, render_pixel(render_scene, view, i, j, nullptr));
+                    image.set(i, j, pixel(i, j));
                 }
             }
             queue.add_done(static_cast<std::size_t>((x1 - x0) * (y1 - y0)));
@@ -97,33 +97,27 @@ void render_tiles(const RenderScene& render_scene, View view, TileQueue& queue, 
     queue.worker_finished();
 }
 
-}  // namespace
+// Every pixel on `threads` threads (0: one per hardware thread), with this thread drawing `bar`.
+Image render_tiles_in_pool(int width, int height, const PixelFunction& pixel, int threads,
+                           ProgressBar& bar) {
+    Image image(width, height);
+    TileQueue queue(width, height);
 
-Image render_image(const RenderScene& render_scene, const RenderOptions& options) {
-    const Scene& scene = *render_scene.scene;
-    Image image(scene.width, scene.height);
-    TileQueue queue(scene.width, scene.height);
-
-    const int wanted = options.threads > 0
-                           ? options.threads
-                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    const int wanted =
+        threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
     std::vector<std::thread> pool;
     pool.reserve(static_cast<std::size_t>(wanted));
     try {
         for (int w = 0; w < wanted; ++w) {
-            pool.emplace_back(render_tiles, std::cref(render_scene), options.view, std::ref(queue),
-                              std::ref(image));
+            pool.emplace_back(render_tiles, std::cref(pixel), std::ref(queue), std::ref(image));
         }
     } catch (const std::system_error&) {
         // Fewer threads than asked for (a process limit in a sandbox, say): the ones running
         // share the work, and the image is the same.
     }
 
-    ProgressBar bar(options.label,
-                    static_cast<std::size_t>(scene.width) * static_cast<std::size_t>(scene.height),
-                    options.progress && !pool.empty());
     if (pool.empty()) {
-        render_tiles(render_scene, options.view, queue, image);
+        render_tiles(pixel, queue, image);
     } else {
         // This thread draws the progress bar until every worker is done.
         const int workers = static_cast<int>(pool.size());
@@ -139,7 +133,27 @@ Image render_image(const RenderScene& render_scene, const RenderOptions& options
         std::rethrow_exception(queue.error());
     }
     bar.finish();
-    finish_view(image, options.view);
+    return image;
+}
+
+}  // namespace
+
+Image render_pixels(int width, int height, const PixelFunction& pixel, int threads) {
+    ProgressBar no_bar("", 0, false);
+    return render_tiles_in_pool(width, height, pixel, threads, no_bar);
+}
+
+Image render_image(const RenderScene& render_scene, const RenderOptions& options) {
+    const Scene& scene = *render_scene.scene;
+    const View view = options.view;
+    const PixelFunction pixel = [&render_scene, view](int i, int j) {
+        return render_pixel(render_scene, view, i, j, nullptr);
+    };
+    ProgressBar bar(options.label,
+                    static_cast<std::size_t>(scene.width) * static_cast<std::size_t>(scene.height),
+                    options.progress);
+    Image image = render_tiles_in_pool(scene.width, scene.height, pixel, options.threads, bar);
+    finish_view(image, view);
     return image;
 }
 
