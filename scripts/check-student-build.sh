@@ -5,8 +5,9 @@
 #      Every public test must fail with a NotImplemented message and no test binary may crash;
 #      `raystep render` and `raystep trace` must stop with the message of the stub that stopped
 #      them; `raystep check` must report every stage-3 function as not implemented; `raystep bench`
-#      must report the stubs in its rows and exit 0; `raystep info`, which runs no stage code, must
-#      work.
+#      must report the stubs in its rows and exit 0; every `raystep demo` must stop at a stub, and
+#      `raystep bench --pareto` must say that only raystep-reference has the study; `raystep info`,
+#      which runs no stage code, must work.
 #   2. A mixed build, RAYSTEP_STUDENT_STAGES=1: the reference stage 2 must call the student's
 #      stage 1, so a render stops at a stage-1 stub.
 set -euo pipefail
@@ -85,6 +86,12 @@ check_command "raystep bench reports each stub in its row and goes on" 0 \
     "$bin/raystep" bench --quick --workload spheres-primary
 check_command "raystep bench --epsilon reports the stub that stopped each scene" 0 \
     "^- stopped: $stub_message" "$bin/raystep" bench --epsilon
+for demo in $("$bin/raystep" demo --list | awk 'NR > 1 {print $1}'); do
+    check_command "raystep demo $demo stops at a stub" 1 "$stub_message" \
+        "$bin/raystep" demo "$demo" -o "$release/demo-$demo.png"
+done
+check_command "raystep bench --pareto names raystep-reference" 1 \
+    "run raystep-reference bench --pareto" "$bin/raystep" bench --pareto
 
 cmake -S "$root" -B "$root/build/student-stage1" -G Ninja -DCMAKE_BUILD_TYPE=Release \
     -DRAYSTEP_STUDENT_STAGES=1 -DRAYSTEP_WARNINGS_AS_ERRORS=ON >/dev/null
