@@ -66,8 +66,9 @@ OffsetErrors errors_of(const EpsilonSceneResult& study, const RayOffset& offset)
     return offset.rule == OffsetRule::along_ray ? study.along_ray[k] : study.along_normal[k];
 }
 
-// Each acne scene: the epsilon study's acne and leaks beside the time of each rule's shadow rays.
-std::vector<OffsetRuleResult> measure_offset_rules(std::string& notes) {
+// Each acne scene (with `quick`, the largest scale's alone): the epsilon study's acne and leaks
+// beside the time of each rule's shadow rays.
+std::vector<OffsetRuleResult> measure_offset_rules(bool quick, std::string& notes) {
     const fs::path folder = fs::path(RAYSTEP_SOURCE_DIR) / "scenes/stage6";
     std::vector<RayOffset> offsets;
     for (const double epsilon : kOffsetEpsilons)
@@ -78,7 +79,10 @@ std::vector<OffsetRuleResult> measure_offset_rules(std::string& notes) {
     offsets.push_back({OffsetRule::error_bound, 0.0});
 
     std::vector<OffsetRuleResult> results;
-    for (const char* name : {"acne-scale-1e-3.test", "acne-scale-1.test", "acne-scale-1e4.test"}) {
+    std::vector<const char*> scenes = {"acne-scale-1e-3.test", "acne-scale-1.test",
+                                       "acne-scale-1e4.test"};
+    if (quick) scenes.erase(scenes.begin(), scenes.end() - 1);
+    for (const char* name : scenes) {
         const fs::path scene = folder / name;
         std::fprintf(stderr, "  measuring the offset rules on %s\n", name);
         const EpsilonSceneResult study = measure_epsilon_scene(scene, kOffsetEpsilons);
@@ -202,7 +206,7 @@ int run_pareto_study(const ParetoOptions& options) {
     std::printf("\n### speed against error, per family\n\n%s", pareto_table(families).c_str());
 
     std::string notes;
-    const std::vector<OffsetRuleResult> offset_rules = measure_offset_rules(notes);
+    const std::vector<OffsetRuleResult> offset_rules = measure_offset_rules(options.quick, notes);
     std::printf("\n### ray offset rules: cost against acne and leaks\n\n%s\n%s",
                 offset_table(offset_rules).c_str(), notes.c_str());
 

@@ -15,7 +15,7 @@ namespace raystep {
 struct ParetoOptions {
     std::vector<std::string> cases;  ///< case files or folders of them; none: stage 3's own
     std::string out_folder;          ///< where the charts and JSON go
-    bool quick = false;              ///< shorter timing samples, for smoke tests
+    bool quick = false;              ///< shorter timing samples and one acne scene, for smoke tests
 };
 
 using ParetoStudy = int (*)(const ParetoOptions& options);
