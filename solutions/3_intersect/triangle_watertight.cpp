@@ -53,7 +53,12 @@ std::optional<Hit> watertight(const RayType& ray, const TriangleType& tri) {
     const Real u = cx * by - cy * bx;
     const Real v = ax * cy - ay * cx;
     const Real w = bx * ay - by * ax;
-    if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return std::nullopt;
+    // The six comparisons are joined with | rather than ||: each || is a branch on the ray,
+    // which the processor mispredicts about as often as not (most tests in a BVH leaf miss, each
+    // by a different edge), and | leaves one. A NaN compares false either way.
+    const bool some_negative = (u < 0) | (v < 0) | (w < 0);
+    const bool some_positive = (u > 0) | (v > 0) | (w > 0);
+    if (some_negative & some_positive) return std::nullopt;
     const Real det = u + v + w;
     if (det == 0) return std::nullopt;  // the ray lies in the plane, or zero area
 

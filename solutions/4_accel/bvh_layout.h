@@ -47,9 +47,9 @@ struct Bvh::Impl {
 };
 
 /// The deepest binary tree build_bvh makes is 97 levels (bvh_build.cpp, kSahDepth); collapsing
-/// keeps depth no greater, and a traversal keeps at most three pending nodes per level, plus the
-/// fourth child for the moment between sorting a node's children and taking the nearest.
-inline constexpr int kBvhStackSize = 3 * 97 + 1;
+/// keeps depth no greater, and a traversal keeps at most three pending nodes per level (the
+/// nearest of four children is visited at once, never pushed).
+inline constexpr int kBvhStackSize = 3 * 97;
 
 /// Builds the tree over the primitives with the given split rule.
 void build_bvh(Bvh::Impl& bvh, const PrimitiveList& primitives, BvhSplit split);

@@ -49,9 +49,12 @@ struct NodeRay {
     bool negative[3];  ///< 1 / D < 0 on this axis: the maximum plane is met first
     float t_min;       ///< rounded down
 
-    explicit NodeRay(const Ray& ray) {
+    explicit NodeRay(const Ray& ray) : NodeRay(ray, 1.0 / ray.direction) {}
+
+    /// The same, from 1 / D already computed (in double) for the root box.
+    NodeRay(const Ray& ray, const Vec3& inverse_direction) {
         for (int axis = 0; axis < 3; ++axis) {
-            const double inverse_exact = 1.0 / ray.direction[axis];
+            const double inverse_exact = inverse_direction[axis];
             origin[axis] = static_cast<float>(ray.origin[axis]);
             inverse[axis] = static_cast<float>(inverse_exact);
             negative[axis] = inverse_exact < 0.0;
