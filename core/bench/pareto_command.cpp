@@ -196,8 +196,7 @@ int run_pareto_study(const ParetoOptions& options) {
             std::fprintf(stderr, "  measuring %s\n", family.name.c_str());
             ParetoFamily measured = measure_pareto_family(family, methods, timing);
             if (measured.points.empty()) {
-                std::printf("- %s: no sphere or triangle test applies (planes only): left out\n",
-                            family.name.c_str());
+                std::printf("- %s: no test of the study applies: left out\n", family.name.c_str());
                 continue;
             }
             families.push_back(std::move(measured));

@@ -9,11 +9,19 @@ namespace {
 
 using TriangleTest = std::optional<Hit> (*)(const Ray&, const Triangle&);
 using SphereTest = std::optional<Hit> (*)(const Ray&, const Sphere&);
+using PlaneTest = std::optional<Hit> (*)(const Ray&, const Plane&);
 
 ParetoMethod triangle_method(const char* name, const char* label, const char* precision,
                              TriangleTest test) {
     ParetoMethod entry{{name, Stage3Method::Kind::triangle}, label, precision};
     entry.method.triangle = test;
+    return entry;
+}
+
+ParetoMethod plane_method(const char* name, const char* label, const char* precision,
+                          PlaneTest test) {
+    ParetoMethod entry{{name, Stage3Method::Kind::plane}, label, precision};
+    entry.method.plane = test;
     return entry;
 }
 
@@ -57,6 +65,8 @@ std::vector<ParetoMethod> reference_pareto_methods() {
                       intersect_sphere_stable_roots_float),
         sphere_method("intersect_sphere", "stable sphere", "double", intersect_sphere),
         sphere_method("intersect_sphere_float", "stable sphere", "float", intersect_sphere_float),
+        plane_method("intersect_plane", "plane", "double", intersect_plane),
+        plane_method("intersect_plane_float", "plane", "float", intersect_plane_float),
     };
 }
 

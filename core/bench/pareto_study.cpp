@@ -51,10 +51,13 @@ TimedPairs pairs_for(const Stage3Method& method, const CaseFamily& family) {
 std::size_t run_pairs(const Stage3Method& method, const TimedPairs& pairs) {
     std::size_t hits = 0;
     for (std::size_t k = 0; k < pairs.rays.size(); ++k) {
-        if (method.kind == Stage3Method::Kind::sphere) {
-            hits += method.sphere(pairs.rays[k], std::get<Sphere>(pairs.shapes[k])).has_value();
+        const CaseShape& shape = pairs.shapes[k];
+        if (const auto* sphere = std::get_if<Sphere>(&shape)) {
+            hits += method.sphere(pairs.rays[k], *sphere).has_value();
+        } else if (const auto* triangle = std::get_if<Triangle>(&shape)) {
+            hits += method.triangle(pairs.rays[k], *triangle).has_value();
         } else {
-            hits += method.triangle(pairs.rays[k], std::get<Triangle>(pairs.shapes[k])).has_value();
+            hits += method.plane(pairs.rays[k], std::get<Plane>(shape)).has_value();
         }
     }
     return hits;

@@ -103,8 +103,8 @@ TEST_CASE("measure_pareto_family: a method that tests no primitive of the family
 
 TEST_CASE("float variants: the same hits as their double namesakes, t within float rounding",
           "[pareto]") {
-    // Random triangles and spheres stay far from every boundary in float as in double, so the
-    // answers must agree case by case; t differs by float's rounding of the inputs and the
+    // Random triangles, spheres and planes stay far from every boundary in float as in double, so
+    // the answers must agree case by case; t differs by float's rounding of the inputs and the
     // arithmetic, a few float ulps (2^-24 relative each), far below 1e-4.
     const std::pair<const char*, const char*> pairs[] = {
         {"intersect_triangle_projection", "random-triangles"},
@@ -115,6 +115,7 @@ TEST_CASE("float variants: the same hits as their double namesakes, t within flo
         {"intersect_sphere_textbook", "random-spheres"},
         {"intersect_sphere_stable_roots", "random-spheres"},
         {"intersect_sphere", "random-spheres"},
+        {"intersect_plane", "random-planes"},
     };
     for (const auto& [name, family_name] : pairs) {
         const ParetoMethod& in_double = reference_method(name);

@@ -44,6 +44,13 @@ struct FloatSphere {
         : center(sphere.center), radius(static_cast<float>(sphere.radius)) {}
 };
 
+struct FloatPlane {
+    glm::vec3 point;
+    glm::vec3 normal;
+
+    explicit FloatPlane(const Plane& plane) : point(plane.point), normal(plane.normal) {}
+};
+
 /// The same contracts as their double namesakes in intersect.h and intersect_methods.h, with
 /// the accuracy of float.
 std::optional<Hit> intersect_triangle_projection_float(const Ray& ray, const Triangle& triangle);
@@ -53,6 +60,7 @@ std::optional<Hit> intersect_triangle_moller_trumbore_float(const Ray& ray,
                                                             const Triangle& triangle);
 std::optional<Hit> intersect_triangle_watertight_float(const Ray& ray, const Triangle& triangle);
 std::optional<Hit> intersect_sphere_float(const Ray& ray, const Sphere& sphere);
+std::optional<Hit> intersect_plane_float(const Ray& ray, const Plane& plane);
 std::optional<Hit> intersect_sphere_textbook_float(const Ray& ray, const Sphere& sphere);
 std::optional<Hit> intersect_sphere_stable_roots_float(const Ray& ray, const Sphere& sphere);
 
