@@ -16,7 +16,7 @@ namespace raystep {
 
 /// A test under study: the function, and how the charts name it.
 struct ParetoMethod {
-    Stage3Method method;    ///< a sphere or triangle test
+    Stage3Method method;    ///< a sphere, triangle or plane test
     std::string label;      ///< "Möller-Trumbore", "stable sphere"
     std::string precision;  ///< "double" or "float"
 };

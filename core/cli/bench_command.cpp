@@ -206,8 +206,8 @@ CLI::App* add_bench_command(CLI::App& app, BenchArguments& arguments) {
         ->needs(epsilon);
     CLI::Option* pareto = command->add_flag(
         "--pareto", arguments.pareto,
-        "The speed-against-error study: every triangle and sphere test in double and float on "
-        "decided ray cases, and the cost of each ray offset rule (docs/stage3.md; "
+        "The speed-against-error study: every triangle, sphere and plane test in double and "
+        "float on decided ray cases, and the cost of each ray offset rule (docs/stage3.md; "
         "raystep-reference only)");
     pareto->excludes("--workload")
         ->excludes("--growth")
