@@ -7,6 +7,7 @@
 
 #include "core/bench/markdown_table.h"
 #include "core/bench/number_text.h"
+#include "core/bench/svg_chart.h"
 
 namespace raystep {
 
@@ -25,12 +26,6 @@ std::string epsilon_text(double epsilon) {
 
 std::string scene_name(const std::string& path) {
     return std::filesystem::path(path).stem().string();
-}
-
-std::string number(double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.1f", x);
-    return text;
 }
 
 // One panel of the chart: a line per series of pixel counts over the epsilons.
@@ -83,10 +78,7 @@ std::string epsilon_chart_svg(const std::vector<EpsilonSceneResult>& results) {
         kPanelWidth * static_cast<double>(std::max<std::size_t>(results.size(), 1));
     const double height = kPanelHeight + 40;
 
-    std::string svg = "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + number(width) +
-                      "\" height=\"" + number(height) +
-                      "\" font-family=\"sans-serif\" font-size=\"11\">\n"
-                      "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+    std::string svg = svg_start(width, height);
     for (std::size_t panel = 0; panel < results.size(); ++panel) {
         const EpsilonSceneResult& r = results[panel];
         if (r.epsilons.empty()) continue;
@@ -102,25 +94,21 @@ std::string epsilon_chart_svg(const std::vector<EpsilonSceneResult>& results) {
             const double level = count < 1.0 ? 0.0 : (std::log10(count) + 0.5) / (kDecades + 0.5);
             return y0 + kPlotHeight * (1.0 - level);
         };
-        svg += "<text x=\"" + number(x0 + kPlotWidth / 2) + "\" y=\"" + number(y0 - 12) +
-               "\" text-anchor=\"middle\" font-weight=\"bold\">" + scene_name(r.scene) +
-               "</text>\n";
-        svg += "<rect x=\"" + number(x0) + "\" y=\"" + number(y0) + "\" width=\"" +
-               number(kPlotWidth) + "\" height=\"" + number(kPlotHeight) +
+        svg += svg_text(x0 + kPlotWidth / 2, y0 - 12, "middle", scene_name(r.scene),
+                        " font-weight=\"bold\"");
+        svg += "<rect x=\"" + svg_number(x0) + "\" y=\"" + svg_number(y0) + "\" width=\"" +
+               svg_number(kPlotWidth) + "\" height=\"" + svg_number(kPlotHeight) +
                "\" fill=\"none\" stroke=\"#999\"/>\n";
         for (int decade = -1; decade <= kDecades; ++decade) {
             const double count = decade < 0 ? 0.0 : std::pow(10.0, decade);
-            svg += "<text x=\"" + number(x0 - 6) + "\" y=\"" + number(y_of(count) + 4) +
-                   "\" text-anchor=\"end\">" + grouped(static_cast<std::size_t>(count)) +
-                   "</text>\n";
+            svg +=
+                svg_text(x0 - 6, y_of(count) + 4, "end", grouped(static_cast<std::size_t>(count)));
         }
         for (std::size_t k = 0; k < r.epsilons.size(); k += 3) {
-            svg += "<text x=\"" + number(x_of(r.epsilons[k])) + "\" y=\"" +
-                   number(y0 + kPlotHeight + 14) + "\" text-anchor=\"middle\">" +
-                   epsilon_text(r.epsilons[k]) + "</text>\n";
+            svg += svg_text(x_of(r.epsilons[k]), y0 + kPlotHeight + 14, "middle",
+                            epsilon_text(r.epsilons[k]));
         }
-        svg += "<text x=\"" + number(x0 + kPlotWidth / 2) + "\" y=\"" +
-               number(y0 + kPlotHeight + 30) + "\" text-anchor=\"middle\">epsilon</text>\n";
+        svg += svg_text(x0 + kPlotWidth / 2, y0 + kPlotHeight + 30, "middle", "epsilon");
 
         std::vector<Series> series = {
             {"along-ray acne", "#c0392b", "", {}},
@@ -137,14 +125,15 @@ std::string epsilon_chart_svg(const std::vector<EpsilonSceneResult>& results) {
         for (const Series& s : series) {
             std::string points;
             for (std::size_t k = 0; k < r.epsilons.size(); ++k) {
-                points += number(x_of(r.epsilons[k])) + "," + number(y_of(s.counts[k])) + " ";
+                points +=
+                    svg_number(x_of(r.epsilons[k])) + "," + svg_number(y_of(s.counts[k])) + " ";
             }
             svg += "<polyline fill=\"none\" stroke=\"" + std::string(s.colour) +
                    "\" stroke-width=\"2\"" +
                    (*s.dash ? " stroke-dasharray=\"" + std::string(s.dash) + "\"" : "") +
                    " points=\"" + points + "\"/>\n";
         }
-        svg += "<text x=\"" + number(x0) + "\" y=\"" + number(y0 + kPlotHeight + 46) +
+        svg += "<text x=\"" + svg_number(x0) + "\" y=\"" + svg_number(y0 + kPlotHeight + 46) +
                "\">error-bound: " + grouped(r.error_bound.acne) + " acne, " +
                grouped(r.error_bound.leaks) + " leaks</text>\n";
     }
@@ -160,12 +149,12 @@ std::string epsilon_chart_svg(const std::vector<EpsilonSceneResult>& results) {
                   {"leaks: pixels wrongly lit", "#333", "5,3", 0}};
     double x = kLeft;
     for (const auto& entry : legend) {
-        svg += "<line x1=\"" + number(x) + "\" y1=\"" + number(height - 14) + "\" x2=\"" +
-               number(x + 24) + "\" y2=\"" + number(height - 14) + "\" stroke=\"" + entry.colour +
-               "\" stroke-width=\"2\"" +
+        svg += "<line x1=\"" + svg_number(x) + "\" y1=\"" + svg_number(height - 14) + "\" x2=\"" +
+               svg_number(x + 24) + "\" y2=\"" + svg_number(height - 14) + "\" stroke=\"" +
+               entry.colour + "\" stroke-width=\"2\"" +
                (*entry.dash ? " stroke-dasharray=\"" + std::string(entry.dash) + "\"" : "") +
                "/>\n";
-        svg += "<text x=\"" + number(x + 30) + "\" y=\"" + number(height - 10) + "\">" +
+        svg += "<text x=\"" + svg_number(x + 30) + "\" y=\"" + svg_number(height - 10) + "\">" +
                entry.label + "</text>\n";
         x += entry.width;
     }

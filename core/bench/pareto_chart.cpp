@@ -5,7 +5,7 @@
 #include <map>
 
 #include "core/bench/number_text.h"
-#include "core/bench/svg_scatter.h"
+#include "core/bench/svg_chart.h"
 
 namespace raystep {
 

@@ -17,7 +17,7 @@
 #include "core/bench/pareto_json.h"
 #include "core/bench/pareto_reference_methods.h"
 #include "core/bench/pareto_registry.h"
-#include "core/bench/svg_scatter.h"
+#include "core/bench/svg_chart.h"
 #include "core/check/case_file.h"
 
 namespace raystep {
@@ -41,11 +41,7 @@ std::vector<fs::path> case_files(const std::vector<std::string>& named) {
             paths.emplace_back(name);
             continue;
         }
-        std::vector<fs::path> in_folder;
-        for (const fs::directory_entry& entry : fs::directory_iterator(name)) {
-            if (entry.path().extension() == ".cases") in_folder.push_back(entry.path());
-        }
-        std::sort(in_folder.begin(), in_folder.end());
+        const std::vector<fs::path> in_folder = case_files_in(name);
         paths.insert(paths.end(), in_folder.begin(), in_folder.end());
     }
     return paths;

@@ -10,17 +10,11 @@
 #include "core/bench/markdown_table.h"
 #include "core/bench/number_text.h"
 #include "core/check/case_scoring.h"
+#include "core/check/check_report.h"
 
 namespace raystep {
 
 namespace {
-
-// The value below which a share `fraction` of the sorted values lie (nearest rank).
-double percentile(const std::vector<double>& sorted, double fraction) {
-    if (sorted.empty()) return 0.0;
-    const auto rank = static_cast<std::size_t>(fraction * static_cast<double>(sorted.size() - 1));
-    return sorted[rank];
-}
 
 // The timing runs on at most this many (ray, primitive) pairs, the family's first: about 300 KB,
 // which stays in the processor's second-level cache, so that the time is the test's arithmetic
@@ -100,24 +94,17 @@ ParetoPoint score_point(const ParetoMethod& entry, const CaseFamily& family) {
     point.cases = score.cases;
     point.false_hits = score.count(Verdict::false_hit);
     point.false_misses = score.count(Verdict::false_miss) + score.count(Verdict::leak);
-    // A NaN t has no distance in ulps; the verdicts already counted it as wrong.
+    // A NaN t has no distance in ulps (the verdicts already counted it as wrong), and JSON has no
+    // infinity.
     std::vector<double> ulps;
     for (const double u : score.t_ulps) {
         if (std::isfinite(u)) ulps.push_back(u);
     }
-    std::sort(ulps.begin(), ulps.end());
-    point.t_ulps_median = percentile(ulps, 0.5);
-    point.t_ulps_p99 = percentile(ulps, 0.99);
-    point.t_ulps_max = ulps.empty() ? 0.0 : ulps.back();
+    const UlpSummary summary = summarize_ulps(ulps);
+    point.t_ulps_median = summary.median;
+    point.t_ulps_p99 = summary.p99;
+    point.t_ulps_max = summary.max;
     return point;
-}
-
-// Ulps span 0 to 2^60: whole numbers below 10,000, powers of ten above (2.1e+09).
-std::string ulps_text(double ulps) {
-    if (ulps < 1e4) return grouped(static_cast<std::size_t>(ulps));
-    char text[32];
-    std::snprintf(text, sizeof text, "%.1e", ulps);
-    return text;
 }
 
 }  // namespace
@@ -147,8 +134,8 @@ std::string pareto_table(const std::vector<ParetoFamily>& families) {
             table.add_row({family.name, p.label, p.precision, grouped(p.cases),
                            three_digits(p.mrays_per_second), grouped(p.false_hits),
                            grouped(p.false_misses), fixed(100.0 * p.wrong_share(), 2),
-                           ulps_text(p.t_ulps_median), ulps_text(p.t_ulps_p99),
-                           ulps_text(p.t_ulps_max)});
+                           ulp_text(p.t_ulps_median), ulp_text(p.t_ulps_p99),
+                           ulp_text(p.t_ulps_max)});
         }
     }
     return table.text();

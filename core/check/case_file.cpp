@@ -371,6 +371,17 @@ void write_primitive(std::ostream& out, const CasePrimitive& primitive) {
 
 }  // namespace
 
+std::vector<std::filesystem::path> case_files_in(const std::filesystem::path& folder) {
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+        if (entry.is_regular_file() && entry.path().extension() == ".cases") {
+            files.push_back(entry.path());
+        }
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
 std::vector<CaseFamily> read_case_file(const std::filesystem::path& path) {
     return parse_case_file(read_text_file(path, "case file"), path.string());
 }

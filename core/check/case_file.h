@@ -18,6 +18,9 @@ std::vector<CaseFamily> read_case_file(const std::filesystem::path& path);
 /// The same from text in memory; `name` is what messages call the file.
 std::vector<CaseFamily> parse_case_file(const std::string& text, const std::string& name);
 
+/// Every *.cases file directly in `folder`, in name order; none when it holds none.
+std::vector<std::filesystem::path> case_files_in(const std::filesystem::path& folder);
+
 /// Writes families in the format read_case_file reads, every double with 17 significant digits
 /// so that reading it back gives the same bits.
 void write_case_file(std::ostream& out, const std::vector<CaseFamily>& families);

@@ -16,13 +16,6 @@ double nearest_rank(const std::vector<double>& sorted, double fraction) {
     return sorted[std::max<std::size_t>(rank, 1) - 1];
 }
 
-// Whole ulps up to a million as they are; beyond, 3 significant digits tell enough.
-std::string ulp_text(double ulps) {
-    char text[32];
-    std::snprintf(text, sizeof text, ulps < 1e6 ? "%.0f" : "%.3g", ulps);
-    return text;
-}
-
 std::size_t column_width(const std::vector<MethodScore>& scores, const char* heading,
                          std::string MethodScore::*field) {
     std::size_t width = std::string(heading).size();
@@ -68,6 +61,12 @@ UlpSummary summarize_ulps(std::vector<double> ulps) {
     if (ulps.empty()) return {};
     std::sort(ulps.begin(), ulps.end());
     return {nearest_rank(ulps, 0.5), nearest_rank(ulps, 0.99), ulps.back()};
+}
+
+std::string ulp_text(double ulps) {
+    char text[32];
+    std::snprintf(text, sizeof text, ulps < 1e6 ? "%.0f" : "%.3g", ulps);
+    return text;
 }
 
 void print_check_report(std::FILE* out, const std::vector<MethodScore>& scores,

@@ -16,6 +16,10 @@ struct UlpSummary {
 };
 UlpSummary summarize_ulps(std::vector<double> ulps);
 
+/// An ulp count for a table: whole ulps up to a million as they are; beyond, 3 significant digits
+/// tell enough (4.3e+08).
+std::string ulp_text(double ulps);
+
 /// Prints the scores as a table, one row per method and family: cases, pass rate, false hits,
 /// false misses, leaks, other failures, t error in ulps (median, p99, max); then each failing
 /// row's first counterexamples with their inputs and `rerun` (a command that runs just that case).

@@ -33,17 +33,11 @@ std::vector<std::filesystem::path> case_files(const CheckArguments& arguments) {
         throw std::runtime_error("no case files given, and the default folder " + folder.string() +
                                  " does not exist: name case files on the command line");
     }
-    std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
-        if (entry.is_regular_file() && entry.path().extension() == ".cases") {
-            files.push_back(entry.path());
-        }
-    }
+    std::vector<std::filesystem::path> files = case_files_in(folder);
     if (files.empty()) {
         throw std::runtime_error("no case files given, and the default folder " + folder.string() +
                                  " holds no .cases files");
     }
-    std::sort(files.begin(), files.end());
     return files;
 }
 

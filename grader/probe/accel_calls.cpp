@@ -20,12 +20,6 @@ BvhSplit split_from(const Json& j) {
     throw std::invalid_argument("expected a split: sah or median");
 }
 
-std::vector<Ray> rays_from(const Json& j) {
-    std::vector<Ray> rays;
-    for (const Json& r : j) rays.push_back(ray_from(r));
-    return rays;
-}
-
 // The structure's answers for every ray: its closest hits, or whether each ray is occluded.
 template <class Structure>
 Json answer_rays(const Structure& structure, const Json& a) {

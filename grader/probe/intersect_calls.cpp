@@ -38,9 +38,7 @@ void add_intersect_calls(CallTable& table) {
         if (method.kind != Stage3Method::Kind::triangle) {
             throw std::invalid_argument(method.name + " is not a triangle test");
         }
-        std::vector<Ray> rays;
-        for (const Json& r : a.at("rays"))
-            rays.push_back(ray_from(r));
+        const std::vector<Ray> rays = rays_from(a.at("rays"));
         const std::vector<Triangle> triangles = primitive_list_from(a.at("primitives")).triangles;
         if (rays.size() != triangles.size()) throw std::invalid_argument("a ray per triangle");
         const int repeat = a.at("repeat").get<int>();

@@ -82,6 +82,12 @@ Ray ray_from(const Json& j) {
             number_from(field(j, "t_min")), number_from(field(j, "t_max"))};
 }
 
+std::vector<Ray> rays_from(const Json& j) {
+    std::vector<Ray> rays;
+    for (const Json& r : j) rays.push_back(ray_from(r));
+    return rays;
+}
+
 Json hit(const std::optional<Hit>& h) {
     if (!h) return nullptr;
     return {{"t", number(h->t)},

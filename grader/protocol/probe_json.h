@@ -1,5 +1,7 @@
 #pragma once
 
+#include <vector>
+
 #include <nlohmann/json.hpp>
 
 #include "core/check/case_answer.h"
@@ -33,6 +35,7 @@ Mat4 mat4_from(const Json& j);
 
 Json ray(const Ray& r);
 Ray ray_from(const Json& j);
+std::vector<Ray> rays_from(const Json& j);  ///< from an array of rays
 
 Json hit(const std::optional<Hit>& h);  ///< null for a miss
 std::optional<Hit> hit_from(const Json& j);

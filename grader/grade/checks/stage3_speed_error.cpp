@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "core/check/case_scoring.h"
+#include "core/check/check_report.h"
 #include "grader/families/stage3_families.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
@@ -56,15 +57,6 @@ Json timed_pairs(const CaseFamily& family) {
         }
     }
     return {{"rays", rays}, {"primitives", probe::primitive_list(triangles)}};
-}
-
-double percentile(std::vector<double> values, double fraction) {
-    values.erase(
-        std::remove_if(values.begin(), values.end(), [](double v) { return !std::isfinite(v); }),
-        values.end());
-    if (values.empty()) return 0.0;
-    std::sort(values.begin(), values.end());
-    return values[static_cast<std::size_t>(fraction * static_cast<double>(values.size() - 1))];
 }
 
 CheckMeasure measure_speed_error(const GradingContext& context, const BuiltProbe& probe) {
@@ -119,14 +111,21 @@ CheckMeasure measure_speed_error(const GradingContext& context, const BuiltProbe
     const double false_hits = static_cast<double>(score.count(Verdict::false_hit));
     const double false_misses =
         static_cast<double>(score.count(Verdict::false_miss) + score.count(Verdict::leak));
+    // A NaN t has no distance in ulps (the verdicts already counted it as wrong), and the
+    // report's JSON has no infinity.
+    std::vector<double> ulps;
+    for (const double u : score.t_ulps) {
+        if (std::isfinite(u)) ulps.push_back(u);
+    }
+    const UlpSummary ulp_summary = summarize_ulps(ulps);
     const double speed = reference.seconds / student.seconds;
     measure.outcome = Outcome::passed;
     measure.fraction = 1.0;
     measure.metrics = {{kSpeedErrorCases, static_cast<double>(score.cases)},
                        {kSpeedErrorFalseHits, false_hits},
                        {kSpeedErrorFalseMisses, false_misses},
-                       {kSpeedErrorUlpsMedian, percentile(score.t_ulps, 0.5)},
-                       {kSpeedErrorUlpsP99, percentile(score.t_ulps, 0.99)},
+                       {kSpeedErrorUlpsMedian, ulp_summary.median},
+                       {kSpeedErrorUlpsP99, ulp_summary.p99},
                        {kSpeedErrorAgainstCramer, speed}};
     char text[200];
     std::snprintf(text, sizeof text,

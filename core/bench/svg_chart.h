@@ -5,8 +5,9 @@
 
 namespace raystep {
 
-// The pieces of the bench's scatter charts (speed against error): a panel with a linear x axis
-// from 0 and a logarithmic y axis with 0 on its bottom line, points in three markers, text.
+// The pieces of the bench's SVG charts: the document, text and numbers (the epsilon study's line
+// chart, the speed-against-error scatter charts), and a scatter panel with a linear x axis from 0
+// and a logarithmic y axis with 0 on its bottom line, points in three markers.
 
 /// A y axis from 10^low to 10^high, with 0 on the bottom line: half a decade below 10^low is
 /// left free so that zero stands apart from the smallest nonzero value.
@@ -41,6 +42,9 @@ struct ScatterPanel {
 
 /// The panel's frame, axes, labels and points.
 std::string svg_scatter_panel(const ScatterPanel& panel, const std::vector<ScatterPoint>& points);
+
+/// A coordinate or length in SVG units, to a tenth.
+std::string svg_number(double x);
 
 /// `<svg ...>` with a white background; end it with "</svg>\n".
 std::string svg_start(double width, double height);

@@ -1,4 +1,4 @@
-#include "core/bench/svg_scatter.h"
+#include "core/bench/svg_chart.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,12 +9,6 @@
 namespace raystep {
 
 namespace {
-
-std::string number(double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.1f", x);
-    return text;
-}
 
 // Text as SVG character data: labels come from case files and function names.
 std::string escaped(const std::string& text) {
@@ -45,15 +39,21 @@ std::string decade_text(int decade, const std::string& unit) {
 
 std::string marker_svg(double x, double y, const std::string& colour, ScatterPoint::Marker marker) {
     if (marker == ScatterPoint::Marker::diamond) {
-        return "<path d=\"M" + number(x) + "," + number(y - 7) + " l7,7 l-7,7 l-7,-7 z\" fill=\"" +
-               colour + "\"/>\n";
+        return "<path d=\"M" + svg_number(x) + "," + svg_number(y - 7) +
+               " l7,7 l-7,7 l-7,-7 z\" fill=\"" + colour + "\"/>\n";
     }
     const bool filled = marker == ScatterPoint::Marker::filled;
-    return "<circle cx=\"" + number(x) + "\" cy=\"" + number(y) + "\" r=\"5\" fill=\"" +
+    return "<circle cx=\"" + svg_number(x) + "\" cy=\"" + svg_number(y) + "\" r=\"5\" fill=\"" +
            (filled ? colour : "white") + "\" stroke=\"" + colour + "\" stroke-width=\"2\"/>\n";
 }
 
 }  // namespace
+
+std::string svg_number(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f", x);
+    return text;
+}
 
 double LogAxis::level(double value) const {
     if (!(value > 0.0)) return 0.0;
@@ -65,9 +65,9 @@ double LogAxis::level(double value) const {
 std::string svg_scatter_panel(const ScatterPanel& panel, const std::vector<ScatterPoint>& points) {
     const auto x_of = [&](double x) { return panel.left + x / panel.x_max * panel.width; };
     const auto y_of = [&](double y) { return panel.top + panel.height * (1.0 - panel.y.level(y)); };
-    std::string svg = "<rect x=\"" + number(panel.left) + "\" y=\"" + number(panel.top) +
-                      "\" width=\"" + number(panel.width) + "\" height=\"" + number(panel.height) +
-                      "\" fill=\"none\" stroke=\"#999\"/>\n";
+    std::string svg = "<rect x=\"" + svg_number(panel.left) + "\" y=\"" + svg_number(panel.top) +
+                      "\" width=\"" + svg_number(panel.width) + "\" height=\"" +
+                      svg_number(panel.height) + "\" fill=\"none\" stroke=\"#999\"/>\n";
     svg += svg_text(panel.left + panel.width / 2, panel.top - 6, "middle", panel.title);
     svg += svg_text(panel.left - 6, y_of(0.0) + 4, "end", "0");
     for (int decade = panel.y.low; decade <= panel.y.high; ++decade) {
@@ -84,8 +84,9 @@ std::string svg_scatter_panel(const ScatterPanel& panel, const std::vector<Scatt
         const double x = x_of(p.x);
         const double y = y_of(p.y);
         if (p.whisker_to >= 0.0) {
-            svg += "<line x1=\"" + number(x) + "\" y1=\"" + number(y) + "\" x2=\"" + number(x) +
-                   "\" y2=\"" + number(y_of(p.whisker_to)) + "\" stroke=\"" + p.colour + "\"/>\n";
+            svg += "<line x1=\"" + svg_number(x) + "\" y1=\"" + svg_number(y) + "\" x2=\"" +
+                   svg_number(x) + "\" y2=\"" + svg_number(y_of(p.whisker_to)) + "\" stroke=\"" +
+                   p.colour + "\"/>\n";
         }
         svg += marker_svg(x, y, p.colour, p.marker);
         if (p.marker == ScatterPoint::Marker::diamond) {
@@ -96,16 +97,16 @@ std::string svg_scatter_panel(const ScatterPanel& panel, const std::vector<Scatt
 }
 
 std::string svg_start(double width, double height) {
-    return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + number(width) + "\" height=\"" +
-           number(height) +
+    return "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" + svg_number(width) +
+           "\" height=\"" + svg_number(height) +
            "\" font-family=\"sans-serif\" font-size=\"11\">\n"
            "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
 }
 
 std::string svg_text(double x, double y, const std::string& anchor, const std::string& text,
                      const std::string& extra) {
-    return "<text x=\"" + number(x) + "\" y=\"" + number(y) + "\" text-anchor=\"" + anchor + "\"" +
-           extra + ">" + escaped(text) + "</text>\n";
+    return "<text x=\"" + svg_number(x) + "\" y=\"" + svg_number(y) + "\" text-anchor=\"" + anchor +
+           "\"" + extra + ">" + escaped(text) + "</text>\n";
 }
 
 std::string svg_legend_entry(double x, double y, const std::string& colour,
