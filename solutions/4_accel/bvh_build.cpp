@@ -13,10 +13,18 @@ namespace raystep {
 
 namespace {
 
-// The SAH's cost model: visiting a node costs 1, testing a primitive kIntersectionCost. Tests are
-// dearer than box checks (a double-precision triangle test against four float boxes in one node),
-// which favours smaller leaves.
-constexpr double kIntersectionCost = 2.0;
+// The SAH's cost model: visiting a binary node costs 1, testing a triangle kTriangleTestCost, a
+// sphere kSphereTestCost. Measured, not guessed, with two runs each of
+// `raystep-reference bench --workload bunny --workload spheres --threads 1`:
+// - triangles: a double-precision test costs more instructions than the four float box tests of
+//   a node, but the walk waits on memory and branches more than on arithmetic, and leaves of a
+//   few triangles save levels of nodes. 2.0 gave the bunny 0.58x Embree's throughput on primary
+//   rays and 0.39-0.40x on incoherent ones, 1.0 gave 0.61x and 0.43-0.44x (before lowest_bit,
+//   bvh.cpp); since then 1.0, 0.75 and 0.5 all give 0.65x and 0.43-0.46x.
+// - spheres: intersect_sphere has a square root and a division. 1.0 gave the 10,000 spheres
+//   0.76-0.79x Embree on primary rays, 2.0 gives 0.81x (incoherent rays: 0.56-0.57x both).
+constexpr double kTriangleTestCost = 1.0;
+constexpr double kSphereTestCost = 2.0;
 constexpr int kBins = 16;
 // The SAH may keep up to kMaxLeafSize primitives in a leaf when splitting costs more; the median
 // split stops at kMedianLeafSize, having no cost to weigh.
@@ -32,6 +40,7 @@ struct BuildPrimitive {
     Aabb box;
     Vec3 centroid;
     std::uint32_t id;
+    double test_cost;  ///< kSphereTestCost or kTriangleTestCost
 };
 
 // A subtree under construction: a leaf range of build primitives, or two children.
@@ -59,6 +68,7 @@ Split best_sah_split(const std::vector<BuildPrimitive>& primitives, std::size_t 
         if (!(width > 0.0)) continue;
         std::array<Aabb, kBins> bins;
         std::array<std::size_t, kBins> counts{};
+        std::array<double, kBins> test_costs{};
         const double scale = kBins / width;
         const auto bin_of = [&](double c) {
             return std::min(kBins - 1, static_cast<int>((c - low) * scale));
@@ -67,26 +77,27 @@ Split best_sah_split(const std::vector<BuildPrimitive>& primitives, std::size_t 
             const int b = bin_of(primitives[k].centroid[axis]);
             bins[b].add(primitives[k].box);
             ++counts[b];
+            test_costs[b] += primitives[k].test_cost;
         }
         // Sweep from the right, then from the left, pricing each boundary.
         std::array<double, kBins> right_cost{};
         Aabb right;
-        std::size_t right_count = 0;
+        double right_tests = 0.0;
         for (int b = kBins - 1; b > 0; --b) {
             right.add(bins[b]);
-            right_count += counts[b];
-            right_cost[b] = right.surface_area() * static_cast<double>(right_count);
+            right_tests += test_costs[b];
+            right_cost[b] = right.surface_area() * right_tests;
         }
         Aabb left;
         std::size_t left_count = 0;
+        double left_tests = 0.0;
         for (int b = 0; b < kBins - 1; ++b) {
             left.add(bins[b]);
             left_count += counts[b];
+            left_tests += test_costs[b];
             if (left_count == 0 || left_count == end - begin) continue;
-            const double cost = 1.0 + kIntersectionCost *
-                                          (left.surface_area() * static_cast<double>(left_count) +
-                                           right_cost[b + 1]) /
-                                          parent_area;
+            const double cost =
+                1.0 + (left.surface_area() * left_tests + right_cost[b + 1]) / parent_area;
             if (cost < best.cost) best = {axis, low + (b + 1) / scale, cost};
         }
     }
@@ -146,7 +157,9 @@ class BvhBuilder {
         }
 
         const Split split = best_sah_split(primitives_, begin, end, centroids, box.surface_area());
-        const double leaf_cost = kIntersectionCost * static_cast<double>(count);
+        double leaf_cost = 0.0;
+        for (std::size_t k = begin; k < end; ++k)
+            leaf_cost += primitives_[k].test_cost;
         if (split.axis < 0 || (split.cost >= leaf_cost && count <= kMaxLeafSize)) return begin;
         const auto middle = std::partition(
             primitives_.begin() + static_cast<long>(begin),
@@ -252,11 +265,12 @@ void build_bvh(Bvh::Impl& bvh, const PrimitiveList& primitives, BvhSplit split) 
     items.reserve(primitives.spheres.size() + primitives.triangles.size());
     for (std::size_t k = 0; k < primitives.spheres.size(); ++k) {
         const Aabb box = bounds_of(primitives.spheres[k]);
-        items.push_back({box, box.center(), static_cast<std::uint32_t>(k)});
+        items.push_back({box, box.center(), static_cast<std::uint32_t>(k), kSphereTestCost});
     }
     for (std::size_t k = 0; k < primitives.triangles.size(); ++k) {
         const Aabb box = bounds_of(primitives.triangles[k]);
-        items.push_back({box, box.center(), bvh.sphere_count + static_cast<std::uint32_t>(k)});
+        items.push_back({box, box.center(), bvh.sphere_count + static_cast<std::uint32_t>(k),
+                         kTriangleTestCost});
     }
 
     BvhBuilder builder(std::move(items), split);
