@@ -157,10 +157,8 @@ class BvhBuilder {
         }
 
         const Split split = best_sah_split(primitives_, begin, end, centroids, box.surface_area());
-        double leaf_cost = 0.0;
-        for (std::size_t k = begin; k < end; ++k)
-            leaf_cost += primitives_[k].test_cost;
-        if (split.axis < 0 || (split.cost >= leaf_cost && count <= kMaxLeafSize)) return begin;
+        if (split.axis < 0) return begin;
+        if (count <= kMaxLeafSize && split.cost >= leaf_cost(begin, end)) return begin;
         const auto middle = std::partition(
             primitives_.begin() + static_cast<long>(begin),
             primitives_.begin() + static_cast<long>(end),
@@ -170,6 +168,14 @@ class BvhBuilder {
         // side empty (an empty side would repeat this node forever).
         if (at == begin || at == end) return median(begin, end, split.axis);
         return at;
+    }
+
+    // What testing every primitive of [begin, end) costs, in the SAH's units.
+    double leaf_cost(std::size_t begin, std::size_t end) const {
+        double cost = 0.0;
+        for (std::size_t k = begin; k < end; ++k)
+            cost += primitives_[k].test_cost;
+        return cost;
     }
 
     // Halves [begin, end) at the median centroid along the axis.
