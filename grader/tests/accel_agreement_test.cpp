@@ -113,10 +113,11 @@ TEST_CASE("accel: the BVH's SSE2 node test computes what the plain one does, bit
             }
         }
         // Unused lanes of a collapsed node hold the empty box.
+        constexpr int kUnused = BvhNode::kWidth - 1;
         if (k % 4 == 0) {
             for (int axis = 0; axis < 3; ++axis) {
-                node.planes[2 * axis][3] = std::numeric_limits<float>::infinity();
-                node.planes[2 * axis + 1][3] = -std::numeric_limits<float>::infinity();
+                node.planes[2 * axis][kUnused] = std::numeric_limits<float>::infinity();
+                node.planes[2 * axis + 1][kUnused] = -std::numeric_limits<float>::infinity();
             }
         }
         Vec3 d{direction(rng), direction(rng), direction(rng)};
@@ -132,7 +133,7 @@ TEST_CASE("accel: the BVH's SSE2 node test computes what the plain one does, bit
         const int hits_sse = ChildTestSse(ray).enter_children(node, limit, entry_sse);
         CAPTURE(k);
         REQUIRE(hits_scalar == hits_sse);
-        if (k % 4 == 0) CHECK((hits_scalar & 0b1000) == 0);
+        if (k % 4 == 0) CHECK((hits_scalar & (1 << kUnused)) == 0);
         for (int c = 0; c < BvhNode::kWidth; ++c) {
             if (hits_scalar & (1 << c))
                 CHECK(std::memcmp(&entry_scalar[c], &entry_sse[c], sizeof(float)) == 0);

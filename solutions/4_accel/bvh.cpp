@@ -45,18 +45,21 @@ struct Pending {
     float enter;
 };
 
-// The lowest of bits 0 to 3 set in `bits` (at least one is). GCC and Clang count trailing zeros
-// in one instruction; elsewhere a table, since C++17 has no portable count. The table is a load
-// that the next node's address waits on, on every node: the instruction took the bunny's primary
-// rays from 9.24-9.34 to 10.0 Mrays/s, two runs each of
-// `raystep-reference bench --workload bunny --threads 1` (incoherent rays: 2.33-2.46 before,
-// 2.34-2.51 after, within that bench's noise).
+// The lowest bit set in `bits` (at least one is). GCC and Clang count trailing zeros in one
+// instruction; elsewhere a loop, since C++17 has no portable count. The count sits on the walk's
+// critical path, between the node test and the next node's address: against a table load it took
+// the bunny's primary rays from 9.24-9.34 to 10.0 Mrays/s, two runs each of
+// `raystep-reference bench --workload bunny --threads 1`, with four children per node.
 inline int lowest_bit(unsigned bits) {
 #if defined(__GNUC__)
     return __builtin_ctz(bits);
 #else
-    constexpr int kLowest[16] = {0, 0, 1, 0, 2, 0, 1, 0, 3, 0, 1, 0, 2, 0, 1, 0};
-    return kLowest[bits];
+    int bit = 0;
+    while ((bits & 1u) == 0) {
+        bits >>= 1;
+        ++bit;
+    }
+    return bit;
 #endif
 }
 
@@ -66,12 +69,13 @@ Pending lowest_child(const BvhNode& node, unsigned hits, const float entry[BvhNo
     return {node.child[c], node.count[c], entry[c]};
 }
 
-// Asks the memory system for what a child holds (its node, or its leaf's first triangles) when
-// it goes on the stack, so the read overlaps the nearer subtree's work instead of stalling when
-// the child comes off. On incoherent rays most of the tree is out of the first-level cache and
-// this is a read the walk would otherwise wait for: it took the bunny's incoherent rays from
-// about 1.8 to 2.1-2.2 Mrays/s (`raystep-reference bench --workload bunny --threads 1`). A
-// prefetch is only a hint: it cannot fault, and changes no result.
+// Asks the memory system for what a child holds (the first half of its node, or its leaf's first
+// triangles) when it goes on the stack, so the read overlaps the nearer subtree's work instead of
+// stalling when the child comes off. On incoherent rays most of the tree is out of the
+// first-level cache and this is a read the walk would otherwise wait for: it took the bunny's
+// incoherent rays from about 1.8 to 2.1-2.2 Mrays/s (`raystep-reference bench --workload bunny
+// --threads 1`, four children per node). Asking for all four lines of an eight-wide node was no
+// faster. A prefetch is only a hint: it cannot fault, and changes no result.
 inline void prefetch(const Bvh::Impl& bvh, const Pending& child) {
 #ifdef RAYSTEP_BVH_SSE2
     const char* at = child.count == 0
@@ -87,7 +91,7 @@ inline void prefetch(const Bvh::Impl& bvh, const Pending& child) {
 
 // Of the children the ray enters (the set bits of `hits`, at least one), returns the nearest, to
 // visit next, and pushes the others onto the stack above `top`, farthest deepest. A ray mostly
-// enters one child or two, which take no loop and at most one comparison; only three or four
+// enters one child or two, which take no loop and at most one comparison; only three or more
 // are sorted (insertion sort). Against pushing every child and popping the nearest this runs
 // 12% fewer instructions in the walk (callgrind, bunny primary rays); the time it saves is
 // within the bench's noise, since the branches that remain depend on the ray and are
@@ -121,7 +125,7 @@ inline Pending nearest_child(const Bvh::Impl& bvh, const BvhNode& node, unsigned
 // entry lies beyond `bound`, the float search limit. `Visit` tests a leaf's primitives, may lower
 // the bound (after a nearer hit), and returns true to stop.
 //
-// The node test (node_test.h) takes all four children at once, and the stack is a plain array,
+// The node test (node_test.h) takes all eight children at once, and the stack is a plain array,
 // never initialized: this loop is where the time goes (`raystep bench`, docs/stage4.md,
 // "Measured on the development machine").
 template <class Visit>

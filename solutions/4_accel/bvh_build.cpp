@@ -1,6 +1,6 @@
 // Stage 4 reference solution: building the BVH, top down, with the binned surface area heuristic
 // (Wald 2007, "On fast construction of SAH-based bounding volume hierarchies") or at the median;
-// then collapsing the binary tree to four children per node.
+// then collapsing the binary tree to eight children per node.
 
 #include <algorithm>
 #include <array>
@@ -15,8 +15,9 @@ namespace {
 
 // The SAH's cost model: visiting a binary node costs 1, testing a triangle kTriangleTestCost, a
 // sphere kSphereTestCost. Measured, not guessed, with two runs each of
-// `raystep-reference bench --workload bunny --workload spheres --threads 1`:
-// - triangles: a double-precision test costs more instructions than the four float box tests of
+// `raystep-reference bench --workload bunny --workload spheres --threads 1`, four children per
+// node:
+// - triangles: a double-precision test costs more instructions than the float box tests of
 //   a node, but the walk waits on memory and branches more than on arithmetic, and leaves of a
 //   few triangles save levels of nodes. 2.0 gave the bunny 0.58x Embree's throughput on primary
 //   rays and 0.39-0.40x on incoherent ones, 1.0 gave 0.61x and 0.43-0.44x (before lowest_bit,
@@ -212,9 +213,9 @@ void store_box(const Aabb& box, BvhNode& node, int c) {
     }
 }
 
-// Up to four descendants of a binary inner node to become one wide node's children: open the
+// Up to eight descendants of a binary inner node to become one wide node's children: open the
 // child with the largest surface area (the one a random ray most likely enters) until there are
-// four, or only leaves are left.
+// eight, or only leaves are left.
 std::vector<int> wide_children(const std::vector<BuildNode>& tree, int index) {
     const auto at = [&tree](int k) -> const BuildNode& {
         return tree[static_cast<std::size_t>(k)];

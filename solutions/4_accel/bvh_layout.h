@@ -1,9 +1,12 @@
 #pragma once
 
 // The reference BVH's memory layout. The tree is built binary, as the lecture builds it, then
-// collapsed to four children per node: a ray then visits about half as many nodes, and every
+// collapsed to eight children per node: a full tree then has a third as many levels, and every
 // visit is a dependent memory read and a branch the processor cannot predict, which is what
-// single-ray traversal waits on (docs/stage4.md, "Measured on the development machine").
+// single-ray traversal waits on (docs/stage4.md, "Measured on the development machine"). Eight
+// rather than four took the bunny's hit rays from 11.4 to 7.7 nodes and the bench's primary rays
+// from 0.65x to 0.70x Embree's speed, its incoherent rays from 0.45x to 0.48-0.50x
+// (`raystep-reference bench --workload bunny --threads 1`, two runs each).
 
 #include <cstdint>
 #include <vector>
@@ -12,19 +15,19 @@
 
 namespace raystep {
 
-/// An inner node: the boxes of its four children, in float rounded outward (a box may grow by
+/// An inner node: the boxes of its eight children, in float rounded outward (a box may grow by
 /// an ulp, never shrink, so no hit is lost), and where each child is. planes[2 axis + side][c]
 /// is child c's minimum (side 0) or maximum (side 1) along the axis: a ray picks its near plane
-/// on each axis by the sign of its direction, without comparing, and reads the four children's
-/// side by side, to test them together. An unused child has the empty box (min +inf, max -inf),
+/// on each axis by the sign of its direction, without comparing, and reads the children's side
+/// by side, to test four together. An unused child has the empty box (min +inf, max -inf),
 /// which no ray enters.
 struct alignas(64) BvhNode {
-    static constexpr int kWidth = 4;
+    static constexpr int kWidth = 8;
     float planes[6][kWidth];
     std::uint32_t child[kWidth];  ///< an inner child's node index, or a leaf's first slot
     std::uint32_t count[kWidth];  ///< 0 for an inner child; a leaf's number of primitives
 };
-static_assert(sizeof(BvhNode) == 128, "one node, two cache lines");
+static_assert(sizeof(BvhNode) == 256, "one node, four cache lines");
 
 /// A child of a node, or the root: an inner node or a range of leaf slots.
 struct BvhChild {
@@ -47,9 +50,9 @@ struct Bvh::Impl {
 };
 
 /// The deepest binary tree build_bvh makes is 97 levels (bvh_build.cpp, kSahDepth); collapsing
-/// keeps depth no greater, and a traversal keeps at most three pending nodes per level (the
-/// nearest of four children is visited at once, never pushed).
-inline constexpr int kBvhStackSize = 3 * 97;
+/// keeps depth no greater, and a traversal keeps at most seven pending nodes per level (the
+/// nearest of eight children is visited at once, never pushed).
+inline constexpr int kBvhStackSize = (BvhNode::kWidth - 1) * 97;
 
 /// Builds the tree over the primitives with the given split rule.
 void build_bvh(Bvh::Impl& bvh, const PrimitiveList& primitives, BvhSplit split);
