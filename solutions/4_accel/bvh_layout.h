@@ -4,9 +4,11 @@
 // collapsed to eight children per node: a full tree then has a third as many levels, and every
 // visit is a dependent memory read and a branch the processor cannot predict, which is what
 // single-ray traversal waits on (docs/stage4.md, "Measured on the development machine"). Eight
-// rather than four took the bunny's hit rays from 11.4 to 7.7 nodes and the bench's primary rays
-// from 0.65x to 0.70x Embree's speed, its incoherent rays from 0.45x to 0.48-0.50x
-// (`raystep-reference bench --workload bunny --threads 1`, two runs each).
+// rather than four took the bunny's nodes per ray from 3.5 to 2.4 (primary rays) and from 9.1 to
+// 6.1 (incoherent), its primary rays from 0.65-0.66x Embree's speed to 0.63-0.71x (most runs
+// 0.70x), its incoherent rays from 0.40-0.46x to 0.45-0.52x
+// (`raystep-reference bench --workload bunny --threads 1`, three runs with four, seven with
+// eight).
 
 #include <cstdint>
 #include <vector>
