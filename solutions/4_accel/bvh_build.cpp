@@ -1,13 +1,13 @@
 // Stage 4 reference solution: building the BVH, top down, with the binned surface area heuristic
-// (Wald 2007, "On fast construction of SAH-based bounding volume hierarchies") or at the median;
-// then collapsing the binary tree to eight children per node.
+// (Wald 2007, "On fast construction of SAH-based bounding volume hierarchies") or at the median.
+// The binary tree is then collapsed to eight children per node (bvh_collapse.cpp).
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 
-#include "solutions/4_accel/bvh_layout.h"
+#include "solutions/4_accel/bvh_binary_tree.h"
 
 namespace raystep {
 
@@ -27,9 +27,8 @@ namespace {
 constexpr double kTriangleTestCost = 1.0;
 constexpr double kSphereTestCost = 2.0;
 constexpr int kBins = 16;
-// The SAH may keep up to kMaxLeafSize primitives in a leaf when splitting costs more; the median
-// split stops at kMedianLeafSize, having no cost to weigh.
-constexpr std::size_t kMaxLeafSize = 8;
+// The SAH may keep up to kMaxLeafSize (bvh_binary_tree.h) primitives in a leaf when splitting
+// costs more; the median split stops at kMedianLeafSize, having no cost to weigh.
 constexpr std::size_t kMedianLeafSize = 4;
 
 // Below this depth every split is at the median, which halves: with at most 2^32 primitives the
@@ -42,14 +41,6 @@ struct BuildPrimitive {
     Vec3 centroid;
     std::uint32_t id;
     double test_cost;  ///< kSphereTestCost or kTriangleTestCost
-};
-
-// A subtree under construction: a leaf range of build primitives, or two children.
-struct BuildNode {
-    Aabb box;
-    std::size_t begin = 0;
-    std::size_t end = 0;
-    int children[2] = {-1, -1};
 };
 
 struct Split {
@@ -111,7 +102,7 @@ class BvhBuilder {
         : primitives_(std::move(primitives)), split_(split) {}
 
     /// Builds the tree of build nodes; node 0 is the root.
-    std::vector<BuildNode> build() {
+    std::vector<BinaryNode> build() {
         nodes_.clear();
         if (!primitives_.empty()) build_node(0, primitives_.size(), 0);
         return std::move(nodes_);
@@ -125,15 +116,18 @@ class BvhBuilder {
         nodes_.push_back({});
         Aabb box;
         Aabb centroids;
+        double test_cost = 0.0;
         for (std::size_t k = begin; k < end; ++k) {
             box.add(primitives_[k].box);
             centroids.add(primitives_[k].centroid);
+            test_cost += primitives_[k].test_cost;
         }
         nodes_[index].box = box;
         nodes_[index].begin = begin;
         nodes_[index].end = end;
+        nodes_[index].test_cost = test_cost;
 
-        const std::size_t middle = split_at(begin, end, box, centroids, depth);
+        const std::size_t middle = split_at(begin, end, box, centroids, test_cost, depth);
         if (middle == begin) return index;  // a leaf
         const int left = build_node(begin, middle, depth + 1);
         const int right = build_node(middle, end, depth + 1);
@@ -142,9 +136,10 @@ class BvhBuilder {
         return index;
     }
 
-    // Where to divide [begin, end), after reordering it; `begin` to make a leaf.
+    // Where to divide [begin, end), after reordering it; `begin` to make a leaf, which costs
+    // `leaf_cost`.
     std::size_t split_at(std::size_t begin, std::size_t end, const Aabb& box, const Aabb& centroids,
-                         int depth) {
+                         double leaf_cost, int depth) {
         const std::size_t count = end - begin;
         const Vec3 extent = centroids.extent();
         const int axis =
@@ -159,7 +154,7 @@ class BvhBuilder {
 
         const Split split = best_sah_split(primitives_, begin, end, centroids, box.surface_area());
         if (split.axis < 0) return begin;
-        if (count <= kMaxLeafSize && split.cost >= leaf_cost(begin, end)) return begin;
+        if (count <= kMaxLeafSize && split.cost >= leaf_cost) return begin;
         const auto middle = std::partition(
             primitives_.begin() + static_cast<long>(begin),
             primitives_.begin() + static_cast<long>(end),
@@ -169,14 +164,6 @@ class BvhBuilder {
         // side empty (an empty side would repeat this node forever).
         if (at == begin || at == end) return median(begin, end, split.axis);
         return at;
-    }
-
-    // What testing every primitive of [begin, end) costs, in the SAH's units.
-    double leaf_cost(std::size_t begin, std::size_t end) const {
-        double cost = 0.0;
-        for (std::size_t k = begin; k < end; ++k)
-            cost += primitives_[k].test_cost;
-        return cost;
     }
 
     // Halves [begin, end) at the median centroid along the axis.
@@ -193,74 +180,8 @@ class BvhBuilder {
 
     std::vector<BuildPrimitive> primitives_;
     BvhSplit split_;
-    std::vector<BuildNode> nodes_;
+    std::vector<BinaryNode> nodes_;
 };
-
-// Child c's box in the node, in float bounds that contain the double ones: rounded down for
-// minima, up for maxima.
-void store_box(const Aabb& box, BvhNode& node, int c) {
-    for (int axis = 0; axis < 3; ++axis) {
-        float low = static_cast<float>(box.min[axis]);
-        float high = static_cast<float>(box.max[axis]);
-        if (static_cast<double>(low) > box.min[axis]) {
-            low = std::nextafter(low, -std::numeric_limits<float>::infinity());
-        }
-        if (static_cast<double>(high) < box.max[axis]) {
-            high = std::nextafter(high, std::numeric_limits<float>::infinity());
-        }
-        node.planes[2 * axis][c] = low;
-        node.planes[2 * axis + 1][c] = high;
-    }
-}
-
-// Up to eight descendants of a binary inner node to become one wide node's children: open the
-// child with the largest surface area (the one a random ray most likely enters) until there are
-// eight, or only leaves are left.
-std::vector<int> wide_children(const std::vector<BuildNode>& tree, int index) {
-    const auto at = [&tree](int k) -> const BuildNode& {
-        return tree[static_cast<std::size_t>(k)];
-    };
-    std::vector<int> children = {at(index).children[0], at(index).children[1]};
-    while (children.size() < BvhNode::kWidth) {
-        auto largest = children.end();
-        double largest_area = -1.0;
-        for (auto child = children.begin(); child != children.end(); ++child) {
-            const BuildNode& candidate = at(*child);
-            if (candidate.children[0] >= 0 && candidate.box.surface_area() > largest_area) {
-                largest = child;
-                largest_area = candidate.box.surface_area();
-            }
-        }
-        if (largest == children.end()) break;
-        const BuildNode& opened = at(*largest);
-        *largest = opened.children[0];
-        children.push_back(opened.children[1]);
-    }
-    return children;
-}
-
-// Writes the build tree as wide nodes, depth first; returns how the parent refers to it.
-BvhChild emit(const std::vector<BuildNode>& tree, int index, Bvh::Impl& bvh) {
-    const BuildNode& node = tree[static_cast<std::size_t>(index)];
-    if (node.children[0] < 0) {
-        return {static_cast<std::uint32_t>(node.begin),
-                static_cast<std::uint32_t>(node.end - node.begin)};
-    }
-    const std::vector<int> children = wide_children(tree, index);
-    const std::size_t packed = bvh.nodes.size();
-    bvh.nodes.push_back({});
-    for (std::size_t c = 0; c < BvhNode::kWidth; ++c) {
-        const Aabb box =
-            c < children.size() ? tree[static_cast<std::size_t>(children[c])].box : Aabb{};
-        store_box(box, bvh.nodes[packed], static_cast<int>(c));
-    }
-    for (std::size_t c = 0; c < children.size(); ++c) {
-        const BvhChild ref = emit(tree, children[c], bvh);
-        bvh.nodes[packed].child[c] = ref.index;
-        bvh.nodes[packed].count[c] = ref.count;
-    }
-    return {static_cast<std::uint32_t>(packed), 0};
-}
 
 }  // namespace
 
@@ -281,7 +202,7 @@ void build_bvh(Bvh::Impl& bvh, const PrimitiveList& primitives, BvhSplit split) 
     }
 
     BvhBuilder builder(std::move(items), split);
-    const std::vector<BuildNode> tree = builder.build();
+    const std::vector<BinaryNode> tree = builder.build();
     const std::vector<BuildPrimitive>& ordered = builder.primitives();
 
     bvh.slots.resize(ordered.size());
@@ -292,10 +213,8 @@ void build_bvh(Bvh::Impl& bvh, const PrimitiveList& primitives, BvhSplit split) 
         if (id >= bvh.sphere_count)
             bvh.slot_triangles[slot] = primitives.triangles[id - bvh.sphere_count];
     }
-    bvh.nodes.clear();
-    if (tree.empty()) return;
-    bvh.root_box = tree[0].box;
-    bvh.root = emit(tree, 0, bvh);
+    if (!tree.empty()) bvh.root_box = tree[0].box;
+    bvh.root = collapse_to_wide(tree, bvh);
 }
 
 }  // namespace raystep
