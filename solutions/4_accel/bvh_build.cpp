@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <limits>
 
 #include "solutions/4_accel/bvh_binary_tree.h"
@@ -101,7 +100,7 @@ class BvhBuilder {
     BvhBuilder(std::vector<BuildPrimitive> primitives, BvhSplit split)
         : primitives_(std::move(primitives)), split_(split) {}
 
-    /// Builds the tree of build nodes; node 0 is the root.
+    /// Builds the binary tree; node 0 is the root.
     std::vector<BinaryNode> build() {
         nodes_.clear();
         if (!primitives_.empty()) build_node(0, primitives_.size(), 0);
