@@ -135,6 +135,7 @@ TEST_CASE("run_sandboxed: unbounded allocation stops at the address-space limit"
     if (!can_run(isolate)) return;
 
     const HostileRun allocate = run_hostile({hostile("allocate")}, "", test_policy(isolate));
+    CAPTURE(allocate.run.exit_code, allocate.run.errors);
     CHECK(allocate.run.signal == SIGABRT);  // std::bad_alloc, uncaught
     CHECK_FALSE(allocate.run.timed_out);
     // It printed its holdings after each 16 MiB; the last is below the 256 MiB it may map.
@@ -159,8 +160,8 @@ TEST_CASE("run_sandboxed: a fork bomb is held to the process limit, and its chil
     CHECK(bomb.run.exit_code == 0);
     CHECK_FALSE(bomb.run.timed_out);
     // "made N: Resource temporarily unavailable". The limit is 16 tasks of the sandbox's user
-    // beyond those it had at the start; allow for the sandboxes of other tests that ctest -j runs
-    // beside this one. Unchecked, it would make its 2,000.
+    // beyond those it had at the start; allow for tasks of that user that end while it runs (ctest
+    // runs this test alone, but a developer may not). Unchecked, it would make its 2,000.
     CAPTURE(bomb.run.output);
     REQUIRE(bomb.run.output.rfind("made ", 0) == 0);
     const int made = std::stoi(bomb.run.output.substr(5));
