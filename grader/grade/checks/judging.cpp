@@ -18,31 +18,41 @@ CheckDefinition case_check(std::string id, int stage, std::string kind, std::str
             }};
 }
 
-WorkloadTime timed_workload(const std::filesystem::path& program, const std::string& call,
-                            const probe::Json& args, int repeat) {
-    WorkloadTime timed;
-    const auto run_once = [&](int passes) {
+std::vector<WorkloadTime> timed_workloads(const std::vector<std::filesystem::path>& programs,
+                                          const std::string& call, const probe::Json& args,
+                                          int repeat) {
+    std::vector<WorkloadTime> timed(programs.size());
+    const auto run_once = [&](std::size_t p, int passes) {
         probe::Json a = args;
         a["repeat"] = passes;
         ProbeRunLimits limits;
         limits.cpu_seconds = 60;
         limits.wall = std::chrono::seconds(90);
-        const ProbeSession session = ask_probe(program, {{call, a}}, limits);
+        const ProbeSession session = ask_probe(programs[p], {{call, a}}, limits);
         if (session.answers[0].kind != ProbeAnswer::Kind::result) {
-            timed.answered = false;
+            timed[p].answered = false;
         } else if (passes > 0) {
-            timed.checksum = session.answers[0].value;
+            timed[p].checksum = session.answers[0].value;
         }
         return session.run.wall_seconds;
     };
-    double best = HUGE_VAL;
-    double setup = HUGE_VAL;
-    for (int k = 0; k < 3 && timed.answered; ++k) {
-        setup = std::min(setup, run_once(0));
-        best = std::min(best, run_once(repeat));
+    std::vector<double> best(programs.size(), HUGE_VAL);
+    std::vector<double> setup(programs.size(), HUGE_VAL);
+    for (int round = 0; round < 3; ++round) {
+        for (std::size_t p = 0; p < programs.size(); ++p) {
+            if (!timed[p].answered) continue;
+            setup[p] = std::min(setup[p], run_once(p, 0));
+            best[p] = std::min(best[p], run_once(p, repeat));
+        }
     }
-    timed.seconds = std::max(1e-6, best - setup);
+    for (std::size_t p = 0; p < programs.size(); ++p)
+        timed[p].seconds = std::max(1e-6, best[p] - setup[p]);
     return timed;
+}
+
+WorkloadTime timed_workload(const std::filesystem::path& program, const std::string& call,
+                            const probe::Json& args, int repeat) {
+    return timed_workloads({program}, call, args, repeat).front();
 }
 
 WideVec widen(const Vec3& v) {

@@ -38,6 +38,13 @@ struct WorkloadTime {
 WorkloadTime timed_workload(const std::filesystem::path& program, const std::string& call,
                             const probe::Json& args, int repeat);
 
+/// The same for several programs, timed in turn: each of the three rounds runs every program
+/// once, so that a load that comes and goes (another job on the machine) slows them alike and
+/// their ratio holds; timed one after the other, a load during one program's runs alone skews it.
+std::vector<WorkloadTime> timed_workloads(const std::vector<std::filesystem::path>& programs,
+                                          const std::string& call, const probe::Json& args,
+                                          int repeat);
+
 /// Random inputs: each component uniform in [low, high); a direction uniform on the sphere (by
 /// rejection from the cube, away from the origin).
 Vec3 uniform(std::mt19937_64& rng, double low, double high);

@@ -246,8 +246,10 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
     const Json primitives = probe::primitive_list(scene.primitives);
     const Json args = {{"primitives", primitives}, {"rays", rays}, {"split", "sah"}};
     const std::string call = structure + "_workload";
-    const WorkloadTime reference = timed_workload(context.reference_probe, call, args, kPasses);
-    const WorkloadTime student = timed_workload(*probe.program, call, args, kPasses);
+    const std::vector<WorkloadTime> timed =
+        timed_workloads({context.reference_probe, *probe.program}, call, args, kPasses);
+    const WorkloadTime& reference = timed[0];
+    const WorkloadTime& student = timed[1];
     if (!student.answered || !reference.answered) {
         measure.outcome = Outcome::failed;
         measure.summary = !student.answered
