@@ -99,33 +99,36 @@ class WideCollapse {
         }
         const Costs left = solve(node.children[0]);
         const Costs right = solve(node.children[1]);
-        const auto split_cost = [&](int slots, Choice& choice) {
-            double best = std::numeric_limits<double>::infinity();
+        // The cheapest way for the two subtrees to share k slots, for k = 2 to 8.
+        Costs shared;
+        std::array<Choice, kWidth> shares;
+        for (int slots = 2; slots <= kWidth; ++slots) {
+            shared[slots - 1] = std::numeric_limits<double>::infinity();
             for (int left_slots = 1; left_slots < slots; ++left_slots) {
                 const int right_slots = slots - left_slots;
                 const double cost = left[left_slots - 1] + right[right_slots - 1];
-                if (cost < best) {
-                    best = cost;
-                    choice = {static_cast<std::uint8_t>(left_slots),
-                              static_cast<std::uint8_t>(right_slots)};
+                if (cost < shared[slots - 1]) {
+                    shared[slots - 1] = cost;
+                    shares[slots - 1] = {static_cast<std::uint8_t>(left_slots),
+                                         static_cast<std::uint8_t>(right_slots)};
                 }
             }
-            return best;
-        };
+        }
 
+        // One slot: a wide node whose eight slots the subtrees share, or one leaf.
         OneChild& one = as_one_[at];
         one.is_leaf = false;
-        costs[0] = area * kWideNodeCost + split_cost(kWidth, one.split);
+        one.split = shares[kWidth - 1];
+        costs[0] = area * kWideNodeCost + shared[kWidth - 1];
         if (node.end - node.begin <= kMaxLeafSize && area * node.test_cost <= costs[0]) {
             one.is_leaf = true;
             costs[0] = area * node.test_cost;
         }
+        // k slots: shared between the subtrees, or fewer when sharing costs no less.
         for (int slots = 2; slots <= kWidth; ++slots) {
-            Choice split;
-            const double cost = split_cost(slots, split);
-            if (cost < costs[slots - 2]) {
-                costs[slots - 1] = cost;
-                choices_[at][slots - 1] = split;
+            if (shared[slots - 1] < costs[slots - 2]) {
+                costs[slots - 1] = shared[slots - 1];
+                choices_[at][slots - 1] = shares[slots - 1];
             } else {
                 costs[slots - 1] = costs[slots - 2];
                 choices_[at][slots - 1] = choices_[at][slots - 2];
