@@ -2,6 +2,7 @@
 // mesh far from the origin, and (node_test.h) the two builds of the BVH's inner loop against each
 // other. Each must give exactly closest_hit's answer: same primitive, same t, compared with ==.
 
+#include <cmath>
 #include <cstring>
 #include <random>
 #include <string>
@@ -18,6 +19,14 @@
 using namespace raystep;
 
 namespace {
+
+// The mesh's faces as triangles.
+PrimitiveList mesh_primitives(const ClosedMesh& mesh) {
+    PrimitiveList list;
+    for (const auto& [a, b, c] : mesh.faces)
+        list.triangles.push_back({mesh.vertices[a], mesh.vertices[b], mesh.vertices[c]});
+    return list;
+}
 
 // The case's spheres and triangles (acceleration structures leave planes out).
 PrimitiveList bounded_primitives(const RayCase& ray_case) {
@@ -122,10 +131,10 @@ TEST_CASE("accel: the BVH's SSE2 node test computes what the plain one does, bit
         }
         Vec3 d{direction(rng), direction(rng), direction(rng)};
         Vec3 o{coordinate(rng), coordinate(rng), coordinate(rng)};
-        // Zero components, some with the origin exactly on a plane (0 * inf = NaN).
+        // Zero components (the stand-in scale), some with the origin exactly on a plane.
         if (k % 3 == 0) d[k % 3] = 0.0;
         if (k % 6 == 0) o[k % 3] = node.planes[k % 2][0];
-        const NodeRay ray(Ray{o, d});
+        const NodeRay ray(Ray{o, d}, 1.0 / d, 10.0, 100.0);
         float entry_scalar[BvhNode::kWidth];
         float entry_sse[BvhNode::kWidth];
         const float limit = k % 5 == 0 ? 3.0f : std::numeric_limits<float>::infinity();
@@ -141,3 +150,99 @@ TEST_CASE("accel: the BVH's SSE2 node test computes what the plain one does, bit
     }
 }
 #endif
+
+TEST_CASE("accel: the node test enters every box a ray passes through, zero direction "
+          "components and rays in a box's face included",
+          "[accel]") {
+    // Eighths, so that the point on the ray and the boxes' planes are exact in float and double:
+    // the ray passes through child 0 at t_hit exactly, often through its face or corner. Every
+    // other ray is scaled down, in a scene a millionth the size, with a direction 2^-45 long and
+    // t up to 10^8: there the drift added for a zero component (node_test.h) is what keeps the
+    // box.
+    std::mt19937_64 rng(80);
+    std::uniform_int_distribution<int> eighths(-40, 40);
+    std::uniform_int_distribution<int> sizes(0, 8);
+    const auto eighth = [&] { return eighths(rng) / 8.0; };
+    int zero_components = 0;
+    for (int k = 0; k < 20000; ++k) {
+        const bool small = k % 2 == 1;
+        const double length = small ? 0x1p-20 : 1.0;
+        const double speed = small ? 0x1p-45 : 1.0;
+        Vec3 o = length * Vec3{eighth(), eighth(), eighth()};
+        Vec3 d = speed * Vec3{eighth() / 4.0, eighth() / 4.0, eighth() / 4.0};
+        if (k % 3 == 0) d[k % 3] = 0.0;
+        if (k % 7 == 0) d[(k + 1) % 3] = 0.0;
+        const double largest = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
+        if (largest == 0.0) continue;
+        zero_components += (d.x == 0.0) + (d.y == 0.0) + (d.z == 0.0);
+        const double t_hit = std::abs(eighth()) * length / speed;
+        const Vec3 p = o + t_hit * d;
+
+        BvhNode node{};
+        for (int c = 0; c < BvhNode::kWidth; ++c) {
+            for (int axis = 0; axis < 3; ++axis) {
+                node.planes[2 * axis][c] = std::numeric_limits<float>::infinity();
+                node.planes[2 * axis + 1][c] = -std::numeric_limits<float>::infinity();
+            }
+        }
+        // Child 0 holds p, with a side of zero now and then; child 1 lies behind the origin,
+        // along the direction's largest component, where the ray never goes.
+        for (int axis = 0; axis < 3; ++axis) {
+            node.planes[2 * axis][0] = static_cast<float>(p[axis] - length * sizes(rng) / 8.0);
+            node.planes[2 * axis + 1][0] = static_cast<float>(p[axis] + length * sizes(rng) / 8.0);
+            const double behind = o[axis] - d[axis] * (0.5 * length / largest);
+            node.planes[2 * axis][1] = static_cast<float>(behind - 0.125 * length);
+            node.planes[2 * axis + 1][1] = static_cast<float>(behind + 0.125 * length);
+        }
+        const NodeRay ray(Ray{o, d}, 1.0 / d, 20.0 * length, 2.0 * t_hit + 1.0);
+        REQUIRE(ray.fits_float);
+        const float limit = k % 2 == 0 ? static_cast<float>(t_hit)
+                                       : std::numeric_limits<float>::infinity();
+        float entry[BvhNode::kWidth];
+        const int hits = ChildTest(ray).enter_children(node, limit, entry);
+        CAPTURE(k, o.x, o.y, o.z, d.x, d.y, d.z, t_hit);
+        REQUIRE((hits & 1) != 0);
+        CHECK(entry[0] <= t_hit);
+        CHECK((hits & 2) == 0);
+        CHECK((hits & ~3) == 0);
+    }
+    CHECK(zero_components > 5000);
+}
+
+TEST_CASE("accel: axis-parallel rays prune the BVH as well as tilted ones", "[accel]") {
+    // A zero direction component gets a stand-in scale (node_test.h): it must still reject the
+    // boxes the ray passes beside, or an orthographic view would walk the whole tree.
+    const PrimitiveList list = mesh_primitives(icosphere(4));
+    const Bvh bvh(list, BvhSplit::sah);
+    std::mt19937_64 rng(81);
+    std::uniform_real_distribution<double> across(-0.6, 0.6);
+    TraversalStats straight;
+    TraversalStats tilted;
+    for (int k = 0; k < 1000; ++k) {
+        const Vec3 origin{across(rng), across(rng), -3.0};
+        const Ray axis_ray{origin, Vec3(0, 0, 1)};
+        const Ray tilted_ray{origin, Vec3(1e-3, -1e-3, 1)};
+        const std::optional<PrimitiveHit> hit = bvh.closest_hit(axis_ray, &straight);
+        REQUIRE(hit.has_value());
+        CHECK(same(hit, closest_hit(axis_ray, list)));
+        REQUIRE(bvh.closest_hit(tilted_ray, &tilted).has_value());
+    }
+    CAPTURE(straight.nodes, tilted.nodes, bvh.node_count());
+    CHECK(straight.nodes < tilted.nodes * 11 / 10);
+}
+
+TEST_CASE("accel: a ray too long for the float node test is answered by testing every primitive",
+          "[accel]") {
+    // A direction 1e-20 long: the ray's t runs to 1e20, beyond what node_test.h computes in
+    // float, so the BVH tests every primitive, and still gives closest_hit's answer.
+    const PrimitiveList list = mesh_primitives(icosphere(2));
+    const Bvh bvh(list, BvhSplit::sah);
+    const Ray ray{Vec3(0.1, 0.2, -3.0), Vec3(1e-21, 2e-21, 1e-20)};
+    TraversalStats stats;
+    const std::optional<PrimitiveHit> hit = bvh.closest_hit(ray, &stats);
+    REQUIRE(hit.has_value());
+    CHECK(same(hit, closest_hit(ray, list)));
+    CHECK(stats.nodes == 0);
+    CHECK(stats.primitive_tests == list.triangles.size());
+    CHECK(bvh.occluded(ray));
+}

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 
 #include "solutions/4_accel/bvh_layout.h"
@@ -26,16 +27,19 @@ double search_limit(double t) {
     return t + kPruneSlack * std::abs(t);
 }
 
-// Whether the ray meets the scene's box within [t_min, t_max], clipped in double: a ray that
+// Where the ray leaves the scene's box, clipped to [t_min, t_max] in double, widened so that it is
+// never before the exact exit; nullopt when the ray misses the box in that range: a ray that
 // misses everything costs this and nothing more.
-inline bool enters_root(const Bvh::Impl& bvh, const Ray& ray, const Vec3& inverse) {
+inline std::optional<double> root_exit(const Bvh::Impl& bvh, const Ray& ray, const Vec3& inverse) {
     double entry = ray.t_min;
     double exit = ray.t_max;
     for (int axis = 0; axis < 3; ++axis) {
         clip_to_slab(ray.origin[axis], inverse[axis], bvh.root_box.min[axis],
                      bvh.root_box.max[axis], entry, exit);
     }
-    return entry <= widen_exit(exit);
+    exit = widen_exit(exit);
+    if (!(entry <= exit)) return std::nullopt;
+    return exit;
 }
 
 // A node or leaf waiting to be visited, and where the ray enters its box.
@@ -133,10 +137,16 @@ void walk(const Bvh::Impl& bvh, const Ray& ray, TraversalStats* stats, Visit vis
     if (bvh.slots.empty()) return;
     // 1 / D once, in double, for both the root box and the node ray
     const Vec3 inverse = 1.0 / ray.direction;
-    if (!enters_root(bvh, ray, inverse)) return;
-    const NodeRay node_ray(ray, inverse);
-    const ChildTest child_test(node_ray);
+    const std::optional<double> exit = root_exit(bvh, ray, inverse);
+    if (!exit) return;
+    const NodeRay node_ray(ray, inverse, bvh.plane_magnitude, *exit);
     float bound = rounded_up(search_limit(ray.t_max));
+    if (!node_ray.fits_float) {
+        // Too large or too small for the float node test (node_test.h): every primitive.
+        visit(0, static_cast<std::uint32_t>(bvh.slots.size()), bound);
+        return;
+    }
+    const ChildTest child_test(node_ray);
 
     // The node at hand stays in `current`; the other children it enters wait on the stack,
     // farthest deepest, so the nearest comes next.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 
 #include "solutions/4_accel/bvh_binary_tree.h"
@@ -212,7 +213,17 @@ void build_bvh(Bvh::Impl& bvh, const PrimitiveList& primitives, BvhSplit split) 
         if (id >= bvh.sphere_count)
             bvh.slot_triangles[slot] = primitives.triangles[id - bvh.sphere_count];
     }
-    if (!tree.empty()) bvh.root_box = tree[0].box;
+    if (!tree.empty()) {
+        bvh.root_box = tree[0].box;
+        // The node planes are the boxes' bounds rounded outward to float, by at most 2^-23 of
+        // themselves.
+        for (int axis = 0; axis < 3; ++axis) {
+            bvh.plane_magnitude =
+                std::max({bvh.plane_magnitude, std::abs(bvh.root_box.min[axis]),
+                          std::abs(bvh.root_box.max[axis])});
+        }
+        bvh.plane_magnitude *= 1.0 + 0x1p-22;
+    }
     bvh.root = collapse_to_wide(tree, bvh);
 }
 
