@@ -151,9 +151,10 @@ TEST_CASE("accel: the BVH's SSE2 node test computes what the plain one does, bit
 }
 #endif
 
-TEST_CASE("accel: the node test enters every box a ray passes through, zero direction "
-          "components and rays in a box's face included",
-          "[accel]") {
+TEST_CASE(
+    "accel: the node test enters every box a ray passes through, zero direction "
+    "components and rays in a box's face included",
+    "[accel]") {
     // Eighths, so that the point on the ray and the boxes' planes are exact in float and double:
     // the ray passes through child 0 at t_hit exactly, often through its face or corner. Every
     // other ray is scaled down, in a scene a millionth the size, with a direction 2^-45 long and
@@ -196,8 +197,8 @@ TEST_CASE("accel: the node test enters every box a ray passes through, zero dire
         }
         const NodeRay ray(Ray{o, d}, 1.0 / d, 20.0 * length, 2.0 * t_hit + 1.0);
         REQUIRE(ray.fits_float);
-        const float limit = k % 2 == 0 ? static_cast<float>(t_hit)
-                                       : std::numeric_limits<float>::infinity();
+        const float limit =
+            k % 2 == 0 ? static_cast<float>(t_hit) : std::numeric_limits<float>::infinity();
         float entry[BvhNode::kWidth];
         const int hits = ChildTest(ray).enter_children(node, limit, entry);
         CAPTURE(k, o.x, o.y, o.z, d.x, d.y, d.z, t_hit);

@@ -218,9 +218,8 @@ void build_bvh(Bvh::Impl& bvh, const PrimitiveList& primitives, BvhSplit split) 
         // The node planes are the boxes' bounds rounded outward to float, by at most 2^-23 of
         // themselves.
         for (int axis = 0; axis < 3; ++axis) {
-            bvh.plane_magnitude =
-                std::max({bvh.plane_magnitude, std::abs(bvh.root_box.min[axis]),
-                          std::abs(bvh.root_box.max[axis])});
+            bvh.plane_magnitude = std::max({bvh.plane_magnitude, std::abs(bvh.root_box.min[axis]),
+                                            std::abs(bvh.root_box.max[axis])});
         }
         bvh.plane_magnitude *= 1.0 + 0x1p-22;
     }

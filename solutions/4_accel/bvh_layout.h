@@ -40,7 +40,7 @@ struct BvhChild {
 struct Bvh::Impl {
     std::vector<BvhNode> nodes;
     BvhChild root;
-    Aabb root_box;  ///< in double: the whole scene, tested once per ray
+    Aabb root_box;                 ///< in double: the whole scene, tested once per ray
     double plane_magnitude = 0.0;  ///< no node's plane is larger in magnitude (node_test.h)
 
     /// Primitive ids in leaf order: 0 to S - 1 are the spheres, S onwards the triangles.

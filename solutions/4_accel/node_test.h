@@ -11,9 +11,9 @@
 // Bvh::closest_hit alone), and `raystep-reference bench --workload bunny --threads 1` from
 // 0.717-0.724x Embree's speed to 0.735-0.746x (primary) and from 0.49-0.56x to 0.56-0.57x
 // (incoherent). Its rounding error does not shrink with t, as (plane - origin) * scale's does: it
-// grows with the size of the numbers, |plane| |scale| and |origin| |scale|. The sizes are known before the
-// walk starts: no plane is larger than the scene's box (the node ray's `plane_magnitude`), so one
-// slack per axis covers every node:
+// grows with the size of the numbers, |plane| |scale| and |origin| |scale|. The sizes are known
+// before the walk starts: no plane is larger than the scene's box (the node ray's
+// `plane_magnitude`), so one slack per axis covers every node:
 // - scale is 1 / D rounded twice (double, then float): within 1.01 u of it, u = 2^-24;
 // - plane * scale rounds once more, so it is within 2.02 u |plane| |1 / D| of plane / D;
 // - the offset, computed in double and rounded to float once, is off by at most u |offset|;
@@ -69,10 +69,10 @@ inline float rounded_down(double x) {
 
 /// A ray prepared for node tests, once per query.
 struct NodeRay {
-    static constexpr double kLargest = 0x1p60;      ///< the sizes a fitting ray stays below
+    static constexpr double kLargest = 0x1p60;        ///< the sizes a fitting ray stays below
     static constexpr double kZeroAxisScale = 0x1p64;  ///< the stand-in 1 / D of a zero component
-    /// What a float result below 2^-126, where rounding is absolute, not relative, can be off by
-    /// in the two operations, with room to spare.
+    /// What the three float roundings (offset, multiply, subtract) can be off by below 2^-126,
+    /// where rounding is absolute, not relative, with room to spare.
     static constexpr double kSubnormalError = 0x1p-140;
 
     float scale[3];
@@ -179,10 +179,10 @@ class ChildTestSse {
                 t_far[axis] = _mm_sub_ps(_mm_mul_ps(far, scale_[axis]), far_offset_[axis]);
             }
             // In pairs rather than in a chain: two steps of latency instead of three.
-            const __m128 in = _mm_max_ps(_mm_max_ps(t_near[0], t_near[1]),
-                                         _mm_max_ps(t_near[2], t_min_));
-            const __m128 out = _mm_min_ps(_mm_min_ps(t_far[0], t_far[1]),
-                                          _mm_min_ps(t_far[2], limit4));
+            const __m128 in =
+                _mm_max_ps(_mm_max_ps(t_near[0], t_near[1]), _mm_max_ps(t_near[2], t_min_));
+            const __m128 out =
+                _mm_min_ps(_mm_min_ps(t_far[0], t_far[1]), _mm_min_ps(t_far[2], limit4));
             _mm_storeu_ps(entry + first, in);
             hits |= _mm_movemask_ps(_mm_cmple_ps(in, out)) << first;
         }
