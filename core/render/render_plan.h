@@ -8,7 +8,7 @@
 namespace raystep {
 
 /// Primitives from which the renderer builds a BVH; below, it tests every one. `raystep bench
-/// --threshold` measures that the reference BVH is faster per ray from 2 primitives on, but
+/// --threshold` measures that the reference BVH is faster per ray from 2 to 4 primitives on, but
 /// below 16 brute force costs at most about 160 ns a ray, 0.05 s for a 640 x 480 image: nothing
 /// a student or a lecturer notices, while a scene of a handful of primitives (every scene of
 /// stages 2 and 3) renders with stages 1 to 3 alone, before stage 4 exists (docs/stage4.md,
