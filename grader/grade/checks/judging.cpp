@@ -18,17 +18,16 @@ CheckDefinition case_check(std::string id, int stage, std::string kind, std::str
             }};
 }
 
-std::vector<WorkloadTime> timed_workloads(const std::vector<std::filesystem::path>& programs,
-                                          const std::string& call, const probe::Json& args,
-                                          int repeat) {
-    std::vector<WorkloadTime> timed(programs.size());
+std::vector<WorkloadTime> timed_workloads(const std::vector<WorkloadRun>& runs,
+                                          const std::string& call, int repeat) {
+    std::vector<WorkloadTime> timed(runs.size());
     const auto run_once = [&](std::size_t p, int passes) {
-        probe::Json a = args;
+        probe::Json a = runs[p].args;
         a["repeat"] = passes;
         ProbeRunLimits limits;
         limits.cpu_seconds = 60;
         limits.wall = std::chrono::seconds(90);
-        const ProbeSession session = ask_probe(programs[p], {{call, a}}, limits);
+        const ProbeSession session = ask_probe(runs[p].program, {{call, a}}, limits);
         if (session.answers[0].kind != ProbeAnswer::Kind::result) {
             timed[p].answered = false;
         } else if (passes > 0) {
@@ -36,23 +35,23 @@ std::vector<WorkloadTime> timed_workloads(const std::vector<std::filesystem::pat
         }
         return session.run.wall_seconds;
     };
-    std::vector<double> best(programs.size(), HUGE_VAL);
-    std::vector<double> setup(programs.size(), HUGE_VAL);
+    std::vector<double> best(runs.size(), HUGE_VAL);
+    std::vector<double> setup(runs.size(), HUGE_VAL);
     for (int round = 0; round < 3; ++round) {
-        for (std::size_t p = 0; p < programs.size(); ++p) {
+        for (std::size_t p = 0; p < runs.size(); ++p) {
             if (!timed[p].answered) continue;
             setup[p] = std::min(setup[p], run_once(p, 0));
             best[p] = std::min(best[p], run_once(p, repeat));
         }
     }
-    for (std::size_t p = 0; p < programs.size(); ++p)
+    for (std::size_t p = 0; p < runs.size(); ++p)
         timed[p].seconds = std::max(1e-6, best[p] - setup[p]);
     return timed;
 }
 
 WorkloadTime timed_workload(const std::filesystem::path& program, const std::string& call,
                             const probe::Json& args, int repeat) {
-    return timed_workloads({program}, call, args, repeat).front();
+    return timed_workloads({{program, args}}, call, repeat).front();
 }
 
 WideVec widen(const Vec3& v) {

@@ -38,12 +38,18 @@ struct WorkloadTime {
 WorkloadTime timed_workload(const std::filesystem::path& program, const std::string& call,
                             const probe::Json& args, int repeat);
 
+/// One program of a timed comparison, and the arguments its call gets (programs compared on the
+/// same work may still be asked for it differently, as stage 3 asks for two triangle tests).
+struct WorkloadRun {
+    std::filesystem::path program;
+    probe::Json args;
+};
+
 /// The same for several programs, timed in turn: each of the three rounds runs every program
 /// once, so that a load that comes and goes (another job on the machine) slows them alike and
 /// their ratio holds; timed one after the other, a load during one program's runs alone skews it.
-std::vector<WorkloadTime> timed_workloads(const std::vector<std::filesystem::path>& programs,
-                                          const std::string& call, const probe::Json& args,
-                                          int repeat);
+std::vector<WorkloadTime> timed_workloads(const std::vector<WorkloadRun>& runs,
+                                          const std::string& call, int repeat);
 
 /// Random inputs: each component uniform in [low, high); a direction uniform on the sphere (by
 /// rejection from the cube, away from the origin).

@@ -97,10 +97,11 @@ CheckMeasure measure_speed_error(const GradingContext& context, const BuiltProbe
     student_args["method"] = "intersect_triangle";
     Json reference_args = pairs;
     reference_args["method"] = "intersect_triangle_cramer";
-    const WorkloadTime student =
-        timed_workload(*probe.program, "triangle_workload", student_args, kPasses);
-    const WorkloadTime reference =
-        timed_workload(context.reference_probe, "triangle_workload", reference_args, kPasses);
+    const std::vector<WorkloadTime> timed =
+        timed_workloads({{*probe.program, student_args}, {context.reference_probe, reference_args}},
+                        "triangle_workload", kPasses);
+    const WorkloadTime& student = timed[0];
+    const WorkloadTime& reference = timed[1];
     if (!student.answered || !reference.answered) {
         measure.outcome = Outcome::failed;
         measure.summary = !student.answered ? "intersect_triangle did not answer the timed workload"

@@ -247,7 +247,7 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
     const Json args = {{"primitives", primitives}, {"rays", rays}, {"split", "sah"}};
     const std::string call = structure + "_workload";
     const std::vector<WorkloadTime> timed =
-        timed_workloads({context.reference_probe, *probe.program}, call, args, kPasses);
+        timed_workloads({{context.reference_probe, args}, {*probe.program, args}}, call, kPasses);
     const WorkloadTime& reference = timed[0];
     const WorkloadTime& student = timed[1];
     if (!student.answered || !reference.answered) {
