@@ -42,7 +42,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 
 #include "solutions/4_accel/bvh_layout.h"
 #include "stages/2_rays/ray.h"
@@ -86,7 +85,8 @@ struct NodeRay {
     /// `t_end` no hit lies beyond.
     NodeRay(const Ray& ray, const Vec3& inverse, double plane_magnitude, double t_end) {
         const double reach = std::max(std::abs(ray.t_min), t_end);
-        // & rather than &&: a branch each would cost more than the comparisons.
+        // Each condition joins fits_float with & rather than &&: a branch each would cost more
+        // than the comparisons.
         fits_float = reach < kLargest;
         for (int axis = 0; axis < 3; ++axis) {
             const double size = plane_magnitude + std::abs(ray.origin[axis]);
