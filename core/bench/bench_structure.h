@@ -76,6 +76,11 @@ struct BenchCandidate {
     /// The same structure built on one thread, for a like-for-like build time beside our
     /// single-threaded builders; empty when the structure has no such setting.
     BenchFactory make_single_threaded;
+    /// The instruction set it is held to, below the best the processor has; empty: not held.
+    std::string isa;
+    /// For a baseline that can be held to an instruction set (Embree's device option max_isa):
+    /// the same baseline held to `isa`. Empty when it cannot be.
+    std::function<BenchCandidate(const std::string& isa)> held_to;
 };
 
 }  // namespace raystep

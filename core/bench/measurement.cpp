@@ -151,6 +151,7 @@ std::vector<StructureMeasurement> measure_candidates(const std::vector<BenchCand
         result.name = candidates[k].name;
         result.baseline = candidates[k].baseline;
         result.builds = candidates[k].builds;
+        result.isa = candidates[k].isa;
         if (primitive_count > candidates[k].max_primitives) {
             result.failure = "skipped: " + grouped(primitive_count) +
                              " primitives, over its limit of " +

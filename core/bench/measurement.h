@@ -45,6 +45,7 @@ struct StructureMeasurement {
     std::string name;
     bool baseline = false;
     bool builds = true;  ///< false for brute force, which has nothing to build
+    std::string isa;     ///< the instruction set it was held to (BenchCandidate::isa)
     /// Why there are no numbers ("not implemented: ...", "failed: ...", "skipped: ..."); empty
     /// when the candidate was measured.
     std::string failure;

@@ -31,6 +31,11 @@ std::vector<std::string> speed_bar_lines(const std::string& scene,
     const StructureMeasurement* ours = measured(measurements, false, "BVH SAH");
     const StructureMeasurement* theirs = measured(measurements, true, "");
     if (!ours || !theirs || ray_sets.empty()) return {};
+    if (!theirs->isa.empty()) {
+        return {"speed bar: not judged against " + theirs->name +
+                ": the goals are set against the baseline at the best instructions the processor "
+                "has"};
+    }
 
     std::vector<std::string> lines;
     const std::string prefix = "speed bar, " + ours->name + " against " + theirs->name + ": ";

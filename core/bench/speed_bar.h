@@ -24,7 +24,8 @@ inline constexpr const char* kSpeedBarScene = "bunny";
 
 /// For the speed bar's scene: a line per goal whose workload was measured, with the ratio and
 /// whether the goal is met. None for another scene, or when BVH SAH or the baseline was not
-/// measured.
+/// measured; one line saying the bar is not judged when the baseline was held to an instruction
+/// set (BenchCandidate::isa).
 std::vector<std::string> speed_bar_lines(const std::string& scene,
                                          const std::vector<StructureMeasurement>& measurements,
                                          const std::vector<RaySet>& ray_sets);

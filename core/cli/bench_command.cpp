@@ -55,6 +55,22 @@ void print_header(int threads, const std::vector<BenchCandidate>& candidates) {
     }
 }
 
+// Adds the registered baselines to `candidates`, each held to the instruction set `isa` unless it
+// is empty; false when `isa` is given and no baseline can be held to it.
+bool add_baselines(const std::string& isa, std::vector<BenchCandidate>& candidates) {
+    bool held = false;
+    for (const BenchCandidate& baseline : registered_baselines()) {
+        if (isa.empty()) {
+            candidates.push_back(baseline);
+        } else if (baseline.held_to) {
+            candidates.push_back(baseline.held_to(isa));
+            candidates.back().baseline = true;
+            held = true;
+        }
+    }
+    return isa.empty() || held;
+}
+
 // A progress line on stderr, redrawn in place, when stderr is a terminal.
 class ProgressLine {
   public:
@@ -226,6 +242,13 @@ CLI::App* add_bench_command(CLI::App& app, BenchArguments& arguments) {
         ->add_option("--threads", arguments.threads,
                      "Threads of the all-threads columns (default: every hardware thread)")
         ->check(CLI::Range(1, 1024));
+    command
+        ->add_option("--embree-isa", arguments.embree_isa,
+                     "Hold Embree to this instruction set (its device option max_isa), to compare "
+                     "like with like: the reference is compiled for the compiler's default, SSE2 "
+                     "on x86-64. The speed bar is then not judged (raystep-reference only)")
+        ->check(CLI::IsMember({"sse2", "sse4.2", "avx", "avx2", "avx512"}))
+        ->excludes(pareto);
     command->add_flag("--quick", arguments.quick,
                       "An eighth of the rays, for a smoke test (with --pareto: short timing "
                       "samples and one acne scene)");
@@ -245,8 +268,13 @@ int run_bench(const BenchArguments& arguments) {
         return study({arguments.cases, arguments.out, arguments.quick});
     }
     std::vector<BenchCandidate> candidates = our_structures();
-    for (const BenchCandidate& baseline : registered_baselines())
-        candidates.push_back(baseline);
+    if (!add_baselines(arguments.embree_isa, candidates)) {
+        std::fprintf(stderr,
+                     "raystep bench --embree-isa: this build has no Embree to hold to %s; Embree "
+                     "is linked only into raystep-reference, where libembree-dev is installed\n",
+                     arguments.embree_isa.c_str());
+        return 1;
+    }
 
     MeasureOptions options;
     options.threads = arguments.threads > 0

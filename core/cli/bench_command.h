@@ -8,7 +8,8 @@
 namespace raystep {
 
 /// `raystep bench [--workload NAME]... [--growth] [--threshold] [--epsilon [--chart FILE]]
-/// [--threads N] [--quick]` or `raystep bench --pareto [--cases PATH]... [--out FOLDER] [--quick]`
+/// [--threads N] [--embree-isa ISA] [--quick]` or
+/// `raystep bench --pareto [--cases PATH]... [--out FOLDER] [--quick]`
 struct BenchArguments {
     std::vector<std::string> workloads;  ///< scenes or workloads; none: every one
     bool growth = false;                 ///< the growth table
@@ -18,8 +19,9 @@ struct BenchArguments {
     bool pareto = false;                 ///< the speed-against-error study, alone
     std::vector<std::string> cases;      ///< its case files or folders; none: stage 3's own
     std::string out;                     ///< where its charts and JSON go
-    int threads = 0;     ///< the all-threads columns' threads; 0: every hardware thread
-    bool quick = false;  ///< an eighth of the rays, for smoke tests
+    int threads = 0;         ///< the all-threads columns' threads; 0: every hardware thread
+    std::string embree_isa;  ///< the instruction set Embree is held to; empty: its best
+    bool quick = false;      ///< an eighth of the rays, for smoke tests
 };
 
 /// Adds the `bench` subcommand to `app`; parsing fills `arguments`. An unknown workload or a
@@ -30,9 +32,9 @@ CLI::App* add_bench_command(CLI::App& app, BenchArguments& arguments);
 /// raystep-reference), and prints a table per workload: docs/stage4.md, "raystep bench"; with
 /// --epsilon, the acne and leaks of each ray offset rule on the acne scenes: docs/stage6.md,
 /// "Measuring acne"; with --pareto, only the speed-against-error study of docs/stage3.md, which
-/// raystep-reference alone links (pareto_registry.h). Without --workload, --growth, --threshold or --epsilon, runs them all. A
-/// structure that is a stub or fails gets its reason in its row and the others go on. Exit code 0;
-/// 1 when a cross-check found two structures that return different hits.
+/// raystep-reference alone links (pareto_registry.h). Without --workload, --growth, --threshold or
+/// --epsilon, runs them all. A structure that is a stub or fails gets its reason in its row and the
+/// others go on. Exit code 0; 1 when a cross-check found two structures that return different hits.
 int run_bench(const BenchArguments& arguments);
 
 }  // namespace raystep

@@ -202,3 +202,18 @@ TEST_CASE("speed_bar_lines: each goal's ratio and verdict, on the bunny only", "
     CHECK(speed_bar_lines("spheres", {ours, theirs}, sets).empty());
     CHECK(speed_bar_lines("bunny", {ours}, sets).empty());
 }
+
+TEST_CASE("speed_bar_lines: not judged against a baseline held to an instruction set", "[bench]") {
+    const StructureMeasurement ours = measured("BVH SAH", 100.0, 1000000, 0.5, true);
+    StructureMeasurement theirs =
+        measured("Embree 3.13.5 (max_isa=sse2)", 40.0, 1000000, 0.5, false);
+    theirs.baseline = true;
+    theirs.isa = "sse2";
+    const std::vector<RaySet> sets{{"bunny-primary", "", {}}};
+
+    const std::vector<std::string> lines = speed_bar_lines("bunny", {ours, theirs}, sets);
+    REQUIRE(lines.size() == 1);
+    CHECK(lines[0] ==
+          "speed bar: not judged against Embree 3.13.5 (max_isa=sse2): the goals are set against "
+          "the baseline at the best instructions the processor has");
+}

@@ -12,20 +12,25 @@ namespace raystep {
 
 namespace {
 
-BenchCandidate embree_candidate() {
+// Embree held to the instruction set `isa` (its device option max_isa), or at its best when
+// `isa` is empty.
+BenchCandidate embree_candidate(const std::string& isa) {
     BenchCandidate candidate;
     candidate.name = std::string("Embree ") + RTC_VERSION_STRING;
+    if (!isa.empty()) candidate.name += " (max_isa=" + isa + ")";
+    candidate.isa = isa;
     // Embree as it is used: its builds on every hardware thread
-    candidate.make = [](const PrimitiveList& primitives) {
-        return std::make_unique<EmbreeScene>(embree_device(0), primitives);
+    candidate.make = [isa](const PrimitiveList& primitives) {
+        return std::make_unique<EmbreeScene>(embree_device(0, isa), primitives);
     };
-    candidate.make_single_threaded = [](const PrimitiveList& primitives) {
-        return std::make_unique<EmbreeScene>(embree_device(1), primitives);
+    candidate.make_single_threaded = [isa](const PrimitiveList& primitives) {
+        return std::make_unique<EmbreeScene>(embree_device(1, isa), primitives);
     };
+    candidate.held_to = embree_candidate;
     return candidate;
 }
 
-const BaselineRegistration registration(embree_candidate());
+const BaselineRegistration registration(embree_candidate(""));
 
 }  // namespace
 
