@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "grader/grade/report_json.h"
+#include "grader/grade/write_reports.h"
 
 namespace raystep::grade {
 
@@ -26,7 +27,8 @@ std::optional<GradeReport> finished_report(const fs::path& folder) {
 std::string csv_field(const std::string& text) {
     if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
     std::string quoted = "\"";
-    for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+    for (const char c : text)
+        quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
     return quoted + "\"";
 }
 
@@ -53,15 +55,19 @@ std::vector<fs::path> class_submissions(const fs::path& folder) {
 
 std::string grades_csv(const std::vector<GradeReport>& reports) {
     std::string csv = "student,score,max_score";
-    for (int stage = 1; stage <= 7; ++stage) csv += ",stage" + std::to_string(stage);
+    for (int stage = 1; stage <= 7; ++stage)
+        csv += ",stage" + std::to_string(stage);
     csv += ",pipeline,checks_passed,checks,seconds\r\n";
     for (const GradeReport& r : reports) {
         const std::vector<std::pair<double, double>> stages = r.stage_scores();
-        const std::size_t passed = static_cast<std::size_t>(std::count_if(
-            r.checks.begin(), r.checks.end(), [](const CheckResult& c) { return c.outcome == Outcome::passed; }));
+        const std::size_t passed = static_cast<std::size_t>(
+            std::count_if(r.checks.begin(), r.checks.end(),
+                          [](const CheckResult& c) { return c.outcome == Outcome::passed; }));
         csv += csv_field(r.student) + "," + number(r.score()) + "," + number(r.max_score());
         for (int stage = 1; stage <= 7; ++stage) {
-            csv += "," + (static_cast<std::size_t>(stage) < stages.size() ? number(stages[static_cast<std::size_t>(stage)].first) : "0.00");
+            csv += "," + (static_cast<std::size_t>(stage) < stages.size()
+                              ? number(stages[static_cast<std::size_t>(stage)].first)
+                              : "0.00");
         }
         csv += "," + number(stages.empty() ? 0.0 : stages[0].first) + "," + std::to_string(passed) +
                "," + std::to_string(r.checks.size()) + "," +

@@ -30,9 +30,4 @@ struct GradeOptions {
 GradeReport grade_submission(const GradeOptions& options, const Rubric& rubric,
                              const ProbeToolchain& toolchain);
 
-/// Writes every report of `report` into `folder`: results.json (Gradescope), prairielearn.json,
-/// junit.xml, index.html (the student's view), instructor.html (every check) and, last,
-/// report.json (the whole report, which a resumed batch takes as the mark of a finished one).
-void write_reports(const GradeReport& report, const std::filesystem::path& folder);
-
 }  // namespace raystep::grade

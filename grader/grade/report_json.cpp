@@ -56,8 +56,11 @@ nlohmann::json report_json(const GradeReport& report) {
     for (const CheckResult& c : report.checks) {
         nlohmann::json counterexamples = nlohmann::json::array();
         for (const Counterexample& x : c.counterexamples) {
-            counterexamples.push_back(
-                {{"input", x.input}, {"expected", x.expected}, {"got", x.got}, {"reproduce", x.reproduce}});
+            counterexamples.push_back({{"input", x.input},
+                                       {"expected", x.expected},
+                                       {"got", x.got},
+                                       {"reproduce", x.reproduce},
+                                       {"student_reproduce", x.student_reproduce}});
         }
         checks.push_back({{"id", c.id},
                           {"stage", c.stage},
@@ -78,6 +81,7 @@ nlohmann::json report_json(const GradeReport& report) {
     }
     return {{"submission", report.submission},
             {"student", report.student},
+            {"intake_problem", report.intake_problem},
             {"score", report.score()},
             {"max_score", report.max_score()},
             {"times",
@@ -92,6 +96,7 @@ GradeReport report_from_json(const nlohmann::json& j) {
     GradeReport report;
     report.submission = j.at("submission").get<std::string>();
     report.student = j.at("student").get<std::string>();
+    report.intake_problem = j.value("intake_problem", "");
     const nlohmann::json& times = j.at("times");
     report.times = {times.at("intake").get<double>(), times.at("build").get<double>(),
                     times.at("checks").get<double>(), times.at("reports").get<double>()};
@@ -107,12 +112,15 @@ GradeReport report_from_json(const nlohmann::json& j) {
         check.visibility = visibility_from(c.at("visibility").get<std::string>());
         check.summary = c.at("summary").get<std::string>();
         for (const nlohmann::json& x : c.at("counterexamples")) {
-            check.counterexamples.push_back({x.at("input").get<std::string>(), x.at("expected").get<std::string>(),
-                                             x.at("got").get<std::string>(), x.at("reproduce").get<std::string>()});
+            check.counterexamples.push_back(
+                {x.at("input").get<std::string>(), x.at("expected").get<std::string>(),
+                 x.at("got").get<std::string>(), x.at("reproduce").get<std::string>(),
+                 x.value("student_reproduce", "")});
         }
         check.metrics = metrics_from(c.at("metrics"));
         const nlohmann::json& images = c.at("images");
-        check.images = {images.at("reference").get<std::string>(), images.at("student").get<std::string>(),
+        check.images = {images.at("reference").get<std::string>(),
+                        images.at("student").get<std::string>(),
                         images.at("difference").get<std::string>()};
         check.details = c.at("details").get<std::string>();
         report.checks.push_back(std::move(check));

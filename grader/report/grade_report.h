@@ -33,7 +33,10 @@ struct Counterexample {
     std::string input;      ///< the call or case, readable
     std::string expected;   ///< the grader's answer
     std::string got;        ///< the submission's answer
-    std::string reproduce;  ///< a command that reruns exactly this case
+    std::string reproduce;  ///< the instructor's command that reruns exactly this case
+    /// What a student can run in the student release to see this case again (a `raystep check`
+    /// or `raystep trace` command, or the call written out); empty when there is none.
+    std::string student_reproduce;
 };
 
 /// An image a render check made: reference, student and difference, beside the report.
@@ -70,6 +73,9 @@ struct PhaseTimes {
 struct GradeReport {
     std::string submission;  ///< as given on the command line
     std::string student;     ///< a name for the class summary: the folder's or zip's name
+    /// Why the submission's files could not all be taken, in words (not an archive, over a
+    /// budget, ...); empty when they were. Every report says it.
+    std::string intake_problem;
     std::vector<CheckResult> checks;
     PhaseTimes times;
     double score() const;

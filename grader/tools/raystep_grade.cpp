@@ -13,6 +13,7 @@
 
 #include "grader/grade/batch.h"
 #include "grader/grade/grade_submission.h"
+#include "grader/grade/write_reports.h"
 #include "grader/grade/release.h"
 #include "grader/report/audience.h"
 #include "grader/report/console_summary.h"

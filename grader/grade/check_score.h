@@ -1,0 +1,13 @@
+#pragma once
+
+#include "grader/grade/check_definition.h"
+#include "grader/grade/rubric.h"
+#include "grader/report/grade_report.h"
+
+namespace raystep::grade {
+
+/// The check's result as every report shows it: what it measured, scored by its rubric entry.
+CheckResult score_check(const CheckDefinition& check, const CheckMeasure& measure,
+                        const Rubric& rubric);
+
+}  // namespace raystep::grade
