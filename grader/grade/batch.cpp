@@ -3,9 +3,12 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <map>
 
 #include "grader/grade/report_json.h"
+#include "grader/grade/submission.h"
 #include "grader/grade/write_reports.h"
+#include "grader/sandbox/sandbox_paths.h"
 
 namespace raystep::grade {
 
@@ -40,16 +43,22 @@ std::string number(double x) {
 
 }  // namespace
 
-std::vector<fs::path> class_submissions(const fs::path& folder) {
-    std::vector<fs::path> entries;
+std::vector<ClassEntry> class_submissions(const fs::path& folder, const fs::path& skip) {
+    const fs::path output = absolute_normal(skip);
+    std::vector<fs::path> paths;
     for (const auto& entry : fs::directory_iterator(folder)) {
-        const fs::file_status status = entry.symlink_status();
-        if (fs::is_directory(status) ||
-            (fs::is_regular_file(status) && entry.path().extension() == ".zip")) {
-            entries.push_back(entry.path());
-        }
+        const fs::path path = absolute_normal(entry.path());
+        if (is_within(output, path)) continue;
+        paths.push_back(entry.path());
     }
-    std::sort(entries.begin(), entries.end());
+    std::sort(paths.begin(), paths.end());
+    std::vector<ClassEntry> entries;
+    std::map<std::string, int> taken;
+    for (const fs::path& path : paths) {
+        const std::string base = submission_name(path);
+        const int seen = ++taken[base];
+        entries.push_back({path, seen == 1 ? base : base + "-" + std::to_string(seen)});
+    }
     return entries;
 }
 
@@ -78,15 +87,15 @@ std::string grades_csv(const std::vector<GradeReport>& reports) {
 
 BatchTally grade_class(const BatchOptions& options, const Rubric& rubric,
                        const ProbeToolchain& toolchain) {
-    const std::vector<fs::path> submissions = class_submissions(options.folder);
+    const std::vector<ClassEntry> submissions = class_submissions(options.folder, options.output);
     BatchTally tally;
     std::vector<GradeReport> reports;
     for (std::size_t k = 0; k < submissions.size(); ++k) {
-        const fs::path& path = submissions[k];
-        const std::string name = path.stem().string();
-        const fs::path folder = options.output / name;
+        const ClassEntry& entry = submissions[k];
+        const fs::path folder = options.output / entry.name;
         if (options.progress) {
-            std::fprintf(stderr, "\r\033[K[%zu/%zu] %s", k + 1, submissions.size(), name.c_str());
+            std::fprintf(stderr, "\r\033[K[%zu/%zu] %s", k + 1, submissions.size(),
+                         entry.name.c_str());
         }
         if (std::optional<GradeReport> done = finished_report(folder)) {
             reports.push_back(std::move(*done));
@@ -95,18 +104,19 @@ BatchTally grade_class(const BatchOptions& options, const Rubric& rubric,
         }
         try {
             GradeOptions one;
-            one.submission = path;
+            one.submission = entry.submission;
             one.output = folder;
             one.jobs = options.jobs;
             one.reference_probe = options.reference_probe;
-            one.reproduce = "raystep-grade submission " + path.string();
+            one.reproduce = "raystep-grade submission " + entry.submission.string();
             GradeReport report = grade_submission(one, rubric, toolchain);
+            report.student = entry.name;
             write_reports(report, folder);
-            fs::remove_all(folder / "work");
             reports.push_back(std::move(report));
             ++tally.graded;
         } catch (const std::exception& error) {
-            std::fprintf(stderr, "\nraystep-grade: %s: %s\n", path.string().c_str(), error.what());
+            std::fprintf(stderr, "\nraystep-grade: %s: %s\n", entry.submission.string().c_str(),
+                         error.what());
             ++tally.failed;
         }
     }

@@ -16,16 +16,26 @@ struct BatchOptions {
     std::filesystem::path reference_probe;
 };
 
-/// The submissions in `folder`, by name: every sub-folder and .zip file, in name order.
-std::vector<std::filesystem::path> class_submissions(const std::filesystem::path& folder);
+/// One student's submission in a class folder, and the folder its reports go to.
+struct ClassEntry {
+    std::filesystem::path submission;
+    std::string name;  ///< submission_name (submission.h), made unique in the class: "-2", "-3"
+};
+
+/// The submissions in `folder`, in name order: every entry (folder, archive, or anything else,
+/// which then gets a report saying what it is) but `skip`, the batch's own output folder where
+/// it lies inside the class folder, and anything that holds it.
+std::vector<ClassEntry> class_submissions(const std::filesystem::path& folder,
+                                          const std::filesystem::path& skip);
 
 /// Grades every submission of the class, one after another, each with `jobs` compiles and checks
-/// at a time, and writes its reports to OUT/<name>/. Resumable: a submission whose report.json
-/// is already complete is not graded again, so a batch stopped halfway picks up where it stopped.
-/// A submission that breaks the grader itself (which should not happen) is reported on stderr and
-/// skipped, and the rest go on. Writes OUT/grades.csv: one row per student with the total and
-/// each stage's score. Returns the number of submissions graded now, skipped (already done), and
-/// failed.
+/// at a time, and writes its reports to OUT/<name>/: a name made safe, so that nothing is
+/// written or removed outside OUT whatever a submission is called. Resumable: a submission whose
+/// report.json is already complete is not graded again, so a batch stopped halfway picks up where
+/// it stopped. A submission that breaks the grader itself (which should not happen) is reported on
+/// stderr and skipped, and the rest go on. Writes OUT/grades.csv: one row per student with the
+/// total and each stage's score. Returns the number of submissions graded now, skipped (already
+/// done), and failed.
 struct BatchTally {
     std::size_t graded = 0;
     std::size_t resumed = 0;

@@ -39,7 +39,7 @@ std::string answer_text(const ProbeAnswer& answer) {
         case ProbeAnswer::Kind::unanswered:
             return "no answer (the probe stopped)";
         case ProbeAnswer::Kind::malformed:
-            return "an answer the protocol does not allow";
+            return "an answer the protocol does not allow: " + clipped(answer.message);
     }
     return "";
 }

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <mutex>
 #include <thread>
 
 #include "grader/grade/check_definition.h"
@@ -11,6 +10,10 @@
 #include "grader/grade/probe_builder.h"
 #include "grader/grade/stage_manifests.h"
 #include "grader/grade/submission.h"
+#include "grader/grade/work_folder.h"
+#include "grader/sandbox/sandbox.h"
+#include "grader/sandbox/sandbox_paths.h"
+#include "grader/sandbox/sandbox_user.h"
 
 namespace raystep::grade {
 
@@ -22,59 +25,110 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// The checks this grade runs: all of them, narrowed by --check, --stage and --no-speed.
+std::vector<CheckDefinition> checks_to_run(const GradeOptions& options, const Rubric& rubric) {
+    std::vector<CheckDefinition> checks = all_checks();
+    const auto keep_only = [&](const auto& keep) {
+        checks.erase(std::remove_if(checks.begin(), checks.end(),
+                                    [&](const CheckDefinition& c) { return !keep(c); }),
+                     checks.end());
+    };
+    if (!options.only_check.empty()) {
+        keep_only([&](const CheckDefinition& c) { return c.id == options.only_check; });
+        if (checks.empty()) throw std::invalid_argument("no check " + options.only_check);
+    }
+    if (options.only_stage) {
+        keep_only([&](const CheckDefinition& c) { return c.stage == *options.only_stage; });
+        if (checks.empty()) {
+            throw std::invalid_argument("no checks for stage " +
+                                        std::to_string(*options.only_stage));
+        }
+    }
+    if (options.skip_speed) keep_only([](const CheckDefinition& c) { return c.kind != "speed"; });
+    for (const CheckDefinition& check : checks)
+        rubric.entry(check.id);  // every check is scored
+    return checks;
+}
+
+ProbesNeeded probes_needed(const std::vector<CheckDefinition>& checks) {
+    ProbesNeeded needed;
+    for (const CheckDefinition& check : checks) {
+        if (check.stage == 0) {
+            needed.pipeline = true;
+        } else {
+            needed.stages.insert(check.stage);
+        }
+        if (check.kind == "speed") needed.reference = true;
+    }
+    return needed;
+}
+
+// The scenes the render checks load, copied into the work folder: the sandbox's user reads them
+// there whatever the permissions of the repository the grader runs from.
+fs::path copy_scenes(const fs::path& source, const fs::path& work) {
+    const fs::path copy = work / "source";
+    fs::create_directories(copy);
+    fs::copy(source / "scenes", copy / "scenes", fs::copy_options::recursive);
+    return copy;
+}
+
+// Without bubblewrap, only file permissions keep the reference from a probe, which could otherwise
+// run the reference probe or load a reference stage and answer with it. Grading then waits until
+// the sandbox's user can reach none of them.
+void require_reference_shut(const GradeOptions& options, const ProbeToolchain& toolchain) {
+    if (bubblewrap_available()) return;
+    std::vector<fs::path> secrets = {options.reference_probe, toolchain.source / "solutions"};
+    for (const auto& [number, library] : toolchain.stage_libraries)
+        secrets.push_back(library);
+    const std::vector<fs::path> open = open_to_sandbox_user(secrets);
+    if (open.empty()) return;
+    std::string list;
+    for (const fs::path& path : open)
+        list += "\n  " + path.string();
+    throw std::runtime_error(
+        "bubblewrap cannot make a sandbox here, and the sandbox's user could reach the reference "
+        "solution through these, so a submission could borrow its answers:" +
+        list +
+        "\nShut them to others (chmod -R o-rwx on the build and solutions/ folders, as "
+        "grader/gradescope/setup.sh does), or grade where bubblewrap works.");
+}
+
 }  // namespace
 
 GradeReport grade_submission(const GradeOptions& options, const Rubric& rubric,
                              const ProbeToolchain& toolchain) {
+    const fs::path submission_path = absolute_normal(options.submission);
+    const fs::path output = absolute_normal(options.output);
+    const std::vector<CheckDefinition> checks = checks_to_run(options, rubric);
+    require_reference_shut(options, toolchain);
+    fs::create_directories(output);
+    const WorkFolder work(
+        options.work_parent.empty() ? work_parent_for(output) : options.work_parent,
+        options.keep_work);
+
     GradeReport report;
     report.submission = options.submission.string();
-    const fs::path work = options.output / "work";
-    fs::remove_all(work);
-    fs::create_directories(work);
-
+    report.work_folder = work.kept() ? work.path().string() : "";
     auto start = std::chrono::steady_clock::now();
-    const Submission submission = take_submission(
-        options.submission, read_stage_manifests(toolchain.source), work, toolchain);
+    const Submission submission =
+        take_submission(submission_path, read_stage_manifests(toolchain.source), work.path());
     report.student = submission.name;
+    report.intake_problem = submission.problem;
     report.times.intake = seconds_since(start);
 
     start = std::chrono::steady_clock::now();
-    const ProbeSet probes = build_probes(submission, toolchain, work, options.jobs);
+    const ProbeSet probes = build_probes(submission, toolchain, options.reference_probe,
+                                         work.path(), probes_needed(checks), options.jobs);
     report.times.build = seconds_since(start);
 
     start = std::chrono::steady_clock::now();
     GradingContext context;
     context.probes = &probes;
-    context.source = toolchain.source;
-    context.report_folder = options.output;
-    context.reference_probe = options.reference_probe;
+    context.source = copy_scenes(toolchain.source, work.path());
+    context.report_folder = output;
+    context.reference_probe = probes.reference.program.value_or(fs::path());
     context.reproduce = options.reproduce;
     context.only_case = options.only_case;
-
-    std::vector<CheckDefinition> checks = all_checks();
-    if (!options.only_check.empty()) {
-        checks.erase(
-            std::remove_if(checks.begin(), checks.end(),
-                           [&](const CheckDefinition& c) { return c.id != options.only_check; }),
-            checks.end());
-        if (checks.empty()) throw std::invalid_argument("no check " + options.only_check);
-    }
-    if (options.only_stage) {
-        checks.erase(std::remove_if(
-                         checks.begin(), checks.end(),
-                         [&](const CheckDefinition& c) { return c.stage != *options.only_stage; }),
-                     checks.end());
-        if (checks.empty())
-            throw std::invalid_argument("no checks for stage " +
-                                        std::to_string(*options.only_stage));
-    }
-    if (options.skip_speed) {
-        checks.erase(std::remove_if(checks.begin(), checks.end(),
-                                    [](const CheckDefinition& c) { return c.kind == "speed"; }),
-                     checks.end());
-    }
-    for (const CheckDefinition& check : checks)
-        rubric.entry(check.id);  // every check is scored
 
     // Checks run `jobs` at a time: each talks to its own probe process. Speed checks run alone
     // afterwards, so that nothing else competes for the processors while they time.

@@ -11,22 +11,27 @@
 namespace raystep::grade {
 
 struct GradeOptions {
-    std::filesystem::path submission;  ///< a folder or a .zip
-    std::filesystem::path output;      ///< the reports go here; work/ beneath holds the build
-    int jobs = 1;                      ///< compiles and checks run this many at a time
-    std::string only_check;            ///< run just this check (--check), for reproducing
-    std::optional<int> only_stage;     ///< run just this stage's checks (--stage; 0: the pipeline)
-    bool skip_speed = false;           ///< leave the speed checks out (--no-speed)
+    std::filesystem::path submission;  ///< a folder or an archive of any kind, or anything at all
+    std::filesystem::path output;      ///< the reports go here
+    /// Where the work folder is made; empty: as work_parent_for(output) says (work_folder.h).
+    std::filesystem::path work_parent;
+    bool keep_work = false;  ///< keep the work folder after grading (--keep-work), to look into
+    int jobs = 1;            ///< compiles and checks run this many at a time
+    std::string only_check;  ///< run just this check (--check), for reproducing
+    std::optional<int> only_stage;  ///< run just this stage's checks (--stage; 0: the pipeline)
+    bool skip_speed = false;        ///< leave the speed checks out (--no-speed)
     std::optional<std::size_t> only_case;  ///< and of it just this case (--case)
     std::filesystem::path reference_probe;
     std::string reproduce;  ///< how a reproduce command starts: "raystep-grade submission PATH"
 };
 
-/// Grades one submission: takes its manifest files (submission.h), builds its probes
-/// (probe_builder.h), runs every check (checks/) and scores each by the rubric. Nothing the
-/// submission does can stop it: every check ends with an outcome, and the report is complete.
+/// Grades one submission: takes its manifest files (submission.h) into a fresh work folder
+/// (work_folder.h), builds the probes its checks need (probe_builder.h), runs the checks
+/// (checks/) and scores each by the rubric. Relative paths are taken from the current folder.
+/// Nothing the submission is or does can stop it: whatever it holds, every check ends with an
+/// outcome, and the report is complete (intake_problem says why files could not be taken).
 /// Throws only for the grader's own problems (no toolchain, a rubric without an entry for a
-/// check, a submission path that is neither a folder nor a zip).
+/// check, an unknown --check, a work folder it cannot make).
 GradeReport grade_submission(const GradeOptions& options, const Rubric& rubric,
                              const ProbeToolchain& toolchain);
 

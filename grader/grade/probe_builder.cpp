@@ -3,12 +3,16 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <csignal>
+#include <map>
 #include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
 
 #include "grader/sandbox/sandbox.h"
+#include "grader/sandbox/sandbox_paths.h"
+#include "grader/sandbox/sandbox_user.h"
 
 namespace raystep::grade {
 
@@ -41,19 +45,42 @@ void copy_headers(const fs::path& source, const fs::path& include) {
     }
 }
 
-// Compiler limits: a template bomb or a huge constant array must end, not stall the grading.
-SandboxPolicy compile_policy(const fs::path& include, const fs::path& sources,
-                             const fs::path& objects) {
-    SandboxPolicy policy;
-    policy.read_only = {include, sources};
-    policy.writable = objects;
-    policy.working_directory = objects;
-    policy.limits.cpu_seconds = 60;
-    policy.limits.wall = std::chrono::seconds(120);
-    policy.limits.address_space_bytes = std::size_t{3} << 30;
-    policy.limits.file_size_bytes = 256u << 20;
-    policy.limits.output_bytes = 64u << 10;
-    return policy;
+// What a probe's link reads, copied into work/link: the parts every probe shares in common/, and
+// each reference stage in stageN/, so that a link is shown only the stages it takes from the
+// reference. System libraries stay where they are: the sandbox shows /usr.
+struct StagedToolchain {
+    fs::path common;
+    std::vector<std::string> objects;    ///< the probe's calls, the renderer, core/check
+    std::vector<std::string> libraries;  ///< below the stages, in link order
+    std::map<int, fs::path> stage_libraries;
+};
+
+StagedToolchain stage_toolchain(const ProbeToolchain& toolchain, const fs::path& link) {
+    StagedToolchain staged;
+    staged.common = link / "common";
+    fs::create_directories(staged.common);
+    std::size_t index = 0;
+    const auto copy_common = [&](const fs::path& file) {
+        // Numbered, so that two inputs of the same name (view.cpp.o of two libraries) never meet.
+        const fs::path target =
+            staged.common / (std::to_string(index++) + "-" + file.filename().string());
+        fs::copy_file(file, target, fs::copy_options::overwrite_existing);
+        return target.string();
+    };
+    for (const fs::path& object : toolchain.probe_objects)
+        staged.objects.push_back(copy_common(object));
+    for (const fs::path& library : toolchain.libraries) {
+        staged.libraries.push_back(is_within(library, "/usr") ? library.string()
+                                                              : copy_common(library));
+    }
+    for (const auto& [number, library] : toolchain.stage_libraries) {
+        const fs::path folder = link / ("stage" + std::to_string(number));
+        fs::create_directories(folder);
+        staged.stage_libraries[number] = folder / library.filename();
+        fs::copy_file(library, staged.stage_libraries[number],
+                      fs::copy_options::overwrite_existing);
+    }
+    return staged;
 }
 
 struct CompiledStage {
@@ -62,8 +89,26 @@ struct CompiledStage {
     std::string failure;
 };
 
+std::string mebibytes(std::uintmax_t bytes) {
+    return std::to_string(bytes >> 20) + " MiB";
+}
+
+// A folder's files' sizes, added up.
+std::uintmax_t bytes_in(const fs::path& folder) {
+    std::uintmax_t total = 0;
+    std::error_code error;
+    for (fs::recursive_directory_iterator it(folder, error), end; !error && it != end;
+         it.increment(error)) {
+        if (it->is_regular_file(error)) total += it->file_size(error);
+    }
+    return total;
+}
+
+// Compiles a stage's files one after another, each under what is left of the stage's budget: a
+// template bomb or a huge constant array ends, and so does a stage split into many slow files.
 CompiledStage compile_stage(const SubmittedStage& stage, const ProbeToolchain& toolchain,
-                            const fs::path& include, const fs::path& work) {
+                            const fs::path& include, const fs::path& work,
+                            const BuildBudget& budget) {
     CompiledStage compiled;
     compiled.number = stage.manifest.number;
     if (!stage.missing.empty()) {
@@ -71,21 +116,53 @@ CompiledStage compile_stage(const SubmittedStage& stage, const ProbeToolchain& t
         for (const std::string& file : stage.missing) {
             compiled.failure += " stages/" + stage.manifest.folder + "/" + file;
         }
+        for (const std::string& note : stage.notes)
+            compiled.failure += "\n" + note;
         return compiled;
     }
     const fs::path objects = work / "objects" / stage.manifest.folder;
     fs::create_directories(objects);
+    double seconds_left = budget.compile_seconds_per_stage;
     for (const fs::path& file : stage.files) {
+        const std::uintmax_t written = bytes_in(objects);
+        if (seconds_left < 1.0 || written >= budget.compile_bytes_per_stage) {
+            compiled.failure = "the stage's budget ran out before " + file.filename().string();
+            return compiled;
+        }
         const fs::path object = objects / file.filename().replace_extension(".o");
         std::vector<std::string> argv = {toolchain.compiler.string()};
         argv.insert(argv.end(), toolchain.compile_flags.begin(), toolchain.compile_flags.end());
-        argv.insert(argv.end(), {"-I" + include.string(), "-c", file.string(), "-o", object.string()});
-        const SandboxRun run =
-            run_sandboxed(argv, "", compile_policy(include, file.parent_path(), objects));
-        if (run.exit_code != 0 || run.timed_out) {
-            compiled.failure = (run.timed_out ? "the compiler ran out of time on " : "") +
-                               first_lines(run.errors + run.output);
-            if (compiled.failure.empty()) compiled.failure = "the compiler failed without a message";
+        argv.insert(argv.end(),
+                    {"-I" + include.string(), "-c", file.string(), "-o", object.string()});
+
+        SandboxPolicy policy;
+        policy.read_only = {include, file.parent_path()};
+        policy.writable = objects;
+        policy.working_directory = objects;
+        policy.limits.cpu_seconds = seconds_left;
+        policy.limits.wall = std::chrono::milliseconds(static_cast<long>(1000 * seconds_left));
+        policy.limits.address_space_bytes = std::size_t{3} << 30;
+        policy.limits.file_size_bytes = budget.compile_bytes_per_stage - written;
+        policy.limits.output_bytes = 64u << 10;
+        const SandboxRun run = run_sandboxed(argv, "", policy);
+        seconds_left -= run.wall_seconds;
+        if (run.timed_out) {
+            compiled.failure = "the compiler ran out of time on " + file.filename().string() +
+                               ": a stage's files may take " +
+                               std::to_string(static_cast<int>(budget.compile_seconds_per_stage)) +
+                               " s to compile in all";
+            return compiled;
+        }
+        if (run.signal == SIGXFSZ || bytes_in(objects) > budget.compile_bytes_per_stage) {
+            compiled.failure = "the compiler's output for " + file.filename().string() +
+                               " passed the " + mebibytes(budget.compile_bytes_per_stage) +
+                               " a stage's objects may take";
+            return compiled;
+        }
+        if (run.exit_code != 0) {
+            compiled.failure = first_lines(run.errors + run.output);
+            if (compiled.failure.empty())
+                compiled.failure = "the compiler failed without a message";
             return compiled;
         }
         compiled.objects.push_back(object);
@@ -93,45 +170,74 @@ CompiledStage compile_stage(const SubmittedStage& stage, const ProbeToolchain& t
     return compiled;
 }
 
+// After the link: the probe and its folder are the grader's again, and the program can be run
+// but not read by the sandbox's user, which makes a running probe undumpable: no other program
+// of that user can open it through /proc/PID/exe.
+void seal(const fs::path& program) {
+    for (const fs::path& path : {program, program.parent_path()}) {
+        reclaim(path);
+        fs::permissions(path,
+                        fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);
+    }
+}
+
 BuiltProbe link_probe(const std::vector<const CompiledStage*>& submitted,
-                      const ProbeToolchain& toolchain, const fs::path& program) {
+                      const StagedToolchain& staged, const ProbeToolchain& toolchain,
+                      const fs::path& program, const BuildBudget& budget) {
+    SandboxPolicy policy;
+    policy.read_only.push_back(staged.common);
     std::vector<std::string> argv = {toolchain.compiler.string(), "-o", program.string()};
+    argv.insert(argv.end(), staged.objects.begin(), staged.objects.end());
     std::vector<int> from_submission;
-    for (const fs::path& object : toolchain.probe_objects) argv.push_back(object.string());
     for (const CompiledStage* stage : submitted) {
         from_submission.push_back(stage->number);
-        for (const fs::path& object : stage->objects) argv.push_back(object.string());
+        for (const fs::path& object : stage->objects)
+            argv.push_back(object.string());
+        if (!stage->objects.empty())
+            policy.read_only.push_back(stage->objects.front().parent_path());
     }
     // Higher stages call lower ones: a one-pass linker needs them in that order.
-    for (auto it = toolchain.stage_libraries.rbegin(); it != toolchain.stage_libraries.rend(); ++it) {
+    for (auto it = staged.stage_libraries.rbegin(); it != staged.stage_libraries.rend(); ++it) {
         if (std::find(from_submission.begin(), from_submission.end(), it->first) ==
             from_submission.end()) {
             argv.push_back(it->second.string());
+            policy.read_only.push_back(it->second.parent_path());
         }
     }
-    for (const fs::path& library : toolchain.libraries) argv.push_back(library.string());
+    argv.insert(argv.end(), staged.libraries.begin(), staged.libraries.end());
     argv.insert(argv.end(), toolchain.link_flags.begin(), toolchain.link_flags.end());
 
-    SandboxPolicy policy;
-    for (const fs::path& input : toolchain.probe_objects) policy.read_only.push_back(input.parent_path());
-    for (const auto& [number, library] : toolchain.stage_libraries) policy.read_only.push_back(library.parent_path());
-    for (const fs::path& library : toolchain.libraries) policy.read_only.push_back(library.parent_path());
-    for (const CompiledStage* stage : submitted) {
-        if (!stage->objects.empty()) policy.read_only.push_back(stage->objects.front().parent_path());
-    }
-    std::sort(policy.read_only.begin(), policy.read_only.end());
-    policy.read_only.erase(std::unique(policy.read_only.begin(), policy.read_only.end()),
-                           policy.read_only.end());
-    policy.writable = program.parent_path();
-    policy.working_directory = program.parent_path();
+    // Linked in work/link, which the sandbox's user can enter, then moved among the probes.
+    const fs::path linked =
+        staged.common.parent_path() / "out" / program.parent_path().filename() / "probe";
+    fs::create_directories(linked.parent_path());
+    policy.writable = linked.parent_path();
+    policy.working_directory = linked.parent_path();
+    argv[2] = linked.string();
     policy.limits.cpu_seconds = 60;
     policy.limits.wall = std::chrono::seconds(120);
-    policy.limits.file_size_bytes = 512u << 20;
+    policy.limits.file_size_bytes = budget.link_bytes_per_probe;
     policy.limits.output_bytes = 64u << 10;
     const SandboxRun run = run_sandboxed(argv, "", policy);
+    if (run.signal == SIGXFSZ) {
+        return {std::nullopt, "the linked probe passed the " +
+                                  mebibytes(budget.link_bytes_per_probe) + " a probe may take"};
+    }
     if (run.exit_code != 0 || run.timed_out) {
         return {std::nullopt, "the link failed: " + first_lines(run.errors + run.output)};
     }
+    fs::create_directories(program.parent_path());
+    fs::rename(linked, program);
+    seal(program);
+    return {program, ""};
+}
+
+// The reference probe, copied into the submission's probes so that nothing of the build tree need
+// be visible to the sandbox's user.
+BuiltProbe copy_reference(const fs::path& reference_probe, const fs::path& program) {
+    fs::create_directories(program.parent_path());
+    fs::copy_file(reference_probe, program, fs::copy_options::overwrite_existing);
+    seal(program);
     return {program, ""};
 }
 
@@ -141,47 +247,69 @@ const BuiltProbe& ProbeSet::stage(int number) const {
     for (const auto& [n, probe] : stages) {
         if (n == number) return probe;
     }
-    throw std::out_of_range("no probe for stage " + std::to_string(number));
+    static const BuiltProbe not_built{std::nullopt, "not built: no check of this grade needed it"};
+    return not_built;
 }
 
 ProbeSet build_probes(const Submission& submission, const ProbeToolchain& toolchain,
-                      const fs::path& work, int jobs) {
+                      const fs::path& reference_probe, const fs::path& work,
+                      const ProbesNeeded& needed, int jobs, const BuildBudget& budget) {
     const auto start = std::chrono::steady_clock::now();
     const fs::path include = work / "include";
     copy_headers(toolchain.source, include);
-    fs::create_directories(work / "probes");
 
-    // Compile the stages `jobs` at a time: each is independent of the others.
-    std::vector<CompiledStage> compiled(submission.stages.size());
+    // Compile the stages needed `jobs` at a time: each is independent of the others.
+    std::vector<const SubmittedStage*> to_compile;
+    for (const SubmittedStage& stage : submission.stages) {
+        if (needed.pipeline || needed.stages.count(stage.manifest.number) > 0)
+            to_compile.push_back(&stage);
+    }
+    std::vector<CompiledStage> compiled(to_compile.size());
     std::atomic<std::size_t> next{0};
     std::vector<std::thread> workers;
     for (int k = 0; k < std::max(1, jobs); ++k) {
         workers.emplace_back([&] {
             for (std::size_t s = next++; s < compiled.size(); s = next++) {
-                compiled[s] = compile_stage(submission.stages[s], toolchain, include, work);
+                compiled[s] = compile_stage(*to_compile[s], toolchain, include, work, budget);
             }
         });
     }
-    for (std::thread& worker : workers) worker.join();
+    for (std::thread& worker : workers)
+        worker.join();
 
+    // Link, with the sandbox's user shut out of work/probes where no bubblewrap hides it.
+    const fs::path probes = work / "probes";
+    fs::create_directories(probes);
+    fs::permissions(probes, bubblewrap_available() ? fs::perms::owner_all | fs::perms::group_exec |
+                                                         fs::perms::others_exec
+                                                   : fs::perms::owner_all);
+    const StagedToolchain staged = stage_toolchain(toolchain, work / "link");
     ProbeSet set;
     std::vector<const CompiledStage*> all;
     std::string pipeline_failure;
     for (const CompiledStage& stage : compiled) {
-        const fs::path program = work / "probes" / ("stage" + std::to_string(stage.number));
-        if (!stage.failure.empty()) {
-            set.stages.push_back({stage.number, {std::nullopt, stage.failure}});
-            pipeline_failure += "stage " + std::to_string(stage.number) + " did not compile. ";
-        } else {
-            set.stages.push_back({stage.number, link_probe({&stage}, toolchain, program)});
-        }
         all.push_back(&stage);
+        if (!stage.failure.empty()) {
+            pipeline_failure += "stage " + std::to_string(stage.number) + " did not compile. ";
+        }
+        if (needed.stages.count(stage.number) == 0) continue;
+        const fs::path program = probes / ("stage" + std::to_string(stage.number)) / "probe";
+        set.stages.push_back(
+            {stage.number, stage.failure.empty()
+                               ? link_probe({&stage}, staged, toolchain, program, budget)
+                               : BuiltProbe{std::nullopt, stage.failure}});
     }
-    if (pipeline_failure.empty()) {
-        set.pipeline = link_probe(all, toolchain, work / "probes" / "pipeline");
+    if (!needed.pipeline) {
+        set.pipeline.failure = "not built: no check of this grade needed it";
+    } else if (pipeline_failure.empty()) {
+        set.pipeline = link_probe(all, staged, toolchain, probes / "pipeline" / "probe", budget);
     } else {
         set.pipeline.failure = pipeline_failure;
     }
+    if (needed.reference)
+        set.reference = copy_reference(reference_probe, probes / "reference" / "probe");
+    // The reference stages leave before any probe runs.
+    fs::remove_all(work / "link");
     set.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return set;
 }

@@ -22,7 +22,7 @@ struct ProbeAnswer {
         not_implemented,  ///< a stub; `message` is its text
         threw,            ///< `exception_type` and `message`
         unanswered,       ///< the probe ended (crash, timeout, flood) before answering
-        malformed,        ///< an answer that is not what the protocol says
+        malformed,  ///< not what the protocol says; `message` has the line and its likely cause
     } kind = Kind::unanswered;
     probe::Json value;
     std::string exception_type;
@@ -41,12 +41,14 @@ struct ProbeSession {
 struct ProbeRunLimits {
     double cpu_seconds = 10.0;
     std::chrono::milliseconds wall{20000};
-    std::size_t output_bytes = 128u << 20;
+    std::size_t output_bytes = 128u << 20;        ///< the answers read at most
     std::vector<std::filesystem::path> readable;  ///< e.g. the scenes a render call loads
 };
 
-/// Sends the queries to one run of the probe (in the sandbox) and reads its answers. Never throws
-/// for what the probe does: a crash leaves the remaining answers `unanswered`, and run says why.
+/// Sends the queries to one run of the probe (in the sandbox), which sees only the folder that
+/// holds `program` (nothing else may be in it) and `limits.readable`, and reads its answers from
+/// its answer channel (sandbox.h); what it prints on stdout is kept in run.output. Never throws for
+/// what the probe does: a crash leaves the remaining answers `unanswered`, and run says why.
 ProbeSession ask_probe(const std::filesystem::path& program, const std::vector<ProbeQuery>& queries,
                        const ProbeRunLimits& limits);
 

@@ -13,7 +13,8 @@ namespace {
 std::vector<std::string> words(const std::string& text) {
     std::istringstream in(text);
     std::vector<std::string> out;
-    for (std::string word; in >> word;) out.push_back(word);
+    for (std::string word; in >> word;)
+        out.push_back(word);
     return out;
 }
 
@@ -21,19 +22,21 @@ std::vector<std::string> words(const std::string& text) {
 
 ProbeToolchain load_probe_toolchain(const std::filesystem::path& file) {
     std::ifstream in(file);
-    if (!in) throw std::runtime_error(file.string() + ": missing; configure the grader's build again");
+    if (!in)
+        throw std::runtime_error(file.string() + ": missing; configure the grader's build again");
     try {
         const nlohmann::json j = nlohmann::json::parse(in);
         ProbeToolchain t;
         t.compiler = j.at("compiler").get<std::string>();
         t.compile_flags = words(j.at("compile_flags").get<std::string>());
-        for (const auto& o : j.at("probe_objects")) t.probe_objects.emplace_back(o.get<std::string>());
-        for (const auto& l : j.at("libraries")) t.libraries.emplace_back(l.get<std::string>());
+        for (const auto& o : j.at("probe_objects"))
+            t.probe_objects.emplace_back(o.get<std::string>());
+        for (const auto& l : j.at("libraries"))
+            t.libraries.emplace_back(l.get<std::string>());
         t.link_flags = words(j.at("link_flags").get<std::string>());
         for (const auto& [stage, library] : j.at("stage_libraries").items()) {
             t.stage_libraries[std::stoi(stage)] = library.get<std::string>();
         }
-        t.cmake = j.at("cmake").get<std::string>();
         t.source = j.at("source").get<std::string>();
         return t;
     } catch (const nlohmann::json::exception& error) {

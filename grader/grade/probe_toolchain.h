@@ -17,7 +17,6 @@ struct ProbeToolchain {
     std::vector<std::filesystem::path> libraries;      ///< below the stages: protocol, scene, core
     std::vector<std::string> link_flags;
     std::map<int, std::filesystem::path> stage_libraries;  ///< each stage's reference library
-    std::filesystem::path cmake;   ///< for `cmake -E tar`, which unpacks zip files
     std::filesystem::path source;  ///< the repository: its core/ and stages/ headers, scenes/
 };
 

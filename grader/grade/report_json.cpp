@@ -82,6 +82,7 @@ nlohmann::json report_json(const GradeReport& report) {
     return {{"submission", report.submission},
             {"student", report.student},
             {"intake_problem", report.intake_problem},
+            {"work_folder", report.work_folder},
             {"score", report.score()},
             {"max_score", report.max_score()},
             {"times",
@@ -97,6 +98,7 @@ GradeReport report_from_json(const nlohmann::json& j) {
     report.submission = j.at("submission").get<std::string>();
     report.student = j.at("student").get<std::string>();
     report.intake_problem = j.value("intake_problem", "");
+    report.work_folder = j.value("work_folder", "");
     const nlohmann::json& times = j.at("times");
     report.times = {times.at("intake").get<double>(), times.at("build").get<double>(),
                     times.at("checks").get<double>(), times.at("reports").get<double>()};

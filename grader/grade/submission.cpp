@@ -1,8 +1,11 @@
 #include "grader/grade/submission.h"
 
 #include <algorithm>
-#include <stdexcept>
+#include <set>
+#include <sstream>
 #include <system_error>
+
+#include <nlohmann/json.hpp>
 
 #include "grader/sandbox/sandbox.h"
 
@@ -12,84 +15,226 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr std::uintmax_t kLargestFile = 1u << 20;
-constexpr std::size_t kMostEntries = 20000;  // a submission is a few dozen files
+// A submission is a few dozen files: past this many entries, a folder is not looked through
+// further (an archive's listing has its own cap in raystep-unpack).
+constexpr std::size_t kMostEntries = 20000;
 
-// Every regular file under `root`, by path relative to it; links and special files are skipped,
-// and so is anything past kMostEntries.
-std::vector<fs::path> regular_files(const fs::path& root) {
-    std::vector<fs::path> files;
-    std::error_code error;
-    fs::recursive_directory_iterator it(root, fs::directory_options::skip_permission_denied, error);
-    std::size_t seen = 0;
-    for (; !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
-        if (++seen > kMostEntries) break;
-        const fs::file_status status = it->symlink_status(error);
-        if (error) break;
-        if (fs::is_regular_file(status)) files.push_back(fs::relative(it->path(), root));
-    }
-    return files;
+// One entry of a submission, a candidate for a manifest file: its path inside the submission (a
+// name only, never opened as such) and, where it can be taken, the file holding its contents.
+struct Entry {
+    std::string path;
+    std::string kind;  ///< "file", "folder", "link", "other"
+    std::uintmax_t size = 0;
+    fs::path contents;  ///< empty when it cannot be taken
+};
+
+std::string last_component(const std::string& path) {
+    std::string trimmed = path;
+    while (!trimmed.empty() && (trimmed.back() == '/' || trimmed.back() == '\\'))
+        trimmed.pop_back();
+    const std::size_t slash = trimmed.find_last_of("/\\");
+    return slash == std::string::npos ? trimmed : trimmed.substr(slash + 1);
 }
 
-fs::path unpack_zip(const fs::path& zip, const fs::path& into, const ProbeToolchain& toolchain) {
-    fs::create_directories(into);
-    SandboxPolicy policy;
-    policy.read_only = {fs::absolute(zip).parent_path()};
-    policy.writable = into;
-    policy.working_directory = into;
-    policy.limits.cpu_seconds = 20;
-    policy.limits.wall = std::chrono::seconds(40);
-    policy.limits.file_size_bytes = 16u << 20;
-    const SandboxRun run =
-        run_sandboxed({toolchain.cmake.string(), "-E", "tar", "xf", fs::absolute(zip).string()}, "",
-                      policy);
-    if (run.exit_code != 0) {
-        throw std::runtime_error(zip.string() + ": could not be unpacked as a zip file: " +
-                                 run.errors.substr(0, 400));
+std::size_t depth(const std::string& path) {
+    return static_cast<std::size_t>(std::count(path.begin(), path.end(), '/'));
+}
+
+std::string mebibytes(std::uintmax_t bytes) {
+    std::ostringstream text;
+    text.precision(3);
+    text << static_cast<double>(bytes) / (1 << 20) << " MiB";
+    return text.str();
+}
+
+// Every entry under `root`, links and special files included (as such, never followed).
+std::vector<Entry> folder_entries(const fs::path& root, std::string& problem) {
+    std::vector<Entry> entries;
+    std::error_code error;
+    fs::recursive_directory_iterator it(root, fs::directory_options::skip_permission_denied, error);
+    for (; !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
+        if (entries.size() == kMostEntries) {
+            problem = "the folder holds more than " + std::to_string(kMostEntries) +
+                      " entries; those past them were not looked at";
+            break;
+        }
+        const fs::file_status status = it->symlink_status(error);
+        if (error) break;
+        Entry entry;
+        entry.path = fs::relative(it->path(), root, error).generic_string();
+        if (fs::is_regular_file(status)) {
+            entry.kind = "file";
+            entry.size = it->file_size(error);
+            entry.contents = it->path();
+        } else {
+            entry.kind = fs::is_directory(status) ? "folder"
+                         : fs::is_symlink(status) ? "link"
+                                                  : "other";
+        }
+        entries.push_back(std::move(entry));
     }
-    return into;
+    if (error && problem.empty())
+        problem = "the folder could not be read to its end: " + error.message();
+    return entries;
+}
+
+// Lists the archive and copies out the entries named like a manifest file, in the sandbox:
+// raystep-unpack reads it on stdin and writes only into work/unpacked. The program itself is
+// copied into the work folder, so that the sandbox's user need not reach the grader's build.
+std::vector<Entry> archive_entries(const fs::path& archive, const std::set<std::string>& names,
+                                   const fs::path& work, const IntakeBudget& budget,
+                                   std::string& problem) {
+    const fs::path tools = work / "tools";
+    const fs::path unpacked = work / "unpacked";
+    fs::create_directories(tools);
+    fs::create_directories(unpacked);
+    const fs::path unpack = tools / "raystep-unpack";
+    fs::copy_file(RAYSTEP_UNPACK_PROGRAM, unpack, fs::copy_options::overwrite_existing);
+
+    std::vector<std::string> argv = {unpack.string(), unpacked.string(),
+                                     std::to_string(budget.largest_file),
+                                     std::to_string(budget.total)};
+    argv.insert(argv.end(), names.begin(), names.end());
+    SandboxPolicy policy;
+    policy.read_only = {tools};
+    policy.writable = unpacked;
+    policy.working_directory = unpacked;
+    policy.stdin_file = archive;
+    policy.limits.cpu_seconds = 30;
+    policy.limits.wall = std::chrono::seconds(60);
+    policy.limits.file_size_bytes = budget.largest_file;
+    policy.limits.output_bytes = 16u << 20;
+    const SandboxRun run = run_sandboxed(argv, "", policy);
+
+    std::vector<Entry> entries;
+    std::istringstream lines(run.output);
+    for (std::string line; std::getline(lines, line);) {
+        if (lines.eof()) break;  // a line cut by the end of the run
+        try {
+            const nlohmann::json j = nlohmann::json::parse(line);
+            Entry entry;
+            entry.path = j.at("path").get<std::string>();
+            entry.kind = j.at("kind").get<std::string>();
+            entry.size =
+                static_cast<std::uintmax_t>(std::max<long long>(0, j.at("size").get<long long>()));
+            if (j.at("taken").get<bool>()) {
+                entry.contents = unpacked / std::to_string(entries.size());
+            }
+            entries.push_back(std::move(entry));
+        } catch (const std::exception&) {
+            break;
+        }
+    }
+    const std::string said = run.errors.substr(0, run.errors.find('\n'));
+    if (run.exit_code == 3) {
+        problem =
+            "it is not a folder, nor an archive the grader can read (zip, tar, tar.gz, 7z, "
+            "...): " +
+            said;
+    } else if (run.timed_out) {
+        problem = "listing the archive took longer than " +
+                  std::to_string(static_cast<int>(policy.limits.cpu_seconds)) +
+                  " s; the entries after the first " + std::to_string(entries.size()) +
+                  " were not seen";
+    } else if (run.exit_code != 0 || run.signal != 0) {
+        problem = "the archive could be read only in part (" +
+                  (said.empty() ? "its reader stopped" : said) + "); the entries after the first " +
+                  std::to_string(entries.size()) + " were not seen";
+    }
+    return entries;
 }
 
 // The candidate for `file` of stage `folder`: stages/<folder>/<file> if present, else the
-// shallowest file of that name.
-const fs::path* choose(const std::vector<fs::path>& files, const std::string& folder,
-                       const std::string& file, std::string& note) {
-    const fs::path* best = nullptr;
+// shallowest file of that name; only regular files within the budget count. Says in `note` what
+// was passed over.
+const Entry* choose(const std::vector<Entry>& entries, const std::string& folder,
+                    const std::string& file, const IntakeBudget& budget, std::string& note) {
+    const Entry* best = nullptr;
     std::size_t named = 0;
-    for (const fs::path& candidate : files) {
-        if (candidate.filename() != file) continue;
+    const auto in_stage = [&](const Entry& e) {
+        const std::string parent =
+            e.path.substr(0, e.path.size() - std::min(e.path.size(), file.size()));
+        return last_component(parent) == folder;
+    };
+    std::vector<std::string> passed_over;
+    for (const Entry& candidate : entries) {
+        if (last_component(candidate.path) != file) continue;
         ++named;
-        const bool in_stage = candidate.parent_path().filename() == folder;
-        const bool best_in_stage = best && best->parent_path().filename() == folder;
-        const auto depth = [](const fs::path& p) { return std::distance(p.begin(), p.end()); };
-        if (!best || (in_stage && !best_in_stage) ||
-            (in_stage == best_in_stage && depth(candidate) < depth(*best))) {
+        if (candidate.kind != "file") {
+            passed_over.push_back(candidate.path + " (a " + candidate.kind + ", not a file)");
+            continue;
+        }
+        if (candidate.size > budget.largest_file) {
+            passed_over.push_back(candidate.path + " (" + mebibytes(candidate.size) +
+                                  ", over the " + mebibytes(budget.largest_file) +
+                                  " a source file may be)");
+            continue;
+        }
+        if (candidate.contents.empty()) {
+            passed_over.push_back(candidate.path + " (past the " + mebibytes(budget.total) +
+                                  " a submission may unpack)");
+            continue;
+        }
+        if (!best || (in_stage(candidate) && !in_stage(*best)) ||
+            (in_stage(candidate) == in_stage(*best) && depth(candidate.path) < depth(best->path))) {
             best = &candidate;
         }
     }
-    if (named > 1) note = file + ": " + std::to_string(named) + " files of that name; took " + best->string();
+    for (const std::string& passed : passed_over)
+        note += (note.empty() ? "" : "; ") + std::string("left out ") + passed;
+    if (best && named > 1) {
+        note += (note.empty() ? "" : "; ") + file + ": " + std::to_string(named) +
+                " entries of that name; took " + best->path;
+    }
     return best;
 }
 
 }  // namespace
 
-Submission take_submission(const fs::path& path, const std::vector<StageManifest>& manifests,
-                           const fs::path& work, const ProbeToolchain& toolchain) {
-    std::error_code error;
-    fs::path root;
-    if (fs::is_directory(path, error)) {
-        root = path;
-    } else if (fs::is_regular_file(path, error) && path.extension() == ".zip") {
-        root = unpack_zip(path, work / "unpacked", toolchain);
-    } else {
-        throw std::runtime_error(path.string() + ": neither a folder nor a .zip file");
+std::string submission_name(const fs::path& path) {
+    std::string name = path.filename().string();
+    for (const char* extension :
+         {".tar.gz", ".tar.bz2", ".tar.xz", ".tgz", ".zip", ".tar", ".7z"}) {
+        const std::string ending = extension;
+        if (name.size() > ending.size() &&
+            name.compare(name.size() - ending.size(), ending.size(), ending) == 0) {
+            name.resize(name.size() - ending.size());
+            break;
+        }
     }
-    const std::vector<fs::path> files = regular_files(root);
+    for (char& c : name) {
+        const bool safe = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
+                          (c >= '0' && c <= '9') || c == '.' || c == '_' || c == '-';
+        if (!safe) c = '_';
+    }
+    name.erase(0, name.find_first_not_of('.'));
+    if (name.size() > 100) name.resize(100);
+    return name.empty() ? "submission" : name;
+}
 
+Submission take_submission(const fs::path& path, const std::vector<StageManifest>& manifests,
+                           const fs::path& work, const IntakeBudget& budget) {
     Submission submission;
-    submission.name = fs::absolute(path).lexically_normal().filename().replace_extension().string();
-    if (submission.name.empty()) submission.name = fs::absolute(path).parent_path().filename().string();
+    submission.name = submission_name(path);
     submission.tree = work / "submission";
+
+    std::set<std::string> names;
+    for (const StageManifest& manifest : manifests)
+        names.insert(manifest.files.begin(), manifest.files.end());
+    std::vector<Entry> entries;
+    std::error_code error;
+    const fs::file_status status = fs::status(path, error);
+    if (fs::is_directory(status)) {
+        entries = folder_entries(path, submission.problem);
+    } else if (fs::is_regular_file(status)) {
+        entries = archive_entries(path, names, work, budget, submission.problem);
+    } else if (fs::exists(status)) {
+        submission.problem = "it is neither a folder nor a file";
+    } else {
+        submission.problem = "it does not exist";
+    }
+
+    std::uintmax_t taken = 0;
     for (const StageManifest& manifest : manifests) {
         SubmittedStage stage;
         stage.manifest = manifest;
@@ -97,16 +242,27 @@ Submission take_submission(const fs::path& path, const std::vector<StageManifest
         fs::create_directories(folder);
         for (const std::string& file : manifest.files) {
             std::string note;
-            const fs::path* found = choose(files, manifest.folder, file, note);
+            const Entry* found = choose(entries, manifest.folder, file, budget, note);
+            if (found && taken + found->size > budget.total) {
+                note += (note.empty() ? "" : "; ") + std::string("left out ") + found->path +
+                        " (past the " + mebibytes(budget.total) + " a submission may bring)";
+                found = nullptr;
+            }
             if (!note.empty()) stage.notes.push_back(note);
-            if (!found || fs::file_size(root / *found, error) > kLargestFile || error) {
+            if (!found || !fs::copy_file(found->contents, folder / file,
+                                         fs::copy_options::overwrite_existing, error)) {
                 stage.missing.push_back(file);
                 continue;
             }
-            fs::copy_file(root / *found, folder / file, fs::copy_options::overwrite_existing);
+            taken += found->size;
             stage.files.push_back(folder / file);
         }
         submission.stages.push_back(stage);
+    }
+    fs::remove_all(work / "unpacked", error);
+    if (submission.problem.empty() && taken == 0 && !manifests.empty()) {
+        submission.problem = "it holds none of the files the stages' manifests name (such as " +
+                             manifests.front().files.front() + ")";
     }
     return submission;
 }

@@ -1,7 +1,7 @@
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -13,26 +13,44 @@ namespace raystep::grade {
 /// One stage's files as found in a submission.
 struct SubmittedStage {
     StageManifest manifest;
-    /// The manifest's files, copied into the work folder as stages/<folder>/<file>.
+    /// The manifest's files, copied into the work folder as submission/stages/<folder>/<file>.
     std::vector<std::filesystem::path> files;
     std::vector<std::string> missing;  ///< manifest files the submission does not have
-    std::vector<std::string> notes;    ///< e.g. which of two candidates was taken
+    std::vector<std::string> notes;    ///< e.g. which of two candidates was taken, or why none
 };
 
 struct Submission {
-    std::string name;            ///< the folder's or zip's name, for reports and the class CSV
+    std::string name;            ///< the folder's or archive's name, for reports and the class CSV
     std::filesystem::path tree;  ///< work/submission: stages/<folder>/<file> for every file found
     std::vector<SubmittedStage> stages;
+    /// Why files could not be taken, in words ("not an archive ...", "over the budget ..."), or
+    /// empty. The stages whose files are missing then fail to compile, and every report says why.
+    std::string problem;
 };
 
-/// Takes the manifest files, and only those, from a submission folder or zip file, into
-/// work/submission. A file is found at stages/<folder>/<file> anywhere in the submission, or else
-/// as <file> anywhere (the shallowest); symbolic links are never followed and files over 1 MiB
-/// are left out, so that a submission can only hand in its own text. A zip file is unpacked by
-/// `cmake -E tar` inside the sandbox. Throws std::runtime_error when the path is neither a folder
-/// nor a zip file, or the zip cannot be unpacked.
+/// What a submission may bring in. A source file is text a student wrote: far below a mebibyte.
+/// The total bounds what an archive of many copies can unpack.
+struct IntakeBudget {
+    std::uintmax_t largest_file = std::uintmax_t{1} << 20;
+    std::uintmax_t total = std::uintmax_t{32} << 20;
+};
+
+/// Takes the manifest files, and only those, from a submission into work/submission. The
+/// submission may be a folder, or a file: an archive of any kind libarchive reads, whatever its
+/// name says (raystep-unpack, run in the sandbox, lists it and copies out only entries named like
+/// a manifest file). A file is found at stages/<folder>/<file> anywhere in the submission, or else
+/// as <file> anywhere (the shallowest). Links of every kind, special files and files over the
+/// budget are never taken; names never reach the file system, so no name can place a file
+/// outside the work folder. Never throws for what the submission is or holds: a path that is
+/// missing, not an archive, broken partway or over the budget is said in `problem`, with every
+/// file that could be taken. Throws only for the grader's own problems (raystep-unpack missing).
 Submission take_submission(const std::filesystem::path& path,
                            const std::vector<StageManifest>& manifests,
-                           const std::filesystem::path& work, const ProbeToolchain& toolchain);
+                           const std::filesystem::path& work, const IntakeBudget& budget = {});
+
+/// A name for the submission at `path` that is safe as one folder's name: its file name without
+/// the archive's extension, with every character outside [A-Za-z0-9._-] replaced by '_', no
+/// leading '.', at most 100 characters; "submission" where nothing is left.
+std::string submission_name(const std::filesystem::path& path);
 
 }  // namespace raystep::grade

@@ -1,8 +1,8 @@
-// raystep-probe: the untrusted half of grading (docs/design, "The grader: trust split"). Built
+// raystep-probe: the untrusted half of grading (DESIGN.md, "The grader: trust split"). Built
 // from a submission's files and the reference for the rest, it runs in a sandbox, reads one query
-// per line on stdin and writes one answer per line on stdout, in order, flushing each. It holds
-// no expected answer and judges nothing: raystep-grade does, from outside. grader/probe/README.md
-// describes the protocol.
+// per line on stdin and writes one answer per line on its answer channel, in order, flushing each.
+// It holds no expected answer and judges nothing: raystep-grade does, from outside.
+// grader/probe/README.md describes the protocol.
 
 #include <cstdio>
 #include <iostream>
@@ -10,6 +10,7 @@
 #include <string>
 #include <typeinfo>
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include "core/errors/not_implemented.h"
@@ -55,15 +56,26 @@ Json answer(const CallTable& table, const Json& query) {
     } catch (const std::exception& error) {
         reply["threw"] = {{"type", exception_type(error)}, {"message", error.what()}};
     } catch (...) {
-        reply["threw"] = {{"type", "other"}, {"message", "a thrown value that is not a std::exception"}};
+        reply["threw"] = {{"type", "other"},
+                          {"message", "a thrown value that is not a std::exception"}};
     }
     return reply;
 }
 
-// The answers get stdout to themselves: what the submission prints (a student's debugging output,
-// or lines made to look like answers) goes to stderr, which the grader caps and shows, and never
-// into the protocol.
+// Where the answers go. Under raystep-grade, the answer channel: descriptor 3, a pipe the grader
+// opened before this program's first instruction (grader/sandbox/sandbox.h). It is moved to a
+// close-on-exec descriptor and 3 is closed, so that nothing the submission runs later can write
+// to it by that number, and no program it starts inherits it. stdout stays the submission's own:
+// what it prints, before main or after, is shown to the student and never read as an answer.
+// Run by hand, with no descriptor 3, the probe answers on stdout and sends what the submission
+// prints to stderr.
 std::FILE* answer_stream() {
+    constexpr int kAnswerChannel = 3;
+    if (fcntl(kAnswerChannel, F_GETFD) >= 0) {
+        const int answers = fcntl(kAnswerChannel, F_DUPFD_CLOEXEC, 10);
+        if (answers < 0 || close(kAnswerChannel) != 0) return nullptr;
+        return fdopen(answers, "w");
+    }
     const int answers = dup(STDOUT_FILENO);
     if (answers < 0 || dup2(STDERR_FILENO, STDOUT_FILENO) < 0) return nullptr;
     return fdopen(answers, "w");

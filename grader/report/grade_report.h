@@ -76,6 +76,8 @@ struct GradeReport {
     /// Why the submission's files could not all be taken, in words (not an archive, over a
     /// budget, ...); empty when they were. Every report says it.
     std::string intake_problem;
+    /// The work folder, when it was kept (--keep-work) to look into; empty otherwise.
+    std::string work_folder;
     std::vector<CheckResult> checks;
     PhaseTimes times;
     double score() const;

@@ -4,6 +4,7 @@
 #include <grp.h>
 #include <pthread.h>
 #include <signal.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -109,6 +110,8 @@ struct ChildEnds {
     int stdout_write;
     int stderr_write;
     int report_write;
+    int answer_write;  ///< -1 for none
+    int program;       ///< the program, opened by the parent, or -1 to execute it by path
 };
 
 // The child, from fork to exec. Only async-signal-safe calls: another thread of the grader may
@@ -135,14 +138,32 @@ struct ChildEnds {
 
     // No other descriptor of the grader's: some may not be close-on-exec (a report being written,
     // say), and the program could read or write them, or hold a pipe of another run open. The
-    // report pipe moves to 3 and closes itself at the exec.
-    int report_fd = ends.report_write;
-    if (report_fd != 3) {
-        if (dup3(report_fd, 3, O_CLOEXEC) < 0) report_failure(report_fd, Step::descriptors);
-        report_fd = 3;
+    // answer pipe, if any, goes to kAnswerDescriptor and stays open across the exec; the report
+    // pipe goes to the next descriptor and the program's, if any, to the one after; both close
+    // themselves at the exec. Each is first copied above those numbers, so that placing one never
+    // overwrites another.
+    const int reserved = ends.answer_write >= 0 ? kAnswerDescriptor + 2 : kAnswerDescriptor + 1;
+    const int first_free = ends.program >= 0 ? reserved + 1 : reserved;
+    const int report_high = fcntl(ends.report_write, F_DUPFD_CLOEXEC, first_free);
+    if (report_high < 0) report_failure(ends.report_write, Step::descriptors);
+    const int report_fd = reserved - 1;
+    if (dup3(report_high, report_fd, O_CLOEXEC) < 0) report_failure(report_high, Step::descriptors);
+    const int program_fd = ends.program >= 0 ? reserved : -1;
+    if (program_fd >= 0) {
+        const int program_high = fcntl(ends.program, F_DUPFD_CLOEXEC, first_free);
+        if (program_high < 0 || dup3(program_high, program_fd, O_CLOEXEC) < 0) {
+            report_failure(report_fd, Step::descriptors);
+        }
     }
-    if (close_range(4, ~0U, 0) != 0) {  // Linux 5.9; older kernels close one by one
-        for (long fd = 4; fd < open_max; ++fd)
+    if (ends.answer_write >= 0) {
+        const int answer_high = fcntl(ends.answer_write, F_DUPFD, first_free);
+        if (answer_high < 0 || dup2(answer_high, kAnswerDescriptor) < 0) {
+            report_failure(report_fd, Step::descriptors);
+        }
+    }
+    if (close_range(static_cast<unsigned>(first_free), ~0U, 0) !=
+        0) {  // Linux 5.9; older: one by one
+        for (long fd = first_free; fd < open_max; ++fd)
             close(static_cast<int>(fd));
     }
 
@@ -177,7 +198,11 @@ struct ChildEnds {
     sigset_t none;
     sigemptyset(&none);
     sigprocmask(SIG_SETMASK, &none, nullptr);
-    execve(spec.executable.c_str(), argv, envp);
+    if (program_fd >= 0) {
+        syscall(SYS_execveat, program_fd, "", argv, envp, AT_EMPTY_PATH);
+    } else {
+        execve(spec.executable.c_str(), argv, envp);
+    }
     report_failure(report_fd, Step::exec);
 }
 
@@ -198,10 +223,22 @@ ChildProcess start_child(const ChildSpec& spec) {
     Pipe out = make_pipe();
     Pipe err = make_pipe();
     Pipe report = make_pipe();
+    Pipe answers;
+    if (spec.answer_pipe) {
+        answers = make_pipe();
+        make_non_blocking(answers.read);
+    }
     for (const UniqueFd* ours : {&in.write, &out.read, &err.read})
         make_non_blocking(*ours);
+    UniqueFd program;
+    if (spec.exec_by_descriptor) {
+        program.reset(open(spec.executable.c_str(), O_PATH | O_CLOEXEC));
+        if (!program) throw_errno("cannot open " + spec.executable);
+    }
     const long open_max = sysconf(_SC_OPEN_MAX);
-    const ChildEnds ends{in.read.get(), out.write.get(), err.write.get(), report.write.get()};
+    const int stdin_read = spec.stdin_fd >= 0 ? spec.stdin_fd : in.read.get();
+    const ChildEnds ends{stdin_read,         out.write.get(),     err.write.get(),
+                         report.write.get(), answers.write.get(), program.get()};
 
     // Block every signal across the fork, so that none reaches a handler of the grader's in the
     // child before it has reset them all.
@@ -224,6 +261,7 @@ ChildProcess start_child(const ChildSpec& spec) {
     out.write.reset();
     err.write.reset();
     report.write.reset();
+    answers.write.reset();
     ChildFailure failure{};
     ssize_t got = 0;
     do {
@@ -239,9 +277,10 @@ ChildProcess start_child(const ChildSpec& spec) {
 
     ChildProcess child;
     child.pid = pid;
-    child.stdin_write = std::move(in.write);
+    if (spec.stdin_fd < 0) child.stdin_write = std::move(in.write);
     child.stdout_read = std::move(out.read);
     child.stderr_read = std::move(err.read);
+    child.answers_read = std::move(answers.read);
     return child;
 }
 

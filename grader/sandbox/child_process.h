@@ -29,19 +29,34 @@ struct ChildSpec {
     rlim_t tasks = RLIM_INFINITY;  ///< RLIMIT_NPROC: processes and threads of the child's user
     rlim_t file_size_bytes = RLIM_INFINITY;
     std::optional<Identity> identity;  ///< switch to it before exec; nullopt keeps ours
+    /// Give the child a fourth pipe at descriptor kAnswerDescriptor (not close-on-exec), whose
+    /// other end ChildProcess::answers_read holds.
+    bool answer_pipe = false;
+    /// Execute the program through a descriptor the grader opened before dropping its privileges
+    /// (execveat), not by its path: the program may then lie in a folder the child's user cannot
+    /// enter, where no other program of that user can reach it either.
+    bool exec_by_descriptor = false;
+    /// The child's stdin: this descriptor (the caller keeps and closes it) instead of a pipe.
+    int stdin_fd = -1;
 };
+
+/// Where a child started with an answer pipe finds it: the first descriptor after stderr, open
+/// before the program's first instruction (and so before any static constructor of its).
+constexpr int kAnswerDescriptor = 3;
 
 /// A started child: its pid, which is also its process group and session, and our ends of its
 /// stdin, stdout and stderr: non-blocking, and close-on-exec so that no other program the grader
 /// starts holds them.
 struct ChildProcess {
     pid_t pid = -1;
-    UniqueFd stdin_write;
+    UniqueFd stdin_write;  ///< empty when the spec gave stdin_fd
     UniqueFd stdout_read;
     UniqueFd stderr_read;
+    UniqueFd answers_read;  ///< empty unless the spec asked for an answer pipe
 };
 
-/// Forks; the child gets pipes for stdin, stdout and stderr and no other descriptor of ours,
+/// Forks; the child gets pipes for stdin, stdout and stderr (and the answer pipe, if asked) and no
+/// other descriptor of ours,
 /// default signal handling, a new session, the limits and the identity, then execs. Throws
 /// std::runtime_error naming the step that failed, and why, when the program could not be
 /// started; the child is reaped before.

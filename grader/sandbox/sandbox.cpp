@@ -1,11 +1,14 @@
 #include "grader/sandbox/sandbox.h"
 
+#include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
@@ -127,14 +130,28 @@ SandboxRun run_sandboxed(const std::vector<std::string>& argv, const std::string
         spec.argv.insert(spec.argv.end(), arguments.begin(), arguments.end());
         spec.working_directory = normal.working_directory.string();
         spec.environment.push_back("PWD=" + spec.working_directory);  // as bubblewrap sets it
+        // By descriptor: the grader's private folders (a submission's probes) stay shut to the
+        // sandbox's user, who could otherwise run any probe it can name.
+        spec.exec_by_descriptor = true;
     }
     spec.executable = spec.argv.front();
+    spec.answer_pipe = policy.answer_channel;
+    UniqueFd stdin_file;
+    if (!policy.stdin_file.empty()) {
+        stdin_file.reset(open(policy.stdin_file.c_str(), O_RDONLY | O_CLOEXEC));
+        if (!stdin_file) {
+            throw std::runtime_error("sandbox: cannot open " + policy.stdin_file.string() + ": " +
+                                     std::strerror(errno));
+        }
+        spec.stdin_fd = stdin_file.get();
+    }
     if (spec.identity && !normal.writable.empty()) hand_over(normal.writable, *spec.identity);
 
     const Clock::time_point start = Clock::now();
     ChildProcess child = start_child(spec);
-    Supervision supervision = supervise(child, input, start + policy.limits.wall,
-                                        {policy.limits.output_bytes, kErrorBytes});
+    Supervision supervision =
+        supervise(child, input, start + policy.limits.wall,
+                  {policy.limits.output_bytes, kErrorBytes, policy.limits.answer_bytes});
 
     SandboxRun run;
     run.isolated = isolated;
@@ -143,7 +160,9 @@ SandboxRun run_sandboxed(const std::vector<std::string>& argv, const std::string
     run.timed_out = supervision.killed_at_wall ||
                     at_cpu_limit(run, supervision, static_cast<double>(spec.cpu_seconds));
     run.output_capped = supervision.output_capped;
+    run.answers_capped = supervision.answers_capped;
     run.output = std::move(supervision.output);
+    run.answers = std::move(supervision.answers);
     run.errors = std::move(supervision.errors);
     return run;
 }

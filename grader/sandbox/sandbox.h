@@ -40,6 +40,7 @@ struct SandboxLimits {
     /// RLIMIT_FSIZE: the largest file it may write; with bubblewrap, also the size of its /tmp.
     std::size_t file_size_bytes = 64u << 20;
     std::size_t output_bytes = 64u << 20;  ///< stdout read at most; stderr at most 1 MiB
+    std::size_t answer_bytes = 64u << 20;  ///< the answer channel read at most, when there is one
 };
 
 struct SandboxPolicy {
@@ -53,6 +54,14 @@ struct SandboxPolicy {
     std::filesystem::path working_directory = "/";
     /// Use bubblewrap when it is installed and works; false runs with rlimits and timeout only.
     bool isolate = true;
+    /// Give the program an answer channel: a pipe at descriptor kAnswerDescriptor (3), open
+    /// before its first instruction, whose contents come back as SandboxRun::answers. A probe
+    /// answers there, so that nothing the submission prints on stdout, even before main, can
+    /// reach or break the protocol.
+    bool answer_channel = false;
+    /// The program's stdin is this file, which the grader opens itself: the program needs no way
+    /// to it, and is never shown the folder it lies in. Empty: stdin is the run's `input`.
+    std::filesystem::path stdin_file;
 };
 
 struct SandboxRun {
@@ -63,18 +72,20 @@ struct SandboxRun {
     /// Killed at the wall-clock limit, or by SIGXCPU/SIGKILL at the CPU limit (with bubblewrap,
     /// which hides the program's CPU time, a SIGKILL counts once the wall time reached the limit).
     bool timed_out = false;
-    bool output_capped = false;  ///< it wrote more than output_bytes
-    std::string output;          ///< stdout, up to the cap
-    std::string errors;          ///< stderr, up to 1 MiB
+    bool output_capped = false;   ///< it wrote more than output_bytes
+    bool answers_capped = false;  ///< it wrote more than answer_bytes on the answer channel
+    std::string output;           ///< stdout, up to the cap
+    std::string errors;           ///< stderr, up to 1 MiB
+    std::string answers;          ///< the answer channel, up to its cap (answer_channel only)
     double wall_seconds = 0.0;
     bool isolated = false;  ///< bubblewrap was used
 };
 
-/// Runs argv[0] with arguments, `input` on its stdin, under the policy. argv[0] without a slash is
-/// looked up in the sandbox's PATH; the program gets its absolute path as argv[0]. Never throws
-/// for what the program does; throws std::runtime_error only when the program cannot be started
-/// at all (not found, a path of the policy missing, the program or working folder outside what
-/// bubblewrap would show), and says why.
+/// Runs argv[0] with arguments, `input` (or policy.stdin_file) on its stdin, under the policy.
+/// argv[0] without a slash is looked up in the sandbox's PATH; the program gets its absolute path
+/// as argv[0]. Never throws for what the program does; throws std::runtime_error only when the
+/// program cannot be started at all (not found, a path of the policy missing, the program or
+/// working folder outside what bubblewrap would show), and says why.
 SandboxRun run_sandboxed(const std::vector<std::string>& argv, const std::string& input,
                          const SandboxPolicy& policy);
 

@@ -1,5 +1,7 @@
 #include "grader/sandbox/sandbox_user.h"
 
+#include <grp.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -58,6 +60,38 @@ void hand_over(const fs::path& folder, const Identity& identity) {
     if (lchown(folder.c_str(), identity.uid, identity.gid) != 0) {
         throw std::runtime_error("sandbox: cannot give the writable folder " + folder.string() +
                                  " to uid " + std::to_string(identity.uid) + ": " +
+                                 std::strerror(errno));
+    }
+}
+
+std::vector<fs::path> open_to_sandbox_user(const std::vector<fs::path>& paths) {
+    std::vector<fs::path> open;
+    const std::optional<Identity> identity = program_identity();
+    if (!identity) return open;
+    for (const fs::path& path : paths) {
+        // A child asks, as that user, and answers with its exit code: 0 when it could reach it.
+        const pid_t child = fork();
+        if (child == 0) {
+            const bool as_user = setgroups(0, nullptr) == 0 && setgid(identity->gid) == 0 &&
+                                 setuid(identity->uid) == 0;
+            _exit(as_user && (access(path.c_str(), R_OK) == 0 || access(path.c_str(), X_OK) == 0)
+                      ? 0
+                      : 1);
+        }
+        int status = 0;
+        if (child < 0 || waitpid(child, &status, 0) != child) {
+            throw std::runtime_error("sandbox: cannot ask what the sandbox's user may read: " +
+                                     std::string(std::strerror(errno)));
+        }
+        if (WIFEXITED(status) && WEXITSTATUS(status) == 0) open.push_back(path);
+    }
+    return open;
+}
+
+void reclaim(const fs::path& path) {
+    if (geteuid() != 0) return;
+    if (lchown(path.c_str(), geteuid(), getegid()) != 0) {
+        throw std::runtime_error("sandbox: cannot take back " + path.string() + ": " +
                                  std::strerror(errno));
     }
 }

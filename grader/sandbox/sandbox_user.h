@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <vector>
 
 #include "grader/sandbox/child_process.h"
 
@@ -29,5 +30,16 @@ rlim_t tasks_of(uid_t uid);
 /// the program can add and remove files there but cannot touch another owner's file in place.
 /// Throws std::runtime_error when it cannot.
 void hand_over(const std::filesystem::path& folder, const Identity& identity);
+
+/// Those of `paths` that the sandbox's user could read or execute, were a program of its to name
+/// them: asked of the kernel by a child process that becomes that user. Empty when the grader is
+/// not root (its programs then run as its own user, and only bubblewrap can hide anything).
+std::vector<std::filesystem::path> open_to_sandbox_user(
+    const std::vector<std::filesystem::path>& paths);
+
+/// Gives `path` (not what is in it) back to the grader's own user after a program that ran as
+/// another made it or was handed it. Does nothing when the grader is not root (no program could
+/// have run as another user). Throws std::runtime_error when it cannot.
+void reclaim(const std::filesystem::path& path);
 
 }  // namespace raystep::grade

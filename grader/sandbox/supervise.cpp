@@ -119,14 +119,16 @@ Supervision supervise(ChildProcess& child, const std::string& input, Clock::time
                 kill(-child.pid, SIGKILL);
                 result.killed_at_wall = true;
             }
-            const bool pipes_closed = !child.stdout_read && !child.stderr_read;
+            const bool pipes_closed =
+                !child.stdout_read && !child.stderr_read && !child.answers_read;
             if (exited && (pipes_closed || now >= drain_until)) break;
 
             // Wait for any pipe to be ready, at most one slice.
-            pollfd fds[3] = {{child.stdin_write.get(), POLLOUT, 0},
+            pollfd fds[4] = {{child.stdin_write.get(), POLLOUT, 0},
                              {child.stdout_read.get(), POLLIN, 0},
-                             {child.stderr_read.get(), POLLIN, 0}};  // poll skips fd -1
-            if (poll(fds, 3, kPollSliceMs) < 0) continue;            // EINTR
+                             {child.stderr_read.get(), POLLIN, 0},
+                             {child.answers_read.get(), POLLIN, 0}};  // poll skips fd -1
+            if (poll(fds, 4, kPollSliceMs) < 0) continue;             // EINTR
 
             // Feed stdin as far as the pipe takes it; close it at the end of the input, or when
             // the program closed its end (EPIPE).
@@ -148,6 +150,10 @@ Supervision supervise(ChildProcess& child, const std::string& input, Clock::time
             }
             if (fds[2].revents) {
                 read_some(child.stderr_read, buffer, result.errors, caps.error_bytes, error_capped);
+            }
+            if (fds[3].revents) {
+                read_some(child.answers_read, buffer, result.answers, caps.answer_bytes,
+                          result.answers_capped);
             }
         }
     } catch (...) {

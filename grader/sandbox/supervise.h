@@ -9,10 +9,11 @@
 
 namespace raystep::grade {
 
-/// How much of stdout and stderr is kept; the rest is read and dropped.
+/// How much of stdout, stderr and the answer pipe is kept; the rest is read and dropped.
 struct OutputCaps {
     std::size_t output_bytes = 0;
     std::size_t error_bytes = 0;
+    std::size_t answer_bytes = 0;
 };
 
 /// How a supervised child ended, and what it wrote.
@@ -24,15 +25,17 @@ struct Supervision {
     /// program's out).
     double cpu_seconds = 0.0;
     bool killed_at_wall = false;
-    bool output_capped = false;  ///< stdout was longer than its cap
+    bool output_capped = false;   ///< stdout was longer than its cap
+    bool answers_capped = false;  ///< the answer pipe was longer than its cap
     std::string output;
     std::string errors;
+    std::string answers;  ///< what came on the answer pipe, if the child has one
 };
 
 /// Writes `input` to the child's stdin as fast as it reads it and then closes it; reads its
-/// stdout and stderr up to the caps and drains the rest; kills its process group at `deadline`,
-/// and also once the child itself has exited; reaps it. Never throws for what the child does; if
-/// it throws (out of memory), it has killed and reaped the child first.
+/// stdout, stderr and answer pipe up to the caps and drains the rest; kills its process group at
+/// `deadline`, and also once the child itself has exited; reaps it. Never throws for what the child
+/// does; if it throws (out of memory), it has killed and reaped the child first.
 Supervision supervise(ChildProcess& child, const std::string& input,
                       std::chrono::steady_clock::time_point deadline, OutputCaps caps);
 

@@ -13,8 +13,8 @@
 
 #include "grader/grade/batch.h"
 #include "grader/grade/grade_submission.h"
-#include "grader/grade/write_reports.h"
 #include "grader/grade/release.h"
+#include "grader/grade/write_reports.h"
 #include "grader/report/audience.h"
 #include "grader/report/console_summary.h"
 #include "grader/sandbox/sandbox.h"
@@ -27,10 +27,11 @@ namespace {
 // Says which sandbox grades, before anything is graded: without bubblewrap the isolation is the
 // machine's or container's (docs/instructor.md, "The sandbox").
 void print_sandbox() {
-    std::printf("sandbox: %s\n", bubblewrap_available()
-                                     ? "bubblewrap (namespaces, no network, read-only view) with rlimits"
-                                     : "rlimits, a timeout and an output cap only: bubblewrap cannot make a "
-                                       "sandbox on this machine");
+    std::printf("sandbox: %s\n",
+                bubblewrap_available()
+                    ? "bubblewrap (namespaces, no network, read-only view) with rlimits"
+                    : "rlimits, a timeout and an output cap only: bubblewrap cannot make a "
+                      "sandbox on this machine");
 }
 
 int default_jobs() {
@@ -47,35 +48,50 @@ struct SubmissionArguments {
     long case_index = -1;
     std::string rubric = RAYSTEP_RUBRIC;
     bool instructor = false;
+    std::string work;
+    bool keep_work = false;
 };
 
 int grade_one(const SubmissionArguments& arguments) {
     print_sandbox();
     const auto start = std::chrono::steady_clock::now();
+    // Every path absolute from here on: the grader hands them to programs that run elsewhere.
+    const fs::path output = fs::absolute(arguments.output);
     GradeOptions options;
-    options.submission = arguments.path;
-    options.output = arguments.output;
+    options.submission = fs::absolute(arguments.path);
+    options.output = output;
+    if (!arguments.work.empty()) options.work_parent = fs::absolute(arguments.work);
+    options.keep_work = arguments.keep_work;
     options.jobs = arguments.jobs;
     options.only_check = arguments.check;
     if (arguments.stage >= 0) options.only_stage = arguments.stage;
     options.skip_speed = arguments.no_speed;
-    if (arguments.case_index >= 0) options.only_case = static_cast<std::size_t>(arguments.case_index);
+    if (arguments.case_index >= 0)
+        options.only_case = static_cast<std::size_t>(arguments.case_index);
     options.reference_probe = RAYSTEP_REFERENCE_PROBE;
     options.reproduce = "raystep-grade submission " + arguments.path;
-    GradeReport report = grade_submission(options, load_rubric(arguments.rubric), this_build_toolchain());
+    GradeReport report = grade_submission(options, load_rubric(fs::absolute(arguments.rubric)),
+                                          this_build_toolchain());
     const auto reports_start = std::chrono::steady_clock::now();
-    write_reports(report, arguments.output);
+    write_reports(report, output);
     report.times.reports =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - reports_start).count();
-    write_reports(report, arguments.output);  // again, with the reports' own time in report.json
-    std::fputs(console_summary(report, arguments.instructor ? Audience::instructor : Audience::student).c_str(),
-               stdout);
-    const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("\ntimes: intake %.1f s, build %.1f s, checks %.1f s, reports %.1f s; %.1f s in all\n",
-                report.times.intake, report.times.build, report.times.checks, report.times.reports, total);
-    std::printf("reports: %s/index.html (student), instructor.html, results.json (Gradescope), "
-                "prairielearn.json, junit.xml\n",
-                arguments.output.c_str());
+    write_reports(report, output);  // again, with the reports' own time in report.json
+    std::fputs(
+        console_summary(report, arguments.instructor ? Audience::instructor : Audience::student)
+            .c_str(),
+        stdout);
+    const double total =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf(
+        "\ntimes: intake %.1f s, build %.1f s, checks %.1f s, reports %.1f s; %.1f s in all\n",
+        report.times.intake, report.times.build, report.times.checks, report.times.reports, total);
+    if (!report.work_folder.empty())
+        std::printf("work folder kept: %s\n", report.work_folder.c_str());
+    std::printf(
+        "reports: %s/index.html (student), instructor.html, results.json (Gradescope), "
+        "prairielearn.json, junit.xml\n",
+        output.c_str());
     return 0;
 }
 
@@ -89,24 +105,29 @@ struct BatchArguments {
 int grade_many(const BatchArguments& arguments) {
     print_sandbox();
     BatchOptions options;
-    options.folder = arguments.folder;
-    options.output = arguments.output;
+    options.folder = fs::absolute(arguments.folder);
+    options.output = fs::absolute(arguments.output);
     options.jobs = arguments.jobs;
     options.progress = isatty(fileno(stderr)) != 0;
     options.reference_probe = RAYSTEP_REFERENCE_PROBE;
     const auto start = std::chrono::steady_clock::now();
-    const BatchTally tally = grade_class(options, load_rubric(arguments.rubric), this_build_toolchain());
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("graded %zu submissions, %zu already graded before, %zu failed, in %.0f s; the class: %s/grades.csv\n",
-                tally.graded, tally.resumed, tally.failed, seconds, arguments.output.c_str());
+    const BatchTally tally =
+        grade_class(options, load_rubric(fs::absolute(arguments.rubric)), this_build_toolchain());
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::printf(
+        "graded %zu submissions, %zu already graded before, %zu failed, in %.0f s; the class: "
+        "%s/grades.csv\n",
+        tally.graded, tally.resumed, tally.failed, seconds, arguments.output.c_str());
     return tally.failed == 0 ? 0 : 1;
 }
 
 int release(const std::string& output) {
     const ReleaseSummary summary = make_release(this_build_toolchain().source, output);
-    std::printf("wrote the student release to %s: %zu files, %zu reference images\n", output.c_str(),
-                summary.files, summary.reference_images);
-    for (const std::string& skipped : summary.skipped) std::printf("  not rendered: %s\n", skipped.c_str());
+    std::printf("wrote the student release to %s: %zu files, %zu reference images\n",
+                output.c_str(), summary.files, summary.reference_images);
+    for (const std::string& skipped : summary.skipped)
+        std::printf("  not rendered: %s\n", skipped.c_str());
     return 0;
 }
 
@@ -117,26 +138,40 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
 
     SubmissionArguments one;
-    CLI::App* submission = app.add_subcommand("submission", "Grade one submission: a folder or a .zip");
-    submission->add_option("path", one.path, "The submission")->required()->check(CLI::ExistingPath);
-    submission->add_option("-o,--output", one.output, "Where the reports go (default: grade-report)");
-    submission->add_option("--jobs", one.jobs, "Compiles and checks at a time (default: every core)")
+    CLI::App* submission =
+        app.add_subcommand("submission", "Grade one submission: a folder or a .zip");
+    submission->add_option("path", one.path, "The submission")
+        ->required()
+        ->check(CLI::ExistingPath);
+    submission->add_option("-o,--output", one.output,
+                           "Where the reports go (default: grade-report)");
+    submission
+        ->add_option("--jobs", one.jobs, "Compiles and checks at a time (default: every core)")
         ->check(CLI::Range(1, 256));
     submission->add_option("--check", one.check, "Run only this check, by id");
-    submission->add_option("--stage", one.stage, "Run only this stage's checks (0: the whole pipeline's)")
+    submission
+        ->add_option("--stage", one.stage, "Run only this stage's checks (0: the whole pipeline's)")
         ->check(CLI::Range(0, 7));
     submission->add_flag("--no-speed", one.no_speed,
                          "Leave out the speed checks (on a loaded machine, or to regrade quickly)");
     submission->add_option("--case", one.case_index, "With --check: only this case")
         ->check(CLI::NonNegativeNumber);
-    submission->add_option("--rubric", one.rubric, "The rubric (default: grader/rubric/rubric.json)")
+    submission
+        ->add_option("--rubric", one.rubric, "The rubric (default: grader/rubric/rubric.json)")
         ->check(CLI::ExistingFile);
     submission->add_flag("--instructor", one.instructor, "Show hidden checks on the console too");
+    submission->add_option("--work", one.work,
+                           "Where to build (default: beside the reports, or the system's temporary "
+                           "folder where the sandbox's user cannot reach them)");
+    submission->add_flag("--keep-work", one.keep_work,
+                         "Keep the build (the submission's files, objects, probes) to look into");
 
     BatchArguments many;
     CLI::App* batch = app.add_subcommand(
         "batch", "Grade a class: every folder and .zip in DIR; resumable; writes grades.csv");
-    batch->add_option("folder", many.folder, "The class's submissions")->required()->check(CLI::ExistingDirectory);
+    batch->add_option("folder", many.folder, "The class's submissions")
+        ->required()
+        ->check(CLI::ExistingDirectory);
     batch->add_option("-o,--output", many.output, "Where the reports go (default: grades)");
     batch->add_option("--jobs", many.jobs, "Compiles and checks at a time (default: every core)")
         ->check(CLI::Range(1, 256));
@@ -145,7 +180,8 @@ int main(int argc, char** argv) {
 
     std::string release_folder;
     CLI::App* release_command = app.add_subcommand(
-        "release", "Write the student starter repository: no solutions, no grader, reference images");
+        "release",
+        "Write the student starter repository: no solutions, no grader, reference images");
     release_command->add_option("folder", release_folder, "A new, empty folder")->required();
 
     try {
