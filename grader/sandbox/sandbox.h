@@ -9,7 +9,7 @@
 namespace raystep::grade {
 
 // Running untrusted programs (a submission's probe, or the compiler on a submission's files) so
-// that nothing they do reaches beyond their run: docs/design, "The grader: trust split".
+// that nothing they do reaches beyond their run: DESIGN.md, "The grader: trust split".
 //
 // Always (Linux; the grader runs there): rlimits on CPU time, address space, processes and file
 // size, a wall-clock timeout after which the whole process group is killed, and a cap on the
@@ -21,7 +21,8 @@ namespace raystep::grade {
 // The program never runs as root: when the grader is root, it runs as nobody (uid and gid 65534)
 // with or without bubblewrap. So the paths in read_only must be readable by others, with every
 // folder above them searchable, and the writable folder is given to nobody (chown, the folder
-// only) before the run. Its environment is PATH (/usr/local/bin:/usr/bin:/bin) and PWD, nothing
+// only) before the run. Without bubblewrap the program is executed through a descriptor the
+// grader opened, so it may lie in a folder that only the grader can enter. Its environment is PATH (/usr/local/bin:/usr/bin:/bin) and PWD, nothing
 // of the grader's. A run ends when the program's first process exits; whatever it left running
 // is killed then (without bubblewrap, only what stayed in its process group).
 //
