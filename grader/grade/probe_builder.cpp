@@ -153,14 +153,17 @@ CompiledStage compile_stage(const SubmittedStage& stage, const ProbeToolchain& t
                                " s to compile in all";
             return compiled;
         }
-        if (run.signal == SIGXFSZ || bytes_in(objects) > budget.compile_bytes_per_stage) {
-            compiled.failure = "the compiler's output for " + file.filename().string() +
-                               " passed the " + mebibytes(budget.compile_bytes_per_stage) +
-                               " a stage's objects may take";
-            return compiled;
-        }
-        if (run.exit_code != 0) {
-            compiled.failure = first_lines(run.errors + run.output);
+        if (run.exit_code != 0 || run.signal != 0) {
+            // The compiler's driver reports a pass killed by SIGXFSZ in words, and exits 4.
+            const bool over_budget =
+                run.signal == SIGXFSZ ||
+                run.errors.find("File size limit exceeded") != std::string::npos ||
+                bytes_in(objects) >= budget.compile_bytes_per_stage;
+            compiled.failure =
+                over_budget
+                    ? "the compiler's output for " + file.filename().string() + " passed the " +
+                          mebibytes(budget.compile_bytes_per_stage) + " a stage's objects may take"
+                    : first_lines(run.errors + run.output);
             if (compiled.failure.empty())
                 compiled.failure = "the compiler failed without a message";
             return compiled;

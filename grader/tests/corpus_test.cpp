@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <optional>
 #include <string>
 #include <thread>
@@ -96,14 +97,17 @@ void grade(Graded& entry, const fs::path& submission, const std::string& argumen
 fs::path mutated_submission(const fs::path& diff, const fs::path& folder) {
     fs::remove_all(folder);
     const int stage = stage_of(diff);
-    for (const raystep::grade::StageManifest& manifest : raystep::grade::read_stage_manifests(kSource)) {
+    for (const raystep::grade::StageManifest& manifest :
+         raystep::grade::read_stage_manifests(kSource)) {
         if (manifest.number != stage) continue;
         fs::create_directories(folder / "stages");
         fs::copy(kCorpus / "model/stages" / manifest.folder, folder / "stages" / manifest.folder,
                  fs::copy_options::recursive);
     }
-    const std::string apply = "cd " + shell_quoted(folder) + " && git apply -p1 " + shell_quoted(diff);
-    if (std::system(apply.c_str()) != 0) throw std::runtime_error("git apply failed for " + diff.string());
+    const std::string apply =
+        "cd " + shell_quoted(folder) + " && git apply -p1 " + shell_quoted(diff);
+    if (std::system(apply.c_str()) != 0)
+        throw std::runtime_error("git apply failed for " + diff.string());
     return folder;
 }
 
@@ -121,8 +125,7 @@ std::vector<Graded> grade_corpus(const std::string& folder) {
             entry.output = base / "report";
             try {
                 const fs::path submission = mutated_submission(diffs[k], base / "submission");
-                grade(entry, submission,
-                      "--stage " + std::to_string(entry.stage) + " --no-speed");
+                grade(entry, submission, "--stage " + std::to_string(entry.stage) + " --no-speed");
             } catch (const std::exception& error) {
                 entry.problem = error.what();
             }
@@ -130,8 +133,10 @@ std::vector<Graded> grade_corpus(const std::string& folder) {
     };
     // Grading is mostly compiling and waiting on probes: one more than the processors.
     std::vector<std::thread> workers(std::max(2u, std::thread::hardware_concurrency()) + 1);
-    for (std::thread& worker : workers) worker = std::thread(work);
-    for (std::thread& worker : workers) worker.join();
+    for (std::thread& worker : workers)
+        worker = std::thread(work);
+    for (std::thread& worker : workers)
+        worker.join();
     return graded;
 }
 
@@ -152,6 +157,16 @@ std::string describe(const Graded& entry) {
     return text;
 }
 
+// The files under `folder`, by path relative to it, in order.
+std::vector<std::string> files_under(const fs::path& folder) {
+    std::vector<std::string> files;
+    for (const fs::directory_entry& entry : fs::recursive_directory_iterator(folder)) {
+        files.push_back(fs::relative(entry.path(), folder).string());
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
 const CheckResult* find_check(const GradeReport& report, const std::string& id) {
     for (const CheckResult& check : report.checks) {
         if (check.id == id) return &check;
@@ -164,7 +179,8 @@ std::vector<fs::path> places_outside(const fs::path& output) {
     std::vector<fs::path> places = {"/tmp", "/autograder", "/autograder/results", kSource,
                                     fs::current_path()};
     if (const char* home = std::getenv("HOME")) places.push_back(home);
-    for (fs::path p = output; p.has_relative_path(); p = p.parent_path()) places.push_back(p.parent_path());
+    for (fs::path p = output; p.has_relative_path(); p = p.parent_path())
+        places.push_back(p.parent_path());
     return places;
 }
 
@@ -215,9 +231,10 @@ TEST_CASE("every correct alternative gets full marks in its stage", "[corpus]") 
     }
 }
 
-TEST_CASE("every hostile submission ends in bounded time with a low score, a complete report, "
-          "and nothing read or written outside its sandbox",
-          "[corpus]") {
+TEST_CASE(
+    "every hostile submission ends in bounded time with a low score, a complete report, "
+    "and nothing read or written outside its sandbox",
+    "[corpus]") {
     for (const fs::path& diff : diffs_in("hostile")) {
         for (const fs::path& place : places_outside(kWork / "hostile" / diff.stem() / "report")) {
             std::error_code ignored;
@@ -228,7 +245,8 @@ TEST_CASE("every hostile submission ends in bounded time with a low score, a com
     REQUIRE(graded.size() >= 10);
     // Lines of the reference solution, the hidden checks and the rubric: none may reach a report.
     const std::vector<std::string> secrets = {
-        "Stage 1 reference solution", "the contract's edge cases a student's own tests may not reach",
+        "Stage 1 reference solution",
+        "the contract's edge cases a student's own tests may not reach",
         "The rubric raystep-grade scores by"};
     for (const Graded& entry : graded) {
         INFO(describe(entry));
@@ -250,10 +268,11 @@ TEST_CASE("every hostile submission ends in bounded time with a low score, a com
             INFO(file);
             CHECK(fs::is_regular_file(entry.output / file));
         }
-        const nlohmann::json results = nlohmann::json::parse(read_text(entry.output / "results.json"));
+        const nlohmann::json results =
+            nlohmann::json::parse(read_text(entry.output / "results.json"));
         CHECK(results.at("score").get<double>() == Approx(entry.report->score()));
-        const std::string everything = read_text(entry.output / "report.json") +
-                                       read_text(entry.output / "instructor.html");
+        const std::string everything =
+            read_text(entry.output / "report.json") + read_text(entry.output / "instructor.html");
         for (const std::string& secret : secrets) {
             INFO("the report holds \"" << secret << "\"");
             CHECK(everything.find(secret) == std::string::npos);
@@ -263,4 +282,83 @@ TEST_CASE("every hostile submission ends in bounded time with a low score, a com
             CHECK_FALSE(fs::exists(place / kMark));
         }
     }
+}
+
+TEST_CASE(
+    "a class of odd submissions, graded into a relative -o under a private folder, gets a "
+    "complete report each, all inside -o",
+    "[corpus]") {
+    const fs::path root = kWork / "class";
+    fs::remove_all(root);
+    const fs::path class_folder = root / "submissions";
+    const fs::path model_stage1 = kCorpus / "model/stages/1_vectors";
+    fs::create_directories(class_folder / "empty");
+    // Archives of the model, whole and stage 1 alone, made by cmake -E tar as a student's zip
+    // tool would.
+    const auto pack = [&](const fs::path& from, const std::string& what, const fs::path& archive,
+                          const std::string& format) {
+        const std::string command = "cd " + shell_quoted(from) + " && " +
+                                    shell_quoted(CMAKE_COMMAND) + " -E tar cf " +
+                                    shell_quoted(archive) + " --format=" + format + " " + what;
+        REQUIRE(std::system(command.c_str()) == 0);
+    };
+    pack(kCorpus / "model", "stages", class_folder / "model.zip", "zip");
+    const fs::path stage1 = root / "stage1";
+    fs::create_directories(stage1 / "stages");
+    fs::copy(model_stage1, stage1 / "stages/1_vectors");
+    pack(stage1, "stages", class_folder / "...zip", "zip");
+    pack(stage1, "stages", class_folder / "tar-named.zip", "gnutar");
+    std::ofstream(class_folder / "essay.zip") << "My ray tracer is in my other folder.\n";
+    // A working copy with a build product of 20 MiB beside the sources.
+    fs::create_directories(stage1 / "build");
+    std::ofstream(stage1 / "build/raystep", std::ios::binary)
+        << std::string(std::size_t{20} << 20, '\1');
+    pack(stage1, "stages build", class_folder / "with-build.zip", "zip");
+    const std::vector<std::string> class_before = files_under(class_folder);
+
+    // The grader's folder: private, as mktemp -d and many home folders make them; -o relative.
+    const fs::path home = root / "home";
+    fs::create_directories(home);
+    fs::permissions(home, fs::perms::owner_all);
+    const std::string command = "cd " + shell_quoted(home) + " && " +
+                                shell_quoted(RAYSTEP_GRADE_PROGRAM) +
+                                " batch ../submissions -o grades --jobs 2 > ../batch.log 2>&1";
+    const int status = std::system(command.c_str());
+    INFO(read_text(root / "batch.log"));
+    CHECK(status == 0);
+
+    const std::map<std::string, std::string> expected = {
+        {"model", "model.zip"}, {"submission", "...zip"}, {"tar-named", "tar-named.zip"},
+        {"essay", "essay.zip"}, {"empty", "empty"},       {"with-build", "with-build.zip"}};
+    std::map<std::string, GradeReport> reports;
+    for (const auto& [name, entry] : expected) {
+        INFO(name << " from " << entry);
+        const fs::path report = home / "grades" / name / "report.json";
+        REQUIRE(fs::is_regular_file(report));
+        reports[name] = raystep::grade::report_from_json(nlohmann::json::parse(read_text(report)));
+    }
+    CHECK(reports["model"].score() == reports["model"].max_score());
+    CHECK(reports["model"].intake_problem.empty());
+    for (const std::string name : {"submission", "tar-named", "with-build"}) {
+        INFO(name);
+        CHECK(stage_score(reports[name], 1).first == stage_score(reports[name], 1).second);
+        CHECK(reports[name].intake_problem.empty());
+    }
+    CHECK(reports["essay"].intake_problem.find("nor an archive") != std::string::npos);
+    CHECK_FALSE(reports["empty"].intake_problem.empty());
+    CHECK(reports["essay"].score() == 0.0);
+
+    // Nothing but grades/ in the grader's folder, nothing changed among the submissions, and no
+    // work folder left.
+    std::vector<std::string> in_home;
+    for (const fs::directory_entry& entry : fs::directory_iterator(home))
+        in_home.push_back(entry.path().filename());
+    CHECK(in_home == std::vector<std::string>{"grades"});
+    CHECK(files_under(class_folder) == class_before);
+    for (const fs::directory_entry& entry : fs::recursive_directory_iterator(home / "grades")) {
+        INFO(entry.path());
+        CHECK(entry.path().filename().string().rfind("work-", 0) != 0);
+    }
+    const std::string csv = read_text(home / "grades/grades.csv");
+    CHECK(std::count(csv.begin(), csv.end(), '\n') == 1 + static_cast<long>(expected.size()));
 }
