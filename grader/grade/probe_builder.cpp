@@ -104,6 +104,24 @@ std::uintmax_t bytes_in(const fs::path& folder) {
     return total;
 }
 
+// The sandbox must show its user the work folder, or every compile would fail as if the student's
+// code had: a mistake of the grader's setting (a work folder under a folder nobody may enter, a
+// bubblewrap that cannot bind it) stops the grade instead, with bubblewrap's or the kernel's words.
+void require_sandbox_reaches(const fs::path& include, const fs::path& work) {
+    const fs::path scratch = work / "objects";
+    fs::create_directories(scratch);
+    SandboxPolicy policy;
+    policy.read_only = {include};
+    policy.writable = scratch;
+    policy.working_directory = scratch;
+    const SandboxRun run = run_sandboxed({"test", "-r", (include / "core").string()}, "", policy);
+    if (run.exit_code != 0) {
+        throw std::runtime_error(
+            "the sandbox cannot show its user the work folder " + work.string() + ": " +
+            (run.errors.empty() ? "the headers there cannot be read" : run.errors.substr(0, 400)));
+    }
+}
+
 // Compiles a stage's files one after another, each under what is left of the stage's budget: a
 // template bomb or a huge constant array ends, and so does a stage split into many slow files.
 CompiledStage compile_stage(const SubmittedStage& stage, const ProbeToolchain& toolchain,
@@ -260,6 +278,7 @@ ProbeSet build_probes(const Submission& submission, const ProbeToolchain& toolch
     const auto start = std::chrono::steady_clock::now();
     const fs::path include = work / "include";
     copy_headers(toolchain.source, include);
+    require_sandbox_reaches(include, work);
 
     // Compile the stages needed `jobs` at a time: each is independent of the others.
     std::vector<const SubmittedStage*> to_compile;
