@@ -16,6 +16,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
+constexpr const char* kClassCsv = "grades.csv";
+
 // A report written completely by an earlier run, or nothing.
 std::optional<GradeReport> finished_report(const fs::path& folder) {
     std::ifstream in(folder / "report.json");
@@ -53,7 +55,8 @@ std::vector<ClassEntry> class_submissions(const fs::path& folder, const fs::path
     }
     std::sort(paths.begin(), paths.end());
     std::vector<ClassEntry> entries;
-    std::map<std::string, int> taken;
+    // The class's own files in OUT are taken before any student's name.
+    std::map<std::string, int> taken = {{kClassCsv, 1}};
     for (const fs::path& path : paths) {
         const std::string base = submission_name(path);
         const int seen = ++taken[base];
@@ -122,8 +125,11 @@ BatchTally grade_class(const BatchOptions& options, const Rubric& rubric,
     }
     if (options.progress) std::fputs("\r\033[K", stderr);
     fs::create_directories(options.output);
-    std::ofstream csv(options.output / "grades.csv", std::ios::binary);
+    std::ofstream csv(options.output / kClassCsv, std::ios::binary);
     csv << grades_csv(reports);
+    csv.close();
+    if (!csv)
+        throw std::runtime_error((options.output / kClassCsv).string() + ": cannot be written");
     return tally;
 }
 

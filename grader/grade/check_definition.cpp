@@ -21,7 +21,9 @@ std::string ending(const SandboxRun& run, std::size_t answered, std::size_t aske
     std::string text = "the probe answered " + std::to_string(answered) + " of " +
                        std::to_string(asked) + " queries, then ";
     if (run.timed_out) return text + "ran out of time";
-    if (run.signal != 0) return text + "died of signal " + std::to_string(run.signal) + " (" + strsignal(run.signal) + ")";
+    if (run.signal != 0)
+        return text + "died of signal " + std::to_string(run.signal) + " (" +
+               strsignal(run.signal) + ")";
     if (run.output_capped) return text + "flooded its output past the cap";
     return text + "exited with code " + std::to_string(run.exit_code);
 }
@@ -31,7 +33,8 @@ std::string ending(const SandboxRun& run, std::size_t answered, std::size_t aske
 std::string answer_text(const ProbeAnswer& answer) {
     switch (answer.kind) {
         case ProbeAnswer::Kind::result:
-            return clipped(answer.value.dump(-1, ' ', false, probe::Json::error_handler_t::replace));
+            return clipped(
+                answer.value.dump(-1, ' ', false, probe::Json::error_handler_t::replace));
         case ProbeAnswer::Kind::not_implemented:
             return "not implemented: " + clipped(answer.message);
         case ProbeAnswer::Kind::threw:
@@ -60,7 +63,8 @@ CheckMeasure run_cases(const GradingContext& context, const std::string& check_i
         if (!context.only_case || *context.only_case == k) asked.push_back(k);
     }
     std::vector<ProbeQuery> queries;
-    for (const std::size_t k : asked) queries.push_back(cases[k].query);
+    for (const std::size_t k : asked)
+        queries.push_back(cases[k].query);
     const ProbeSession session = ask_probe(*probe.program, queries, limits);
 
     std::size_t passed = 0;
@@ -79,7 +83,8 @@ CheckMeasure run_cases(const GradingContext& context, const std::string& check_i
         try {
             judgement = cases[k].judge(answer);
         } catch (const std::exception& error) {
-            judgement = wrong("an answer in the protocol's form", std::string("unreadable: ") + error.what());
+            judgement = wrong("an answer in the protocol's form",
+                              std::string("unreadable: ") + error.what());
         }
         if (judgement.passed) {
             ++passed;

@@ -8,6 +8,7 @@
 #include "grader/grade/check_definition.h"
 #include "grader/grade/check_score.h"
 #include "grader/grade/probe_builder.h"
+#include "grader/grade/sandbox_copies.h"
 #include "grader/grade/stage_manifests.h"
 #include "grader/grade/submission.h"
 #include "grader/grade/work_folder.h"
@@ -68,7 +69,7 @@ ProbesNeeded probes_needed(const std::vector<CheckDefinition>& checks) {
 fs::path copy_scenes(const fs::path& source, const fs::path& work) {
     const fs::path copy = work / "source";
     fs::create_directories(copy);
-    fs::copy(source / "scenes", copy / "scenes", fs::copy_options::recursive);
+    copy_tree_for_sandbox(source / "scenes", copy / "scenes");
     return copy;
 }
 
@@ -102,9 +103,7 @@ GradeReport grade_submission(const GradeOptions& options, const Rubric& rubric,
     const std::vector<CheckDefinition> checks = checks_to_run(options, rubric);
     require_reference_shut(options, toolchain);
     fs::create_directories(output);
-    const WorkFolder work(
-        options.work_parent.empty() ? work_parent_for(output) : options.work_parent,
-        options.keep_work);
+    const WorkFolder work = make_work_folder(output, options.work_parent, options.keep_work);
 
     GradeReport report;
     report.submission = options.submission.string();

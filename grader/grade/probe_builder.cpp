@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "grader/grade/sandbox_copies.h"
 #include "grader/sandbox/sandbox.h"
 #include "grader/sandbox/sandbox_paths.h"
 #include "grader/sandbox/sandbox_user.h"
@@ -40,7 +41,7 @@ void copy_headers(const fs::path& source, const fs::path& include) {
             if (!entry.is_regular_file() || entry.path().extension() != ".h") continue;
             const fs::path target = include / fs::relative(entry.path(), source);
             fs::create_directories(target.parent_path());
-            fs::copy_file(entry.path(), target, fs::copy_options::overwrite_existing);
+            copy_file_for_sandbox(entry.path(), target, kSharedFile);
         }
     }
 }
@@ -64,7 +65,7 @@ StagedToolchain stage_toolchain(const ProbeToolchain& toolchain, const fs::path&
         // Numbered, so that two inputs of the same name (view.cpp.o of two libraries) never meet.
         const fs::path target =
             staged.common / (std::to_string(index++) + "-" + file.filename().string());
-        fs::copy_file(file, target, fs::copy_options::overwrite_existing);
+        copy_file_for_sandbox(file, target, kSharedFile);
         return target.string();
     };
     for (const fs::path& object : toolchain.probe_objects)
@@ -77,8 +78,7 @@ StagedToolchain stage_toolchain(const ProbeToolchain& toolchain, const fs::path&
         const fs::path folder = link / ("stage" + std::to_string(number));
         fs::create_directories(folder);
         staged.stage_libraries[number] = folder / library.filename();
-        fs::copy_file(library, staged.stage_libraries[number],
-                      fs::copy_options::overwrite_existing);
+        copy_file_for_sandbox(library, staged.stage_libraries[number], kSharedFile);
     }
     return staged;
 }
@@ -195,6 +195,12 @@ CompiledStage compile_stage(const SubmittedStage& stage, const ProbeToolchain& t
 // but not read by the sandbox's user, which makes a running probe undumpable: no other program
 // of that user can open it through /proc/PID/exe.
 void seal(const fs::path& program) {
+    // Only a regular file in a real folder: fs::permissions follows links, and a link put in the
+    // grader's way must not turn a chmod onto another file.
+    if (!fs::is_regular_file(fs::symlink_status(program)) ||
+        !fs::is_directory(fs::symlink_status(program.parent_path()))) {
+        throw std::runtime_error(program.string() + ": not a program the linker made");
+    }
     for (const fs::path& path : {program, program.parent_path()}) {
         reclaim(path);
         fs::permissions(path,
@@ -257,7 +263,7 @@ BuiltProbe link_probe(const std::vector<const CompiledStage*>& submitted,
 // be visible to the sandbox's user.
 BuiltProbe copy_reference(const fs::path& reference_probe, const fs::path& program) {
     fs::create_directories(program.parent_path());
-    fs::copy_file(reference_probe, program, fs::copy_options::overwrite_existing);
+    copy_file_for_sandbox(reference_probe, program, kSharedProgram);
     seal(program);
     return {program, ""};
 }

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "grader/grade/sandbox_copies.h"
 #include "grader/sandbox/sandbox.h"
 
 namespace raystep::grade {
@@ -47,34 +48,77 @@ std::string mebibytes(std::uintmax_t bytes) {
     return text.str();
 }
 
-// Every entry under `root`, links and special files included (as such, never followed).
-std::vector<Entry> folder_entries(const fs::path& root, std::string& problem) {
+// Folders that hold what tools made, never a student's sources: a working copy's history, build
+// products, packages. Not looked into, so that their thousands of entries cannot crowd the cap
+// below.
+bool made_by_tools(const fs::path& folder) {
+    static const std::set<std::string> names = {".git",
+                                                ".hg",
+                                                ".svn",
+                                                "build",
+                                                "cmake-build-debug",
+                                                "cmake-build-release",
+                                                "out",
+                                                "target",
+                                                "node_modules",
+                                                ".venv",
+                                                "venv",
+                                                "__pycache__",
+                                                ".cache",
+                                                ".vs"};
+    return names.count(folder.filename().string()) > 0;
+}
+
+Entry folder_entry(const fs::path& root, const fs::directory_entry& found, std::error_code& error) {
+    Entry entry;
+    entry.path = fs::relative(found.path(), root, error).generic_string();
+    const fs::file_status status = found.symlink_status(error);
+    if (fs::is_regular_file(status)) {
+        entry.kind = "file";
+        entry.size = found.file_size(error);
+        entry.contents = found.path();
+    } else {
+        entry.kind = fs::is_directory(status) ? "folder"
+                     : fs::is_symlink(status) ? "link"
+                                              : "other";
+    }
+    return entry;
+}
+
+// Every entry under `root`, links and special files included (as such, never followed): first
+// each manifest file where the layout puts it (stages/<folder>/<file>), then the rest, past the
+// folders tools make.
+std::vector<Entry> folder_entries(const fs::path& root, const std::vector<StageManifest>& manifests,
+                                  std::string& problem) {
     std::vector<Entry> entries;
+    std::set<fs::path> listed;
     std::error_code error;
+    for (const StageManifest& manifest : manifests) {
+        for (const std::string& file : manifest.files) {
+            const fs::path path = root / "stages" / manifest.folder / file;
+            if (!fs::exists(fs::symlink_status(path, error))) continue;
+            entries.push_back(folder_entry(root, fs::directory_entry(path, error), error));
+            listed.insert(path);
+        }
+    }
+    error.clear();
     fs::recursive_directory_iterator it(root, fs::directory_options::skip_permission_denied, error);
     for (; !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
-        if (entries.size() == kMostEntries) {
+        if (listed.count(it->path()) > 0) continue;
+        if (entries.size() >= kMostEntries) {
             problem = "the folder holds more than " + std::to_string(kMostEntries) +
                       " entries; those past them were not looked at";
             break;
         }
-        const fs::file_status status = it->symlink_status(error);
+        entries.push_back(folder_entry(root, *it, error));
         if (error) break;
-        Entry entry;
-        entry.path = fs::relative(it->path(), root, error).generic_string();
-        if (fs::is_regular_file(status)) {
-            entry.kind = "file";
-            entry.size = it->file_size(error);
-            entry.contents = it->path();
-        } else {
-            entry.kind = fs::is_directory(status) ? "folder"
-                         : fs::is_symlink(status) ? "link"
-                                                  : "other";
+        if (it->is_directory(error) && !it->is_symlink(error) && made_by_tools(it->path())) {
+            it.disable_recursion_pending();
         }
-        entries.push_back(std::move(entry));
     }
-    if (error && problem.empty())
+    if (error && problem.empty()) {
         problem = "the folder could not be read to its end: " + error.message();
+    }
     return entries;
 }
 
@@ -86,10 +130,13 @@ std::vector<Entry> archive_entries(const fs::path& archive, const std::set<std::
                                    std::string& problem) {
     const fs::path tools = work / "tools";
     const fs::path unpacked = work / "unpacked";
+    std::error_code ignored;
+    fs::remove_all(tools, ignored);
+    fs::remove_all(unpacked, ignored);
     fs::create_directories(tools);
     fs::create_directories(unpacked);
     const fs::path unpack = tools / "raystep-unpack";
-    fs::copy_file(RAYSTEP_UNPACK_PROGRAM, unpack, fs::copy_options::overwrite_existing);
+    copy_file_for_sandbox(RAYSTEP_UNPACK_PROGRAM, unpack, kSharedProgram);
 
     std::vector<std::string> argv = {unpack.string(), unpacked.string(),
                                      std::to_string(budget.largest_file),
@@ -225,7 +272,7 @@ Submission take_submission(const fs::path& path, const std::vector<StageManifest
     std::error_code error;
     const fs::file_status status = fs::status(path, error);
     if (fs::is_directory(status)) {
-        entries = folder_entries(path, submission.problem);
+        entries = folder_entries(path, manifests, submission.problem);
     } else if (fs::is_regular_file(status)) {
         entries = archive_entries(path, names, work, budget, submission.problem);
     } else if (fs::exists(status)) {
@@ -248,9 +295,18 @@ Submission take_submission(const fs::path& path, const std::vector<StageManifest
                         " (past the " + mebibytes(budget.total) + " a submission may bring)";
                 found = nullptr;
             }
+            if (found) {
+                try {
+                    copy_file_for_sandbox(found->contents, folder / file, kSharedFile,
+                                          budget.largest_file);
+                } catch (const std::runtime_error& copy_error) {
+                    note += (note.empty() ? "" : "; ") + std::string("left out ") + found->path +
+                            " (" + copy_error.what() + ")";
+                    found = nullptr;
+                }
+            }
             if (!note.empty()) stage.notes.push_back(note);
-            if (!found || !fs::copy_file(found->contents, folder / file,
-                                         fs::copy_options::overwrite_existing, error)) {
+            if (!found) {
                 stage.missing.push_back(file);
                 continue;
             }

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <utility>
 
 #include "grader/sandbox/sandbox_paths.h"
 
@@ -32,11 +33,9 @@ std::optional<fs::path> shut_to_others(const fs::path& folder) {
 
 }  // namespace
 
-WorkFolder::WorkFolder(const fs::path& parent, bool keep) : keep_(keep) {
+WorkFolder::WorkFolder(const fs::path& parent, const std::string& prefix, bool keep) : keep_(keep) {
     const fs::path base = absolute_normal(parent);
-    std::error_code error;
-    fs::create_directories(base, error);
-    std::string name = (base / "work-XXXXXX").string();
+    std::string name = (base / (prefix + "XXXXXX")).string();
     if (mkdtemp(name.data()) == nullptr) {
         throw std::runtime_error("cannot make a work folder in " + base.string() + ": " +
                                  std::strerror(errno));
@@ -46,6 +45,7 @@ WorkFolder::WorkFolder(const fs::path& parent, bool keep) : keep_(keep) {
     fs::permissions(path_, fs::perms::owner_all | fs::perms::group_exec | fs::perms::others_exec);
     if (geteuid() == 0) {
         if (const std::optional<fs::path> shut = shut_to_others(path_)) {
+            std::error_code error;
             fs::remove_all(path_, error);
             throw std::runtime_error(
                 "the work folder " + path_.string() + " lies under " + shut->string() +
@@ -55,17 +55,27 @@ WorkFolder::WorkFolder(const fs::path& parent, bool keep) : keep_(keep) {
     }
 }
 
+WorkFolder::WorkFolder(WorkFolder&& other) noexcept
+    : path_(std::move(other.path_)), keep_(other.keep_) {
+    other.path_.clear();
+}
+
 WorkFolder::~WorkFolder() {
     if (keep_ || path_.empty()) return;
     std::error_code ignored;
     fs::remove_all(path_, ignored);
 }
 
-fs::path work_parent_for(const fs::path& output) {
+WorkFolder make_work_folder(const fs::path& output, const fs::path& chosen, bool keep) {
+    if (!chosen.empty()) return WorkFolder(chosen, "work-", keep);
     const fs::path folder = absolute_normal(output);
-    if (geteuid() != 0 || !shut_to_others(folder)) return folder;
+    if (geteuid() != 0 || !shut_to_others(folder)) return WorkFolder(folder, "work-", keep);
+    // Straight in the temporary folder, never in a folder of ours there: another user could make
+    // that folder first, and swap what we make in it for links of theirs. mkdtemp's folder is
+    // ours alone, and /tmp's sticky bit keeps others from moving it.
     const char* tmpdir = std::getenv("TMPDIR");
-    return tmpdir && *tmpdir ? fs::path(tmpdir) / "raystep-grade" : fs::path("/tmp/raystep-grade");
+    return WorkFolder(tmpdir && *tmpdir ? fs::path(tmpdir) : fs::path("/tmp"),
+                      "raystep-grade-work-", keep);
 }
 
 }  // namespace raystep::grade

@@ -120,7 +120,7 @@ TEST_CASE("take_submission: every kind of archive gives the same files, whatever
     CAPTURE(static_cast<int>(format), name);
     const fs::path archive = folder.path() / name;
     write_archive(archive, format, complete_stages("raystep-main/"));
-    const WorkFolder work(folder.path(), false);
+    const WorkFolder work(folder.path(), "work-", false);
 
     const Submission submission = take_submission(archive, kManifests, work.path());
     CHECK(submission.problem.empty());
@@ -138,7 +138,7 @@ TEST_CASE("take_submission: a build product of 20 MiB beside the sources is pass
         {"build/release/bin/raystep", std::string(std::size_t{20} << 20, 'x'), "", ""});
     const fs::path archive = folder.path() / "repository.zip";
     write_archive(archive, Format::zip, entries);
-    const WorkFolder work(folder.path(), false);
+    const WorkFolder work(folder.path(), "work-", false);
 
     const Submission submission = take_submission(archive, kManifests, work.path());
     CHECK(submission.problem.empty());
@@ -152,7 +152,7 @@ TEST_CASE("take_submission: a source file over 1 MiB is left out, and the note s
     entries[1].contents = std::string((std::size_t{1} << 20) + 1, '/');
     const fs::path archive = folder.path() / "big.tar.gz";
     write_archive(archive, Format::tar_gz, entries);
-    const WorkFolder work(folder.path(), false);
+    const WorkFolder work(folder.path(), "work-", false);
 
     const Submission submission = take_submission(archive, kManifests, work.path());
     CHECK(taken(submission).count("3_intersect/sphere.cpp") == 0);
@@ -169,7 +169,7 @@ TEST_CASE("take_submission: links are never taken, and never reach outside the w
         {"stages/3_intersect/plane.cpp", "", "", "../../../../etc/hostname"}};
     const fs::path archive = folder.path() / "links.tar";
     write_archive(archive, Format::pax, entries);
-    const WorkFolder work(folder.path(), false);
+    const WorkFolder work(folder.path(), "work-", false);
 
     const Submission submission = take_submission(archive, kManifests, work.path());
     CHECK(taken(submission).empty());
@@ -191,7 +191,7 @@ TEST_CASE(
         {"stages/3_intersect/\xff\xfe/plane.cpp", "// not UTF-8", "", ""}};
     const fs::path archive = folder.path() / "names.tar";
     write_archive(archive, Format::pax, entries);
-    const WorkFolder work(folder.path(), false);
+    const WorkFolder work(folder.path(), "work-", false);
 
     const Submission submission = take_submission(archive, kManifests, work.path());
     CHECK(taken(submission).size() == 3);
@@ -213,7 +213,7 @@ TEST_CASE("take_submission: what unpacks past the budget is left out, and the no
     }
     const fs::path archive = folder.path() / "copies.zip";
     write_archive(archive, Format::zip, entries);
-    const WorkFolder work(folder.path(), false);
+    const WorkFolder work(folder.path(), "work-", false);
 
     IntakeBudget budget;
     budget.total = std::uintmax_t{4} << 20;
@@ -227,7 +227,7 @@ TEST_CASE(
     "what they are",
     "[intake]") {
     const TempFolder folder(0755);
-    const WorkFolder work(folder.path(), false);
+    const WorkFolder work(folder.path(), "work-", false);
     const fs::path text = folder.path() / "essay.zip";
     std::ofstream(text) << "This is my ray tracer. It works on my machine.\n";
     const fs::path empty = folder.path() / "empty.zip";
@@ -251,7 +251,7 @@ TEST_CASE("take_submission: a folder's files are taken, its links are not", "[in
     std::ofstream(root / "old/sphere.cpp") << "// an older sphere";
     std::ofstream(root / "plane.cpp") << "// plane";
     fs::create_symlink("/etc/passwd", root / "vectors.cpp");
-    const WorkFolder work(folder.path(), false);
+    const WorkFolder work(folder.path(), "work-", false);
 
     const Submission submission = take_submission(root, kManifests, work.path());
     CHECK(taken(submission) ==
@@ -274,7 +274,8 @@ TEST_CASE("submission_name: a safe folder name, whatever the submission is calle
 TEST_CASE("class_submissions: every entry but the output folder, each under a name of its own",
           "[intake]") {
     const TempFolder folder(0755);
-    for (const char* name : {"alice.zip", "alice", "...zip", "..zip", "notes.txt"}) {
+    for (const char* name :
+         {"alice.zip", "alice", "...zip", "..zip", "notes.txt", "grades.csv.zip"}) {
         std::ofstream(folder.path() / name) << "x";
     }
     fs::create_directories(folder.path() / "grades");
@@ -283,10 +284,43 @@ TEST_CASE("class_submissions: every entry but the output folder, each under a na
     std::vector<std::string> names;
     for (const ClassEntry& entry : entries)
         names.push_back(entry.name);
-    CHECK(names ==
-          std::vector<std::string>{"submission", "submission-2", "alice", "alice-2", "notes.txt"});
+    CHECK(names == std::vector<std::string>{"submission", "submission-2", "alice", "alice-2",
+                                            "grades.csv-2", "notes.txt"});
     for (const ClassEntry& entry : entries) {
         const fs::path reports = (folder.path() / "grades" / entry.name).lexically_normal();
         CHECK(reports.parent_path() == folder.path() / "grades");
     }
+}
+
+TEST_CASE("take_submission: a private (0600) source file is taken, and the copy is readable by all",
+          "[intake]") {
+    const TempFolder folder(0755);
+    const fs::path root = folder.path() / "carol";
+    fs::create_directories(root / "stages/1_vectors");
+    const fs::path file = root / "stages/1_vectors/vectors.cpp";
+    std::ofstream(file) << "// vectors";
+    fs::permissions(file, fs::perms::owner_read | fs::perms::owner_write);
+    const WorkFolder work(folder.path(), "work-", false);
+
+    const Submission submission = take_submission(root, kManifests, work.path());
+    REQUIRE(submission.stages[0].files.size() == 1);
+    const fs::perms mode = fs::status(submission.stages[0].files[0]).permissions();
+    CHECK((mode & fs::perms::others_read) == fs::perms::others_read);
+}
+
+TEST_CASE("take_submission: a working copy's 25,000 build products do not hide its sources",
+          "[intake]") {
+    const TempFolder folder(0755);
+    const fs::path root = folder.path() / "dave";
+    fs::create_directories(root / "stages/1_vectors");
+    std::ofstream(root / "stages/1_vectors/vectors.cpp") << "// vectors";
+    for (const char* tool_folder : {"build/deps", "aaa/deps"}) {
+        fs::create_directories(root / tool_folder);
+        for (int k = 0; k < 12500; ++k)
+            std::ofstream(root / tool_folder / (std::to_string(k) + ".o"));
+    }
+    const WorkFolder work(folder.path(), "work-", false);
+
+    const Submission submission = take_submission(root, kManifests, work.path());
+    CHECK(taken(submission).count("1_vectors/vectors.cpp") == 1);
 }

@@ -7,6 +7,7 @@
 #include <exception>
 #include <thread>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -134,6 +135,9 @@ int release(const std::string& output) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // What the grader makes for the sandbox's user to read (the work folder's headers, sources,
+    // probes) must not hang on the instructor's umask: folders 0755, files 0644 unless set.
+    umask(022);
     CLI::App app{"raystep-grade: grade raystep submissions (docs/instructor.md)", "raystep-grade"};
     app.require_subcommand(1);
 
