@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include "grader/grade/report_folders.h"
 #include "grader/grade/report_json.h"
 #include "grader/grade/write_reports.h"
 
@@ -15,7 +16,7 @@ namespace {
 
 // A report written completely by an earlier run, or nothing.
 std::optional<GradeReport> finished_report(const fs::path& folder) {
-    std::ifstream in(folder / "report.json");
+    std::ifstream in(finished_report_file(folder));
     if (!in) return std::nullopt;
     try {
         return report_from_json(nlohmann::json::parse(in));

@@ -9,6 +9,7 @@
 #include "grader/grade/check_definition.h"
 #include "grader/grade/check_score.h"
 #include "grader/grade/probe_builder.h"
+#include "grader/grade/report_folders.h"
 #include "grader/grade/stage_manifests.h"
 #include "grader/grade/submission.h"
 
@@ -46,7 +47,7 @@ GradeReport grade_submission(const GradeOptions& options, const Rubric& rubric,
     GradingContext context;
     context.probes = &probes;
     context.source = toolchain.source;
-    context.report_folder = options.output;
+    context.report_folder = instructor_folder(options.output);
     context.reference_probe = options.reference_probe;
     context.reproduce = options.reproduce;
     context.only_case = options.only_case;
@@ -82,7 +83,9 @@ GradeReport grade_submission(const GradeOptions& options, const Rubric& rubric,
     const auto run = [&](std::size_t k) {
         const CheckDefinition& check = checks[k];
         const BuiltProbe& probe = check.stage == 0 ? probes.pipeline : probes.stage(check.stage);
+        const auto started = std::chrono::steady_clock::now();
         results[k] = score_check(check, check.measure(context, probe), rubric);
+        results[k].seconds = seconds_since(started);
     };
     std::atomic<std::size_t> next{0};
     std::vector<std::thread> workers;

@@ -73,9 +73,10 @@ int grade_one(const SubmissionArguments& arguments) {
     const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("\ntimes: intake %.1f s, build %.1f s, checks %.1f s, reports %.1f s; %.1f s in all\n",
                 report.times.intake, report.times.build, report.times.checks, report.times.reports, total);
-    std::printf("reports: %s/index.html (student), instructor.html, results.json (Gradescope), "
-                "prairielearn.json, junit.xml\n",
-                arguments.output.c_str());
+    std::printf("reports: %s/student/ (index.html, results.json, junit.xml: for the student), "
+                "%s/instructor/ (instructor.html, results.json for Gradescope, prairielearn.json, "
+                "junit.xml, report.json)\n",
+                arguments.output.c_str(), arguments.output.c_str());
     return 0;
 }
 
