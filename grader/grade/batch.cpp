@@ -5,6 +5,7 @@
 #include <fstream>
 #include <map>
 
+#include "grader/grade/report_folders.h"
 #include "grader/grade/report_json.h"
 #include "grader/grade/submission.h"
 #include "grader/grade/write_reports.h"
@@ -20,7 +21,7 @@ constexpr const char* kClassCsv = "grades.csv";
 
 // A report written completely by an earlier run, or nothing.
 std::optional<GradeReport> finished_report(const fs::path& folder) {
-    std::ifstream in(folder / "report.json");
+    std::ifstream in(finished_report_file(folder));
     if (!in) return std::nullopt;
     try {
         return report_from_json(nlohmann::json::parse(in));

@@ -8,6 +8,7 @@
 #include "grader/grade/check_definition.h"
 #include "grader/grade/check_score.h"
 #include "grader/grade/probe_builder.h"
+#include "grader/grade/report_folders.h"
 #include "grader/grade/sandbox_copies.h"
 #include "grader/grade/stage_manifests.h"
 #include "grader/grade/submission.h"
@@ -124,7 +125,7 @@ GradeReport grade_submission(const GradeOptions& options, const Rubric& rubric,
     GradingContext context;
     context.probes = &probes;
     context.source = copy_scenes(toolchain.source, work.path());
-    context.report_folder = output;
+    context.report_folder = instructor_folder(output);
     context.reference_probe = probes.reference.program.value_or(fs::path());
     context.reproduce = options.reproduce;
     context.only_case = options.only_case;
@@ -135,7 +136,9 @@ GradeReport grade_submission(const GradeOptions& options, const Rubric& rubric,
     const auto run = [&](std::size_t k) {
         const CheckDefinition& check = checks[k];
         const BuiltProbe& probe = check.stage == 0 ? probes.pipeline : probes.stage(check.stage);
+        const auto started = std::chrono::steady_clock::now();
         results[k] = score_check(check, check.measure(context, probe), rubric);
+        results[k].seconds = seconds_since(started);
     };
     std::atomic<std::size_t> next{0};
     std::vector<std::thread> workers;

@@ -77,7 +77,8 @@ nlohmann::json report_json(const GradeReport& report) {
                            {{"reference", c.images.reference},
                             {"student", c.images.student},
                             {"difference", c.images.difference}}},
-                          {"details", c.details}});
+                          {"details", c.details},
+                          {"seconds", c.seconds}});
     }
     return {{"submission", report.submission},
             {"student", report.student},
@@ -125,6 +126,7 @@ GradeReport report_from_json(const nlohmann::json& j) {
                         images.at("student").get<std::string>(),
                         images.at("difference").get<std::string>()};
         check.details = c.at("details").get<std::string>();
+        check.seconds = c.value("seconds", 0.0);
         report.checks.push_back(std::move(check));
     }
     return report;

@@ -2,13 +2,16 @@
 
 #include <filesystem>
 
+#include "grader/grade/report_folders.h"
 #include "grader/report/grade_report.h"
 
 namespace raystep::grade {
 
-/// Writes every report of `report` into `folder`: results.json (Gradescope), prairielearn.json,
-/// junit.xml, index.html (the student's view), instructor.html (every check) and, last,
-/// report.json (the whole report, which a resumed batch takes as the mark of a finished one).
-void write_reports(const GradeReport& report, const std::filesystem::path& folder);
+/// Writes every report of `report` into the two folders under `output` (report_folders.h),
+/// making them as needed, report.json last. The student's folder gets only the student's views,
+/// made from the checks a student is shown (audience.h), with the students' reproduce commands;
+/// its HTML page carries the render checks' images, read from the instructor's folder. Throws
+/// std::runtime_error naming the file or folder that cannot be written.
+void write_reports(const GradeReport& report, const std::filesystem::path& output);
 
 }  // namespace raystep::grade

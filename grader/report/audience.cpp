@@ -15,4 +15,8 @@ GradeReport seen_by(const GradeReport& report, Audience audience) {
     return seen;
 }
 
+const std::string& reproduce_command(const Counterexample& example, Audience audience) {
+    return audience == Audience::student ? example.student_reproduce : example.reproduce;
+}
+
 }  // namespace raystep::grade

@@ -18,4 +18,10 @@ bool shown_to(const CheckResult& check, Audience audience);
 /// scores add up only what the audience can see.
 GradeReport seen_by(const GradeReport& report, Audience audience);
 
+/// The command that reruns a counterexample, for this audience: for the student,
+/// `student_reproduce` (what runs in the student release), never the instructor's `raystep-grade`
+/// command, which needs the grader and the rubric; for the instructor, `reproduce`. Empty when
+/// that audience has none: the report then shows no command.
+const std::string& reproduce_command(const Counterexample& example, Audience audience);
+
 }  // namespace raystep::grade

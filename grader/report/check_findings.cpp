@@ -23,7 +23,7 @@ std::string field(std::string_view label, std::string_view value) {
 
 }  // namespace
 
-std::string check_findings(const CheckResult& check, std::size_t max_bytes) {
+std::string check_findings(const CheckResult& check, Audience audience, std::size_t max_bytes) {
     std::string text;
     const std::size_t count = check.counterexamples.size();
     for (std::size_t k = 0; k < count; ++k) {
@@ -33,7 +33,8 @@ std::string check_findings(const CheckResult& check, std::size_t max_bytes) {
         text += field("input", example.input);
         text += field("expected", example.expected);
         text += field("got", example.got);
-        text += field("reproduce", example.reproduce);
+        const std::string& command = reproduce_command(example, audience);
+        if (!command.empty()) text += field("reproduce", command);
     }
     if (!check.details.empty()) {
         if (!text.empty()) text += "\n";

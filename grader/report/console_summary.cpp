@@ -126,7 +126,7 @@ std::string visibility_mark(Visibility visibility) {
 }
 
 // Under a check that did not pass: its first counterexample, or the first lines of its details.
-void append_findings(std::string& out, const CheckResult& check) {
+void append_findings(std::string& out, const CheckResult& check, Audience audience) {
     const std::string indent(kFindingIndent, ' ');
     if (!check.counterexamples.empty()) {
         const Counterexample& example = check.counterexamples.front();
@@ -138,8 +138,11 @@ void append_findings(std::string& out, const CheckResult& check) {
         field("expected", example.expected);
         field("got", example.got);
         // Never wrapped: a command broken over two lines does not paste back as one.
-        out += indent + pad_right("reproduce", 11) +
-               clipped_text(example.reproduce, kMaxFieldBytes) + "\n";
+        const std::string& command = reproduce_command(example, audience);
+        if (!command.empty()) {
+            out +=
+                indent + pad_right("reproduce", 11) + clipped_text(command, kMaxFieldBytes) + "\n";
+        }
         const std::size_t more = check.counterexamples.size() - 1;
         if (more > 0) {
             out += indent + "and " + std::to_string(more) + " more counterexample" +
@@ -204,6 +207,8 @@ std::string console_summary(const GradeReport& report, Audience audience) {
     if (!report.submission.empty() && report.submission != who)
         who += " (" + report.submission + ")";
     append_wrapped(out, "raystep-grade: ", who, kFindingIndent);
+    const std::string intake_problem = intake_problem_line(report.intake_problem);
+    if (!intake_problem.empty()) append_wrapped(out, "", intake_problem, 0);
     out += "Total: " + score_out_of(seen.score(), seen.max_score()) + " points\n\n";
     out += stage_table(seen);
 
@@ -220,7 +225,7 @@ std::string console_summary(const GradeReport& report, Audience audience) {
             std::string line = check.id + visibility_mark(check.visibility);
             if (!check.summary.empty()) line += ": " + clipped_text(check.summary, kMaxFieldBytes);
             append_wrapped(out, head, line, columns(head));
-            if (check.outcome != Outcome::passed) append_findings(out, check);
+            if (check.outcome != Outcome::passed) append_findings(out, check, audience);
         }
     }
 

@@ -16,9 +16,11 @@ constexpr std::size_t kConsoleWidth = 80;
 /// given: pass seen_by(report, audience) for one audience's sums.
 std::string stage_table(const GradeReport& report);
 
-/// The grade for a terminal: who and the total, the stage table, then per stage one line per
-/// check (outcome, score, id, summary) and, under each check that did not pass, its first
-/// counterexample with the command that reproduces it, or the first lines of its details. For
+/// The grade for a terminal: who, the intake problem if there was one
+/// (GradeReport::intake_problem), the total, the stage table, then per stage one line per check
+/// (outcome, score, id, summary) and, under each check that did not pass, its first
+/// counterexample with the audience's command that reproduces it (reproduce_command,
+/// audience.h), or the first lines of its details. For
 /// the student, the checks they are not shown (audience.h) are left out of every line and sum,
 /// and a closing line says how many there are; the instructor sees them all, marked with their
 /// visibility.

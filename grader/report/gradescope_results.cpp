@@ -19,7 +19,9 @@ constexpr std::size_t kMaxTestOutputBytes = 16000;
 nlohmann::json test_of(const CheckResult& check, int place_in_stage) {
     std::string output = outcome_name(check.outcome);
     if (!check.summary.empty()) output += ": " + clipped_text(check.summary, kMaxFieldBytes);
-    const std::string findings = check_findings(check, kMaxTestOutputBytes);
+    // Gradescope shows a test's output to the student: the student's commands, never the
+    // instructor's.
+    const std::string findings = check_findings(check, Audience::student, kMaxTestOutputBytes);
     if (!findings.empty()) output += "\n\n" + findings;
 
     nlohmann::json metrics = nlohmann::json::object();
@@ -54,7 +56,9 @@ nlohmann::json gradescope_results(const GradeReport& report) {
         tests.push_back(test_of(check, ++placed_in_stage[check.stage]));
     }
     const GradeReport seen = seen_by(report, Audience::student);
-    std::string output = stage_table(seen);
+    std::string output = intake_problem_line(report.intake_problem);
+    if (!output.empty()) output += "\n\n";
+    output += stage_table(seen);
     const std::size_t withheld = report.checks.size() - seen.checks.size();
     if (withheld > 0) {
         output += "\n" + std::to_string(withheld) + (withheld == 1 ? " check is" : " checks are") +

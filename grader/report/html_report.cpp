@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <stdexcept>
+#include <optional>
 #include <string_view>
 
+#include "grader/report/data_url.h"
 #include "grader/report/html_style.h"
 #include "grader/report/markup_escape.h"
 #include "grader/report/report_text.h"
@@ -17,10 +17,17 @@ namespace {
 // The stages in the order a student meets them; the whole pipeline's checks last.
 constexpr int kStageOrder[] = {1, 2, 3, 4, 5, 6, 7, 0};
 
-// Scripts, frames, fonts and fetches are refused even if something slipped past the escaping;
-// images may come from the report's folder (file: when opened from disk) or be inline.
-constexpr std::string_view kContentSecurityPolicy =
+// Scripts, frames, fonts and fetches are refused even if something slipped past the escaping.
+// A self-contained page shows only the images inside it; the other may show files beside it
+// (file: when opened from disk).
+constexpr std::string_view kSelfContainedPolicy =
+    "default-src 'none'; img-src data:; style-src 'unsafe-inline'";
+constexpr std::string_view kLinkedImagesPolicy =
     "default-src 'none'; img-src 'self' file: data:; style-src 'unsafe-inline'";
+
+// An image larger than this is shown as missing rather than carried inside the page: a render
+// check's PNG is tens of kilobytes.
+constexpr std::size_t kMaxEmbeddedImageBytes = 4u << 20;
 
 std::string h(std::string_view text) {
     return markup_text(text);
@@ -73,7 +80,8 @@ std::string page_head(const GradeReport& seen, const HtmlReportOptions& options)
         "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\" />\n"
         "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\" />\n"
         "<meta http-equiv=\"Content-Security-Policy\" content=\"" +
-        std::string(kContentSecurityPolicy) + "\" />\n<title>raystep grade: " + h(who) + ", " +
+        std::string(options.self_contained ? kSelfContainedPolicy : kLinkedImagesPolicy) +
+        "\" />\n<title>raystep grade: " + h(who) + ", " +
         h(score_out_of(seen.score(), seen.max_score())) + "</title>\n<style>" +
         std::string(html_style()) + "</style>\n</head>\n<body>\n";
     html += "<header class=\"page-head\"><div class=\"inner\">\n<div class=\"who\"><h1>" + h(who) +
@@ -135,27 +143,42 @@ std::string metrics_table(const CheckResult& check) {
     return "<table class=\"metrics\"><tr>" + names + "</tr><tr>" + values + "</tr></table>\n";
 }
 
+// The image's source: its data URL for a self-contained page, else its path as a relative URL;
+// nullopt when the file is missing.
+std::optional<std::string> image_source(const std::filesystem::path& folder,
+                                        const std::string& path, bool self_contained) {
+    if (self_contained) return image_data_url(folder / path, kMaxEmbeddedImageBytes);
+    if (!std::filesystem::exists(folder / path)) return std::nullopt;
+    return url_path(path);
+}
+
 std::string figure(const std::filesystem::path& folder, const std::string& path,
-                   const std::string& caption) {
+                   const std::string& caption, bool self_contained) {
     if (path.empty()) return "";
     std::string shown;
-    if (std::filesystem::exists(folder / path)) {
-        shown =
-            "<img src=\"" + attr(url_path(path)) + "\" alt=\"" + attr(caption + " image") + "\" />";
+    if (const std::optional<std::string> source = image_source(folder, path, self_contained)) {
+        shown = "<img src=\"" + attr(*source) + "\" alt=\"" + attr(caption + " image") + "\" />";
     } else {
         shown = "<div class=\"missing-image\">missing: " + h(path) + "</div>";
     }
     return "<figure>" + shown + "<figcaption>" + h(caption) + "</figcaption></figure>";
 }
 
-std::string render_images(const std::filesystem::path& folder, const RenderImages& images) {
-    const std::string figures = figure(folder, images.reference, "reference") +
-                                figure(folder, images.student, "student") +
-                                figure(folder, images.difference, "difference");
+std::string render_images(const std::filesystem::path& folder, const RenderImages& images,
+                          bool self_contained) {
+    const std::string figures = figure(folder, images.reference, "reference", self_contained) +
+                                figure(folder, images.student, "student", self_contained) +
+                                figure(folder, images.difference, "difference", self_contained);
     return figures.empty() ? "" : "<div class=\"images\">" + figures + "</div>\n";
 }
 
-std::string counterexamples_table(const CheckResult& check) {
+std::string reproduce_row(const std::string& label, const std::string& command) {
+    if (command.empty()) return "";
+    return "<tr class=\"reproduce\"><td></td><td colspan=\"3\">" + h(label) + ": <code>" +
+           h(clipped_text(command, kMaxFieldBytes)) + "</code></td></tr>\n";
+}
+
+std::string counterexamples_table(const CheckResult& check, Audience audience) {
     if (check.counterexamples.empty()) return "";
     std::string html =
         "<table class=\"counterexamples\"><thead><tr><th>#</th><th>Input</th><th>Expected</th>"
@@ -166,9 +189,10 @@ std::string counterexamples_table(const CheckResult& check) {
                 h(clipped_text(example.input, kMaxFieldBytes)) + "</td><td>" +
                 h(clipped_text(example.expected, kMaxFieldBytes)) + "</td><td>" +
                 h(clipped_text(example.got, kMaxFieldBytes)) + "</td></tr>\n";
-        if (!example.reproduce.empty()) {
-            html += "<tr class=\"reproduce\"><td></td><td colspan=\"3\">reproduce: <code>" +
-                    h(clipped_text(example.reproduce, kMaxFieldBytes)) + "</code></td></tr>\n";
+        html += reproduce_row("reproduce", reproduce_command(example, audience));
+        // The instructor also sees what the student's report tells them to run.
+        if (audience == Audience::instructor) {
+            html += reproduce_row("the student's command", example.student_reproduce);
         }
     }
     return html + "</tbody></table>\n";
@@ -186,7 +210,8 @@ std::string details_block(const CheckResult& check) {
 }
 
 std::string check_section(const CheckResult& check, int number,
-                          const std::filesystem::path& folder) {
+                          const std::filesystem::path& images_folder,
+                          const HtmlReportOptions& options) {
     const std::string outcome = outcome_class(check.outcome);
     std::string html =
         "<article class=\"check " + outcome + "\" id=\"check-" + std::to_string(number) +
@@ -203,8 +228,9 @@ std::string check_section(const CheckResult& check, int number,
     if (!check.summary.empty()) {
         html += "<p class=\"summary\">" + h(clipped_text(check.summary, kMaxFieldBytes)) + "</p>\n";
     }
-    html += metrics_table(check) + render_images(folder, check.images) +
-            counterexamples_table(check) + details_block(check);
+    html += metrics_table(check) +
+            render_images(images_folder, check.images, options.self_contained) +
+            counterexamples_table(check, options.audience) + details_block(check);
     return html + "</article>\n";
 }
 
@@ -218,10 +244,13 @@ std::string times_footer(const PhaseTimes& times) {
 
 }  // namespace
 
-std::string html_report(const GradeReport& report, const std::filesystem::path& folder,
+std::string html_report(const GradeReport& report, const std::filesystem::path& images_folder,
                         const HtmlReportOptions& options) {
     const GradeReport seen = seen_by(report, options.audience);
     std::string html = page_head(seen, options);
+
+    const std::string intake_problem = intake_problem_line(report.intake_problem);
+    if (!intake_problem.empty()) html += "<p class=\"problem\">" + h(intake_problem) + "</p>\n";
 
     const std::size_t withheld = report.checks.size() - seen.checks.size();
     if (withheld > 0) {
@@ -246,7 +275,9 @@ std::string html_report(const GradeReport& report, const std::filesystem::path& 
     for (const int stage : kStageOrder) {
         std::string sections;
         for (const CheckResult& check : seen.checks) {
-            if (check.stage == stage) sections += check_section(check, ++number, folder);
+            if (check.stage == stage) {
+                sections += check_section(check, ++number, images_folder, options);
+            }
         }
         if (sections.empty()) continue;
         html += "<section id=\"" + stage_anchor(stage) + "\"><h2>" +
@@ -254,20 +285,6 @@ std::string html_report(const GradeReport& report, const std::filesystem::path& 
                 "</h2>\n" + sections + "</section>\n";
     }
     return html + times_footer(report.times) + "</main>\n</body>\n</html>\n";
-}
-
-std::filesystem::path write_html_report(const GradeReport& report,
-                                        const std::filesystem::path& folder,
-                                        const HtmlReportOptions& options) {
-    const std::filesystem::path file = folder / "index.html";
-    // A folder that cannot be made shows as the file that cannot be written, below.
-    std::error_code ignored;
-    std::filesystem::create_directories(folder, ignored);
-    std::ofstream out(file, std::ios::binary);
-    out << html_report(report, folder, options);
-    out.close();
-    if (!out) throw std::runtime_error(file.string() + ": cannot write the HTML report");
-    return file;
 }
 
 }  // namespace raystep::grade

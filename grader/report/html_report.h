@@ -13,31 +13,32 @@ struct HtmlReportOptions {
     /// shows a hidden check.
     Audience audience = Audience::student;
 
-    /// The speed-versus-error chart (docs/design, "Reports"; made by issue 7) as one inline
-    /// <svg> element, placed after the stage table under "Speed versus error". Inserted as it is,
-    /// so it must be made by raystep's own code from the speed checks' metrics, with any text
-    /// from a submission escaped, and be well-formed XML like the rest of the page. Empty: the
-    /// page has no chart section.
+    /// The images inside the page as data URLs, so that the one file can be sent or uploaded
+    /// alone (the student's page). false: the page links to the image files, by their paths
+    /// relative to the page, which must then sit in the images' folder (the instructor's page).
+    bool self_contained = true;
+
+    /// The speed-versus-error chart (docs/design, "Reports") as one inline <svg> element, placed
+    /// after the stage table under "Speed versus error". Inserted as it is, so it must be made by
+    /// raystep's own code from the speed checks' metrics the page's audience is shown, with any
+    /// text from a submission escaped, and be well-formed XML like the rest of the page. Empty:
+    /// the page has no chart section.
     std::string speed_error_chart_svg;
 };
 
-/// The report as one self-contained HTML page (inline CSS, no script, no network; it is also
-/// well-formed XML): the student and total, a table of scores per stage, the chart if given,
-/// then per stage a section for each check with its outcome, score, id, summary, metrics, for a
-/// render check the reference, student and difference images side by side, its counterexamples
-/// with the command that reproduces each, and its details. Every text from the report is escaped
-/// (markup_escape.h); a Content-Security-Policy forbids scripts besides. For the student, the
-/// checks they are not shown (audience.h) are left out, and a note says how many there are.
+/// The report as one HTML page (inline CSS, no script, no network; it is also well-formed XML):
+/// the student and total, the intake problem if there was one (GradeReport::intake_problem), a
+/// table of scores per stage, the chart if given, then per stage a section for each check with
+/// its outcome, score, id, summary, metrics, for a render check the reference, student and
+/// difference images side by side, its counterexamples with the audience's command that
+/// reproduces each (reproduce_command, audience.h; the instructor also sees the student's), and
+/// its details. Every text from the report is escaped (markup_escape.h); a
+/// Content-Security-Policy forbids scripts besides. For the student, the checks they are not
+/// shown (audience.h) are left out, and a note says how many there are.
 ///
-/// The images' paths (RenderImages) are relative to `folder`: a missing image shows as a box
-/// naming its path.
-std::string html_report(const GradeReport& report, const std::filesystem::path& folder,
+/// The images' paths (RenderImages) are relative to `images_folder`, where they are read from
+/// for a self-contained page: a missing image shows as a box naming its path.
+std::string html_report(const GradeReport& report, const std::filesystem::path& images_folder,
                         const HtmlReportOptions& options);
-
-/// Writes html_report to folder/index.html, making the folder if needed, and returns that path.
-/// Throws std::runtime_error naming the file when it cannot be written.
-std::filesystem::path write_html_report(const GradeReport& report,
-                                        const std::filesystem::path& folder,
-                                        const HtmlReportOptions& options = {});
 
 }  // namespace raystep::grade

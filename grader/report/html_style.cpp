@@ -25,6 +25,8 @@ a { color: #1f5fa8; }
 .page-head .submission { color: #b8c2cc; font-size: 13px; overflow-wrap: anywhere; }
 .page-head .total { font-size: 30px; font-weight: 700; white-space: nowrap; }
 .page-head .total small { font-size: 15px; font-weight: 400; color: #b8c2cc; }
+.problem { background: #fdecea; border: 2px solid var(--failed); border-radius: 6px;
+           padding: 10px 14px; margin: 16px 0 0; font-weight: 700; overflow-wrap: anywhere; }
 .note { background: #fff8e1; border: 1px solid #f0d58a; border-radius: 6px; padding: 8px 12px;
         margin: 16px 0 0; }
 table { border-collapse: collapse; background: var(--paper); }

@@ -134,4 +134,10 @@ std::string stage_label(int stage) {
     return stage == 0 ? "pipeline" : "stage " + std::to_string(stage);
 }
 
+std::string intake_problem_line(std::string_view problem) {
+    if (problem.empty()) return "";
+    return "The submission's files could not all be taken: " +
+           clipped_text(problem, kMaxFieldBytes);
+}
+
 }  // namespace raystep::grade

@@ -41,4 +41,9 @@ std::string metric_text(double value);
 /// "stage 3"; "pipeline" for stage 0, the checks of the student's whole pipeline.
 std::string stage_label(int stage);
 
+/// The sentence every report leads with when a submission's files could not all be taken
+/// (GradeReport::intake_problem): "The submission's files could not all be taken: WHY",
+/// displayable and clipped; empty when there was no problem.
+std::string intake_problem_line(std::string_view problem);
+
 }  // namespace raystep::grade

@@ -72,6 +72,12 @@ TEST_CASE("console_summary: a failed check shows its first counterexample and ho
                          "      reproduce  raystep check --stage 3 --family shared-edges --case "
                          "17\n      and 2 more counterexamples\n"));
     CHECK_THAT(text, !Catch::Matchers::Contains("--case 42"));
+    // The student's commands only: raystep-grade is the instructor's.
+    CHECK_THAT(text, !Catch::Matchers::Contains("raystep-grade submission"));
+    CHECK_THAT(console_summary(example_report(), Audience::instructor),
+               Catch::Matchers::Contains("      reproduce  raystep-grade submission "
+                                         "'submissions/alice & bob.zip' --check "
+                                         "stage3.oracle.shared-edges --case 17 --instructor\n"));
     // Crashes, timeouts and compile errors show their details; a long compiler output its first
     // 8 lines.
     CHECK_THAT(text, Catch::Matchers::Contains("      signal 11 (SIGSEGV)"));

@@ -23,6 +23,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include "grader/grade/report_folders.h"
 #include "grader/grade/report_json.h"
 #include "grader/grade/stage_manifests.h"
 
@@ -85,7 +86,7 @@ void grade(Graded& entry, const fs::path& submission, const std::string& argumen
     entry.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     try {
         entry.report = raystep::grade::report_from_json(
-            nlohmann::json::parse(read_text(entry.output / "report.json")));
+            nlohmann::json::parse(read_text(raystep::grade::finished_report_file(entry.output))));
     } catch (const std::exception& error) {
         entry.problem = "raystep-grade exited with " + std::to_string(status) +
                         " and no readable report.json (" + error.what() + "); its output is in " +
@@ -263,16 +264,20 @@ TEST_CASE(
             CHECK(check->score < check->max_score);
         }
         // A complete report: every file, and the Gradescope score is the grader's own.
-        for (const char* file : {"results.json", "prairielearn.json", "junit.xml", "index.html",
-                                 "instructor.html", "report.json"}) {
+        const fs::path student = raystep::grade::student_folder(entry.output);
+        const fs::path instructor = raystep::grade::instructor_folder(entry.output);
+        for (const fs::path& file : {student / "index.html", student / "results.json",
+                                     student / "junit.xml", instructor / "results.json",
+                                     instructor / "prairielearn.json", instructor / "junit.xml",
+                                     instructor / "instructor.html", instructor / "report.json"}) {
             INFO(file);
-            CHECK(fs::is_regular_file(entry.output / file));
+            CHECK(fs::is_regular_file(file));
         }
         const nlohmann::json results =
-            nlohmann::json::parse(read_text(entry.output / "results.json"));
+            nlohmann::json::parse(read_text(instructor / "results.json"));
         CHECK(results.at("score").get<double>() == Approx(entry.report->score()));
         const std::string everything =
-            read_text(entry.output / "report.json") + read_text(entry.output / "instructor.html");
+            read_text(instructor / "report.json") + read_text(instructor / "instructor.html");
         for (const std::string& secret : secrets) {
             INFO("the report holds \"" << secret << "\"");
             CHECK(everything.find(secret) == std::string::npos);
@@ -333,7 +338,7 @@ TEST_CASE(
     std::map<std::string, GradeReport> reports;
     for (const auto& [name, entry] : expected) {
         INFO(name << " from " << entry);
-        const fs::path report = home / "grades" / name / "report.json";
+        const fs::path report = raystep::grade::finished_report_file(home / "grades" / name);
         REQUIRE(fs::is_regular_file(report));
         reports[name] = raystep::grade::report_from_json(nlohmann::json::parse(read_text(report)));
     }

@@ -91,6 +91,10 @@ TEST_CASE("gradescope_results: numbers, names and outputs of individual checks",
     CHECK_THAT(output, Catch::Matchers::Contains("reproduce: raystep check --stage 3 --family "
                                                  "shared-edges --case 42"));
     CHECK_THAT(output, Catch::Matchers::Contains(displayable_text(kHostile)));
+    // Gradescope shows the output to the student: never the instructor's command.
+    for (const nlohmann::json& test : tests)
+        CHECK_THAT(test.at("output").get<std::string>(),
+                   !Catch::Matchers::Contains("raystep-grade"));
     CHECK(tests[3].at("extra_data").at("metrics").at("false_misses") == 3);
     CHECK(tests[5].at("visibility") == "hidden");
     CHECK_THAT(tests[7].at("output").get<std::string>(),

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "core/testing/catch.h"
+#include "grader/report/data_url.h"
 #include "grader/report/report_text.h"
 #include "report_example.h"
 #include "xml_document.h"
@@ -72,21 +73,21 @@ std::string url_decoded(const std::string& url) {
     return path;
 }
 
-// The example report written with its images into the folder, in one audience's view.
+// The example report's page, its images written into the folder, in one audience's view: the
+// student's self-contained, the instructor's linking to the images.
 std::string written(const std::filesystem::path& folder, Audience audience,
                     std::string chart = "") {
     raystep::testing::write_example_images(folder);
     HtmlReportOptions options;
     options.audience = audience;
+    options.self_contained = audience == Audience::student;
     options.speed_error_chart_svg = std::move(chart);
-    const std::filesystem::path file = write_html_report(example_report(), folder, options);
-    CHECK(file == folder / "index.html");
-    return read(file);
+    return html_report(example_report(), folder, options);
 }
 
 }  // namespace
 
-TEST_CASE("write_html_report: one well-formed page with no script", "[report]") {
+TEST_CASE("html_report: one well-formed page with no script", "[report]") {
     const ScratchFolder scratch;
     const std::string html = written(scratch.path(), Audience::instructor);
     const XmlDocument page(html);
@@ -105,7 +106,7 @@ TEST_CASE("write_html_report: one well-formed page with no script", "[report]") 
     CHECK(lower(html).find("https://") == std::string::npos);
 }
 
-TEST_CASE("write_html_report: the header, the stage table and a section per check", "[report]") {
+TEST_CASE("html_report: the header, the stage table and a section per check", "[report]") {
     const ScratchFolder scratch;
     const XmlDocument page(written(scratch.path(), Audience::instructor));
     REQUIRE(page.well_formed());
@@ -128,7 +129,7 @@ TEST_CASE("write_html_report: the header, the stage table and a section per chec
           Strings{"hidden", "after_due_date", "after_published"});
 }
 
-TEST_CASE("write_html_report: render checks show their three images side by side", "[report]") {
+TEST_CASE("html_report: render checks show their three images side by side", "[report]") {
     const ScratchFolder scratch;
     const std::filesystem::path& folder = scratch.path();
     const XmlDocument page(written(scratch.path(), Audience::instructor));
@@ -148,22 +149,21 @@ TEST_CASE("write_html_report: render checks show their three images side by side
           Strings{"missing: render/shadows-student.png"});
 }
 
-TEST_CASE("write_html_report: counterexamples with their commands, hostile text as text",
-          "[report]") {
+TEST_CASE("html_report: counterexamples with their commands, hostile text as text", "[report]") {
     const ScratchFolder scratch;
     const XmlDocument page(written(scratch.path(), Audience::student));
     REQUIRE(page.well_formed());
     const std::string edges = "//article[.//code[text()='stage3.oracle.shared-edges']]";
+    // The student's commands; the third counterexample has none, and shows none.
     CHECK(page.values(edges + "//table[@class='counterexamples']//tr[@class='reproduce']//code") ==
           Strings{"raystep check --stage 3 --family shared-edges --case 17",
-                  "raystep check --stage 3 --family shared-edges --case 42",
-                  "raystep check --stage 3 --family shared-edges --case 64"});
+                  "raystep check --stage 3 --family shared-edges --case 42"});
     CHECK(page.values(edges + "//tbody/tr[3]/td[4]") == Strings{displayable_text(kHostile)});
     CHECK_THAT(page.values("//article[contains(@class, 'crashed')]//pre").at(0),
                Catch::Matchers::EndsWith(displayable_text(kHostile)));
 }
 
-TEST_CASE("write_html_report: the student's page has no withheld check", "[report]") {
+TEST_CASE("html_report: the student's page has no withheld check", "[report]") {
     const ScratchFolder scratch;
     const std::string html = written(scratch.path(), Audience::student);
     CHECK_THAT(html, !Catch::Matchers::Contains(kHiddenSecret));
@@ -176,8 +176,7 @@ TEST_CASE("write_html_report: the student's page has no withheld check", "[repor
     CHECK(page.values("//table[@class='scores']/tfoot/tr/td[1]") == Strings{"12.5 / 32"});
 }
 
-TEST_CASE("write_html_report: the speed-versus-error chart goes where issue 7 will put it",
-          "[report]") {
+TEST_CASE("html_report: the speed-versus-error chart goes where issue 7 will put it", "[report]") {
     const ScratchFolder scratch;
     CHECK_THAT(written(scratch.path(), Audience::student),
                !Catch::Matchers::Contains("speed-versus-error"));
@@ -194,11 +193,41 @@ TEST_CASE("write_html_report: the speed-versus-error chart goes where issue 7 wi
     CHECK(page.count("//section[@id='speed-versus-error']/preceding-sibling::section/table") == 1);
 }
 
-TEST_CASE("write_html_report: a folder that cannot be written is an error naming the file",
+TEST_CASE("html_report: the student's page carries its images inside it as data URLs", "[report]") {
+    const ScratchFolder scratch;
+    const XmlDocument page(written(scratch.path(), Audience::student));
+    REQUIRE(page.well_formed());
+    CHECK(page.values("//meta[@http-equiv='Content-Security-Policy']/@content") ==
+          Strings{"default-src 'none'; img-src data:; style-src 'unsafe-inline'"});
+    // The visible render checks' images, three each: the withheld check's are not in it.
+    const Strings sources = page.values("//img/@src");
+    CHECK(sources.size() == 6);
+    for (const std::string& source : sources)
+        CHECK_THAT(source, Catch::Matchers::StartsWith("data:image/png;base64,"));
+    CHECK(page.values("//section[@id='stage-7']//img/@src").at(1) ==
+          "data:image/png;base64," +
+              base64(read(scratch.path() / "render/mirrors student #1.png")));
+
+    // An image that is not there is a box naming it, as on the linked page.
+    GradeReport report = example_report();
+    for (CheckResult& check : report.checks)
+        check.visibility = Visibility::visible;
+    const XmlDocument every_check(html_report(report, scratch.path(), {}));
+    CHECK(every_check.values("//div[@class='missing-image']") ==
+          Strings{"missing: render/shadows-student.png"});
+}
+
+TEST_CASE("html_report: the student's page has the student's commands, the instructor's both",
           "[report]") {
     const ScratchFolder scratch;
-    const std::filesystem::path blocker = scratch.path() / "blocker";
-    std::ofstream(blocker) << "a file where the folder should be";
-    CHECK_THROWS_WITH(write_html_report(GradeReport{}, blocker / "report"),
-                      Catch::Matchers::Contains("index.html"));
+    const std::string student = written(scratch.path(), Audience::student);
+    CHECK_THAT(student, !Catch::Matchers::Contains("raystep-grade submission"));
+    const XmlDocument page(written(scratch.path(), Audience::instructor));
+    REQUIRE(page.well_formed());
+    const std::string mirrors = "//article[.//code[text()='stage7.render.mirrors']]";
+    CHECK(page.values(mirrors + "//tr[@class='reproduce']/td[2]") ==
+          Strings{"reproduce: raystep-grade submission 'submissions/alice & bob.zip' --check "
+                  "stage7.render.mirrors --case 0 --instructor",
+                  "the student's command: raystep trace scenes/stage7/mirrors.test 31 12 "
+                  "--compare"});
 }

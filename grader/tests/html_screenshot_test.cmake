@@ -1,5 +1,6 @@
-# The HTML report as a browser shows it: headless Chromium opens the example report and takes a
-# screenshot, which must show a page with the example's images (not blank, not broken pictures).
+# The HTML report as a browser shows it: headless Chromium opens the example's student page, which
+# carries its images inside it as data URLs, and takes a screenshot, which must show a page with
+# the example's images (not blank, not broken pictures).
 # Run by ctest through `cmake -P`:
 #   -DEXAMPLE=path/to/raystep_report_example -DSCRATCH=folder for the report and the screenshot
 #
@@ -24,7 +25,7 @@ set(screenshot ${SCRATCH}/screenshot.png)
 execute_process(COMMAND ${chromium} --headless --no-sandbox --disable-gpu --hide-scrollbars
                         --no-first-run --user-data-dir=${SCRATCH}/profile
                         --window-size=1200,6000 --screenshot=${screenshot}
-                        file://${SCRATCH}/report/index.html
+                        file://${SCRATCH}/report/student/index.html
                 RESULT_VARIABLE ran OUTPUT_VARIABLE output ERROR_VARIABLE output
                 TIMEOUT 120)
 if(NOT ran EQUAL 0 OR NOT EXISTS ${screenshot})

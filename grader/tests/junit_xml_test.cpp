@@ -15,6 +15,9 @@ namespace {
 
 using Strings = std::vector<std::string>;
 
+// The JUnit schema, written for these tests (junit_schema.xsd).
+const std::filesystem::path kJunitSchema = RAYSTEP_JUNIT_SCHEMA;
+
 }  // namespace
 
 TEST_CASE("junit_xml: well-formed, with the counts of every suite", "[report]") {
@@ -26,7 +29,7 @@ TEST_CASE("junit_xml: well-formed, with the counts of every suite", "[report]") 
     CHECK(xml.values("/testsuites/@tests") == Strings{"12"});
     CHECK(xml.values("/testsuites/@failures") == Strings{"4"});
     CHECK(xml.values("/testsuites/@errors") == Strings{"3"});
-    CHECK(xml.values("/testsuites/@skipped") == Strings{"0"});
+    CHECK(xml.count("//@skipped") == 0);
     CHECK(xml.values("/testsuites/@time") == Strings{"44.350"});
     CHECK(xml.values("/testsuites/testsuite/@name") == Strings{"stage 1", "stage 2", "stage 3",
                                                                "stage 4", "stage 5", "stage 6",
@@ -105,4 +108,64 @@ TEST_CASE("junit_xml: the student's view leaves the withheld checks out", "[repo
     CHECK(xml.values("/testsuites/@tests") == Strings{"9"});
     CHECK(xml.values("/testsuites/@failures") == Strings{"3"});
     CHECK(xml.count("//testsuite[@name='stage 6']") == 0);
+}
+
+TEST_CASE("junit_xml: valid against the JUnit schema CI reporters read, in both views",
+          "[report]") {
+    GradeReport with_problem = example_report();
+    with_problem.intake_problem = "not an archive: " + kHostile;
+    for (const GradeReport& report : {example_report(), with_problem, GradeReport{}}) {
+        for (const Audience audience : {Audience::student, Audience::instructor}) {
+            const XmlDocument xml(junit_xml(report, audience));
+            CAPTURE(report.intake_problem, audience == Audience::student);
+            CHECK(xml.schema_violations(kJunitSchema) == "");
+        }
+    }
+}
+
+TEST_CASE("junit_xml: the schema test rejects what CI reporters reject", "[report]") {
+    // What the schema test would let through if it could not fail: a skipped count on
+    // <testsuites>, a testcase with no time, an attribute of our own.
+    const std::string good = junit_xml(example_report(), Audience::instructor);
+    CHECK(XmlDocument(good).schema_violations(kJunitSchema) == "");
+    const auto changed = [&](const std::string& from, const std::string& to) {
+        std::string text = good;
+        REQUIRE(text.find(from) != std::string::npos);
+        text.replace(text.find(from), from.size(), to);
+        return XmlDocument(text).schema_violations(kJunitSchema);
+    };
+    CHECK_THAT(changed("<testsuites ", "<testsuites skipped=\"0\" "),
+               Catch::Matchers::Contains("skipped"));
+    CHECK_THAT(changed("name=\"stage1.unit.dot\" time=\"0.250\"", "name=\"stage1.unit.dot\""),
+               Catch::Matchers::Contains("time"));
+    CHECK_THAT(changed("<testcase ", "<testcase score=\"2\" "), Catch::Matchers::Contains("score"));
+}
+
+TEST_CASE("junit_xml: every testsuite and testcase has its time", "[report]") {
+    const GradeReport report = example_report();
+    const XmlDocument xml(junit_xml(report, Audience::instructor));
+    REQUIRE(xml.well_formed());
+    CHECK(xml.count("//testsuite[not(@time)] | //testcase[not(@time)]") == 0);
+    // The checks' own seconds, and per stage their sum: stage 3's checks are the 4th to 6th.
+    CHECK(xml.values("//testcase[@name='stage1.unit.dot']/@time") == Strings{"0.250"});
+    CHECK(xml.values("//testsuite[@name='stage 3']/@time") == Strings{"3.750"});
+}
+
+TEST_CASE("junit_xml: an intake problem is an error of its own suite, in both views", "[report]") {
+    GradeReport report = example_report();
+    report.intake_problem = "over the unpacked-bytes budget (3 GB unpacked from a 3 MB zip)";
+    for (const Audience audience : {Audience::student, Audience::instructor}) {
+        const XmlDocument xml(junit_xml(report, audience));
+        REQUIRE(xml.well_formed());
+        CHECK(xml.values("/testsuites/testsuite[1]/@name") == Strings{"intake"});
+        CHECK(xml.values("//testsuite[@name='intake']/testcase/error/@message") ==
+              Strings{"The submission's files could not all be taken: over the unpacked-bytes "
+                      "budget (3 GB unpacked from a 3 MB zip)"});
+        // Counted with the checks, so that the dashboard's totals show it.
+        const std::size_t checks = audience == Audience::student ? 9 : 12;
+        CHECK(xml.values("/testsuites/@tests") == Strings{std::to_string(checks + 1)});
+        CHECK(xml.values("/testsuites/@errors") == Strings{"4"});
+    }
+    CHECK(XmlDocument(junit_xml(example_report(), Audience::student))
+              .count("//testsuite[@name='intake']") == 0);
 }

@@ -1,5 +1,10 @@
 #include "grader/report/prairielearn_results.h"
 
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
 #include "core/testing/catch.h"
 #include "grader/report/report_text.h"
 #include "report_example.h"
@@ -12,7 +17,7 @@ using raystep::testing::kHostile;
 namespace {
 
 nlohmann::json written(const GradeReport& report) {
-    return nlohmann::json::parse(prairielearn_results(report).dump());
+    return nlohmann::json::parse(prairielearn_results(report, {}).dump());
 }
 
 }  // namespace
@@ -69,9 +74,12 @@ TEST_CASE("prairielearn_results: a visible check's test", "[report]") {
     CHECK(test.at("max_points") == 5);
     CHECK_THAT(test.at("message").get<std::string>(),
                Catch::Matchers::StartsWith("failed: 97 of 100"));
-    CHECK_THAT(test.at("output").get<std::string>(),
-               Catch::Matchers::Contains("--case 17") && Catch::Matchers::Contains("--case 64") &&
-                   Catch::Matchers::Contains(displayable_text(kHostile)));
+    CHECK_THAT(
+        test.at("output").get<std::string>(),
+        Catch::Matchers::Contains("raystep check --stage 3 --family shared-edges --case 17") &&
+            Catch::Matchers::Contains("--case 42") &&
+            Catch::Matchers::Contains(displayable_text(kHostile)) &&
+            !Catch::Matchers::Contains("raystep-grade"));
 }
 
 TEST_CASE("prairielearn_results: nothing compiled is not gradable, with the compiler's lines",
@@ -107,9 +115,54 @@ TEST_CASE("prairielearn_results: an empty report scores 0, and a huge one stays 
         check.stage = 3;
         check.max_score = 1;
         check.details = std::string(1'000'000, 'd');
-        check.counterexamples.assign(5, {std::string(100'000, 'i'), "e", kHostile, "r"});
+        check.counterexamples.assign(5, {std::string(100'000, 'i'), "e", kHostile, "r", "s"});
         huge.checks.push_back(check);
     }
-    const std::string text = prairielearn_results(huge).dump();
+    const std::string text = prairielearn_results(huge, {}).dump();
     CHECK(text.size() < 1'000'000);
+}
+
+TEST_CASE("prairielearn_results: render checks carry their images, failing ones first, under 1 MB",
+          "[report]") {
+    const std::filesystem::path folder =
+        std::filesystem::temp_directory_path() /
+        ("raystep-prairielearn-test-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(folder / "render");
+    // 100 KB an image, 3 a check: one check's images as data URLs take about 400 KB.
+    std::ofstream(folder / "render/large.png", std::ios::binary) << std::string(100'000, 'p');
+    std::ofstream(folder / "render/small.png", std::ios::binary) << std::string(3, 'p');
+
+    GradeReport report;
+    for (int k = 0; k < 10; ++k) {
+        CheckResult check;
+        check.id = "stage6.render.scene" + std::to_string(k);
+        check.stage = 6;
+        check.kind = "render";
+        check.outcome = k < 5 ? Outcome::passed : Outcome::failed;
+        check.max_score = 1;
+        check.images = {"render/large.png", "render/large.png", "render/large.png"};
+        report.checks.push_back(check);
+    }
+    report.checks[9].images = {"render/small.png", "render/missing.png", ""};
+    const std::string text = prairielearn_results(report, folder).dump();
+    std::filesystem::remove_all(folder);
+
+    CHECK(text.size() < 1'000'000);
+    const nlohmann::json tests = nlohmann::json::parse(text).at("tests");
+    // The first failing check's images fit; the next failing one's would not, nor any passed
+    // one's; the small image of the last fits beside them, its missing one left out.
+    REQUIRE(tests[5].contains("images"));
+    CHECK(tests[5].at("images").size() == 3);
+    CHECK(tests[5].at("images")[0].at("label") == "reference");
+    CHECK(tests[5].at("images")[2].at("label") == "difference");
+    CHECK_THAT(tests[5].at("images")[1].at("url").get<std::string>(),
+               Catch::Matchers::StartsWith("data:image/png;base64,cHBw"));
+    CHECK(tests[9].at("images") ==
+          nlohmann::json({{{"label", "reference"}, {"url", "data:image/png;base64,cHBw"}}}));
+    for (const int k : {0, 4, 6, 8}) {
+        CAPTURE(k);
+        CHECK_FALSE(tests[k].contains("images"));
+        CHECK_THAT(tests[k].at("output").get<std::string>(),
+                   Catch::Matchers::Contains("The images are left out here"));
+    }
 }

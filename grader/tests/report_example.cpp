@@ -39,6 +39,12 @@ CheckResult check(std::string id, int stage, std::string kind, std::string name,
     return result;
 }
 
+// What the instructor runs to see the case again: raystep-grade, which no student has.
+std::string instructor_command(const std::string& id, int case_index) {
+    return "raystep-grade submission 'submissions/alice & bob.zip' --check " + id + " --case " +
+           std::to_string(case_index) + " --instructor";
+}
+
 // The compiler output of a stage that does not compile: more lines than the console shows.
 std::string compiler_output() {
     std::string text =
@@ -116,11 +122,14 @@ grade::GradeReport example_report() {
     edges.counterexamples = {
         {"ray (0.25, 0.25, 5) + t (0, 0, -1) against the octahedron's edge (0,0,1)-(1,0,0)",
          "hit at t = 4.75 (either neighbour)", "miss by both neighbours",
+         instructor_command("stage3.oracle.shared-edges", 17),
          "raystep check --stage 3 --family shared-edges --case 17"},
         {"ray (1e5, 1e5, 5) + t (0, 0, -1), a far copy of case 17", "hit at t = 5", kHostile,
+         instructor_command("stage3.oracle.shared-edges", 42),
          "raystep check --stage 3 --family shared-edges --case 42"},
+        // No command a student can run: their report shows none.
         {"ray (0.5, 0.5, 5) + t (0, 0, -1)", "hit at t = 4.5", "miss",
-         "raystep check --stage 3 --family shared-edges --case 64"},
+         instructor_command("stage3.oracle.shared-edges", 64), ""},
     };
     edges.metrics = {{"pass_rate", 0.97}, {"false_misses", 3}, {"max_t_error_ulps", 2}};
     report.checks.push_back(edges);
@@ -136,6 +145,7 @@ grade::GradeReport example_report() {
                                "0 of 50 right on " + kHiddenSecret);
     hidden.visibility = Visibility::hidden;
     hidden.counterexamples = {{"input " + kHiddenSecret, "hit", "miss",
+                               instructor_command("stage3.oracle.grazing-" + kHiddenSecret, 3),
                                "raystep check --stage 3 --family " + kHiddenSecret}};
     hidden.details = "details " + kHiddenSecret;
     report.checks.push_back(hidden);
@@ -157,6 +167,10 @@ grade::GradeReport example_report() {
     shadows.visibility = Visibility::after_due_date;
     shadows.metrics = {{"psnr", 52.3}, {"rmse", 0.0024}};
     shadows.images = {"render/shadows-reference.png", "render/shadows-student.png", ""};
+    shadows.counterexamples = {
+        {"pixel (7, 9) of scenes/stage6/SHADOWS-after-due-date.test " + kHostile, "(0.1, 0.1, 0.1)",
+         "(0.5, 0.5, 0.5)", instructor_command("stage6.render.shadows", 0),
+         "raystep trace scenes/stage6/SHADOWS-after-due-date.test 7 9"}};
     report.checks.push_back(shadows);
 
     CheckResult mirrors =
@@ -170,13 +184,16 @@ grade::GradeReport example_report() {
     mirrors.images = {"render/mirrors reference.png", "render/mirrors student #1.png",
                       "render/mirrors-difference.png"};
     mirrors.counterexamples = {{"pixel (31, 12) of scenes/stage7/mirrors.test", "(0.82, 0.1, 0.77)",
-                                "(0.41, 0.5, 0.93)",
+                                "(0.41, 0.5, 0.93)", instructor_command("stage7.render.mirrors", 0),
                                 "raystep trace scenes/stage7/mirrors.test 31 12 --compare"}};
     report.checks.push_back(mirrors);
 
     CheckResult published = check("stage7.unit.depth", 7, "unit", "recursion stops at maxdepth",
                                   Outcome::passed, 1, 1, "4 of 4 cases right");
     published.visibility = Visibility::after_published;
+    published.counterexamples = {{"maxdepth PUBLISHED-depth-input " + kHostile, "3 bounces",
+                                  "3 bounces", instructor_command("stage7.unit.depth", 2),
+                                  "raystep check --stage 7 --case PUBLISHED-depth-input"}};
     report.checks.push_back(published);
 
     CheckResult pipeline = check("pipeline.render.cse167-scene7", 0, "render",
@@ -186,6 +203,10 @@ grade::GradeReport example_report() {
     pipeline.images = {"render/mirrors reference.png", "render/mirrors reference.png",
                        "render/mirrors-difference-none.png"};
     report.checks.push_back(pipeline);
+
+    // Times a quarter second apart, so that each sum of them is its own.
+    for (std::size_t k = 0; k < report.checks.size(); ++k)
+        report.checks[k].seconds = 0.25 * static_cast<double>(k + 1);
     return report;
 }
 

@@ -23,8 +23,11 @@ extern const std::string kHiddenSecret;
 constexpr unsigned char kMarker[3] = {255, 0, 255};
 
 /// The grade: checks in stages 1 to 7 and the pipeline, with every Outcome, a hidden, an
-/// after-due-date and an after-published check, two render checks whose images live under
-/// render/ (one with a space and a '#' in a file name) and one whose image is missing.
+/// after-due-date and an after-published check (each with a counterexample whose input is marked
+/// and hostile), two render checks whose images live under render/ (one with a space and a '#'
+/// in a file name) and one whose image is missing. Every counterexample's `reproduce` is a
+/// raystep-grade command; all but one have a `student_reproduce`. Each check has its own
+/// seconds, a quarter second more than the one before it.
 grade::GradeReport example_report();
 
 /// The check with this id; throws std::out_of_range naming it when there is none.

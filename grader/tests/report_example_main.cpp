@@ -1,7 +1,8 @@
 // raystep_report_example: the example grade (report_example.h) for looking at the reports and for
 // the HTML report's browser test (html_screenshot_test.cmake).
 //
-//   raystep_report_example write FOLDER             every report of the example into FOLDER
+//   raystep_report_example write FOLDER             every report of the example into FOLDER,
+//                                                   in FOLDER/student and FOLDER/instructor
 //   raystep_report_example check-screenshot PNG     exit 0 when a screenshot of the HTML report
 //                                                   shows a page with the example's images
 #include <cmath>
@@ -15,11 +16,8 @@
 
 #include "core/image/image.h"
 #include "core/image/image_io.h"
+#include "grader/grade/write_reports.h"
 #include "grader/report/console_summary.h"
-#include "grader/report/gradescope_results.h"
-#include "grader/report/html_report.h"
-#include "grader/report/junit_xml.h"
-#include "grader/report/prairielearn_results.h"
 #include "report_example.h"
 
 namespace {
@@ -32,25 +30,16 @@ void write_text(const std::filesystem::path& file, const std::string& text) {
     if (!out) throw std::runtime_error(file.string() + ": cannot write");
 }
 
+// Every report of the example, as raystep-grade lays them out (report_folders.h), the images
+// where render checks write them; the console's two views beside.
 void write_reports(const std::filesystem::path& folder) {
     const grade::GradeReport report = testing::example_report();
-    testing::write_example_images(folder);
-    grade::HtmlReportOptions instructor;
-    instructor.audience = grade::Audience::instructor;
-    write_html_report(report, folder, instructor);
-    // The student's page is one folder down, with copies of the same images.
-    std::filesystem::create_directories(folder / "student");
-    std::filesystem::copy(folder / "render", folder / "student" / "render",
-                          std::filesystem::copy_options::recursive |
-                              std::filesystem::copy_options::overwrite_existing);
-    write_html_report(report, folder / "student", {});
+    testing::write_example_images(grade::instructor_folder(folder));
+    grade::write_reports(report, folder);
     write_text(folder / "console-instructor.txt",
                grade::console_summary(report, grade::Audience::instructor));
     write_text(folder / "console-student.txt",
                grade::console_summary(report, grade::Audience::student));
-    write_text(folder / "gradescope-results.json", grade::gradescope_results(report).dump(2));
-    write_text(folder / "prairielearn-results.json", grade::prairielearn_results(report).dump(2));
-    write_text(folder / "junit.xml", grade::junit_xml(report, grade::Audience::instructor));
 }
 
 // A screenshot of the report shows a page when it is not one colour, and shows the example's

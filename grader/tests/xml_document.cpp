@@ -1,6 +1,7 @@
 #include "xml_document.h"
 
 #include <libxml/parser.h>
+#include <libxml/xmlschemas.h>
 #include <libxml/xpath.h>
 
 #include <cstdarg>
@@ -45,6 +46,24 @@ std::vector<std::string> XmlDocument::values(const std::string& xpath) const {
     xmlXPathFreeObject(result);
     xmlXPathFreeContext(context);
     return found;
+}
+
+std::string XmlDocument::schema_violations(const std::filesystem::path& schema) const {
+    if (!document_) return "the document is not well-formed XML: " + errors_;
+    std::string violations;
+    xmlSchemaParserCtxtPtr parser = xmlSchemaNewParserCtxt(schema.c_str());
+    xmlSchemaSetParserErrors(parser, collect_error, collect_error, &violations);
+    xmlSchemaPtr parsed = xmlSchemaParse(parser);
+    xmlSchemaFreeParserCtxt(parser);
+    if (parsed == nullptr)
+        return "the schema " + schema.string() + " cannot be read: " + violations;
+    xmlSchemaValidCtxtPtr validator = xmlSchemaNewValidCtxt(parsed);
+    xmlSchemaSetValidErrors(validator, collect_error, collect_error, &violations);
+    const int result = xmlSchemaValidateDoc(validator, document_.get());
+    xmlSchemaFreeValidCtxt(validator);
+    xmlSchemaFree(parsed);
+    if (result != 0 && violations.empty()) violations = "invalid (libxml2 gave no message)";
+    return violations;
 }
 
 }  // namespace raystep::testing

@@ -2,6 +2,7 @@
 
 #include <libxml/tree.h>
 
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -27,6 +28,11 @@ class XmlDocument {
 
     /// How many nodes the expression selects.
     std::size_t count(const std::string& xpath) const { return values(xpath).size(); }
+
+    /// What makes the document invalid against the XML Schema (XSD 1.0) in the file, in
+    /// libxml2's words; empty when it is valid. A document that did not parse, or a schema that
+    /// cannot be read, is reported too, so that empty always means valid.
+    std::string schema_violations(const std::filesystem::path& schema) const;
 
   private:
     struct FreeDocument {

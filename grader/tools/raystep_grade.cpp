@@ -90,9 +90,10 @@ int grade_one(const SubmissionArguments& arguments) {
     if (!report.work_folder.empty())
         std::printf("work folder kept: %s\n", report.work_folder.c_str());
     std::printf(
-        "reports: %s/index.html (student), instructor.html, results.json (Gradescope), "
-        "prairielearn.json, junit.xml\n",
-        output.c_str());
+        "reports: %s/student/ (index.html, results.json, junit.xml: for the student), "
+        "%s/instructor/ (instructor.html, results.json for Gradescope, prairielearn.json, "
+        "junit.xml, report.json)\n",
+        output.c_str(), output.c_str());
     return 0;
 }
 

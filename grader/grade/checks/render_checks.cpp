@@ -81,7 +81,7 @@ CheckMeasure measure_render(const GradingContext& context, const BuiltProbe& pro
                        {"rmse", diff.rms_error},
                        {"psnr", diff.psnr},
                        {"pixels over threshold", static_cast<double>(diff.pixels_over)},
-                       {"perceptually different pixels", static_cast<double>(diff.perceptual_failures)},
+                       {"visibly different pixels", static_cast<double>(diff.pixels_visibly_different)},
                        {"pixels", static_cast<double>(diff.pixels)}};
     measure.outcome = share <= kEdgePixels ? Outcome::passed : Outcome::failed;
     char text[160];

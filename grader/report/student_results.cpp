@@ -1,0 +1,91 @@
+#include "grader/report/student_results.h"
+
+#include <cmath>
+
+#include "grader/report/audience.h"
+#include "grader/report/report_text.h"
+
+namespace raystep::grade {
+
+namespace {
+
+// The stages in the order a student meets them; the whole pipeline's checks last.
+constexpr int kStageOrder[] = {1, 2, 3, 4, 5, 6, 7, 0};
+
+nlohmann::json field(const std::string& text) {
+    return clipped_text(text, kMaxFieldBytes);
+}
+
+nlohmann::json check_of(const CheckResult& check) {
+    nlohmann::json counterexamples = nlohmann::json::array();
+    for (const Counterexample& example : check.counterexamples) {
+        counterexamples.push_back(
+            {{"input", field(example.input)},
+             {"expected", field(example.expected)},
+             {"got", field(example.got)},
+             {"reproduce", field(reproduce_command(example, Audience::student))}});
+    }
+    nlohmann::json metrics = nlohmann::json::object();
+    for (const auto& [name, value] : check.metrics) {
+        metrics[displayable_text(name)] = std::isfinite(value) ? nlohmann::json(value) : nullptr;
+    }
+    return {{"id", displayable_text(check.id)},
+            {"stage", check.stage},
+            {"kind", displayable_text(check.kind)},
+            {"name", displayable_text(check.name)},
+            {"outcome", outcome_name(check.outcome)},
+            {"passed", check.outcome == Outcome::passed},
+            {"score", check.score},
+            {"max_score", check.max_score},
+            {"summary", field(check.summary)},
+            {"seconds", check.seconds},
+            {"metrics", metrics},
+            {"details", clipped_text(check.details, kMaxDetailsBytes)},
+            {"counterexamples", counterexamples}};
+}
+
+}  // namespace
+
+nlohmann::json student_results(const GradeReport& report) {
+    const GradeReport seen = seen_by(report, Audience::student);
+
+    nlohmann::json stages = nlohmann::json::array();
+    const std::vector<std::pair<double, double>> scores = seen.stage_scores();
+    for (const int stage : kStageOrder) {
+        int checks = 0;
+        int passed = 0;
+        for (const CheckResult& check : seen.checks) {
+            if (check.stage != stage) continue;
+            ++checks;
+            if (check.outcome == Outcome::passed) ++passed;
+        }
+        if (checks == 0) continue;
+        const auto& [score, max_score] = scores[static_cast<std::size_t>(stage)];
+        stages.push_back({{"stage", stage},
+                          {"name", stage_label(stage)},
+                          {"score", score},
+                          {"max_score", max_score},
+                          {"checks", checks},
+                          {"passed", passed}});
+    }
+    nlohmann::json checks = nlohmann::json::array();
+    for (const CheckResult& check : seen.checks)
+        checks.push_back(check_of(check));
+
+    const PhaseTimes& times = report.times;
+    return {{"student", displayable_text(report.student)},
+            {"submission", displayable_text(report.submission)},
+            {"intake_problem", intake_problem_line(report.intake_problem)},
+            {"score", seen.score()},
+            {"max_score", seen.max_score()},
+            {"checks_not_shown", report.checks.size() - seen.checks.size()},
+            {"stages", stages},
+            {"checks", checks},
+            {"times",
+             {{"intake", times.intake},
+              {"build", times.build},
+              {"checks", times.checks},
+              {"reports", times.reports}}}};
+}
+
+}  // namespace raystep::grade

@@ -1,0 +1,69 @@
+#include "grader/report/data_url.h"
+
+#include <fstream>
+
+#include <unistd.h>
+
+#include "core/testing/catch.h"
+
+using namespace raystep::grade;
+
+namespace {
+
+// A file of its own for one test case, removed after it.
+class ScratchFile {
+  public:
+    ScratchFile(const std::string& name, const std::string& bytes)
+        : path_(std::filesystem::temp_directory_path() /
+                ("raystep-data-url-test-" + std::to_string(::getpid()) + "-" + name)) {
+        std::ofstream(path_, std::ios::binary) << bytes;
+    }
+    ~ScratchFile() {
+        std::error_code ignored;
+        std::filesystem::remove(path_, ignored);
+    }
+    ScratchFile(const ScratchFile&) = delete;
+    ScratchFile& operator=(const ScratchFile&) = delete;
+
+    const std::filesystem::path& path() const { return path_; }
+
+  private:
+    std::filesystem::path path_;
+};
+
+}  // namespace
+
+TEST_CASE("base64: RFC 4648's test vectors, padding included", "[report]") {
+    // RFC 4648, section 10.
+    CHECK(base64("") == "");
+    CHECK(base64("f") == "Zg==");
+    CHECK(base64("fo") == "Zm8=");
+    CHECK(base64("foo") == "Zm9v");
+    CHECK(base64("foob") == "Zm9vYg==");
+    CHECK(base64("fooba") == "Zm9vYmE=");
+    CHECK(base64("foobar") == "Zm9vYmFy");
+    // Every bit pattern of the alphabet's ends, and bytes above 127.
+    CHECK(base64(std::string("\x00\x10\x83\x10\x51\x87\x20\x92\x8b\x30\xd3\x8f\x41\x14\x93\x51"
+                             "\x55\x97\x61\x96\x9b\x71\xd7\x9f\x82\x18\xa3\x92\x59\xa7\xa2\x9a"
+                             "\xab\xb2\xdb\xaf\xc3\x1c\xb3\xd3\x5d\xb7\xe3\x9e\xbb\xf3\xdf\xbf",
+                             48)) ==
+          "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/");
+}
+
+TEST_CASE("image_data_url: an image file as a data URL of its media type", "[report]") {
+    const std::string bytes("\x89PNG\r\n\x1a\n\x00\x01\xff", 11);
+    const ScratchFile png("image.png", bytes);
+    CHECK(image_data_url(png.path(), 1000) == "data:image/png;base64," + base64(bytes));
+    const ScratchFile jpeg("photo.JPG", "jpeg");
+    CHECK(image_data_url(jpeg.path(), 1000) == "data:image/jpeg;base64," + base64("jpeg"));
+}
+
+TEST_CASE("image_data_url: nothing for a missing file, another type, or one too large",
+          "[report]") {
+    CHECK_FALSE(image_data_url("/nonexistent/raystep/image.png", 1000));
+    const ScratchFile text("page.html", "<script>alert(1)</script>");
+    CHECK_FALSE(image_data_url(text.path(), 1000));
+    const ScratchFile large("large.png", std::string(2000, 'x'));
+    CHECK_FALSE(image_data_url(large.path(), 1999));
+    CHECK(image_data_url(large.path(), 2000));
+}
