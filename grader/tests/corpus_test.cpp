@@ -96,14 +96,17 @@ void grade(Graded& entry, const fs::path& submission, const std::string& argumen
 fs::path mutated_submission(const fs::path& diff, const fs::path& folder) {
     fs::remove_all(folder);
     const int stage = stage_of(diff);
-    for (const raystep::grade::StageManifest& manifest : raystep::grade::read_stage_manifests(kSource)) {
+    for (const raystep::grade::StageManifest& manifest :
+         raystep::grade::read_stage_manifests(kSource)) {
         if (manifest.number != stage) continue;
         fs::create_directories(folder / "stages");
         fs::copy(kCorpus / "model/stages" / manifest.folder, folder / "stages" / manifest.folder,
                  fs::copy_options::recursive);
     }
-    const std::string apply = "cd " + shell_quoted(folder) + " && git apply -p1 " + shell_quoted(diff);
-    if (std::system(apply.c_str()) != 0) throw std::runtime_error("git apply failed for " + diff.string());
+    const std::string apply =
+        "cd " + shell_quoted(folder) + " && git apply -p1 " + shell_quoted(diff);
+    if (std::system(apply.c_str()) != 0)
+        throw std::runtime_error("git apply failed for " + diff.string());
     return folder;
 }
 
@@ -121,8 +124,7 @@ std::vector<Graded> grade_corpus(const std::string& folder) {
             entry.output = base / "report";
             try {
                 const fs::path submission = mutated_submission(diffs[k], base / "submission");
-                grade(entry, submission,
-                      "--stage " + std::to_string(entry.stage) + " --no-speed");
+                grade(entry, submission, "--stage " + std::to_string(entry.stage) + " --no-speed");
             } catch (const std::exception& error) {
                 entry.problem = error.what();
             }
@@ -130,8 +132,10 @@ std::vector<Graded> grade_corpus(const std::string& folder) {
     };
     // Grading is mostly compiling and waiting on probes: one more than the processors.
     std::vector<std::thread> workers(std::max(2u, std::thread::hardware_concurrency()) + 1);
-    for (std::thread& worker : workers) worker = std::thread(work);
-    for (std::thread& worker : workers) worker.join();
+    for (std::thread& worker : workers)
+        worker = std::thread(work);
+    for (std::thread& worker : workers)
+        worker.join();
     return graded;
 }
 
@@ -164,11 +168,64 @@ std::vector<fs::path> places_outside(const fs::path& output) {
     std::vector<fs::path> places = {"/tmp", "/autograder", "/autograder/results", kSource,
                                     fs::current_path()};
     if (const char* home = std::getenv("HOME")) places.push_back(home);
-    for (fs::path p = output; p.has_relative_path(); p = p.parent_path()) places.push_back(p.parent_path());
+    for (fs::path p = output; p.has_relative_path(); p = p.parent_path())
+        places.push_back(p.parent_path());
     return places;
 }
 
+// The student stubs of stages/ themselves, every stage, as a submission; `appended` added to the
+// end of the first file of each stage's manifest.
+fs::path stub_submission(const fs::path& folder, const std::string& appended) {
+    fs::remove_all(folder);
+    for (const raystep::grade::StageManifest& manifest :
+         raystep::grade::read_stage_manifests(kSource)) {
+        const fs::path stage = folder / "stages" / manifest.folder;
+        fs::create_directories(stage);
+        for (const std::string& file : manifest.files) {
+            fs::copy_file(kSource / "stages" / manifest.folder / file, stage / file);
+        }
+        std::ofstream(stage / manifest.files.front(), std::ios::app) << "\n" << appended;
+    }
+    return folder;
+}
+
+// Every check of a full grade (speed included) earns nothing and none passes: each is "not
+// implemented", which is what a submission of stubs is, however it tries to borrow an answer.
+void require_honest_zero(const Graded& stubs) {
+    INFO(describe(stubs));
+    REQUIRE(stubs.report);
+    REQUIRE(stubs.report->checks.size() > 40);
+    for (const CheckResult& check : stubs.report->checks) {
+        INFO(check.id << ": " << raystep::grade::outcome_name(check.outcome) << ", "
+                      << check.summary);
+        CHECK(check.score == 0.0);
+        CHECK(check.outcome == Outcome::not_implemented);
+    }
+    CHECK(stubs.report->score() == 0.0);
+}
+
 }  // namespace
+
+TEST_CASE("a submission of only the stubs scores 0 on every check and passes none", "[corpus]") {
+    Graded stubs;
+    stubs.output = kWork / "stubs/report";
+    const fs::path submission = stub_submission(kWork / "stubs/submission", "");
+    grade(stubs, submission, "");
+    require_honest_zero(stubs);
+}
+
+TEST_CASE(
+    "a submission of only the stubs that execs a sibling probe to borrow the reference "
+    "scores 0 on every check",
+    "[corpus]") {
+    Graded stubs;
+    stubs.output = kWork / "stubs-exec-sibling-probe/report";
+    const fs::path submission =
+        stub_submission(kWork / "stubs-exec-sibling-probe/submission",
+                        read_text(kCorpus / "hostile/stubs-exec-sibling-probe.cpp"));
+    grade(stubs, submission, "");
+    require_honest_zero(stubs);
+}
 
 TEST_CASE("the model submission gets full marks on every check", "[corpus]") {
     Graded model;
@@ -182,6 +239,17 @@ TEST_CASE("the model submission gets full marks on every check", "[corpus]") {
         // few slivers by design, and the rubric allows for it.
         INFO(check.id << ": " << check.summary);
         CHECK(check.score == check.max_score);
+        // Full points is passed, in every report (reports write the outcome as it is here).
+        if (check.max_score > 0) CHECK(check.outcome == Outcome::passed);
+    }
+    // Gradescope shows a test's status in colour: no test at full points may read "failed".
+    const nlohmann::json results = nlohmann::json::parse(read_text(model.output / "results.json"));
+    for (const nlohmann::json& test : results.at("tests")) {
+        INFO(test.value("name", ""));
+        if (test.at("max_score").get<double>() > 0 &&
+            test.at("score").get<double>() == test.at("max_score").get<double>()) {
+            CHECK(test.at("status") == "passed");
+        }
     }
 }
 
@@ -215,9 +283,10 @@ TEST_CASE("every correct alternative gets full marks in its stage", "[corpus]") 
     }
 }
 
-TEST_CASE("every hostile submission ends in bounded time with a low score, a complete report, "
-          "and nothing read or written outside its sandbox",
-          "[corpus]") {
+TEST_CASE(
+    "every hostile submission ends in bounded time with a low score, a complete report, "
+    "and nothing read or written outside its sandbox",
+    "[corpus]") {
     for (const fs::path& diff : diffs_in("hostile")) {
         for (const fs::path& place : places_outside(kWork / "hostile" / diff.stem() / "report")) {
             std::error_code ignored;
@@ -228,7 +297,8 @@ TEST_CASE("every hostile submission ends in bounded time with a low score, a com
     REQUIRE(graded.size() >= 10);
     // Lines of the reference solution, the hidden checks and the rubric: none may reach a report.
     const std::vector<std::string> secrets = {
-        "Stage 1 reference solution", "the contract's edge cases a student's own tests may not reach",
+        "Stage 1 reference solution",
+        "the contract's edge cases a student's own tests may not reach",
         "The rubric raystep-grade scores by"};
     for (const Graded& entry : graded) {
         INFO(describe(entry));
@@ -250,10 +320,11 @@ TEST_CASE("every hostile submission ends in bounded time with a low score, a com
             INFO(file);
             CHECK(fs::is_regular_file(entry.output / file));
         }
-        const nlohmann::json results = nlohmann::json::parse(read_text(entry.output / "results.json"));
+        const nlohmann::json results =
+            nlohmann::json::parse(read_text(entry.output / "results.json"));
         CHECK(results.at("score").get<double>() == Approx(entry.report->score()));
-        const std::string everything = read_text(entry.output / "report.json") +
-                                       read_text(entry.output / "instructor.html");
+        const std::string everything =
+            read_text(entry.output / "report.json") + read_text(entry.output / "instructor.html");
         for (const std::string& secret : secrets) {
             INFO("the report holds \"" << secret << "\"");
             CHECK(everything.find(secret) == std::string::npos);
