@@ -185,7 +185,59 @@ std::vector<fs::path> places_outside(const fs::path& output) {
     return places;
 }
 
+// The student stubs of stages/ themselves, every stage, as a submission; `appended` added to the
+// end of the first file of each stage's manifest.
+fs::path stub_submission(const fs::path& folder, const std::string& appended) {
+    fs::remove_all(folder);
+    for (const raystep::grade::StageManifest& manifest :
+         raystep::grade::read_stage_manifests(kSource)) {
+        const fs::path stage = folder / "stages" / manifest.folder;
+        fs::create_directories(stage);
+        for (const std::string& file : manifest.files) {
+            fs::copy_file(kSource / "stages" / manifest.folder / file, stage / file);
+        }
+        std::ofstream(stage / manifest.files.front(), std::ios::app) << "\n" << appended;
+    }
+    return folder;
+}
+
+// Every check of a full grade (speed included) earns nothing and none passes: each is "not
+// implemented", which is what a submission of stubs is, however it tries to borrow an answer.
+void require_honest_zero(const Graded& stubs) {
+    INFO(describe(stubs));
+    REQUIRE(stubs.report);
+    REQUIRE(stubs.report->checks.size() > 40);
+    for (const CheckResult& check : stubs.report->checks) {
+        INFO(check.id << ": " << raystep::grade::outcome_name(check.outcome) << ", "
+                      << check.summary);
+        CHECK(check.score == 0.0);
+        CHECK(check.outcome == Outcome::not_implemented);
+    }
+    CHECK(stubs.report->score() == 0.0);
+}
+
 }  // namespace
+
+TEST_CASE("a submission of only the stubs scores 0 on every check and passes none", "[corpus]") {
+    Graded stubs;
+    stubs.output = kWork / "stubs/report";
+    const fs::path submission = stub_submission(kWork / "stubs/submission", "");
+    grade(stubs, submission, "");
+    require_honest_zero(stubs);
+}
+
+TEST_CASE(
+    "a submission of only the stubs that execs a sibling probe to borrow the reference "
+    "scores 0 on every check",
+    "[corpus]") {
+    Graded stubs;
+    stubs.output = kWork / "stubs-exec-sibling-probe/report";
+    const fs::path submission =
+        stub_submission(kWork / "stubs-exec-sibling-probe/submission",
+                        read_text(kCorpus / "hostile/stubs-exec-sibling-probe.cpp"));
+    grade(stubs, submission, "");
+    require_honest_zero(stubs);
+}
 
 TEST_CASE("the model submission gets full marks on every check", "[corpus]") {
     Graded model;
@@ -199,6 +251,18 @@ TEST_CASE("the model submission gets full marks on every check", "[corpus]") {
         // few slivers by design, and the rubric allows for it.
         INFO(check.id << ": " << check.summary);
         CHECK(check.score == check.max_score);
+        // Full points is passed, in every report (reports write the outcome as it is here).
+        if (check.max_score > 0) CHECK(check.outcome == Outcome::passed);
+    }
+    // Gradescope shows a test's status in colour: no test at full points may read "failed".
+    const nlohmann::json results = nlohmann::json::parse(
+        read_text(raystep::grade::instructor_folder(model.output) / "results.json"));
+    for (const nlohmann::json& test : results.at("tests")) {
+        INFO(test.value("name", ""));
+        if (test.at("max_score").get<double>() > 0 &&
+            test.at("score").get<double>() == test.at("max_score").get<double>()) {
+            CHECK(test.at("status") == "passed");
+        }
     }
 }
 

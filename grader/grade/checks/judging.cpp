@@ -13,7 +13,8 @@ namespace raystep::grade {
 CheckDefinition case_check(std::string id, int stage, std::string kind, std::string name,
                            std::function<std::vector<ProbeCase>()> make_cases) {
     return {id, stage, std::move(kind), std::move(name),
-            [id, make_cases = std::move(make_cases)](const GradingContext& context, const BuiltProbe& probe) {
+            [id, make_cases = std::move(make_cases)](const GradingContext& context,
+                                                     const BuiltProbe& probe) {
                 return run_cases(context, id, probe, make_cases());
             }};
 }
@@ -30,6 +31,9 @@ std::vector<WorkloadTime> timed_workloads(const std::vector<WorkloadRun>& runs,
         const ProbeSession session = ask_probe(runs[p].program, {{call, a}}, limits);
         if (session.answers[0].kind != ProbeAnswer::Kind::result) {
             timed[p].answered = false;
+            if (session.answers[0].kind == ProbeAnswer::Kind::not_implemented) {
+                timed[p].not_implemented = session.answers[0].message;
+            }
         } else if (passes > 0) {
             timed[p].checksum = session.answers[0].value;
         }
@@ -112,7 +116,8 @@ Judgement near_vec3(const ProbeAnswer& answer, const Vec3& expected, double tole
     const Vec3 got = result_vec3(answer);
     for (int k = 0; k < 3; ++k) {
         if (!(std::abs(got[k] - expected[k]) <= tolerance)) {
-            return wrong(full_text(expected) + " (within " + full_text(tolerance) + ")", full_text(got));
+            return wrong(full_text(expected) + " (within " + full_text(tolerance) + ")",
+                         full_text(got));
         }
     }
     return right();
@@ -125,7 +130,8 @@ Judgement threw(const ProbeAnswer& answer, const std::string& type) {
 
 std::string vectors_text(std::initializer_list<Vec3> vectors) {
     std::string text;
-    for (const Vec3& v : vectors) text += (text.empty() ? "" : ", ") + full_text(v);
+    for (const Vec3& v : vectors)
+        text += (text.empty() ? "" : ", ") + full_text(v);
     return text;
 }
 

@@ -13,6 +13,10 @@ namespace raystep::grade {
 
 // Judges shared by the stages' checks: a probe's answer against the grader's expectation.
 
+/// The student release's raystep, as the handouts run it from the repository's root: the
+/// program a student's reproduce line calls.
+inline constexpr const char* kStudentRaystep = "build/release/bin/raystep";
+
 /// A check that sends the probe of `stage` the cases `make_cases` writes and judges each answer
 /// (run_cases); the cases are made when the check runs, not when the checks are listed.
 CheckDefinition case_check(std::string id, int stage, std::string kind, std::string name,
@@ -32,6 +36,7 @@ struct WorkloadTime {
     double seconds = 0.0;
     probe::Json checksum;
     bool answered = true;  ///< false when a run ended without an answer (a stub, crash or timeout)
+    std::string not_implemented;  ///< a stub's message, when a stub was why
 };
 
 /// Asks `program` the `call` with `args` and "repeat" set to `repeat` passes, and to 0.

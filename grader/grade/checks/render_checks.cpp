@@ -9,6 +9,7 @@
 #include "core/image/image_io.h"
 #include "core/render/tile_renderer.h"
 #include "core/scene/scene_loader.h"
+#include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
 #include "grader/grade/image_diff.h"
 #include "grader/protocol/image_json.h"
@@ -46,22 +47,75 @@ Image reference_render(const fs::path& path, View view) {
     return render_image(prepare_render_scene(scene), options);
 }
 
+// The student's own render of the view, beside the reference image the release holds.
+std::string render_command(const std::string& scene, View view) {
+    return std::string(kStudentRaystep) + " render scenes/" + scene + " --view " +
+           std::string(view_name(view));
+}
+
+// The pixel that differs most from the reference's (by its largest channel; a NaN first), and
+// how much.
+struct WorstPixel {
+    int i = 0;
+    int j = 0;
+    double difference = 0.0;
+};
+
+WorstPixel worst_pixel(const Image& reference, const Image& student) {
+    WorstPixel worst;
+    for (int j = 0; j < reference.height(); ++j) {
+        for (int i = 0; i < reference.width(); ++i) {
+            const Color d = glm::abs(reference.at(i, j) - student.at(i, j));
+            const double largest =
+                std::isnan(d.r + d.g + d.b) ? HUGE_VAL : std::max({d.r, d.g, d.b});
+            if (largest > worst.difference) worst = {i, j, largest};
+        }
+    }
+    return worst;
+}
+
+// The render's worst pixel as a counterexample: the colours, and the `raystep trace` of the same
+// place in the scene at its own size (the grader renders at most kWidth wide), which shows a
+// student every step of their own renderer's computation there.
+Counterexample pixel_counterexample(const GradingContext& context, const std::string& id,
+                                    const std::string& scene_name, View view,
+                                    const Image& reference, const Image& student) {
+    const WorstPixel worst = worst_pixel(reference, student);
+    const Scene scene = load_scene(context.source / "scenes" / scene_name);
+    const int x = std::min(scene.width - 1,
+                           static_cast<int>((worst.i + 0.5) * scene.width / reference.width()));
+    const int y = std::min(scene.height - 1,
+                           static_cast<int>((worst.j + 0.5) * scene.height / reference.height()));
+    const std::string place = "pixel (" + std::to_string(worst.i) + ", " + std::to_string(worst.j) +
+                              ") of the " + std::to_string(reference.width()) + " x " +
+                              std::to_string(reference.height()) + " render";
+    const std::string scene_place = "pixel (" + std::to_string(x) + ", " + std::to_string(y) +
+                                    ") at the scene's " + std::to_string(scene.width) + " x " +
+                                    std::to_string(scene.height);
+    return {
+        scene_name + ", " + std::string(view_name(view)) + " view, " + place + ", " + scene_place,
+        full_text(reference.at(worst.i, worst.j)), full_text(student.at(worst.i, worst.j)),
+        context.reproduce + " --check " + id + " --case 0",
+        std::string(kStudentRaystep) + " trace scenes/" + scene_name + " " + std::to_string(x) +
+            " " + std::to_string(y) + " --view " + std::string(view_name(view))};
+}
+
 CheckMeasure measure_render(const GradingContext& context, const BuiltProbe& probe,
                             const std::string& id, const std::string& scene, View view) {
     const fs::path path = context.source / "scenes" / scene;
     // The judge keeps the image; the diff comes once the run is over.
     std::optional<Image> student;
-    ProbeCase render_case{scene + ", " + std::string(view_name(view)) + " view",
-                          {"render",
-                           {{"scene", path.string()},
-                            {"view", std::string(view_name(view))},
-                            {"max_width", kWidth}}},
-                          [&student](const ProbeAnswer& answer) {
-                              if (answer.kind != ProbeAnswer::Kind::result) return wrong("an image", "");
-                              student = probe::image_from(answer.value,
-                                                          static_cast<std::size_t>(kWidth) * kWidth * 4);
-                              return right();
-                          }};
+    ProbeCase render_case{
+        scene + ", " + std::string(view_name(view)) + " view",
+        {"render",
+         {{"scene", path.string()}, {"view", std::string(view_name(view))}, {"max_width", kWidth}}},
+        [&student](const ProbeAnswer& answer) {
+            if (answer.kind != ProbeAnswer::Kind::result) return wrong("an image", "");
+            student =
+                probe::image_from(answer.value, static_cast<std::size_t>(kWidth) * kWidth * 4);
+            return right();
+        },
+        render_command(scene, view)};
     ProbeRunLimits limits;
     limits.readable = {context.source / "scenes"};
     CheckMeasure measure = run_cases(context, id, probe, {render_case}, limits);
@@ -75,17 +129,31 @@ CheckMeasure measure_render(const GradingContext& context, const BuiltProbe& pro
     write_image(difference_heat_map(reference, *student, 0.25f), folder / "difference.png");
     measure.images = {"renders/" + id + "/reference.png", "renders/" + id + "/student.png",
                       "renders/" + id + "/difference.png"};
-    const double share = diff.pixels == 0 ? 1.0 : static_cast<double>(diff.pixels_over) / diff.pixels;
+    const double share =
+        diff.pixels == 0 ? 1.0 : static_cast<double>(diff.pixels_over) / diff.pixels;
     measure.fraction = 1.0 - share;
-    measure.metrics = {{"mean absolute error", diff.mean_error},
-                       {"rmse", diff.rms_error},
-                       {"psnr", diff.psnr},
-                       {"pixels over threshold", static_cast<double>(diff.pixels_over)},
-                       {"visibly different pixels", static_cast<double>(diff.pixels_visibly_different)},
-                       {"pixels", static_cast<double>(diff.pixels)}};
+    measure.metrics = {
+        {"mean absolute error", diff.mean_error},
+        {"rmse", diff.rms_error},
+        {"psnr", diff.psnr},
+        {"pixels over threshold", static_cast<double>(diff.pixels_over)},
+        {"visibly different pixels", static_cast<double>(diff.pixels_visibly_different)},
+        {"pixels", static_cast<double>(diff.pixels)}};
     measure.outcome = share <= kEdgePixels ? Outcome::passed : Outcome::failed;
+    if (measure.outcome == Outcome::failed) {
+        measure.counterexamples = {
+            diff.same_size ? pixel_counterexample(context, id, scene, view, reference, *student)
+                           : Counterexample{render_case.input,
+                                            std::to_string(reference.width()) + " x " +
+                                                std::to_string(reference.height()) + " pixels",
+                                            std::to_string(student->width()) + " x " +
+                                                std::to_string(student->height()) + " pixels",
+                                            context.reproduce + " --check " + id + " --case 0",
+                                            render_case.student_reproduce}};
+    }
     char text[160];
-    std::snprintf(text, sizeof text, "%zu of %zu pixels differ by more than %.2f (%.2f%%); RMSE %.4f",
+    std::snprintf(text, sizeof text,
+                  "%zu of %zu pixels differ by more than %.2f (%.2f%%); RMSE %.4f",
                   diff.pixels_over, diff.pixels, static_cast<double>(kThreshold), 100.0 * share,
                   diff.rms_error);
     measure.summary = diff.same_size ? text : "the image has the wrong size";
@@ -94,8 +162,9 @@ CheckMeasure measure_render(const GradingContext& context, const BuiltProbe& pro
 
 CheckDefinition render_check(int stage, const std::string& scene, View view) {
     const std::string stem = fs::path(scene).stem().string();
-    const std::string id = (stage == 0 ? std::string("pipeline") : "stage" + std::to_string(stage)) +
-                           ".render." + stem + "." + std::string(view_name(view));
+    const std::string id =
+        (stage == 0 ? std::string("pipeline") : "stage" + std::to_string(stage)) + ".render." +
+        stem + "." + std::string(view_name(view));
     return {id, stage, "render",
             "the " + std::string(view_name(view)) + " view of scenes/" + scene +
                 (stage == 0 ? ", every stage from the submission" : ""),

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <random>
 
+#include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
 
@@ -18,18 +19,25 @@ constexpr double kUnit = 0x1p-53;
 ProbeCase vector_case(const std::string& call, std::initializer_list<Vec3> args,
                       std::function<Judgement(const ProbeAnswer&)> judge) {
     Json json_args = Json::array();
-    for (const Vec3& v : args) json_args.push_back(probe::vec3(v));
-    return {call + vectors_text(args), {call, json_args}, std::move(judge)};
+    std::string code;
+    for (const Vec3& v : args) {
+        json_args.push_back(probe::vec3(v));
+        code += (code.empty() ? "" : ", ") + cpp(v);
+    }
+    return {
+        call + vectors_text(args), {call, json_args}, std::move(judge), call + "(" + code + ")"};
 }
 
 ProbeCase exact_vector(const std::string& call, std::initializer_list<Vec3> args, Vec3 expected,
                        double tolerance = 0.0) {
-    return vector_case(call, args, [=](const ProbeAnswer& a) { return near_vec3(a, expected, tolerance); });
+    return vector_case(call, args,
+                       [=](const ProbeAnswer& a) { return near_vec3(a, expected, tolerance); });
 }
 
 ProbeCase exact_number(const std::string& call, std::initializer_list<Vec3> args, double expected,
                        double tolerance = 0.0) {
-    return vector_case(call, args, [=](const ProbeAnswer& a) { return near_number(a, expected, tolerance); });
+    return vector_case(call, args,
+                       [=](const ProbeAnswer& a) { return near_number(a, expected, tolerance); });
 }
 
 ProbeCase throws_domain_error(const std::string& call, std::initializer_list<Vec3> args) {
@@ -123,14 +131,15 @@ std::vector<ProbeCase> oracle_cases() {
         Vec3 a = random_vector(rng) * 1e-50;
         Vec3 b = random_vector(rng) * 1e-50;
         const Wide exact = Wide(a.x) * b.x + Wide(a.y) * b.y + Wide(a.z) * b.z;
-        const Wide size = std::abs(Wide(a.x) * b.x) + std::abs(Wide(a.y) * b.y) + std::abs(Wide(a.z) * b.z);
+        const Wide size =
+            std::abs(Wide(a.x) * b.x) + std::abs(Wide(a.y) * b.y) + std::abs(Wide(a.z) * b.z);
         cases.push_back(exact_number("dot", {a, b}, static_cast<double>(exact),
                                      static_cast<double>(4 * kUnit * size)));
         const Vec3 c{static_cast<double>(Wide(a.y) * b.z - Wide(a.z) * b.y),
                      static_cast<double>(Wide(a.z) * b.x - Wide(a.x) * b.z),
                      static_cast<double>(Wide(a.x) * b.y - Wide(a.y) * b.x)};
-        const double cross_size = static_cast<double>(4 * kUnit *
-            (std::abs(Wide(a.x)) + std::abs(Wide(a.y)) + std::abs(Wide(a.z))) *
+        const double cross_size = static_cast<double>(
+            4 * kUnit * (std::abs(Wide(a.x)) + std::abs(Wide(a.y)) + std::abs(Wide(a.z))) *
             (std::abs(Wide(b.x)) + std::abs(Wide(b.y)) + std::abs(Wide(b.z))));
         cases.push_back(exact_vector("cross", {a, b}, c, cross_size));
     }

@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
 
@@ -191,11 +192,23 @@ ExpectedRay expected_orthographic(const CameraSpec& c, int i, int j) {
             narrow(-f.w), 8 * kUnit};
 }
 
+// The camera's maker called as a student would: make_perspective_camera(...) or
+// make_orthographic_camera(...).
+std::string camera_code(const CameraSpec& c) {
+    const std::string frame = cpp(c.lookfrom) + ", " + cpp(c.lookat) + ", " + cpp(c.up) + ", ";
+    const std::string size = std::to_string(c.width) + ", " + std::to_string(c.height) + ")";
+    if (!c.orthographic) return "make_perspective_camera(" + frame + cpp(c.fovy) + ", " + size;
+    return "make_orthographic_camera(" + frame + cpp(c.left) + ", " + cpp(c.right) + ", " +
+           cpp(c.bottom) + ", " + cpp(c.top) + ", " + size;
+}
+
 ProbeCase camera_ray(const CameraSpec& c, int i, int j) {
     const ExpectedRay e =
         c.orthographic ? expected_orthographic(c, i, j) : expected_perspective(c, i, j);
     return {camera_text(c, i, j), camera_query(c, i, j),
-            [e](const ProbeAnswer& a) { return judge_camera_ray(a, e); }};
+            [e](const ProbeAnswer& a) { return judge_camera_ray(a, e); },
+            std::string(c.orthographic ? "orthographic_ray(" : "perspective_ray(") +
+                camera_code(c) + ", " + std::to_string(i) + ", " + std::to_string(j) + ")"};
 }
 
 // No pixels asked: the camera's maker must throw, not the rays it would make later.
@@ -204,14 +217,15 @@ ProbeCase no_camera(const CameraSpec& c) {
     query.args["pixels"] = Json::array();
     const std::string text = camera_text(c, 0, 0);
     return {text.substr(0, text.rfind(", pixel")) + ": no such camera", query,
-            [](const ProbeAnswer& a) { return threw(a, "domain_error"); }};
+            [](const ProbeAnswer& a) { return threw(a, "domain_error"); }, camera_code(c)};
 }
 
 // R(t) = A + t D, within `tolerance` of `expected` per coordinate.
 ProbeCase ray_at(const Ray& ray, double t, const Vec3& expected, double tolerance = 0.0) {
     return {"Ray{" + ray_text(ray) + "}.at(" + full_text(t) + ")",
             {"ray_at", {{"ray", probe::ray(ray)}, {"t", probe::number(t)}}},
-            [=](const ProbeAnswer& a) { return near_vec3(a, expected, tolerance); }};
+            [=](const ProbeAnswer& a) { return near_vec3(a, expected, tolerance); },
+            cpp(ray) + ".at(" + cpp(t) + ")"};
 }
 
 std::vector<ProbeCase> public_cases() {

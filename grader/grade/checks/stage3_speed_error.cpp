@@ -63,6 +63,7 @@ CheckMeasure measure_speed_error(const GradingContext& context, const BuiltProbe
     CheckMeasure measure;
     if (!probe.program) {
         measure.outcome = Outcome::did_not_compile;
+        measure.summary = "did not compile";
         measure.details = probe.failure;
         return measure;
     }
@@ -90,6 +91,11 @@ CheckMeasure measure_speed_error(const GradingContext& context, const BuiltProbe
     for (const Json& a : answer.value)
         answers.push_back(probe::case_answer_from(a));
     const MethodScore score = score_family(method, family, answers, 0);
+    if (score.not_implemented) {
+        measure.outcome = Outcome::not_implemented;
+        measure.summary = score.not_implemented_message;
+        return measure;
+    }
 
     // The speed, against the reference's Cramer on the same pairs
     const Json pairs = timed_pairs(family);

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <random>
 
+#include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
 #include "stages/3_intersect/intersect.h"
@@ -23,17 +24,22 @@ struct AccelScene {
     std::string name;
     PrimitiveList primitives;
     std::vector<Ray> rays;
+    /// The primitives built in C++, for a student's test; empty where they are too many to write
+    /// out (the random scenes: hundreds of primitives from the grader's seeds).
+    std::string code;
 };
 
 AccelScene random_soup(std::uint64_t seed) {
     std::mt19937_64 rng(seed);
-    AccelScene s{"random soup", {}, {}};
+    AccelScene s{"random soup", {}, {}, ""};
     for (int k = 0; k < 300; ++k) {
         const Vec3 c = uniform(rng, -1, 1);
-        s.primitives.triangles.push_back({c, c + uniform(rng, -0.2, 0.2), c + uniform(rng, -0.2, 0.2)});
+        s.primitives.triangles.push_back(
+            {c, c + uniform(rng, -0.2, 0.2), c + uniform(rng, -0.2, 0.2)});
     }
     std::uniform_real_distribution<double> radius(0.01, 0.15);
-    for (int k = 0; k < 60; ++k) s.primitives.spheres.push_back({uniform(rng, -1, 1), radius(rng)});
+    for (int k = 0; k < 60; ++k)
+        s.primitives.spheres.push_back({uniform(rng, -1, 1), radius(rng)});
     for (int k = 0; k < 600; ++k) {
         // Half from outside the scene, half from inside it.
         const Vec3 origin = k % 2 ? uniform(rng, -1, 1) : 3.0 * glm::normalize(uniform(rng, -1, 1));
@@ -45,7 +51,18 @@ AccelScene random_soup(std::uint64_t seed) {
 // A grid of quads sharing edges and vertices, met by axis-parallel rays through the shared edges:
 // where slab tests with 0 * inf and children met at the same t go wrong.
 AccelScene shared_edges() {
-    AccelScene s{"shared edges, axis-parallel rays", {}, {}};
+    AccelScene s{
+        "shared edges, axis-parallel rays",
+        {},
+        {},
+        "PrimitiveList primitives;\n"
+        "for (int i = 0; i < 8; ++i) {\n"
+        "    for (int j = 0; j < 8; ++j) {\n"
+        "        const Vec3 a(i, j, 0), b(i + 1, j, 0), c(i + 1, j + 1, 0), d(i, j + 1, 0);\n"
+        "        primitives.triangles.push_back({a, b, c});\n"
+        "        primitives.triangles.push_back({a, c, d});\n"
+        "    }\n"
+        "}\n"};
     for (int i = 0; i < 8; ++i) {
         for (int j = 0; j < 8; ++j) {
             const Vec3 a(i, j, 0), b(i + 1, j, 0), c(i + 1, j + 1, 0), d(i, j + 1, 0);
@@ -67,12 +84,12 @@ AccelScene shared_edges() {
 // order settles; degenerate triangles and zero-radius spheres, which are misses.
 AccelScene ties_and_degenerates(std::uint64_t seed) {
     std::mt19937_64 rng(seed);
-    AccelScene s{"ties and degenerate primitives", {}, {}};
+    AccelScene s{"ties and degenerate primitives", {}, {}, ""};
     for (int k = 0; k < 40; ++k) {
         const Vec3 c = uniform(rng, -1, 1);
         const Triangle t{c, c + Vec3(0.3, 0, 0), c + Vec3(0, 0.3, 0)};
         s.primitives.triangles.push_back(t);
-        s.primitives.triangles.push_back(t);                                  // the same twice
+        s.primitives.triangles.push_back(t);  // the same twice
         s.primitives.triangles.push_back({c, c + Vec3(0.3, 0, 0), c + Vec3(0.6, 0, 0)});  // flat
         s.primitives.spheres.push_back({c, 0.1});
         s.primitives.spheres.push_back({c, 0.1});
@@ -95,88 +112,95 @@ std::vector<AccelScene> scenes() {
 
 std::string hit_text(const std::optional<PrimitiveHit>& h) {
     if (!h) return "a miss";
-    return std::string(h->kind == PrimitiveKind::sphere ? "sphere" : h->kind == PrimitiveKind::triangle ? "triangle" : "plane") +
+    return std::string(h->kind == PrimitiveKind::sphere     ? "sphere"
+                       : h->kind == PrimitiveKind::triangle ? "triangle"
+                                                            : "plane") +
            " " + std::to_string(h->index) + " at t = " + full_text(h->hit.t);
 }
 
 std::string ray_text(const std::string& scene, std::size_t k, const Ray& r) {
-    return scene + ", ray " + std::to_string(k) + ": origin " + full_text(r.origin) + " direction " +
-           full_text(r.direction) + " t in [" + full_text(r.t_min) + ", " + full_text(r.t_max) + "]";
+    return scene + ", ray " + std::to_string(k) + ": origin " + full_text(r.origin) +
+           " direction " + full_text(r.direction) + " t in [" + full_text(r.t_min) + ", " +
+           full_text(r.t_max) + "]";
 }
 
-// One structure over every scene: each ray's answer must be exactly the reference's.
+// How a student builds the scene in a test of their own, or what it is where it is not written
+// out.
+std::string scene_code(const AccelScene& scene) {
+    if (!scene.code.empty()) return scene.code;
+    return "// primitives: the grader's scene \"" + scene.name + "\", " +
+           std::to_string(scene.primitives.triangles.size()) + " triangles and " +
+           std::to_string(scene.primitives.spheres.size()) +
+           " spheres from its own seed; compare with closest_hit(ray, primitives)\n";
+}
+
+std::string structure_code(const std::string& call, const std::string& split, bool occluded,
+                           const Ray& ray) {
+    const std::string structure = call == "bvh" ? "Bvh(primitives, BvhSplit::" + split + ")"
+                                                : std::string("UniformGrid(primitives)");
+    return structure + (occluded ? ".occluded(" : ".closest_hit(") + cpp(ray) + ")";
+}
+
+// One ray's answer from the structure, exactly the reference closest_hit's.
+Judgement judge_ray(const ProbeAnswer& answer, const AccelScene& scene, std::size_t k,
+                    bool occluded) {
+    const std::optional<PrimitiveHit> expected = closest_hit(scene.rays[k], scene.primitives);
+    if (occluded) {
+        const std::string expected_text = expected ? "occluded" : "not occluded";
+        if (answer.kind != ProbeAnswer::Kind::result) return wrong(expected_text, "");
+        if (!answer.value.is_boolean()) return wrong(expected_text, "not a boolean");
+        const bool got = answer.value.get<bool>();
+        return got == expected.has_value()
+                   ? right()
+                   : wrong(expected_text, got ? "occluded" : "not occluded");
+    }
+    if (answer.kind != ProbeAnswer::Kind::result) return wrong(hit_text(expected), "");
+    const std::optional<PrimitiveHit> got = probe::primitive_hit_from(answer.value);
+    const bool ok = got.has_value() == expected.has_value() &&
+                    (!got || (got->kind == expected->kind && got->index == expected->index &&
+                              got->hit.t == expected->hit.t));
+    return ok ? right() : wrong(hit_text(expected), hit_text(got));
+}
+
+// One structure over every scene: each ray's answer must be exactly the reference's. The
+// structure is built once per scene and asked about all its rays; each ray is a case.
 CheckMeasure measure_structure(const GradingContext& context, const BuiltProbe& probe,
                                const std::string& id, const std::string& call,
                                const std::string& split, bool occluded) {
-    std::size_t rays = 0;
-    std::size_t right_rays = 0;
-    std::vector<Counterexample> counterexamples;
-    std::vector<ProbeCase> cases;
     const std::vector<AccelScene> all = scenes();
-    for (std::size_t s = 0; s < all.size(); ++s) {
-        const AccelScene& scene = all[s];
+    std::vector<CaseBatch> batches;
+    for (const AccelScene& scene : all) {
+        const auto query = [&scene, call, split, occluded](const Json& rays) {
+            Json args = {{"primitives", probe::primitive_list(scene.primitives)},
+                         {"rays", rays},
+                         {"occluded", occluded}};
+            if (!split.empty()) args["split"] = split;
+            return ProbeQuery{call, args};
+        };
         Json ray_list = Json::array();
-        for (const Ray& r : scene.rays) ray_list.push_back(probe::ray(r));
-        Json args = {{"primitives", probe::primitive_list(scene.primitives)}, {"rays", ray_list},
-                     {"occluded", occluded}};
-        if (!split.empty()) args["split"] = split;
-        rays += scene.rays.size();
-        cases.push_back({scene.name, {call, args}, [&, s, scene_ptr = &all[s]](const ProbeAnswer& answer) {
-            const AccelScene& sc = *scene_ptr;
-            if (answer.kind != ProbeAnswer::Kind::result || !answer.value.is_array() ||
-                answer.value.size() != sc.rays.size()) {
-                return wrong(std::to_string(sc.rays.size()) + " answers", "");
-            }
-            bool all_right = true;
-            for (std::size_t k = 0; k < sc.rays.size(); ++k) {
-                const std::optional<PrimitiveHit> expected = closest_hit(sc.rays[k], sc.primitives);
-                std::string expected_text;
-                std::string got_text;
-                bool ok = false;
-                if (occluded) {
-                    const bool got = answer.value[k].is_boolean() && answer.value[k].get<bool>();
-                    ok = answer.value[k].is_boolean() && got == expected.has_value();
-                    expected_text = expected ? "occluded" : "not occluded";
-                    got_text = answer.value[k].is_boolean() ? (got ? "occluded" : "not occluded") : "not a boolean";
-                } else {
-                    const std::optional<PrimitiveHit> got = probe::primitive_hit_from(answer.value[k]);
-                    ok = got.has_value() == expected.has_value() &&
-                         (!got || (got->kind == expected->kind && got->index == expected->index &&
-                                   got->hit.t == expected->hit.t));
-                    expected_text = hit_text(expected);
-                    got_text = hit_text(got);
-                }
-                if (ok) {
-                    ++right_rays;
-                    continue;
-                }
-                all_right = false;
-                if (counterexamples.size() < 5) {
-                    counterexamples.push_back({ray_text(sc.name, k, sc.rays[k]), expected_text, got_text,
-                                               context.reproduce + " --check " + id + " --case " +
-                                                   std::to_string(s)});
-                }
-            }
-            return all_right ? right() : wrong("every ray right", "");
-        }});
+        for (const Ray& r : scene.rays)
+            ray_list.push_back(probe::ray(r));
+        CaseBatch batch{query(ray_list),
+                        [&scene, query](std::size_t k) {
+                            return query(Json::array({probe::ray(scene.rays[k])}));
+                        },
+                        {}};
+        const std::string code = scene_code(scene);
+        for (std::size_t k = 0; k < scene.rays.size(); ++k) {
+            batch.cases.push_back({ray_text(scene.name, k, scene.rays[k]),
+                                   {},
+                                   [&scene, k, occluded](const ProbeAnswer& answer) {
+                                       return judge_ray(answer, scene, k, occluded);
+                                   },
+                                   code + structure_code(call, split, occluded, scene.rays[k])});
+        }
+        batches.push_back(std::move(batch));
     }
     // A student's structure may build slowly (a full SAH sweep): more room than a unit check.
     ProbeRunLimits limits;
     limits.cpu_seconds = 30;
     limits.wall = std::chrono::seconds(60);
-    CheckMeasure measure = run_cases(context, id, probe, cases, limits);
-    if (measure.outcome == Outcome::did_not_compile || measure.outcome == Outcome::not_implemented) {
-        return measure;
-    }
-    measure.counterexamples = counterexamples;
-    measure.fraction = rays == 0 ? 0.0 : static_cast<double>(right_rays) / rays;
-    measure.metrics = {{"rays", static_cast<double>(rays)}, {"right", static_cast<double>(right_rays)}};
-    const std::string ending = measure.outcome == Outcome::crashed || measure.outcome == Outcome::timed_out
-                                   ? "; " + measure.details
-                                   : "";
-    measure.summary = std::to_string(right_rays) + " of " + std::to_string(rays) +
-                      " rays answered exactly as closest_hit" + ending;
-    return measure;
+    return run_batched_cases(context, id, probe, batches, limits);
 }
 
 // The slab test where the formula goes wrong: 0 * inf at a slab plane, rays along a face, boxes
@@ -191,26 +215,32 @@ std::vector<ProbeCase> slab_cases() {
     };
     const Slab slabs[] = {
         {{{0, 0, -5}, {0, 0, 1}}, {-1, -1, -1}, {1, 1, 1}, true},
-        {{{1, 0, -5}, {0, 0, 1}}, {-1, -1, -1}, {1, 1, 1}, true},    // on the x = 1 face's plane
+        {{{1, 0, -5}, {0, 0, 1}}, {-1, -1, -1}, {1, 1, 1}, true},  // on the x = 1 face's plane
         {{{1.5, 0, -5}, {0, 0, 1}}, {-1, -1, -1}, {1, 1, 1}, false},
         {{{-1, -1, -5}, {0, 0, 1}}, {-1, -1, -1}, {1, 1, 1}, true},  // along an edge
         {{{0, 0, -5}, {0, 0, 1}}, {0, 0, 0}, {0, 0, 0}, true},       // a point box on the ray
         {{{0, 0, -5}, {0, 0, 1}}, {inf, inf, inf}, {-inf, -inf, -inf}, false},  // the empty box
-        {{{0, 0, 5}, {0, 0, 1}}, {-1, -1, -1}, {1, 1, 1}, false},    // behind the origin
-        {{{0, 0, 0}, {0, 0, 1}}, {-1, -1, -1}, {1, 1, 1}, true},     // from inside
-        {{{0, 0, -5}, {0, 0, 1}, 0.0, 3.0}, {-1, -1, -1}, {1, 1, 1}, false},  // stops short
+        {{{0, 0, 5}, {0, 0, 1}}, {-1, -1, -1}, {1, 1, 1}, false},               // behind the origin
+        {{{0, 0, 0}, {0, 0, 1}}, {-1, -1, -1}, {1, 1, 1}, true},                // from inside
+        {{{0, 0, -5}, {0, 0, 1}, 0.0, 3.0}, {-1, -1, -1}, {1, 1, 1}, false},    // stops short
     };
     std::vector<ProbeCase> cases;
     for (const Slab& slab : slabs) {
-        cases.push_back({"ray " + full_text(slab.ray.origin) + " + t " + full_text(slab.ray.direction) +
-                             ", box " + full_text(slab.min) + " to " + full_text(slab.max),
-                         {"intersect_aabb",
-                          {{"ray", probe::ray(slab.ray)}, {"min", probe::vec3(slab.min)},
-                           {"max", probe::vec3(slab.max)}}},
-                         [hit = slab.hit](const ProbeAnswer& answer) {
-                             if (answer.kind != ProbeAnswer::Kind::result) return wrong(hit ? "a hit" : "a miss", "");
-                             return answer.value.is_null() != hit ? right() : wrong(hit ? "a hit" : "a miss", "");
-                         }});
+        cases.push_back(
+            {"ray " + full_text(slab.ray.origin) + " + t " + full_text(slab.ray.direction) +
+                 ", box " + full_text(slab.min) + " to " + full_text(slab.max),
+             {"intersect_aabb",
+              {{"ray", probe::ray(slab.ray)},
+               {"min", probe::vec3(slab.min)},
+               {"max", probe::vec3(slab.max)}}},
+             [hit = slab.hit](const ProbeAnswer& answer) {
+                 if (answer.kind != ProbeAnswer::Kind::result)
+                     return wrong(hit ? "a hit" : "a miss", "");
+                 return answer.value.is_null() != hit ? right()
+                                                      : wrong(hit ? "a hit" : "a miss", "");
+             },
+             "intersect_aabb(" + cpp(slab.ray) + ", 1.0 / Vec3" + cpp(slab.ray.direction) +
+                 ", Aabb{" + cpp(slab.min) + ", " + cpp(slab.max) + "})"});
     }
     return cases;
 }
@@ -223,6 +253,7 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
     CheckMeasure measure;
     if (!probe.program) {
         measure.outcome = Outcome::did_not_compile;
+        measure.summary = "did not compile";
         measure.details = probe.failure;
         return measure;
     }
@@ -231,7 +262,8 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
     // Many rays through a scene big enough that the structure is what costs.
     for (int k = 0; k < 3000; ++k) {
         const Vec3 c = uniform(rng, -1, 1);
-        scene.primitives.triangles.push_back({c, c + uniform(rng, -0.05, 0.05), c + uniform(rng, -0.05, 0.05)});
+        scene.primitives.triangles.push_back(
+            {c, c + uniform(rng, -0.05, 0.05), c + uniform(rng, -0.05, 0.05)});
     }
     constexpr int kRays = 20000;
     constexpr int kPasses = 20;
@@ -250,11 +282,17 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
         timed_workloads({{context.reference_probe, args}, {*probe.program, args}}, call, kPasses);
     const WorkloadTime& reference = timed[0];
     const WorkloadTime& student = timed[1];
+    if (!student.not_implemented.empty()) {
+        measure.outcome = Outcome::not_implemented;
+        measure.summary = student.not_implemented;
+        return measure;
+    }
     if (!student.answered || !reference.answered) {
         measure.outcome = Outcome::failed;
-        measure.summary = !student.answered
-                              ? "the " + structure + " did not answer the workload (a stub, a crash or a timeout)"
-                              : "the reference did not answer the workload";
+        measure.summary =
+            !student.answered
+                ? "the " + structure + " did not answer the workload (a crash or a timeout)"
+                : "the reference did not answer the workload";
         return measure;
     }
     if (student.checksum != reference.checksum) {
@@ -264,9 +302,9 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
                           ": a structure with wrong answers earns nothing for speed";
         return measure;
     }
-    const WorkloadTime brute_force = timed_workload(
-        *probe.program, "brute_force_workload",
-        {{"primitives", primitives}, {"rays", brute_force_rays}}, 1);
+    const WorkloadTime brute_force =
+        timed_workload(*probe.program, "brute_force_workload",
+                       {{"primitives", primitives}, {"rays", brute_force_rays}}, 1);
     const double ratio = reference.seconds / student.seconds;
     const double per_ray = student.seconds / (double(kPasses) * kRays);
     const double brute_force_ratio =
@@ -280,8 +318,8 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
     std::snprintf(text, sizeof text,
                   " traced %d rays through %zu primitives %d times at %.2f times the reference's "
                   "speed and %.0f times brute force's",
-                  kRays, scene.primitives.triangles.size() + scene.primitives.spheres.size(), kPasses,
-                  ratio, brute_force_ratio);
+                  kRays, scene.primitives.triangles.size() + scene.primitives.spheres.size(),
+                  kPasses, ratio, brute_force_ratio);
     measure.summary = "the " + structure + text;
     measure.outcome = Outcome::passed;
     return measure;
@@ -290,24 +328,33 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
 }  // namespace
 
 std::vector<CheckDefinition> stage4_checks() {
-    const auto structure = [](const std::string& id, const std::string& name, const std::string& call,
-                              const std::string& split, bool occluded) {
-        return CheckDefinition{id, 4, "oracle", name,
-                               [=](const GradingContext& context, const BuiltProbe& probe) {
-                                   return measure_structure(context, probe, id, call, split, occluded);
-                               }};
+    const auto structure = [](const std::string& id, const std::string& name,
+                              const std::string& call, const std::string& split, bool occluded) {
+        return CheckDefinition{
+            id, 4, "oracle", name, [=](const GradingContext& context, const BuiltProbe& probe) {
+                return measure_structure(context, probe, id, call, split, occluded);
+            }};
     };
     return {
         {"stage4.unit.slab", 4, "unit", "intersect_aabb where the slab formula goes wrong",
-         [](const GradingContext& c, const BuiltProbe& p) { return run_cases(c, "stage4.unit.slab", p, slab_cases()); }},
-        structure("stage4.oracle.bvh_sah", "the SAH BVH's closest hit, exactly closest_hit's", "bvh", "sah", false),
-        structure("stage4.oracle.bvh_median", "the median BVH's closest hit, exactly closest_hit's", "bvh", "median", false),
-        structure("stage4.oracle.bvh_occluded", "the BVH's occluded, as the closest hit says", "bvh", "sah", true),
-        structure("stage4.oracle.grid", "the grid's closest hit, exactly closest_hit's", "grid", "", false),
-        structure("stage4.oracle.grid_occluded", "the grid's occluded, as the closest hit says", "grid", "", true),
-        {"stage4.speed.bvh", 4, "speed", "the SAH BVH's speed against the reference's and brute force's, on the same rays",
+         [](const GradingContext& c, const BuiltProbe& p) {
+             return run_cases(c, "stage4.unit.slab", p, slab_cases());
+         }},
+        structure("stage4.oracle.bvh_sah", "the SAH BVH's closest hit, exactly closest_hit's",
+                  "bvh", "sah", false),
+        structure("stage4.oracle.bvh_median", "the median BVH's closest hit, exactly closest_hit's",
+                  "bvh", "median", false),
+        structure("stage4.oracle.bvh_occluded", "the BVH's occluded, as the closest hit says",
+                  "bvh", "sah", true),
+        structure("stage4.oracle.grid", "the grid's closest hit, exactly closest_hit's", "grid", "",
+                  false),
+        structure("stage4.oracle.grid_occluded", "the grid's occluded, as the closest hit says",
+                  "grid", "", true),
+        {"stage4.speed.bvh", 4, "speed",
+         "the SAH BVH's speed against the reference's and brute force's, on the same rays",
          [](const GradingContext& c, const BuiltProbe& p) { return measure_speed(c, p, "bvh"); }},
-        {"stage4.speed.grid", 4, "speed", "the grid's speed against the reference's and brute force's, on the same rays",
+        {"stage4.speed.grid", 4, "speed",
+         "the grid's speed against the reference's and brute force's, on the same rays",
          [](const GradingContext& c, const BuiltProbe& p) { return measure_speed(c, p, "grid"); }},
     };
 }

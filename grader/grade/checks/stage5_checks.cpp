@@ -15,6 +15,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
 
@@ -235,20 +236,23 @@ ProbeCase rotation_case(const Vec3& axis, double degrees) {
     const WideMat tolerance = 8 * kWideUnit * w.size;
     return {"rotation(" + full_text(axis) + ", " + full_text(degrees) + ")",
             {"rotation", Json::array({probe::vec3(axis), probe::number(degrees)})},
-            [=](const ProbeAnswer& a) { return near_matrix(a, w.matrix, tolerance); }};
+            [=](const ProbeAnswer& a) { return near_matrix(a, w.matrix, tolerance); },
+            "rotation(" + cpp(axis) + ", " + cpp(degrees) + ")"};
 }
 
 // translation and scaling have exact entries.
 ProbeCase exact_matrix_case(const std::string& call, const Vec3& v, const WideMat& expected) {
     return {call + "(" + full_text(v) + ")",
             {call, Json::array({probe::vec3(v)})},
-            [=](const ProbeAnswer& a) { return near_matrix(a, expected, WideMat(0.0L)); }};
+            [=](const ProbeAnswer& a) { return near_matrix(a, expected, WideMat(0.0L)); },
+            call + "(" + cpp(v) + ")"};
 }
 
 ProbeCase invalid_axis_case(const Vec3& axis, double degrees) {
     return {"rotation(" + full_text(axis) + ", " + full_text(degrees) + "): no axis",
             {"rotation", Json::array({probe::vec3(axis), probe::number(degrees)})},
-            [](const ProbeAnswer& a) { return threw(a, "invalid_argument"); }};
+            [](const ProbeAnswer& a) { return threw(a, "invalid_argument"); },
+            "rotation(" + cpp(axis) + ", " + cpp(degrees) + ")"};
 }
 
 Json ops_json(const std::vector<TransformOp>& ops) {
@@ -256,6 +260,14 @@ Json ops_json(const std::vector<TransformOp>& ops) {
     for (const TransformOp& op : ops)
         list.push_back(probe::transform_op(op));
     return list;
+}
+
+// compose's argument as a student writes it: the ops in file order.
+std::string compose_code(const std::vector<TransformOp>& ops) {
+    std::string code;
+    for (const TransformOp& op : ops)
+        code += (code.empty() ? "" : ", ") + cpp(op);
+    return "compose({" + code + "})";
 }
 
 Judgement judge_compose(const ProbeAnswer& answer, const WideTransform& expected,
@@ -272,10 +284,12 @@ Judgement judge_compose(const ProbeAnswer& answer, const WideTransform& expected
 
 ProbeCase compose_case(const std::vector<TransformOp>& ops) {
     const WideTransform expected = wide_compose(ops);
-    return {
-        "compose(" + ops_text(ops) + ")", {"compose", ops_json(ops)}, [=](const ProbeAnswer& a) {
-            return judge_compose(a, expected, expected.inverse_tolerance);
-        }};
+    return {"compose(" + ops_text(ops) + ")",
+            {"compose", ops_json(ops)},
+            [=](const ProbeAnswer& a) {
+                return judge_compose(a, expected, expected.inverse_tolerance);
+            },
+            compose_code(ops)};
 }
 
 // Where every op's inverse is exact in double (a negated offset, a reciprocal that rounds to
@@ -286,7 +300,8 @@ ProbeCase exact_inverse_case(const std::vector<TransformOp>& ops) {
     expected.inverse = widen(narrow(expected.inverse));
     return {"compose(" + ops_text(ops) + "): the inverse from the ops' exact inverses",
             {"compose", ops_json(ops)},
-            [=](const ProbeAnswer& a) { return judge_compose(a, expected, WideMat(0.0L)); }};
+            [=](const ProbeAnswer& a) { return judge_compose(a, expected, WideMat(0.0L)); },
+            compose_code(ops)};
 }
 
 // M v in long double, v = (x, y, z, w), and the size of the terms each coordinate sums.
@@ -336,11 +351,13 @@ ProbeCase ray_to_object_case(const std::string& name, const Transform& t, const 
                                          full_text(8 * kUnit * narrow(direction.size)) + ")";
                 if (a.kind != ProbeAnswer::Kind::result) return wrong(text, "");
                 const Ray got = probe::ray_from(a.value);
-                const bool ok = near(got.origin, origin.value, 8 * kWideUnit * origin.size) &&
-                                near(got.direction, direction.value, 8 * kWideUnit * direction.size) &&
-                                got.t_min == ray.t_min && got.t_max == ray.t_max;
+                const bool ok =
+                    near(got.origin, origin.value, 8 * kWideUnit * origin.size) &&
+                    near(got.direction, direction.value, 8 * kWideUnit * direction.size) &&
+                    got.t_min == ray.t_min && got.t_max == ray.t_max;
                 return ok ? right() : wrong(text, ray_text(got));
-            }};
+            },
+            "ray_to_object(" + cpp(t) + ", " + cpp(ray) + ")"};
 }
 
 ProbeCase point_to_world_case(const std::string& name, const Transform& t, const Vec3& p) {
@@ -355,7 +372,8 @@ ProbeCase point_to_world_case(const std::string& name, const Transform& t, const
                 const Vec3 got = probe::vec3_from(a.value);
                 return near(got, expected.value, widen(tolerance)) ? right()
                                                                    : wrong(text, full_text(got));
-            }};
+            },
+            "point_to_world(" + cpp(t) + ", " + cpp(p) + ")"};
 }
 
 // M^-T n normalized, and how far rounding may move it: each coordinate of M^-T n by a few ulps
@@ -395,7 +413,8 @@ ProbeCase normal_to_world_case(const std::string& name, const Transform& t, cons
                 return near(got, expected.value, expected.tolerance) && unit_length(got)
                            ? right()
                            : wrong(text, full_text(got));
-            }};
+            },
+            "normal_to_world(" + cpp(t) + ", " + cpp(n) + ")"};
 }
 
 // The world ray against the sphere under M, solved in long double in the object frame: t, and
@@ -478,7 +497,8 @@ ProbeCase transformed_sphere_case(const std::string& name, const Ray& ray, const
                                 near(got->normal, e.normal.value, e.normal.tolerance) &&
                                 unit_length(got->normal);
                 return ok ? right() : wrong(text, hit_text(got));
-            }};
+            },
+            "intersect_transformed_sphere(" + cpp(ray) + ", " + cpp(sphere) + ", " + cpp(t) + ")"};
 }
 
 std::vector<ProbeCase> public_cases() {
@@ -580,7 +600,6 @@ std::vector<ProbeCase> hidden_cases() {
                                 ellipsoid),
     };
 }
-
 
 // A chain of 1 to 6 random ops: offsets up to 1e3, any axis and angle, scale factors from 1e-2
 // to 1e2 in magnitude, some negative.

@@ -12,6 +12,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
 
@@ -87,7 +88,8 @@ ProbeCase attenuation_case(const Attenuation& a, double distance) {
             {"attenuation", Json::array({probe::attenuation(a), probe::number(distance)})},
             [=](const ProbeAnswer& answer) {
                 return near_number(answer, static_cast<double>(expected), tolerance);
-            }};
+            },
+            "attenuation(" + cpp(a) + ", " + cpp(distance) + ")"};
 }
 
 // The light sample's direction, distance and intensity, each within its tolerance, and an
@@ -126,14 +128,16 @@ ProbeCase point_light_case(const PointLight& light, const Vec3& point) {
             {"sample_point_light", Json::array({probe::point_light(light), probe::vec3(point)})},
             [=](const ProbeAnswer& answer) {
                 return judge_sample(answer, to_light / distance, distance, intensity, tolerance);
-            }};
+            },
+            "sample_light(" + cpp(light) + ", " + cpp(point) + ")"};
 }
 
 ProbeCase at_the_light_case(const PointLight& light) {
     return {"sample_light(point light at " + full_text(light.position) + ") from the light itself",
             {"sample_point_light",
              Json::array({probe::point_light(light), probe::vec3(light.position)})},
-            [](const ProbeAnswer& answer) { return threw(answer, "domain_error"); }};
+            [](const ProbeAnswer& answer) { return threw(answer, "domain_error"); },
+            "sample_light(" + cpp(light) + ", " + cpp(light.position) + ")"};
 }
 
 // Never attenuated: the intensity is the colour itself, the distance infinite.
@@ -144,7 +148,8 @@ ProbeCase directional_light_case(const DirectionalLight& light) {
             {"sample_directional_light", Json::array({probe::directional_light(light)})},
             [=](const ProbeAnswer& answer) {
                 return judge_sample(answer, direction, kInf, widen(light.color), WideVec(0.0L));
-            }};
+            },
+            "sample_light(" + cpp(light) + ")"};
 }
 
 // --- Blinn-Phong
@@ -181,7 +186,8 @@ ProbeCase blinn_phong_case(const Material& m, const SurfacePoint& p, const Light
     return {"blinn_phong(" + material_text(m) + "; " + point_text(p) + "; " + light_text(l) + ")",
             {"blinn_phong",
              Json::array({probe::material(m), probe::surface_point(p), probe::light_sample(l)})},
-            [=](const ProbeAnswer& answer) { return near_channels(answer, e.value, e.tolerance); }};
+            [=](const ProbeAnswer& answer) { return near_channels(answer, e.value, e.tolerance); },
+            "blinn_phong(" + cpp(m) + ", " + cpp(p) + ", " + cpp(l) + ")"};
 }
 
 ProbeCase local_shading_case(const Material& m, const SurfacePoint& p,
@@ -191,6 +197,7 @@ ProbeCase local_shading_case(const Material& m, const SurfacePoint& p,
     WideVec tolerance(0.0L);
     Json samples = Json::array();
     std::string text;
+    std::string code;
     for (const LightSample& l : lights) {
         const WideTerm term = wide_blinn_phong(m, p, l);
         value += term.value;
@@ -198,12 +205,14 @@ ProbeCase local_shading_case(const Material& m, const SurfacePoint& p,
         tolerance += term.tolerance;
         samples.push_back(probe::light_sample(l));
         text += "; " + light_text(l);
+        code += (code.empty() ? "" : ", ") + cpp(l);
     }
     // The sum of the terms rounds once per term, in whatever order.
     tolerance += Wide(4 * kUnit * (lights.size() + 2)) * size;
     return {"local_shading(" + material_text(m) + "; " + point_text(p) + text + ")",
             {"local_shading", Json::array({probe::material(m), probe::surface_point(p), samples})},
-            [=](const ProbeAnswer& answer) { return near_channels(answer, value, tolerance); }};
+            [=](const ProbeAnswer& answer) { return near_channels(answer, value, tolerance); },
+            "local_shading(" + cpp(m) + ", " + cpp(p) + ", {" + code + "})"};
 }
 
 // --- Rays that leave a surface
@@ -292,7 +301,9 @@ ProbeCase spawn_case(const SurfacePoint& p, const Vec3& direction, double distan
                                        probe::number(distance), probe::ray_offset(offset)})},
             [=](const ProbeAnswer& answer) {
                 return judge_spawned(answer, p, direction, distance, offset);
-            }};
+            },
+            "spawn_ray(" + cpp(p) + ", " + cpp(direction) + ", " + cpp(distance) + ", " +
+                cpp(offset) + ")"};
 }
 
 ProbeCase shadow_case(const SurfacePoint& p, const LightSample& l, const RayOffset& offset) {
@@ -301,7 +312,8 @@ ProbeCase shadow_case(const SurfacePoint& p, const LightSample& l, const RayOffs
                                         probe::ray_offset(offset)})},
             [=](const ProbeAnswer& answer) {
                 return judge_spawned(answer, p, l.direction, l.distance, offset);
-            }};
+            },
+            "shadow_ray(" + cpp(p) + ", " + cpp(l) + ", " + cpp(offset) + ")"};
 }
 
 const RayOffset kErrorBound{OffsetRule::error_bound, 0.0};
@@ -452,7 +464,6 @@ std::vector<ProbeCase> hidden_cases() {
         shadow_case(ledge, {{0.6, 0.8, 0}, kInf, Color(1.0)}, along_ray(0.5)),
     };
 }
-
 
 Material random_material(std::mt19937_64& rng) {
     std::uniform_real_distribution<double> u(0.0, 1.0);

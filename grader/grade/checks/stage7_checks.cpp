@@ -12,6 +12,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
 #include "stages/7_recursion/recursion.h"
@@ -88,7 +89,8 @@ ProbeCase reflected_ray_case(const SurfacePoint& p, const RayOffset& offset) {
                 if (answer.kind != ProbeAnswer::Kind::result) return wrong(expected_text(e), "");
                 const Ray got = probe::ray_from(answer.value);
                 return matches(got, e) ? right() : wrong(expected_text(e), ray_text(got));
-            }};
+            },
+            "reflected_ray(" + cpp(p) + ", " + cpp(offset) + ")"};
 }
 
 // --- radiance over a script
@@ -153,6 +155,28 @@ Json script_json(const Script& script) {
     return steps;
 }
 
+// radiance over the script in a student's test: shade answers from the script in turn, then
+// misses, as the probe's does.
+std::string radiance_code(const Script& script, const Ray& eye, int bounces,
+                          const RayOffset& offset) {
+    std::string steps;
+    for (const std::optional<ShadedHit>& hit : script) {
+        steps +=
+            (steps.empty() ? "" : ",\n    ") +
+            (hit ? "std::optional<ShadedHit>(" + cpp(*hit) + ")" : std::string("std::nullopt"));
+    }
+    return "const std::vector<std::optional<ShadedHit>> script = {\n    " + steps +
+           "};\n"
+           "std::size_t next = 0;\n"
+           "std::vector<Ray> asked;  // every ray radiance asks shade about, in order\n"
+           "const ShadeFunction shade = [&](const Ray& ray) {\n"
+           "    asked.push_back(ray);\n"
+           "    return next < script.size() ? script[next++] : std::optional<ShadedHit>();\n"
+           "};\n"
+           "radiance(shade, " +
+           cpp(eye) + ", " + std::to_string(bounces) + ", " + cpp(offset) + ")";
+}
+
 ProbeCase radiance_case(const Script& script, const Ray& eye, int bounces,
                         const RayOffset& offset) {
     const ExpectedRadiance e = expected_radiance(script, eye, bounces, offset);
@@ -161,11 +185,10 @@ ProbeCase radiance_case(const Script& script, const Ray& eye, int bounces,
                              std::to_string(e.rays.size()) + " ray(s)";
     return {"radiance(eye " + ray_text(eye) + ", bounces " + std::to_string(bounces) + ", " +
                 offset_text(offset) + ") over the scene " + script_text(script),
-            {"radiance",
-             Json{{"script", script_json(script)},
-                  {"ray", probe::ray(eye)},
-                  {"bounces", bounces},
-                  {"offset", probe::ray_offset(offset)}}},
+            {"radiance", Json{{"script", script_json(script)},
+                              {"ray", probe::ray(eye)},
+                              {"bounces", bounces},
+                              {"offset", probe::ray_offset(offset)}}},
             [=](const ProbeAnswer& answer) {
                 if (answer.kind != ProbeAnswer::Kind::result) return wrong(text, "");
                 const Vec3 colour = probe::vec3_from(answer.value.at("colour"));
@@ -186,7 +209,8 @@ ProbeCase radiance_case(const Script& script, const Ray& eye, int bounces,
                     }
                 }
                 return right();
-            }};
+            },
+            radiance_code(script, eye, bounces, offset)};
 }
 
 // A point on the floor y = 0, seen from the direction `to_eye` (normalized here); the shading
@@ -243,8 +267,9 @@ std::vector<ProbeCase> hidden_cases() {
         radiance_case({mirror(bent, Color(0.2), Color(1)), mirror(a, Color(0.5), Color(1))}, kEye,
                       4, along_normal),
         radiance_case(deep, kEye, 10, along_ray),
-        radiance_case({mirror(a, Color(0.1), Color(1)), std::nullopt, mirror(a, Color(1), Color(1))},
-                      kEye, 5, along_ray),
+        radiance_case(
+            {mirror(a, Color(0.1), Color(1)), std::nullopt, mirror(a, Color(1), Color(1))}, kEye, 5,
+            along_ray),
     };
 }
 
@@ -259,12 +284,14 @@ std::vector<ProbeCase> oracle_cases() {
         const int length = std::uniform_int_distribution<int>(0, 6)(rng);
         for (int i = 0; i < length; ++i) {
             SurfacePoint p;
+            p.error = Vec3(0.0);  // only the fixed-epsilon rules are asked, which never read it
             p.position = random_unit(rng) * std::pow(10.0, 4 * unit(rng));
             p.normal = random_unit(rng);
             p.shading_normal = glm::normalize(p.normal + 0.2 * random_unit(rng));
             p.to_eye = random_unit(rng);
             if (glm::dot(p.to_eye, p.normal) < 0) p.to_eye = -p.to_eye;
-            const Color reflectance = i % 4 == 3 ? Color(0) : Color(unit(rng), unit(rng), unit(rng));
+            const Color reflectance =
+                i % 4 == 3 ? Color(0) : Color(unit(rng), unit(rng), unit(rng));
             script.push_back(mirror(p, {unit(rng), unit(rng), unit(rng)}, reflectance));
         }
         if (k % 5 == 0) script.push_back(std::nullopt);

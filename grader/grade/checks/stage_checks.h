@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include "core/check/ray_case.h"
+#include "core/check/stage3_methods.h"
 #include "grader/grade/check_definition.h"
 
 namespace raystep::grade {
@@ -16,6 +18,14 @@ std::vector<CheckDefinition> stage5_checks();
 std::vector<CheckDefinition> stage6_checks();
 std::vector<CheckDefinition> stage7_checks();
 std::vector<CheckDefinition> render_checks();
+
+/// One stage-3 case for one function of intersect.h (stage3_checks.cpp): the probe runs the
+/// function on the case alone, and the judge scores the answer as `raystep check` does, a stub's
+/// answer as not implemented. A leak passes and adds one to `leaks`, which must outlive the case.
+/// The student's reproduce line is the case as a case file of its own and the `raystep check`
+/// command that runs it.
+ProbeCase method_case(const Stage3Method& method, const CaseFamily& family, const RayCase& ray_case,
+                      std::size_t& leaks);
 
 /// Stage 3's intersect_triangle, its speed against its error on one family
 /// (stage3_speed_error.cpp), and the names of what it measures, which the report's chart reads
