@@ -74,25 +74,28 @@ fs::path copy_scenes(const fs::path& source, const fs::path& work) {
     return copy;
 }
 
-// Without bubblewrap, only file permissions keep the reference from a probe, which could otherwise
-// run the reference probe or load a reference stage and answer with it. Grading then waits until
-// the sandbox's user can reach none of them.
-void require_reference_shut(const GradeOptions& options, const ProbeToolchain& toolchain) {
+// Without bubblewrap, only file permissions keep the grader's secrets from a probe, which could
+// otherwise run the reference probe, load a reference stage, read solutions/, the rubric or the
+// repository's history, and answer with them. Everything a sandboxed program needs is copied into
+// the work folder, so the repository and the build may be shut to others whole; grading waits
+// until they are.
+void require_repository_shut(const GradeOptions& options, const ProbeToolchain& toolchain) {
     if (bubblewrap_available()) return;
-    std::vector<fs::path> secrets = {options.reference_probe, toolchain.source / "solutions"};
+    std::vector<fs::path> secrets = {toolchain.source, options.reference_probe.parent_path()};
     for (const auto& [number, library] : toolchain.stage_libraries)
-        secrets.push_back(library);
+        secrets.push_back(library.parent_path());
+    std::sort(secrets.begin(), secrets.end());
+    secrets.erase(std::unique(secrets.begin(), secrets.end()), secrets.end());
     const std::vector<fs::path> open = open_to_sandbox_user(secrets);
     if (open.empty()) return;
     std::string list;
     for (const fs::path& path : open)
-        list += "\n  " + path.string();
+        list += " " + path.string();
     throw std::runtime_error(
-        "bubblewrap cannot make a sandbox here, and the sandbox's user could reach the reference "
-        "solution through these, so a submission could borrow its answers:" +
-        list +
-        "\nShut them to others (chmod -R o-rwx on the build and solutions/ folders, as "
-        "grader/gradescope/setup.sh does), or grade where bubblewrap works.");
+        "bubblewrap cannot make a sandbox here, and a sandboxed program could enter these folders,"
+        " which hold the reference solution:" +
+        list + "\nShut them to others (chmod o-rwx" + list +
+        ", as grader/gradescope/setup.sh does), or grade where bubblewrap works.");
 }
 
 }  // namespace
@@ -102,7 +105,7 @@ GradeReport grade_submission(const GradeOptions& options, const Rubric& rubric,
     const fs::path submission_path = absolute_normal(options.submission);
     const fs::path output = absolute_normal(options.output);
     const std::vector<CheckDefinition> checks = checks_to_run(options, rubric);
-    require_reference_shut(options, toolchain);
+    require_repository_shut(options, toolchain);
     fs::create_directories(output);
     const WorkFolder work = make_work_folder(output, options.work_parent, options.keep_work);
 

@@ -67,12 +67,12 @@ ChildSpec limited_spec(const SandboxLimits& limits, bool isolated) {
     spec.identity = program_identity();
     // A fork bomb is held by RLIMIT_NPROC, which the kernel enforces on every uid but 0: hence a
     // program that is never root (sandbox_user.h), bubblewrap's included (inside its user
-    // namespace it has uid 65534, and outside it is nobody or the grader's own user, never the
-    // root that a root grader would map in). The limit counts every task of that real uid, not
-    // those of one run, so what the user already runs (the grader's own processes when it is not
-    // root, other sandboxes as nobody) is added, or the program could not start one process.
-    // Inside bubblewrap the kernel also counts per user namespace, so there the limit holds for
-    // the sandbox alone. Whatever a run leaves is then killed with it (supervise.h).
+    // namespace it has uid 65534, and outside it is the run's own user or the grader's, never the
+    // root that a root grader would map in). The limit counts every task of that real uid, so
+    // what the user already runs (the grader's own processes when it is not root) is added, or
+    // the program could not start one process; a run's own user has none. Inside bubblewrap the
+    // kernel also counts per user namespace, so there the limit holds for the sandbox alone.
+    // Whatever a run leaves is then killed with it (supervise.h, end_processes_of).
     const uid_t uid = spec.identity ? spec.identity->uid : getuid();
     spec.tasks = tasks_of(uid) + static_cast<rlim_t>(std::max(0, limits.processes)) +
                  (isolated ? kBubblewrapTasks : 0);
@@ -152,6 +152,10 @@ SandboxRun run_sandboxed(const std::vector<std::string>& argv, const std::string
     Supervision supervision =
         supervise(child, input, start + policy.limits.wall,
                   {policy.limits.output_bytes, kErrorBytes, policy.limits.answer_bytes});
+
+    // Outside bubblewrap, what the program left running (a process that started a session of its
+    // own escapes the kill of the group) ends with the run: it is the run's user's alone.
+    if (!isolated && spec.identity) end_processes_of(*spec.identity);
 
     SandboxRun run;
     run.isolated = isolated;

@@ -18,19 +18,21 @@ namespace raystep::grade {
 // namespace (no network), a new session, an unprivileged uid, a private /tmp, and a filesystem
 // made only of read-only binds of the paths the policy names plus one writable folder.
 //
-// The program never runs as root: when the grader is root, it runs as nobody (uid and gid 65534)
-// with or without bubblewrap. So the paths in read_only must be readable by others, with every
-// folder above them searchable, and the writable folder is given to nobody (chown, the folder
+// The program never runs as root: when the grader is root, it runs as a user of its run's own
+// (sandbox_user.h: a fresh uid and gid, outside bubblewrap; nobody, 65534, inside it), with or
+// without bubblewrap. So the paths in read_only must be readable by others, with every folder
+// above them searchable, and the writable folder is given to the run's user (chown, the folder
 // only) before the run. Without bubblewrap the program is executed through a descriptor the
-// grader opened, so it may lie in a folder that only the grader can enter. Its environment is PATH (/usr/local/bin:/usr/bin:/bin) and PWD, nothing
-// of the grader's. A run ends when the program's first process exits; whatever it left running
-// is killed then (without bubblewrap, only what stayed in its process group).
+// grader opened, so it may lie in a folder that only the grader can enter. Its environment is
+// PATH (/usr/local/bin:/usr/bin:/bin) and PWD, nothing of the grader's. A run ends when the
+// program's first process exits; whatever it left running is killed then: by bubblewrap's PID
+// namespace, or without it by killing every process of the run's user.
 //
 // Limits: rlimits bound each process, not the run. Memory a program holds outside its address
 // space (SysV shared memory, memfd files, pipe buffers) is bounded only by a cgroup, which this
-// sandbox does not make; nor is the number of files it writes in the writable folder. Without
-// bubblewrap, a process that starts a session of its own escapes the kill of the group, and
-// concurrent runs share one user, so they can see each other's writable folders.
+// sandbox does not make; nor is the number of files it writes in the writable folder. When the
+// grader is not root, runs without bubblewrap share the grader's user: nothing then keeps one
+// from another, or from the grader's files.
 
 struct SandboxLimits {
     double cpu_seconds = 10.0;

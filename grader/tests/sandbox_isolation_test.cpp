@@ -13,6 +13,7 @@
 #include <string>
 
 #include "core/testing/catch.h"
+#include "grader/sandbox/sandbox_user.h"
 #include "sandbox_test_support.h"
 
 using namespace raystep::grade;
@@ -234,6 +235,15 @@ TEST_CASE("run_sandboxed: with bubblewrap, a process that left the session dies 
     check_contained(escape, true);
 }
 
+TEST_CASE("run_sandboxed: without bubblewrap, a root grader's run ends what left its session",
+          "[sandbox]") {
+    if (geteuid() != 0) return;  // the run keeps the grader's user, which it cannot kill wholesale
+    const HostileRun escape = run_hostile({hostile("escape_session")}, "", test_policy(false));
+    CHECK(escape.run.exit_code == 0);
+    CHECK_FALSE(escape.run.timed_out);
+    check_contained(escape, false);
+}
+
 TEST_CASE("run_sandboxed: the program is never root, and gets only PATH, PWD and stdio of ours",
           "[sandbox]") {
     const bool isolate = GENERATE(false, true);
@@ -242,7 +252,13 @@ TEST_CASE("run_sandboxed: the program is never root, and gets only PATH, PWD and
     const SandboxPolicy policy = test_policy(isolate);
 
     const HostileRun id = run_hostile({"id", "-u"}, "", policy);
-    if (isolate || geteuid() == 0) CHECK(id.run.output == "65534\n");
+    // Inside bubblewrap, nobody; outside it, a root grader's run has a user of its own.
+    if (isolate) CHECK(id.run.output == "65534\n");
+    if (!isolate && geteuid() == 0) {
+        const unsigned long uid = std::stoul(id.run.output);
+        CHECK(uid >= kRunUsersFirst);
+        CHECK(uid < kRunUsersFirst + kRunUsersCount);
+    }
     check_contained(id, isolate);
 
     const HostileRun env = run_hostile({"env"}, "", policy);
