@@ -8,9 +8,16 @@
 set(RAYSTEP_INSTALL_HINT
     "Debian/Ubuntu: scripts/install-deps.sh; macOS: brew install glm catch2 openimageio cli11 tinyobjloader; Windows: vcpkg install glm catch2 openimageio cli11 tinyobjloader")
 
+# GLM is headers only. Packagings of GLM 0.9.9 differ: some install a CMake configuration with
+# glm::glm, some one whose target is plain `glm`, some none at all; the headers are all it takes.
 find_package(glm CONFIG QUIET)
 if(NOT TARGET glm::glm)
-    message(FATAL_ERROR "GLM was not found. ${RAYSTEP_INSTALL_HINT}")
+    find_path(RAYSTEP_GLM_INCLUDE_DIR glm/glm.hpp)
+    if(NOT RAYSTEP_GLM_INCLUDE_DIR)
+        message(FATAL_ERROR "GLM was not found. ${RAYSTEP_INSTALL_HINT}")
+    endif()
+    add_library(glm::glm INTERFACE IMPORTED)
+    set_target_properties(glm::glm PROPERTIES INTERFACE_INCLUDE_DIRECTORIES ${RAYSTEP_GLM_INCLUDE_DIR})
 endif()
 
 find_package(Catch2 CONFIG QUIET)

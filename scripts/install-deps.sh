@@ -1,23 +1,42 @@
 #!/usr/bin/env bash
 # Installs what raystep needs on Debian or Ubuntu, and only what is missing. Elsewhere it prints
 # the list and stops: install the same libraries with your package manager (README.md).
+#
+#   scripts/install-deps.sh             everything: building, the tests, the demos, the bench
+#   scripts/install-deps.sh --grading   only what grading needs (Gradescope's setup.sh)
+#
+# Every name below is a package of both Debian 12 and Ubuntu 22.04 (Gradescope's image), so that
+# one list serves both; docs/instructor.md, "Gradescope", has the versions each one ships.
 set -euo pipefail
 
-packages=(
-    # building
+# What `raystep-grade` needs to be built and to grade: the compiler and build tools, the stage
+# libraries (Catch2 too: configuring declares the stages' tests), OpenImageIO for the render
+# checks' images, CLI11 and tinyobjloader for the commands, the exact oracle (CGAL over GMP and
+# MPFR), the probe protocol and reports (nlohmann-json), the sandbox (bubblewrap), submissions'
+# archives of every kind (libarchive), and Python for run_autograder's JSON when the grader itself
+# cannot run.
+grading_packages=(
     cmake ninja-build g++ pkg-config
-    # the stage libraries, their tests and the raystep command
-    libglm-dev catch2 libopenimageio-dev openimageio-tools libcli11-dev libtinyobjloader-dev
-    # the labels of `raystep demo` (OpenImageIO draws text only with a TrueType font it is given)
-    fonts-dejavu-core
-    # the grader: its exact oracle, the probe protocol, the sandbox, and its report tests (the XML
-    # parsed back, the HTML report shown in a headless browser)
-    libcgal-dev libgmp-dev libmpfr-dev nlohmann-json3-dev bubblewrap libxml2-dev chromium
-    # its Gradescope test, which measures the autograder's memory
-    time
-    # raystep-reference bench: the Embree baseline, and the bunny mesh (CGAL's demo data)
-    libembree-dev libcgal-demo
+    libglm-dev catch2 libopenimageio-dev libcli11-dev libtinyobjloader-dev
+    libcgal-dev libgmp-dev libmpfr-dev nlohmann-json3-dev bubblewrap libarchive-dev python3
 )
+# What the rest needs: OpenImageIO's command-line tools (iv, idiff) to look at renders; the labels
+# of `raystep demo` (OpenImageIO draws text only with a TrueType font it is given); the report
+# tests (the XML parsed back with libxml2, the HTML report shown in headless Chromium); and
+# `raystep-reference bench` (the Embree baseline, and the bunny mesh of CGAL's demo data). The
+# build configures without any of them, and the tests that need one say so and are skipped.
+other_packages=(
+    openimageio-tools fonts-dejavu-core libxml2-dev chromium libembree-dev libcgal-demo
+)
+
+case "${1:-}" in
+    "") packages=("${grading_packages[@]}" "${other_packages[@]}") ;;
+    --grading) packages=("${grading_packages[@]}") ;;
+    *)
+        echo "usage: $0 [--grading]" >&2
+        exit 2
+        ;;
+esac
 
 if ! command -v apt-get >/dev/null || ! command -v dpkg-query >/dev/null; then
     echo "This is not a Debian or Ubuntu system. Install these (or your system's equivalents):" >&2

@@ -133,7 +133,7 @@ TEST_CASE("draw_text: text beyond ASCII is refused before OpenImageIO garbles it
 }
 
 TEST_CASE("load_demo_scene: a narrower panel keeps the view's width and shows more height",
-          "[core]") {
+          "[core][meshes]") {
     // stage4/bunny.test: 640 x 480, fovy 32
     const Scene scene = load_demo_scene("stage4/bunny.test", {320, 424});
     CHECK(scene.width == 320);

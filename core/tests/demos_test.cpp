@@ -146,7 +146,8 @@ TEST_CASE("watertight_demo: intersect_triangle never leaks, the half-space test 
               " leaking pixels");
 }
 
-TEST_CASE("bvh_cost_demo and grid_cost_demo: the grid pays far more in the stadium", "[core]") {
+TEST_CASE("bvh_cost_demo and grid_cost_demo: the grid pays far more in the stadium",
+          "[core][meshes]") {
     const DemoFigure bvh = bvh_cost_demo(kTestSize);
     const DemoFigure grid = grid_cost_demo(kTestSize);
     check_panels(bvh, 2);

@@ -111,7 +111,7 @@ TEST_CASE("accel: rays through the edges and vertices of a closed mesh 1e5 away"
 }
 
 TEST_CASE("accel: the BVHs and the grid give closest_hit's answer on three real meshes",
-          "[accel]") {
+          "[accel][meshes]") {
     // Real meshes, where triangles are many, small and of every shape: rays from all around into
     // the mesh's box, and rays aimed at its vertices and through its edges, where two triangles
     // meet and the nearer of equal hits is decided by comes_before.
