@@ -77,7 +77,7 @@ expect_in_output(unprintable-output "The grader failed, not your code" "exited w
 
 # A grader that exits 0 but leaves its results.json cut off.
 run_case(cut-off-results [=[
-mkdir -p "$4" && printf '{"score": 10, "tests": [{"name": "stage' > "$4/results.json"]=])
+mkdir -p "$4/instructor" && printf '{"score": 10, "tests": [{"name": "stage' > "$4/instructor/results.json"]=])
 if(NOT score STREQUAL "0")
     message(FATAL_ERROR "cut-off-results: score ${score}, expected 0")
 endif()
@@ -89,7 +89,7 @@ expect_in_output(missing-grader "exited with status 127" "No such file")
 
 # A grader that graded: its results go to Gradescope as they are, text with escapes included.
 run_case(graded [=[
-mkdir -p "$4" && printf '{"score": 7.5, "output": "tab\\there \\"q\\" \\\\ \\u00e9", "tests": []}\n' > "$4/results.json"]=])
+mkdir -p "$4/instructor" && printf '{"score": 7.5, "output": "tab\\there \\"q\\" \\\\ \\u00e9", "tests": []}\n' > "$4/instructor/results.json"]=])
 if(NOT score STREQUAL "7.5")
     message(FATAL_ERROR "graded: score ${score}, expected raystep-grade's 7.5")
 endif()
