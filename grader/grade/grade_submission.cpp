@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <exception>
+#include <mutex>
 #include <thread>
 
 #include "grader/grade/check_definition.h"
@@ -135,12 +137,21 @@ GradeReport grade_submission(const GradeOptions& options, const Rubric& rubric,
 
     // Checks run `jobs` at a time: each talks to its own probe process. Speed checks run alone
     // afterwards, so that nothing else competes for the processors while they time.
+    // A check throws only for the grader's own problems (the sandbox cannot start a program);
+    // the first is carried out of the worker threads and thrown here, not left to end the grader.
     std::vector<CheckResult> results(checks.size());
+    std::mutex failure_mutex;
+    std::exception_ptr failure;
     const auto run = [&](std::size_t k) {
         const CheckDefinition& check = checks[k];
         const BuiltProbe& probe = check.stage == 0 ? probes.pipeline : probes.stage(check.stage);
         const auto started = std::chrono::steady_clock::now();
-        results[k] = score_check(check, check.measure(context, probe), rubric);
+        try {
+            results[k] = score_check(check, check.measure(context, probe), rubric);
+        } catch (...) {
+            const std::lock_guard<std::mutex> lock(failure_mutex);
+            if (!failure) failure = std::current_exception();
+        }
         results[k].seconds = seconds_since(started);
     };
     std::atomic<std::size_t> next{0};
@@ -157,6 +168,7 @@ GradeReport grade_submission(const GradeOptions& options, const Rubric& rubric,
     for (std::size_t k = 0; k < checks.size(); ++k) {
         if (checks[k].kind == "speed") run(k);
     }
+    if (failure) std::rethrow_exception(failure);
     report.checks = std::move(results);
     report.times.checks = seconds_since(start);
     return report;
