@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "grader/grade/archive_entry_name.h"
 #include "grader/grade/sandbox_copies.h"
 #include "grader/sandbox/sandbox.h"
 
@@ -28,14 +29,6 @@ struct Entry {
     std::uintmax_t size = 0;
     fs::path contents;  ///< empty when it cannot be taken
 };
-
-std::string last_component(const std::string& path) {
-    std::string trimmed = path;
-    while (!trimmed.empty() && (trimmed.back() == '/' || trimmed.back() == '\\'))
-        trimmed.pop_back();
-    const std::size_t slash = trimmed.find_last_of("/\\");
-    return slash == std::string::npos ? trimmed : trimmed.substr(slash + 1);
-}
 
 std::size_t depth(const std::string& path) {
     return static_cast<std::size_t>(std::count(path.begin(), path.end(), '/'));
@@ -201,11 +194,11 @@ const Entry* choose(const std::vector<Entry>& entries, const std::string& folder
     const auto in_stage = [&](const Entry& e) {
         const std::string parent =
             e.path.substr(0, e.path.size() - std::min(e.path.size(), file.size()));
-        return last_component(parent) == folder;
+        return archive_entry_name(parent) == folder;
     };
     std::vector<std::string> passed_over;
     for (const Entry& candidate : entries) {
-        if (last_component(candidate.path) != file) continue;
+        if (archive_entry_name(candidate.path) != file) continue;
         ++named;
         if (candidate.kind != "file") {
             passed_over.push_back(candidate.path + " (a " + candidate.kind + ", not a file)");

@@ -18,9 +18,6 @@ constexpr std::size_t kDetailLines = 8;
 constexpr std::size_t kCheckIndent = 2;
 constexpr std::size_t kFindingIndent = 6;
 
-// The stages in the order a student meets them; the whole pipeline's checks last.
-constexpr int kStageOrder[] = {1, 2, 3, 4, 5, 6, 7, 0};
-
 // Terminal columns of displayable UTF-8 text: one per character (wide characters are rare in a
 // grade and would only make a line a little longer).
 std::size_t columns(std::string_view text) {
@@ -169,20 +166,11 @@ void append_findings(std::string& out, const CheckResult& check, Audience audien
 }  // namespace
 
 std::string stage_table(const GradeReport& report) {
-    const std::vector<std::pair<double, double>> scores = report.stage_scores();
-    std::vector<int> checks(scores.size(), 0);
-    std::vector<int> passed(scores.size(), 0);
-    for (const CheckResult& check : report.checks) {
-        ++checks[static_cast<std::size_t>(check.stage)];
-        if (check.outcome == Outcome::passed) ++passed[static_cast<std::size_t>(check.stage)];
-    }
     // Rows: label, score, passed; the score column as wide as its widest entry.
     std::vector<std::vector<std::string>> rows = {{"stage", "score", "passed"}};
-    for (const int stage : kStageOrder) {
-        const auto s = static_cast<std::size_t>(stage);
-        if (checks[s] == 0) continue;
-        rows.push_back({stage_label(stage), score_out_of(scores[s].first, scores[s].second),
-                        std::to_string(passed[s]) + " of " + std::to_string(checks[s])});
+    for (const StageTally& tally : report.stage_tallies()) {
+        rows.push_back({stage_label(tally.stage), score_out_of(tally.score, tally.max_score),
+                        std::to_string(tally.passed) + " of " + std::to_string(tally.checks)});
     }
     const int all_passed = static_cast<int>(
         std::count_if(report.checks.begin(), report.checks.end(),
@@ -212,7 +200,7 @@ std::string console_summary(const GradeReport& report, Audience audience) {
     out += "Total: " + score_out_of(seen.score(), seen.max_score()) + " points\n\n";
     out += stage_table(seen);
 
-    for (const int stage : kStageOrder) {
+    for (const int stage : kStageReportOrder) {
         bool first = true;
         for (const CheckResult& check : seen.checks) {
             if (check.stage != stage) continue;

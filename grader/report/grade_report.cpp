@@ -1,5 +1,7 @@
 #include "grader/report/grade_report.h"
 
+#include <tuple>
+
 #include <stdexcept>
 
 namespace raystep::grade {
@@ -75,6 +77,23 @@ std::vector<std::pair<double, double>> GradeReport::stage_scores() const {
         scores[static_cast<std::size_t>(check.stage)].second += check.max_score;
     }
     return scores;
+}
+
+std::vector<StageTally> GradeReport::stage_tallies() const {
+    const std::vector<std::pair<double, double>> scores = stage_scores();
+    std::vector<StageTally> tallies;
+    for (const int stage : kStageReportOrder) {
+        StageTally tally;
+        tally.stage = stage;
+        std::tie(tally.score, tally.max_score) = scores[static_cast<std::size_t>(stage)];
+        for (const CheckResult& check : checks) {
+            if (check.stage != stage) continue;
+            ++tally.checks;
+            if (check.outcome == Outcome::passed) ++tally.passed;
+        }
+        if (tally.checks > 0) tallies.push_back(tally);
+    }
+    return tallies;
 }
 
 }  // namespace raystep::grade

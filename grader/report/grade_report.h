@@ -73,6 +73,18 @@ struct PhaseTimes {
     double reports = 0.0;
 };
 
+/// The order reports show the stages in: the lectures' 1 to 7, then the whole pipeline (0).
+inline constexpr int kStageReportOrder[] = {1, 2, 3, 4, 5, 6, 7, 0};
+
+/// One stage's line of a report's summary.
+struct StageTally {
+    int stage = 0;
+    double score = 0.0;
+    double max_score = 0.0;
+    int checks = 0;
+    int passed = 0;
+};
+
 struct GradeReport {
     std::string submission;  ///< as given on the command line
     std::string student;     ///< a name for the class summary: the folder's or zip's name
@@ -87,6 +99,9 @@ struct GradeReport {
     double max_score() const;
     /// Score and maximum per stage, 1 to 7 (index 0: the whole pipeline's checks).
     std::vector<std::pair<double, double>> stage_scores() const;
+    /// The stages that have checks, in kStageReportOrder, each with its score and its checks
+    /// passed.
+    std::vector<StageTally> stage_tallies() const;
 };
 
 }  // namespace raystep::grade

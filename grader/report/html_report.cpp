@@ -14,9 +14,6 @@ namespace raystep::grade {
 
 namespace {
 
-// The stages in the order a student meets them; the whole pipeline's checks last.
-constexpr int kStageOrder[] = {1, 2, 3, 4, 5, 6, 7, 0};
-
 // Scripts, frames, fonts and fetches are refused even if something slipped past the escaping.
 // A self-contained page shows only the images inside it; the other may show files beside it
 // (file: when opened from disk).
@@ -99,24 +96,13 @@ std::string page_head(const GradeReport& seen, const HtmlReportOptions& options)
 }
 
 std::string stage_scores(const GradeReport& seen) {
-    const std::vector<std::pair<double, double>> scores = seen.stage_scores();
     std::string rows;
-    for (const int stage : kStageOrder) {
-        int checks = 0;
-        int passed = 0;
-        for (const CheckResult& check : seen.checks) {
-            if (check.stage != stage) continue;
-            ++checks;
-            if (check.outcome == Outcome::passed) ++passed;
-        }
-        if (checks == 0) continue;
-        const auto& [score, max_score] = scores[static_cast<std::size_t>(stage)];
-        rows += "<tr><td><a href=\"#" + stage_anchor(stage) + "\">" + h(stage_label(stage)) +
-                "</a></td><td class=\"num\">" + h(score_out_of(score, max_score)) +
-                "</td><td class=\"num\">" + std::to_string(passed) + " of " +
-                std::to_string(checks) +
-                "</td><td><span class=\"bar\"><span style=\"width: " + percent(score, max_score) +
-                "%\"></span></span></td></tr>\n";
+    for (const StageTally& t : seen.stage_tallies()) {
+        rows += "<tr><td><a href=\"#" + stage_anchor(t.stage) + "\">" + h(stage_label(t.stage)) +
+                "</a></td><td class=\"num\">" + h(score_out_of(t.score, t.max_score)) +
+                "</td><td class=\"num\">" + std::to_string(t.passed) + " of " +
+                std::to_string(t.checks) + "</td><td><span class=\"bar\"><span style=\"width: " +
+                percent(t.score, t.max_score) + "%\"></span></span></td></tr>\n";
     }
     const auto all_passed =
         std::count_if(seen.checks.begin(), seen.checks.end(),
@@ -272,7 +258,7 @@ std::string html_report(const GradeReport& report, const std::filesystem::path& 
                 options.speed_error_chart_svg + "\n</section>\n";
     }
     int number = 0;
-    for (const int stage : kStageOrder) {
+    for (const int stage : kStageReportOrder) {
         std::string sections;
         for (const CheckResult& check : seen.checks) {
             if (check.stage == stage) {

@@ -14,9 +14,6 @@ namespace {
 // Text of one failure: a CI page shows it whole, so keep it to a few screens.
 constexpr std::size_t kMaxFailureBytes = 16000;
 
-// The stages in the order a student meets them; the whole pipeline's checks last.
-constexpr int kStageOrder[] = {1, 2, 3, 4, 5, 6, 7, 0};
-
 // count()'s stage for every check of the report.
 constexpr int kAllStages = -1;
 
@@ -123,7 +120,7 @@ std::string junit_xml(const GradeReport& report, Audience audience) {
            time_attribute(times.intake + times.build + times.checks + times.reports) + ">\n";
     if (intake_problem) xml += intake_suite(report);
     const std::vector<std::pair<double, double>> scores = seen.stage_scores();
-    for (const int stage : kStageOrder) {
+    for (const int stage : kStageReportOrder) {
         const Counts counts = count(seen, stage);
         if (counts.tests == 0) continue;
         const auto& [score, max_score] = scores[static_cast<std::size_t>(stage)];

@@ -9,9 +9,6 @@ namespace raystep::grade {
 
 namespace {
 
-// The stages in the order a student meets them; the whole pipeline's checks last.
-constexpr int kStageOrder[] = {1, 2, 3, 4, 5, 6, 7, 0};
-
 nlohmann::json field(const std::string& text) {
     return clipped_text(text, kMaxFieldBytes);
 }
@@ -50,23 +47,13 @@ nlohmann::json student_results(const GradeReport& report) {
     const GradeReport seen = seen_by(report, Audience::student);
 
     nlohmann::json stages = nlohmann::json::array();
-    const std::vector<std::pair<double, double>> scores = seen.stage_scores();
-    for (const int stage : kStageOrder) {
-        int checks = 0;
-        int passed = 0;
-        for (const CheckResult& check : seen.checks) {
-            if (check.stage != stage) continue;
-            ++checks;
-            if (check.outcome == Outcome::passed) ++passed;
-        }
-        if (checks == 0) continue;
-        const auto& [score, max_score] = scores[static_cast<std::size_t>(stage)];
-        stages.push_back({{"stage", stage},
-                          {"name", stage_label(stage)},
-                          {"score", score},
-                          {"max_score", max_score},
-                          {"checks", checks},
-                          {"passed", passed}});
+    for (const StageTally& tally : seen.stage_tallies()) {
+        stages.push_back({{"stage", tally.stage},
+                          {"name", stage_label(tally.stage)},
+                          {"score", tally.score},
+                          {"max_score", tally.max_score},
+                          {"checks", tally.checks},
+                          {"passed", tally.passed}});
     }
     nlohmann::json checks = nlohmann::json::array();
     for (const CheckResult& check : seen.checks)

@@ -26,6 +26,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "grader/grade/archive_entry_name.h"
+
 namespace {
 
 // A submission is a few dozen files: an archive of more entries than this is not one, and
@@ -44,14 +46,6 @@ std::string kind_of(archive_entry* entry) {
         default:
             return "other";
     }
-}
-
-std::string last_component(const std::string& path) {
-    std::string trimmed = path;
-    while (!trimmed.empty() && (trimmed.back() == '/' || trimmed.back() == '\\'))
-        trimmed.pop_back();
-    const std::size_t slash = trimmed.find_last_of("/\\");
-    return slash == std::string::npos ? trimmed : trimmed.substr(slash + 1);
 }
 
 // Copies the entry's data to `file`, at most `limit` bytes; false when it is longer or a read or
@@ -126,8 +120,8 @@ int main(int argc, char** argv) {
         const std::string kind = kind_of(entry);
         const long long size = archive_entry_size_is_set(entry) ? archive_entry_size(entry) : -1;
         bool taken = false;
-        if (kind == "file" && wanted.count(last_component(path)) > 0 && size >= 0 &&
-            size <= max_file && taken_bytes + size <= max_total) {
+        if (kind == "file" && wanted.count(raystep::grade::archive_entry_name(path)) > 0 &&
+            size >= 0 && size <= max_file && taken_bytes + size <= max_total) {
             taken = copy_data(reader, folder + "/" + std::to_string(index), max_file);
             if (taken) taken_bytes += size;
         }

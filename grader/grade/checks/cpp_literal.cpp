@@ -1,16 +1,15 @@
 #include "grader/grade/checks/cpp_literal.h"
 
 #include <cmath>
-#include <cstdio>
+
+#include "grader/grade/checks/judging.h"
 
 namespace raystep::grade {
 
 std::string cpp(double x) {
     if (std::isnan(x)) return "NAN";
     if (std::isinf(x)) return x > 0 ? "INFINITY" : "-INFINITY";
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", x);
-    return text;
+    return full_text(x);
 }
 
 std::string cpp(const Vec3& v) {
