@@ -5,7 +5,6 @@
 #include <chrono>
 #include <csignal>
 #include <map>
-#include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -104,16 +103,21 @@ std::uintmax_t bytes_in(const fs::path& folder) {
     return total;
 }
 
+// Whether a failed compile or link ran into its file-size budget. The driver (g++) reports a
+// pass killed by SIGXFSZ in words and exits with an error of its own; the output left behind
+// tells too.
+bool passed_file_budget(const SandboxRun& run, std::uintmax_t written, std::uintmax_t budget) {
+    return run.signal == SIGXFSZ ||
+           run.errors.find("File size limit exceeded") != std::string::npos || written >= budget;
+}
+
 // The sandbox must show its user the work folder, or every compile would fail as if the student's
 // code had: a mistake of the grader's setting (a work folder under a folder nobody may enter, a
 // bubblewrap that cannot bind it) stops the grade instead, with bubblewrap's or the kernel's words.
 void require_sandbox_reaches(const fs::path& include, const fs::path& work) {
-    const fs::path scratch = work / "objects";
-    fs::create_directories(scratch);
     SandboxPolicy policy;
     policy.read_only = {include};
-    policy.writable = scratch;
-    policy.working_directory = scratch;
+    policy.working_directory = include;
     const SandboxRun run = run_sandboxed({"test", "-r", (include / "core").string()}, "", policy);
     if (run.exit_code != 0) {
         throw std::runtime_error(
@@ -172,13 +176,8 @@ CompiledStage compile_stage(const SubmittedStage& stage, const ProbeToolchain& t
             return compiled;
         }
         if (run.exit_code != 0 || run.signal != 0) {
-            // The compiler's driver reports a pass killed by SIGXFSZ in words, and exits 4.
-            const bool over_budget =
-                run.signal == SIGXFSZ ||
-                run.errors.find("File size limit exceeded") != std::string::npos ||
-                bytes_in(objects) >= budget.compile_bytes_per_stage;
             compiled.failure =
-                over_budget
+                passed_file_budget(run, bytes_in(objects), budget.compile_bytes_per_stage)
                     ? "the compiler's output for " + file.filename().string() + " passed the " +
                           mebibytes(budget.compile_bytes_per_stage) + " a stage's objects may take"
                     : first_lines(run.errors + run.output);
@@ -192,8 +191,8 @@ CompiledStage compile_stage(const SubmittedStage& stage, const ProbeToolchain& t
 }
 
 // After the link: the probe and its folder are the grader's again, and the program can be run
-// but not read by the sandbox's user, which makes a running probe undumpable: no other program
-// of that user can open it through /proc/PID/exe.
+// but not read by others, which makes a running probe undumpable: no program of another run can
+// open it through /proc/PID/exe.
 void seal(const fs::path& program) {
     // Only a regular file in a real folder: fs::permissions follows links, and a link put in the
     // grader's way must not turn a chmod onto another file.
@@ -246,7 +245,8 @@ BuiltProbe link_probe(const std::vector<const CompiledStage*>& submitted,
     policy.limits.file_size_bytes = budget.link_bytes_per_probe;
     policy.limits.output_bytes = 64u << 10;
     const SandboxRun run = run_sandboxed(argv, "", policy);
-    if (run.signal == SIGXFSZ) {
+    if ((run.exit_code != 0 || run.signal != 0) &&
+        passed_file_budget(run, bytes_in(linked.parent_path()), budget.link_bytes_per_probe)) {
         return {std::nullopt, "the linked probe passed the " +
                                   mebibytes(budget.link_bytes_per_probe) + " a probe may take"};
     }
