@@ -4,6 +4,8 @@
 #include <cctype>
 #include <fstream>
 
+#include "grader/protocol/base64.h"
+
 namespace raystep::grade {
 
 namespace {
@@ -20,26 +22,6 @@ std::string image_media_type(const std::filesystem::path& file) {
 }
 
 }  // namespace
-
-std::string base64(std::string_view bytes) {
-    static constexpr char kAlphabet[] =
-        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-    std::string text;
-    text.reserve((bytes.size() + 2) / 3 * 4);
-    // Each 3 bytes become 4 characters of 6 bits; a last group of 1 or 2 bytes is padded.
-    for (std::size_t at = 0; at < bytes.size(); at += 3) {
-        const std::size_t count = std::min<std::size_t>(3, bytes.size() - at);
-        unsigned group = 0;
-        for (std::size_t k = 0; k < 3; ++k) {
-            const unsigned byte = k < count ? static_cast<unsigned char>(bytes[at + k]) : 0u;
-            group = (group << 8) | byte;
-        }
-        for (std::size_t k = 0; k < 4; ++k) {
-            text += k <= count ? kAlphabet[(group >> (18 - 6 * k)) & 0x3F] : '=';
-        }
-    }
-    return text;
-}
 
 std::optional<std::string> image_data_url(const std::filesystem::path& file,
                                           std::size_t max_bytes) {

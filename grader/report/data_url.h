@@ -10,9 +10,6 @@ namespace raystep::grade {
 // Images carried inside the report that shows them, so that one file holds everything: the
 // student's HTML page, which is sent or uploaded alone, and PrairieLearn's results.json.
 
-/// The bytes in base64 (RFC 4648, section 4: the standard alphabet, padded with '=').
-std::string base64(std::string_view bytes);
-
 /// The image file as a data URL (RFC 2397), "data:image/png;base64,...", which an <img> or
 /// PrairieLearn shows as it would the file. The media type comes from the extension: .png,
 /// .jpg or .jpeg, .gif. nullopt when the file cannot be read, is larger than max_bytes, or has

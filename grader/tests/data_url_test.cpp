@@ -5,8 +5,10 @@
 #include <unistd.h>
 
 #include "core/testing/catch.h"
+#include "grader/protocol/base64.h"
 
 using namespace raystep::grade;
+using raystep::base64;
 
 namespace {
 

@@ -8,12 +8,13 @@
 #include <unistd.h>
 
 #include "core/testing/catch.h"
-#include "grader/report/data_url.h"
+#include "grader/protocol/base64.h"
 #include "grader/report/report_text.h"
 #include "report_example.h"
 #include "xml_document.h"
 
 using namespace raystep::grade;
+using raystep::base64;
 using raystep::testing::example_report;
 using raystep::testing::kHiddenSecret;
 using raystep::testing::kHostile;
