@@ -26,16 +26,8 @@ std::string ending(const SandboxRun& run, std::size_t answered, std::size_t aske
     if (run.signal != 0)
         return text + "died of signal " + std::to_string(run.signal) + " (" +
                strsignal(run.signal) + ")";
-    if (run.output_capped) return text + "flooded its output past the cap";
+    if (run.answers_capped) return text + "flooded its answer channel past the cap";
     return text + "exited with code " + std::to_string(run.exit_code);
-}
-
-CheckMeasure not_compiled(const BuiltProbe& probe) {
-    CheckMeasure measure;
-    measure.outcome = Outcome::did_not_compile;
-    measure.summary = "did not compile";
-    measure.details = probe.failure;
-    return measure;
 }
 
 // --case N beyond the check's cases: nothing was asked, and the summary says why.
@@ -59,6 +51,14 @@ ProbeAnswer element_of(const ProbeAnswer& whole, std::size_t element, std::size_
 }
 
 }  // namespace
+
+CheckMeasure not_compiled(const BuiltProbe& probe) {
+    CheckMeasure measure;
+    measure.outcome = Outcome::did_not_compile;
+    measure.summary = "did not compile";
+    measure.details = probe.failure;
+    return measure;
+}
 
 std::string answer_text(const ProbeAnswer& answer) {
     switch (answer.kind) {

@@ -16,7 +16,7 @@ namespace raystep::grade {
 /// it beside the submission's), and how a reproduce command starts.
 struct GradingContext {
     const ProbeSet* probes = nullptr;
-    std::filesystem::path source;           ///< the repository: scenes/ for render checks
+    std::filesystem::path source;           ///< scenes/ for render checks: the work copy
     std::filesystem::path report_folder;    ///< render checks write their images here
     std::filesystem::path reference_probe;  ///< raystep-probe-reference
     std::string reproduce;                  ///< "raystep-grade submission PATH", to which
@@ -128,5 +128,9 @@ std::string stub_function(const std::string& message);
 
 /// The answer's text for a report: the result's JSON, or what was thrown, or why there is none.
 std::string answer_text(const ProbeAnswer& answer);
+
+/// What a check measures of a probe that was not built: did not compile, with the compiler's
+/// first lines (or the missing files) as the details.
+CheckMeasure not_compiled(const BuiltProbe& probe);
 
 }  // namespace raystep::grade

@@ -60,13 +60,8 @@ Json timed_pairs(const CaseFamily& family) {
 }
 
 CheckMeasure measure_speed_error(const GradingContext& context, const BuiltProbe& probe) {
+    if (!probe.program) return not_compiled(probe);
     CheckMeasure measure;
-    if (!probe.program) {
-        measure.outcome = Outcome::did_not_compile;
-        measure.summary = "did not compile";
-        measure.details = probe.failure;
-        return measure;
-    }
     const CaseFamily& family = decided_shared_edges();
     Stage3Method method{"intersect_triangle", Stage3Method::Kind::triangle};
 

@@ -250,13 +250,8 @@ std::vector<ProbeCase> slab_cases() {
 // whose hits differ from the reference's earns nothing for speed: fast and wrong is not fast.
 CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& probe,
                            const std::string& structure) {
+    if (!probe.program) return not_compiled(probe);
     CheckMeasure measure;
-    if (!probe.program) {
-        measure.outcome = Outcome::did_not_compile;
-        measure.summary = "did not compile";
-        measure.details = probe.failure;
-        return measure;
-    }
     AccelScene scene = random_soup(0x5BEED);
     std::mt19937_64 rng(3);
     // Many rays through a scene big enough that the structure is what costs.
