@@ -8,19 +8,12 @@
 #include "core/demo/demo_scene.h"
 #include "core/demo/label_text.h"
 #include "core/testing/catch.h"
+#include "core/testing/filled_image.h"
 
 using namespace raystep;
+using raystep::testing::filled_image;
 
 namespace {
-
-Image filled(int width, int height, const Color& colour) {
-    Image image(width, height);
-    for (int j = 0; j < height; ++j) {
-        for (int i = 0; i < width; ++i)
-            image.set(i, j, colour);
-    }
-    return image;
-}
 
 // Pixels of the rows [y0, y1) that are not the colour of the image's top-left corner.
 int marked_pixels(const Image& image, int y0, int y1) {
@@ -37,8 +30,8 @@ DemoFigure two_panel_figure(const DemoSize& size) {
     const PanelSize panel = panel_size(size, 2, false);
     DemoFigure figure;
     figure.title = "A title";
-    figure.panels.push_back({"red", filled(panel.width, panel.height, Color(1, 0, 0))});
-    figure.panels.push_back({"blue", filled(panel.width, panel.height, Color(0, 0, 1))});
+    figure.panels.push_back({"red", filled_image(panel.width, panel.height, Color(1, 0, 0))});
+    figure.panels.push_back({"blue", filled_image(panel.width, panel.height, Color(0, 0, 1))});
     return figure;
 }
 
@@ -96,7 +89,7 @@ TEST_CASE("draw_figure: a heat map's scale is drawn along the bottom, cold to ho
     const PanelSize panel = panel_size(size, 1, true);
     DemoFigure figure;
     figure.title = "scale";
-    figure.panels.push_back({"", filled(panel.width, panel.height, Color(0.0))});
+    figure.panels.push_back({"", filled_image(panel.width, panel.height, Color(0.0))});
     figure.scale = LogHeatScale{1e5, "steps"};
     const Image image = draw_figure(figure, size, std::nullopt);
     // The bar's row, 6 pixels into the 44-pixel strip: black at its left end, white at its right

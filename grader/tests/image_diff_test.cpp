@@ -7,10 +7,12 @@
 #include "core/render/tile_renderer.h"
 #include "core/scene/scene_loader.h"
 #include "core/testing/catch.h"
+#include "core/testing/filled_image.h"
 
 using namespace raystep;
 using grade::compare_images;
 using grade::ImageDiff;
+using raystep::testing::filled_image;
 
 namespace {
 
@@ -27,15 +29,6 @@ Image reference_render(const std::string& scene_file, View view) {
     return render_image(prepare_render_scene(scene), options);
 }
 
-Image filled(int width, int height, const Color& colour) {
-    Image image(width, height);
-    for (int j = 0; j < height; ++j) {
-        for (int i = 0; i < width; ++i)
-            image.set(i, j, colour);
-    }
-    return image;
-}
-
 double share(std::size_t count, const ImageDiff& diff) {
     return static_cast<double>(count) / static_cast<double>(diff.pixels);
 }
@@ -50,7 +43,7 @@ TEST_CASE(
     // black at the horizon. A student's all-black render must count as different wherever a
     // viewer sees grey.
     const Image reference = reference_render("stage3/spheres-on-plane.test", View::depth);
-    const Image black = filled(reference.width(), reference.height(), Color(0.0));
+    const Image black = filled_image(reference.width(), reference.height(), Color(0.0));
     const ImageDiff diff = compare_images(reference, black, 0.02f);
     CAPTURE(diff.pixels, diff.pixels_over, diff.pixels_visibly_different);
     CHECK(share(diff.pixels_over, diff) == Approx(0.78).margin(0.03));
@@ -66,14 +59,14 @@ TEST_CASE("compare_images: a coloured render against black, and against itself",
     const ImageDiff same = compare_images(reference, reference, 0.02f);
     CHECK(same.pixels_over == 0);
     CHECK(same.pixels_visibly_different == 0);
-    const ImageDiff black =
-        compare_images(reference, filled(reference.width(), reference.height(), Color(0.0)), 0.02f);
+    const ImageDiff black = compare_images(
+        reference, filled_image(reference.width(), reference.height(), Color(0.0)), 0.02f);
     CAPTURE(black.pixels_over, black.pixels_visibly_different);
     CHECK(share(black.pixels_visibly_different, black) > 0.6);
 }
 
 TEST_CASE("compare_images: a just noticeable difference, and NaN", "[grader]") {
-    const Image grey = filled(4, 4, Color(0.5));
+    const Image grey = filled_image(4, 4, Color(0.5));
     Image changed = grey;
     // Mid grey in sRGB is L* 53.4; 0.5 to 0.51 moves L* by 1.0, below notice, to 0.55 by 5.0.
     changed.set(0, 0, Color(0.51));
@@ -84,14 +77,14 @@ TEST_CASE("compare_images: a just noticeable difference, and NaN", "[grader]") {
     CHECK(diff.pixels_over == 2);
     // Values past 1 show as 1: a brighter overexposure is not a visible difference.
     const ImageDiff clamped =
-        compare_images(filled(4, 4, Color(1.0)), filled(4, 4, Color(3.0)), 0.02f);
+        compare_images(filled_image(4, 4, Color(1.0)), filled_image(4, 4, Color(3.0)), 0.02f);
     CHECK(clamped.pixels_visibly_different == 0);
     CHECK(clamped.pixels_over == 16);
 
     // The heat map shows a NaN in any channel at full scale.
     CHECK(grade::difference_heat_map(grey, changed, 0.25f).at(2, 0) == Color(1.0));
 
-    const ImageDiff wrong_size = compare_images(grey, filled(4, 3, Color(0.5)), 0.02f);
+    const ImageDiff wrong_size = compare_images(grey, filled_image(4, 3, Color(0.5)), 0.02f);
     CHECK_FALSE(wrong_size.same_size);
     CHECK(wrong_size.pixels_visibly_different == 16);
 }
