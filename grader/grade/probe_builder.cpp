@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "grader/grade/mebibytes.h"
 #include "grader/grade/sandbox_copies.h"
 #include "grader/sandbox/sandbox.h"
 #include "grader/sandbox/sandbox_paths.h"
@@ -87,10 +88,6 @@ struct CompiledStage {
     std::vector<fs::path> objects;
     std::string failure;
 };
-
-std::string mebibytes(std::uintmax_t bytes) {
-    return std::to_string(bytes >> 20) + " MiB";
-}
 
 // A folder's files' sizes, added up.
 std::uintmax_t bytes_in(const fs::path& folder) {

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "grader/grade/archive_entry_name.h"
+#include "grader/grade/mebibytes.h"
 #include "grader/grade/sandbox_copies.h"
 #include "grader/sandbox/sandbox.h"
 
@@ -32,13 +33,6 @@ struct Entry {
 
 std::size_t depth(const std::string& path) {
     return static_cast<std::size_t>(std::count(path.begin(), path.end(), '/'));
-}
-
-std::string mebibytes(std::uintmax_t bytes) {
-    std::ostringstream text;
-    text.precision(3);
-    text << static_cast<double>(bytes) / (1 << 20) << " MiB";
-    return text.str();
 }
 
 // Folders that hold what tools made, never a student's sources: a working copy's history, build
