@@ -58,7 +58,7 @@ ProbeSession ask_probe(const std::filesystem::path& program, const std::vector<P
     policy.read_only.push_back(program.parent_path());
     policy.limits.cpu_seconds = limits.cpu_seconds;
     policy.limits.wall = limits.wall;
-    policy.limits.answer_bytes = limits.output_bytes;
+    policy.limits.answer_bytes = limits.answer_bytes;
     policy.limits.output_bytes = kPrintedBytes;
     policy.limits.file_size_bytes = 0;  // a probe writes nothing but its answers
     policy.answer_channel = true;

@@ -41,7 +41,7 @@ struct ProbeSession {
 struct ProbeRunLimits {
     double cpu_seconds = 10.0;
     std::chrono::milliseconds wall{20000};
-    std::size_t output_bytes = 128u << 20;        ///< the answers read at most
+    std::size_t answer_bytes = 128u << 20;        ///< the answers read at most
     std::vector<std::filesystem::path> readable;  ///< e.g. the scenes a render call loads
 };
 

@@ -70,11 +70,12 @@ ChildSpec limited_spec(const SandboxLimits& limits, bool isolated) {
     // namespace it has uid 65534, and outside it is the run's own user or the grader's, never the
     // root that a root grader would map in). The limit counts every task of that real uid, so
     // what the user already runs (the grader's own processes when it is not root) is added, or
-    // the program could not start one process; a run's own user has none. Inside bubblewrap the
-    // kernel also counts per user namespace, so there the limit holds for the sandbox alone.
+    // the program could not start one process; a run's own user has none (program_identity drew a
+    // uid that no process has). Inside bubblewrap the kernel also counts per user namespace, so
+    // there the limit holds for the sandbox alone.
     // Whatever a run leaves is then killed with it (supervise.h, end_processes_of).
-    const uid_t uid = spec.identity ? spec.identity->uid : getuid();
-    spec.tasks = tasks_of(uid) + static_cast<rlim_t>(std::max(0, limits.processes)) +
+    const rlim_t already = spec.identity ? 0 : tasks_of(getuid());
+    spec.tasks = already + static_cast<rlim_t>(std::max(0, limits.processes)) +
                  (isolated ? kBubblewrapTasks : 0);
     return spec;
 }
