@@ -1,9 +1,8 @@
 #include "core/bench/bench_geometry.h"
 
 #include <cmath>
-#include <random>
 
-#include "core/bench/bench_random.h"
+#include "core/math/portable_random.h"
 #include "stages/4_accel/aabb.h"
 
 namespace raystep {
@@ -39,28 +38,28 @@ std::vector<Triangle> tiled_copies(const std::vector<Triangle>& triangles, int c
 }
 
 std::vector<Sphere> random_spheres(std::size_t count, std::uint64_t seed) {
-    std::mt19937_64 random(seed);
+    PortableRandom random(seed);
     const double side = std::cbrt(1.0 / static_cast<double>(count));
     std::vector<Sphere> spheres;
     spheres.reserve(count);
     for (std::size_t k = 0; k < count; ++k) {
-        const Vec3 center(uniform01(random), uniform01(random), uniform01(random));
-        spheres.push_back({center, side * uniform(random, 0.25, 0.75)});
+        const Vec3 center(random.unit(), random.unit(), random.unit());
+        spheres.push_back({center, side * random.uniform(0.25, 0.75)});
     }
     return spheres;
 }
 
 std::vector<Triangle> random_triangles(std::size_t count, std::uint64_t seed) {
-    std::mt19937_64 random(seed);
+    PortableRandom random(seed);
     const double half = 0.5 * std::cbrt(1.0 / static_cast<double>(count));
     const auto near = [&](const Vec3& center) {
-        return center + Vec3(uniform(random, -half, half), uniform(random, -half, half),
-                             uniform(random, -half, half));
+        return center + Vec3(random.uniform(-half, half), random.uniform(-half, half),
+                             random.uniform(-half, half));
     };
     std::vector<Triangle> triangles;
     triangles.reserve(count);
     for (std::size_t k = 0; k < count; ++k) {
-        const Vec3 center(uniform01(random), uniform01(random), uniform01(random));
+        const Vec3 center(random.unit(), random.unit(), random.unit());
         const Vec3 p0 = near(center);
         const Vec3 p1 = near(center);
         const Vec3 p2 = near(center);

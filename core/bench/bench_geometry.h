@@ -10,7 +10,7 @@
 namespace raystep {
 
 // The bench's scenes, made from a mesh file or from a seed. Seeded scenes are the same on every
-// platform (core/bench/bench_random.h).
+// platform (core/math/portable_random.h).
 
 /// The mesh's faces as triangles, in face order.
 std::vector<Triangle> mesh_triangles(const TriangleMesh& mesh);

@@ -1,11 +1,10 @@
 #include "core/bench/bench_rays.h"
 
 #include <cmath>
-#include <random>
 
 #include <glm/geometric.hpp>
 
-#include "core/bench/bench_random.h"
+#include "core/math/portable_random.h"
 
 namespace raystep {
 
@@ -48,7 +47,7 @@ std::vector<Ray> primary_rays(const Aabb& box, int width, int height) {
 
 std::vector<Ray> incoherent_rays(const Aabb& box, std::size_t count, std::uint64_t seed) {
     constexpr double kTwoPi = 6.28318530717958647692;
-    std::mt19937_64 random(seed);
+    PortableRandom random(seed);
     const Vec3 center = box.center();
     const double radius = 2.0 * glm::length(box.extent());
 
@@ -56,15 +55,15 @@ std::vector<Ray> incoherent_rays(const Aabb& box, std::size_t count, std::uint64
     rays.reserve(count);
     for (std::size_t k = 0; k < count; ++k) {
         // A point uniform on the sphere: z uniform in [-1, 1], the azimuth uniform (Archimedes)
-        const double z = uniform(random, -1.0, 1.0);
-        const double azimuth = kTwoPi * uniform01(random);
+        const double z = random.uniform(-1.0, 1.0);
+        const double azimuth = kTwoPi * random.unit();
         const double ring = std::sqrt(1.0 - z * z);
         const Vec3 origin =
             center + radius * Vec3(ring * std::cos(azimuth), ring * std::sin(azimuth), z);
 
-        const Vec3 target(uniform(random, box.min.x, box.max.x),
-                          uniform(random, box.min.y, box.max.y),
-                          uniform(random, box.min.z, box.max.z));
+        const Vec3 target(random.uniform(box.min.x, box.max.x),
+                          random.uniform(box.min.y, box.max.y),
+                          random.uniform(box.min.z, box.max.z));
         rays.push_back(Ray{origin, glm::normalize(target - origin)});
     }
     return rays;

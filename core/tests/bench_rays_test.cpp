@@ -5,7 +5,6 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/bench/bench_random.h"
 #include "core/testing/catch.h"
 
 using namespace raystep;
@@ -30,18 +29,6 @@ bool meets(const Ray& ray, const Aabb& box) {
 }
 
 }  // namespace
-
-TEST_CASE("uniform01: the top 53 bits of std::mt19937_64, the same on every platform", "[bench]") {
-    // The standard fixes mt19937_64's sequence; seed 1 starts with 2469588189546311528
-    std::mt19937_64 random(1);
-    CHECK(uniform01(random) == 0.13387664401253263);
-    for (int k = 0; k < 1000; ++k) {
-        const double u = uniform(random, -2.0, 3.0);
-        CAPTURE(k);
-        REQUIRE(u >= -2.0);
-        REQUIRE(u < 3.0);
-    }
-}
 
 TEST_CASE("incoherent_rays: the same seed makes the same rays, another seed other rays",
           "[bench]") {

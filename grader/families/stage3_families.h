@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/check/ray_case.h"
-#include "grader/families/case_random.h"
+#include "core/math/portable_random.h"
 
 namespace raystep {
 
@@ -19,7 +19,7 @@ struct Stage3Family {
     /// When above 0, a hit's t passes only within this many ulps of the exact t, instead of the
     /// rounding budget: for a family that checks one accuracy requirement (the stable roots).
     double t_ulps = 0.0;
-    RayCase (*make)(CaseRandom& random);
+    RayCase (*make)(PortableRandom& random);
 };
 
 /// Every stage-3 family, in the order reports list them.

@@ -1,9 +1,11 @@
 #pragma once
 
-// The random numbers of the case families, the same on every platform: std::mt19937_64's output
-// is fixed by the C++ standard, but std::uniform_real_distribution's is not (libstdc++ and libc++
-// differ), so the distributions are written here from its bits. Every case has its own generator,
-// seeded from the family's seed and the case's index, so that any one case can be rebuilt alone.
+// The one random generator of everything the grader and the bench generate, the same on every
+// platform: std::mt19937_64's output is fixed by the C++ standard, but
+// std::uniform_real_distribution's is not (libstdc++ and libc++ differ), so the distributions are
+// written here from its bits and a seed printed in a counterexample rebuilds the case anywhere.
+// Every case has its own generator, seeded from its family's seed and the case's index, so that
+// any one case can be rebuilt alone; a bench draws one stream from (seed, 0).
 
 #include <cmath>
 #include <cstdint>
@@ -13,10 +15,10 @@
 
 namespace raystep {
 
-class CaseRandom {
-public:
+class PortableRandom {
+  public:
     /// The generator of case `index` of a family seeded with `seed`.
-    CaseRandom(std::uint64_t seed, std::uint64_t index) : engine_(mix(seed, index)) {}
+    PortableRandom(std::uint64_t seed, std::uint64_t index = 0) : engine_(mix(seed, index)) {}
 
     /// Uniform in [0, 1), 53 random bits.
     double unit() { return static_cast<double>(engine_() >> 11) * 0x1p-53; }
@@ -46,7 +48,7 @@ public:
         return {uniform(-extent, extent), uniform(-extent, extent), uniform(-extent, extent)};
     }
 
-private:
+  private:
     // SplitMix64's finalizer: nearby (seed, index) pairs give unrelated streams.
     static std::uint64_t mix(std::uint64_t seed, std::uint64_t index) {
         std::uint64_t z = seed * 0x9E3779B97F4A7C15ull + index + 0x632BE59BD9B4E019ull;
