@@ -5,14 +5,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <functional>
 #include <limits>
-#include <random>
 #include <string>
 
 #include <glm/geometric.hpp>
 
+#include "core/math/portable_random.h"
 #include "grader/grade/checks/cpp_literal.h"
+#include "grader/grade/checks/error_bound_origin.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
 
@@ -169,8 +172,11 @@ WideTerm wide_blinn_phong(const Material& m, const SurfacePoint& p, const LightS
     const WideVec half = glm::normalize(light + widen(p.to_eye));
     const Wide n_dot_h = std::max(glm::dot(n, half), Wide(0));
     const Wide highlight = std::pow(n_dot_h, Wide(m.shininess));
+    // Where N . H is 0 or below (the eye behind the shading normal), the highlight is 0^s, exact.
     const Wide highlight_error =
-        highlight * (4 * kUnit + (m.shininess == 0 ? 0 : 8 * kUnit * m.shininess / n_dot_h));
+        n_dot_h > 0
+            ? highlight * (4 * kUnit + (m.shininess == 0 ? 0 : 8 * kUnit * m.shininess / n_dot_h))
+            : 0;
     const WideVec intensity = widen(l.intensity);
     const WideVec diffuse = widen(m.diffuse);
     const WideVec specular = widen(m.specular);
@@ -227,31 +233,16 @@ std::string offset_text(const RayOffset& o) {
            (o.rule == OffsetRule::error_bound ? "" : " epsilon " + full_text(o.epsilon));
 }
 
-// The geometric normal on the side a ray along `direction` leaves to; in the tangent plane, the
-// normal as given.
-WideVec leaving_normal(const SurfacePoint& p, const Vec3& direction) {
-    const WideVec n = widen(p.normal);
-    return glm::dot(n, widen(direction)) < 0 ? -n : n;
-}
-
 // The ray spawn_ray must give, judged by its rule:
 // - along_ray: origin the point itself, t over [epsilon, distance];
 // - along_normal: origin P + epsilon n, n on the leaving side, within the rounding of that sum;
-// - error_bound: with d = sum |n_i| error_i, the origin strictly beyond d along n (decided in
-//   long double: origin and point differ by a few ulps and d, so their difference is exact and its
-//   dot product with n rounds some 2^-64 of d, far below the half ulp the rule's step adds), no
-//   more than 4 ulps of the point's size (or of d, if larger) beyond it, and within as many of
-//   the line along n (rounding and the one-ulp step move it sideways; the step's direction is not
-//   judged); t over [0, distance].
+// - error_bound: the origin in the region error_bound_origin.h describes, t over [0, distance].
 // Every rule keeps the direction (a few ulps allowed for renormalizing a unit vector) and ends at
 // exactly `distance`.
 Judgement judge_spawned(const ProbeAnswer& answer, const SurfacePoint& p, const Vec3& direction,
                         double distance, const RayOffset& offset) {
     const WideVec n = leaving_normal(p, direction);
-    const Wide d = glm::dot(glm::abs(n), widen(p.error));
-    const double size = std::max({std::abs(p.position.x), std::abs(p.position.y),
-                                  std::abs(p.position.z), static_cast<double>(d)});
-    const double ulps = 4 * std::ldexp(size, -52);
+    const ErrorBoundOrigin region = error_bound_origin(p, direction);
     const WideVec along_normal = widen(p.position) + Wide(offset.epsilon) * n;
     const WideVec along_normal_tolerance =
         Wide(4 * kUnit) * (glm::abs(widen(p.position)) + glm::abs(Wide(offset.epsilon) * n));
@@ -265,9 +256,7 @@ Judgement judge_spawned(const ProbeAnswer& answer, const SurfacePoint& p, const 
                    full_text(narrow(along_normal_tolerance)) + "), t in [0";
             break;
         case OffsetRule::error_bound:
-            text = "origin more than " + full_text(static_cast<double>(d)) + " and at most " +
-                   full_text(static_cast<double>(d) + ulps) + " along " + full_text(narrow(n)) +
-                   " from the point, within " + full_text(ulps) + " of that line, t in [0";
+            text = region_text(region) + ", t in [0";
             break;
     }
     text += ", " + full_text(distance) + "], direction " + full_text(direction);
@@ -282,13 +271,9 @@ Judgement judge_spawned(const ProbeAnswer& answer, const SurfacePoint& p, const 
         case OffsetRule::along_normal:
             ok = ok && near(got.origin, along_normal, along_normal_tolerance) && got.t_min == 0.0;
             break;
-        case OffsetRule::error_bound: {
-            const WideVec moved = widen(got.origin) - widen(p.position);
-            const Wide along = glm::dot(moved, n);
-            const Wide sideways = glm::length(moved - along * n);
-            ok = ok && along > d && along <= d + ulps && sideways <= ulps && got.t_min == 0.0;
+        case OffsetRule::error_bound:
+            ok = ok && within(region, got.origin) && got.t_min == 0.0;
             break;
-        }
     }
     return ok ? right() : wrong(text, ray_text(got));
 }
@@ -412,12 +397,16 @@ std::vector<ProbeCase> hidden_cases() {
     coarse_distant.error = Vec3(3e-6);
     const SurfacePoint ceiling{{3, -1, 0.5}, Vec3(1e-15), {0, 0, -1}, {0, 0, -1}, {0, 0, -1}};
     const SurfacePoint ledge{{0, 1, 0}, Vec3(1e-16), up, up, up};
+    const SurfacePoint bent_away{{0, 0, 0}, {0, 0, 0}, up, {0.8, 0.6, 0}, {-0.96, 0.28, 0}};
+    const SurfacePoint wall{{-1, 4, 2}, {2e-15, 0, 0}, {-1, 0, 0}, {-1, 0, 0}, {-0.6, 0, 0.8}};
     return {
         attenuation_case({0.5, 2, 3}, 0),
         // 1 + 0.5e6, exact.
         attenuation_case({1, 0.5, 0}, 1e6),
         // 5e160 away: its square overflows, its length must not (stage 1's length handles it).
         point_light_case({{0, 3e160, 4e160}, {0.25, 0.5, 1}, {1, 0, 0}}, {0, 0, 0}),
+        // 5e-300 away: its square underflows to 0, its direction must not.
+        point_light_case({{0, 3e-300, 4e-300}, {0.25, 0.5, 1}, {1, 0, 0}}, {0, 0, 0}),
         at_the_light_case({{1e10, -3, 0.5}, {1, 1, 1}, {0, 0, 1}}),
         // (-2, -2, 1) / 3.
         directional_light_case({{-2, -2, 1}, {0.7, 0.2, 0.1}}),
@@ -433,6 +422,18 @@ std::vector<ProbeCase> hidden_cases() {
         blinn_phong_case(material(Color(0.0), Color(1.0), Color(1.0), Color(0.0), 8.0),
                          {{0, 0, 0}, {0, 0, 0}, up, {0.6, 0.8, 0}, up},
                          {{-0.96, 0.28, 0}, 10.0, Color(1.0)}),
+        // A light exactly in the tangent plane, N . L = 0: black, though N . H = sqrt(0.5) would
+        // show a highlight.
+        blinn_phong_case(material(Color(0.0), Color(1.0), Color(1.0), Color(0.0), 1.0),
+                         lit_point(up, up), {{1, 0, 0}, 10.0, Color(1.0)}),
+        // The eye behind the shading normal (0.8, 0.6, 0), which the geometric normal (0, 1, 0)
+        // faces: N . L = 0.352 but N . (L + V) = -0.248, so max(N . H, 0)^s = 0 and only the
+        // diffuse term is left, 0.5 * 0.352 = 0.176. (N . H)^2 unclamped would add 0.02, and
+        // (N . H)^0.5 is NaN.
+        blinn_phong_case(material(Color(0.0), Color(0.5), Color(1.0), Color(0.0), 2.0), bent_away,
+                         {{-0.28, 0.96, 0}, 10.0, Color(1.0)}),
+        blinn_phong_case(material(Color(0.0), Color(0.5), Color(1.0), Color(0.0), 0.5), bent_away,
+                         {{-0.28, 0.96, 0}, 10.0, Color(1.0)}),
         // The eye in the mirror direction: H = N, (N . H)^1000 = 1; 0.5 * 0.8 + Ks.
         blinn_phong_case(material(Color(0.0), Color(0.5), {0.25, 0.5, 0.75}, Color(0.0), 1000.0),
                          lit_point(up, {-0.6, 0.8, 0}), {{0.6, 0.8, 0}, 10.0, Color(1.0)}),
@@ -458,6 +459,8 @@ std::vector<ProbeCase> hidden_cases() {
         // and 1.4 * 3e-6.
         spawn_case(distant, {0.6, 0.8, 0}, 1.0, kErrorBound),
         spawn_case(coarse_distant, {0.6, 0.8, 0}, 1.0, kErrorBound),
+        // In the tangent plane the normal as given, (-1, 0, 0): x below -1 - 2e-15.
+        spawn_case(wall, {0, 0.6, 0.8}, 1.0, kErrorBound),
         // A light below the ledge: the shadow ray starts below it, (0, 0.5, 0), and ends at the
         // light.
         shadow_case(ledge, {{0.6, -0.8, 0}, 4.0, Color(1.0)}, along_normal(0.5)),
@@ -465,12 +468,22 @@ std::vector<ProbeCase> hidden_cases() {
     };
 }
 
-Material random_material(std::mt19937_64& rng) {
-    std::uniform_real_distribution<double> u(0.0, 1.0);
+// The oracle's cases, each drawn from its own generator, PortableRandom(kOracleSeed, k) for the
+// case at index k, so that `--case k` rebuilds that case alone on any platform.
+constexpr std::uint64_t kOracleSeed = 0x5EED'0006;
+
+// Each channel uniform in [0, high).
+Color random_colour(PortableRandom& random, double high) {
+    return {random.uniform(0, high), random.uniform(0, high), random.uniform(0, high)};
+}
+
+Material random_material(PortableRandom& random) {
     const double shininess[] = {0, 0.5, 1, 2.5, 10, 64, 200};
-    return material(uniform(rng, 0, 0.3), uniform(rng, 0, 1), uniform(rng, 0, 1),
-                    u(rng) < 0.3 ? uniform(rng, 0, 0.5) : Color(0.0),
-                    shininess[std::uniform_int_distribution<int>(0, 6)(rng)]);
+    const Color ambient = random_colour(random, 0.3);
+    const Color diffuse = random_colour(random, 1);
+    const Color specular = random_colour(random, 1);
+    const Color emission = random.unit() < 0.3 ? random_colour(random, 0.5) : Color(0.0);
+    return material(ambient, diffuse, specular, emission, shininess[random.integer(0, 6)]);
 }
 
 // A light seen from a random point on a surface: a quarter of them behind it, none within 1e-3
@@ -481,83 +494,95 @@ struct LitScene {
     LightSample light;
 };
 
-LitScene random_lit(std::mt19937_64& rng) {
-    std::uniform_real_distribution<double> u(0.0, 1.0);
+LitScene random_lit(PortableRandom& random) {
     for (;;) {
-        const Vec3 n = random_unit(rng);
-        const Vec3 l = random_unit(rng);
-        const Vec3 v = random_unit(rng);
+        const Vec3 n = random.unit_vector();
+        const Vec3 l = random.unit_vector();
+        const Vec3 v = random.unit_vector();
         const double n_dot_l = glm::dot(n, l);
         const Vec3 sum = l + v;
         if (glm::dot(n, v) < 0.05 || std::abs(n_dot_l) < 1e-3 || glm::length(sum) < 1e-3) continue;
-        if (n_dot_l < 0 && u(rng) < 0.67) continue;
+        if (n_dot_l < 0 && random.unit() < 0.67) continue;
         if (n_dot_l > 0 && glm::dot(n, glm::normalize(sum)) < 1e-3) continue;
-        return {{uniform(rng, -10, 10), Vec3(0.0), n, n, v},
-                {l, 1 + 10 * u(rng), uniform(rng, 0, 2)}};
+        const Vec3 position = random.point(10);
+        const double distance = 1 + 10 * random.unit();
+        return {{position, Vec3(0.0), n, n, v}, {l, distance, random_colour(random, 2)}};
     }
 }
 
+ProbeCase random_attenuation_case(PortableRandom& random) {
+    const Attenuation a{random.unit(), random.unit(), random.unit()};
+    return attenuation_case(a, 100 * random.unit());
+}
+
+ProbeCase random_point_light_case(PortableRandom& random) {
+    const double scale = random.decade(-2, 4);
+    const Vec3 light = random.point(scale);
+    const Vec3 point = light + scale * random.uniform(0.01, 1) * random.unit_vector();
+    const Color colour = random_colour(random, 2);
+    const Attenuation attenuation{0.1 + random.unit(), random.unit(), random.unit()};
+    return point_light_case({light, colour, attenuation}, point);
+}
+
+ProbeCase random_blinn_phong_case(PortableRandom& random) {
+    const LitScene s = random_lit(random);
+    return blinn_phong_case(random_material(random), s.point, s.light);
+}
+
+ProbeCase random_local_shading_case(PortableRandom& random) {
+    const LitScene s = random_lit(random);
+    std::vector<LightSample> lights{s.light};
+    const std::int64_t more = random.integer(0, 3);
+    for (std::int64_t i = 0; i < more; ++i) {
+        // More lights at the same point: keep the point, take the other lights.
+        LitScene other = random_lit(random);
+        while (std::abs(glm::dot(s.point.shading_normal, other.light.direction)) < 1e-3 ||
+               glm::dot(s.point.shading_normal,
+                        glm::normalize(other.light.direction + s.point.to_eye)) < 1e-3) {
+            other = random_lit(random);
+        }
+        lights.push_back(other.light);
+    }
+    return local_shading_case(random_material(random), s.point, lights);
+}
+
+// Points at scales 1e-3 to 1e7, with errors from none to 1e4 ulps of their size (and to ulps of
+// a larger scene), directions at least 0.05 off the tangent plane; case k picks the rule and
+// whether it asks spawn_ray or shadow_ray.
+ProbeCase random_leaving_case(PortableRandom& random, int k) {
+    const double scale = std::pow(10.0, static_cast<double>(random.integer(-3, 7)));
+    SurfacePoint p;
+    p.position = random.point(100 * scale);
+    const double size =
+        std::max({std::abs(p.position.x), std::abs(p.position.y), std::abs(p.position.z)});
+    const double error_scale = k % 10 == 0 ? 0.0 : std::ldexp(size, -52) * random.decade(0, 4);
+    p.error = random_colour(random, error_scale);
+    p.normal = random.unit_vector();
+    p.shading_normal = glm::normalize(p.normal + 0.3 * random.unit_vector());
+    p.to_eye = p.normal;
+    Vec3 direction = random.unit_vector();
+    while (std::abs(glm::dot(direction, p.normal)) < 0.05)
+        direction = random.unit_vector();
+    const RayOffset offset = k % 3 == 1 ? along_normal(scale * random.decade(-4, 0)) : kErrorBound;
+    if (k % 4 != 3) return spawn_case(p, direction, 1 + random.unit(), offset);
+    const double distance = k % 8 == 3 ? kInf : scale * random.unit();
+    return shadow_case(p, {direction, distance, Color(1.0)},
+                       k % 3 == 2 ? along_ray(1e-3 * scale) : offset);
+}
+
 std::vector<ProbeCase> oracle_cases() {
-    std::mt19937_64 rng(0x5EED'0006);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
     std::vector<ProbeCase> cases;
-    for (int k = 0; k < 50; ++k) {
-        cases.push_back(attenuation_case({u(rng), u(rng), u(rng)}, 100 * u(rng)));
-    }
-    for (int k = 0; k < 100; ++k) {
-        const double scale = std::pow(10.0, 6 * u(rng) - 2);
-        const Vec3 light = scale * uniform(rng, -1, 1);
-        const Vec3 point = light + scale * uniform(rng, 0.01, 1) * random_unit(rng);
-        cases.push_back(
-            point_light_case({light, uniform(rng, 0, 2), {0.1 + u(rng), u(rng), u(rng)}}, point));
-    }
-    for (int k = 0; k < 150; ++k) {
-        const LitScene s = random_lit(rng);
-        cases.push_back(blinn_phong_case(random_material(rng), s.point, s.light));
-    }
-    for (int k = 0; k < 100; ++k) {
-        const LitScene s = random_lit(rng);
-        std::vector<LightSample> lights{s.light};
-        const int more = std::uniform_int_distribution<int>(0, 3)(rng);
-        for (int i = 0; i < more; ++i) {
-            // More lights at the same point: keep the point, take the other lights.
-            LitScene other = random_lit(rng);
-            while (std::abs(glm::dot(s.point.shading_normal, other.light.direction)) < 1e-3 ||
-                   glm::dot(s.point.shading_normal,
-                            glm::normalize(other.light.direction + s.point.to_eye)) < 1e-3) {
-                other = random_lit(rng);
-            }
-            lights.push_back(other.light);
+    const auto add = [&](int count, const std::function<ProbeCase(PortableRandom&, int)>& make) {
+        for (int k = 0; k < count; ++k) {
+            PortableRandom random(kOracleSeed, cases.size());
+            cases.push_back(make(random, k));
         }
-        cases.push_back(local_shading_case(random_material(rng), s.point, lights));
-    }
-    for (int k = 0; k < 300; ++k) {
-        // Points at scales 1e-3 to 1e7, with errors from none to 1e4 ulps of their size (and to
-        // ulps of a larger scene), directions at least 0.05 off the tangent plane.
-        const double scale = std::pow(10.0, std::uniform_int_distribution<int>(-3, 7)(rng));
-        SurfacePoint p;
-        p.position = scale * uniform(rng, -100, 100);
-        const double size =
-            std::max({std::abs(p.position.x), std::abs(p.position.y), std::abs(p.position.z)});
-        const double error_scale =
-            k % 10 == 0 ? 0.0 : std::ldexp(size, -52) * std::pow(10.0, 4 * u(rng));
-        p.error = error_scale * uniform(rng, 0, 1);
-        p.normal = random_unit(rng);
-        p.shading_normal = glm::normalize(p.normal + 0.3 * random_unit(rng));
-        p.to_eye = p.normal;
-        Vec3 direction = random_unit(rng);
-        while (std::abs(glm::dot(direction, p.normal)) < 0.05)
-            direction = random_unit(rng);
-        const RayOffset offset =
-            k % 3 == 1 ? along_normal(scale * std::pow(10.0, -4 * u(rng))) : kErrorBound;
-        if (k % 4 == 3) {
-            cases.push_back(shadow_case(p,
-                                        {direction, k % 8 == 3 ? kInf : scale * u(rng), Color(1.0)},
-                                        k % 3 == 2 ? along_ray(1e-3 * scale) : offset));
-        } else {
-            cases.push_back(spawn_case(p, direction, 1 + u(rng), offset));
-        }
-    }
+    };
+    add(50, [](PortableRandom& r, int) { return random_attenuation_case(r); });
+    add(100, [](PortableRandom& r, int) { return random_point_light_case(r); });
+    add(150, [](PortableRandom& r, int) { return random_blinn_phong_case(r); });
+    add(100, [](PortableRandom& r, int) { return random_local_shading_case(r); });
+    add(300, random_leaving_case);
     return cases;
 }
 

@@ -1,0 +1,38 @@
+#include "grader/grade/checks/error_bound_origin.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+namespace raystep::grade {
+
+WideVec leaving_normal(const SurfacePoint& point, const Vec3& direction) {
+    const WideVec n = widen(point.normal);
+    return glm::dot(n, widen(direction)) < 0 ? -n : n;
+}
+
+ErrorBoundOrigin error_bound_origin(const SurfacePoint& point, const Vec3& direction) {
+    const WideVec n = leaving_normal(point, direction);
+    const Wide d = glm::dot(glm::abs(n), widen(point.error));
+    const double size = std::max({std::abs(point.position.x), std::abs(point.position.y),
+                                  std::abs(point.position.z), static_cast<double>(d)});
+    return {widen(point.position), n, d, 4 * std::ldexp(size, -52)};
+}
+
+bool within(const ErrorBoundOrigin& region, const Vec3& origin) {
+    const WideVec moved = widen(origin) - region.point;
+    const Wide along = glm::dot(moved, region.normal);
+    const Wide sideways = glm::length(moved - along * region.normal);
+    return along > region.offset && along <= region.offset + region.ulps && sideways <= region.ulps;
+}
+
+std::string region_text(const ErrorBoundOrigin& region) {
+    const double d = static_cast<double>(region.offset);
+    return "origin more than " + full_text(d) + " and at most " + full_text(d + region.ulps) +
+           " along " + full_text(narrow(region.normal)) + " from the point " +
+           full_text(narrow(region.point)) + ", within " + full_text(region.ulps) + " of that line";
+}
+
+}  // namespace raystep::grade
