@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -18,7 +19,9 @@ ErrorBoundOrigin error_bound_origin(const SurfacePoint& point, const Vec3& direc
     const Wide d = glm::dot(glm::abs(n), widen(point.error));
     const double size = std::max({std::abs(point.position.x), std::abs(point.position.y),
                                   std::abs(point.position.z), static_cast<double>(d)});
-    return {widen(point.position), n, d, 4 * std::ldexp(size, -52)};
+    // At the origin with no error, the step goes to the smallest subnormal.
+    const double ulp = std::max(std::ldexp(size, -52), std::numeric_limits<double>::denorm_min());
+    return {widen(point.position), n, d, 4 * ulp};
 }
 
 bool within(const ErrorBoundOrigin& region, const Vec3& origin) {

@@ -17,7 +17,8 @@ WideVec leaving_normal(const SurfacePoint& point, const Vec3& direction);
 
 /// Where an error-bound origin may be: with n the leaving normal and d = sum |n_i| error_i,
 /// strictly more than d along n from the point, no more than `ulps` beyond d, and within `ulps`
-/// of the line along n. `ulps` is 4 ulps of the point's largest coordinate (or of d, if larger):
+/// of the line along n. `ulps` is 4 ulps of the point's largest coordinate (or of d, if larger;
+/// or 4 subnormal steps, at the origin with no error):
 /// rounding and the one-ulp step move the origin by that much, along n and sideways, and the
 /// step's direction is not judged.
 struct ErrorBoundOrigin {

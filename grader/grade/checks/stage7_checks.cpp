@@ -3,16 +3,19 @@
 // the recursion should ask about, in order, and the colour it should add up: hand-worked chains
 // (public and hidden) and random ones, the sums and the reflections computed in long double.
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
-#include <random>
 #include <string>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
+#include "core/math/portable_random.h"
 #include "grader/grade/checks/cpp_literal.h"
+#include "grader/grade/checks/error_bound_origin.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
 #include "stages/7_recursion/recursion.h"
@@ -26,7 +29,8 @@ using probe::Json;
 constexpr double kUnit = 0x1p-53;
 const double kInf = std::numeric_limits<double>::infinity();
 
-// A ray as the judge expects it: each coordinate within its tolerance, the t range exact.
+// A ray as the judge expects it: each coordinate within its tolerance, the t range exact. Under
+// the error-bound rule the origin is judged by its region instead (error_bound_origin.h).
 struct ExpectedRay {
     WideVec origin;
     Wide origin_tolerance;
@@ -34,12 +38,15 @@ struct ExpectedRay {
     Wide direction_tolerance;
     double t_min;
     double t_max;
+    std::optional<ErrorBoundOrigin> region;
 };
 
 std::string expected_text(const ExpectedRay& e) {
-    return "origin " + full_text(narrow(e.origin)) + " (within " +
-           full_text(static_cast<double>(e.origin_tolerance)) + "), direction " +
-           full_text(narrow(e.direction)) + " (within " +
+    const std::string origin = e.region
+                                   ? region_text(*e.region)
+                                   : "origin " + full_text(narrow(e.origin)) + " (within " +
+                                         full_text(static_cast<double>(e.origin_tolerance)) + ")";
+    return origin + ", direction " + full_text(narrow(e.direction)) + " (within " +
            full_text(static_cast<double>(e.direction_tolerance)) + "), t in [" +
            full_text(e.t_min) + ", " + full_text(e.t_max) + "]";
 }
@@ -48,37 +55,48 @@ std::string expected_text(const ExpectedRay& e) {
 bool matches(const Ray& got, const ExpectedRay& e) {
     bool ok = got.t_min == e.t_min && got.t_max == e.t_max;
     for (int k = 0; k < 3; ++k) {
-        ok = ok && std::abs(got.origin[k] - e.origin[k]) <= e.origin_tolerance &&
-             std::abs(got.direction[k] - e.direction[k]) <= e.direction_tolerance;
+        ok = ok && std::abs(got.direction[k] - e.direction[k]) <= e.direction_tolerance;
+        if (!e.region) ok = ok && std::abs(got.origin[k] - e.origin[k]) <= e.origin_tolerance;
     }
-    return ok;
+    return ok && (!e.region || within(*e.region, got.origin));
 }
 
 // The mirror ray at `p`, worked out in long double: -V reflected about the shading normal,
-// normalized, leaving by the offset's rule (stage 6's spawn_ray) with no upper bound. Only the
-// two fixed-epsilon rules, whose origins are plain sums; stage 6's checks cover the third.
+// normalized, leaving by the offset's rule (stage 6's spawn_ray) with no upper bound: from the
+// point itself, epsilon along the leaving side's normal, or from the error-bound region. The
+// leaving side is that of the direction in long double; the cases keep the mirror ray well off
+// the geometric tangent plane, where no rounding can change it.
 ExpectedRay expected_reflection(const SurfacePoint& p, const RayOffset& offset) {
     const WideVec v = widen(p.to_eye);
     const WideVec n = widen(p.shading_normal);
     const WideVec d = glm::normalize(-v + 2 * glm::dot(v, n) * n);
     const Wide size = std::max({std::abs(Wide(p.position.x)), std::abs(Wide(p.position.y)),
                                 std::abs(Wide(p.position.z)), Wide(offset.epsilon)});
-    ExpectedRay e{widen(p.position), 4 * kUnit * size, d, 8 * kUnit, offset.epsilon, kInf};
-    if (offset.rule == OffsetRule::along_normal) {
-        const WideVec normal = widen(p.normal);
-        e.origin += Wide(offset.epsilon) * (glm::dot(normal, d) < 0 ? -normal : normal);
-        e.t_min = 0.0;
+    ExpectedRay e{widen(p.position), 4 * kUnit * size, d, 8 * kUnit, offset.epsilon, kInf, {}};
+    switch (offset.rule) {
+        case OffsetRule::along_ray:
+            break;
+        case OffsetRule::along_normal:
+            e.origin += Wide(offset.epsilon) * leaving_normal(p, narrow(d));
+            e.t_min = 0.0;
+            break;
+        case OffsetRule::error_bound:
+            e.region = error_bound_origin(p, narrow(d));
+            e.t_min = 0.0;
+            break;
     }
     return e;
 }
 
 std::string point_text(const SurfacePoint& p) {
-    return "point " + full_text(p.position) + " normal " + full_text(p.normal) +
-           " shading normal " + full_text(p.shading_normal) + " to eye " + full_text(p.to_eye);
+    return "point " + full_text(p.position) + " error " + full_text(p.error) + " normal " +
+           full_text(p.normal) + " shading normal " + full_text(p.shading_normal) + " to eye " +
+           full_text(p.to_eye);
 }
 
 std::string offset_text(const RayOffset& o) {
-    return std::string(offset_rule_name(o.rule)) + " " + full_text(o.epsilon);
+    return std::string(offset_rule_name(o.rule)) +
+           (o.rule == OffsetRule::error_bound ? "" : " " + full_text(o.epsilon));
 }
 
 ProbeCase reflected_ray_case(const SurfacePoint& p, const RayOffset& offset) {
@@ -221,6 +239,7 @@ SurfacePoint floor_point(const Vec3& position, const Vec3& to_eye,
 }
 
 const Ray kEye{{0, 1, 0}, {1, -1, 0}, 0.0, kInf};
+const RayOffset kErrorBound{OffsetRule::error_bound, 0.0};
 
 std::vector<ProbeCase> public_cases() {
     const RayOffset along_ray{OffsetRule::along_ray, 1e-4};
@@ -234,10 +253,14 @@ std::vector<ProbeCase> public_cases() {
         reflected_ray_case(floor_point({0, 0, 0}, {1, 1, 0}), along_ray),
         reflected_ray_case(floor_point({0, 0, 0}, {0, 1, 0}), along_ray),
         reflected_ray_case(floor_point({3, 0, -2}, {1, 2, 3}), along_normal),
+        // An exact point (no rounding error): the error bound d is 0, and only spawn_ray's
+        // one-ulp step takes the origin off the floor, to y = 2^-1074.
+        reflected_ray_case(floor_point({0, 0, 0}, {1, 1, 0}), kErrorBound),
         radiance_case({std::nullopt}, kEye, 5, along_ray),
         radiance_case({mirror(a, red, grey)}, kEye, 0, along_ray),
         radiance_case({mirror(a, red, grey), std::nullopt}, kEye, 1, along_ray),
         radiance_case({mirror(a, red, grey), mirror(b, grey, Color(0.25))}, kEye, 5, along_normal),
+        radiance_case({mirror(a, red, grey), mirror(b, grey, Color(0.25))}, kEye, 5, kErrorBound),
         radiance_case({mirror(a, red, {0.9, 0.5, 0.1}), mirror(b, grey, {0.2, 0.3, 0.4}),
                        mirror(c, {0, 0, 1}, grey), mirror(a, Color(1), grey)},
                       kEye, 2, along_ray),
@@ -252,6 +275,11 @@ std::vector<ProbeCase> hidden_cases() {
     // A bent shading normal: the mirror follows it, not the geometric normal, and the reflected
     // ray leaves below the floor, where along_normal must move the origin.
     const SurfacePoint bent = floor_point({0, 0, 0}, {1, 0.2, 0}, glm::normalize(Vec3{1, 1, 0}));
+    // On the plane 0.6 x + 0.8 y = 1e6 far from the origin, off by 1e-12 per coordinate: the
+    // error bound d = 1.4e-12 is below half an ulp of 2e6 (2.3e-10), so P + d n rounds back to P
+    // and only the one-ulp step puts the origin beyond d.
+    const SurfacePoint far_tilted{
+        {-1e6, 2e6, -1e6}, Vec3(1e-12), {0.6, 0.8, 0}, {0.6, 0.8, 0}, {0, 0.6, 0.8}};
     Script deep;
     for (int k = 0; k < 12; ++k) {
         deep.push_back(mirror(floor_point({k, 0, 0}, {-1, 1, 0}), Color(0.1 * k), Color(0.9)));
@@ -260,6 +288,11 @@ std::vector<ProbeCase> hidden_cases() {
         reflected_ray_case(bent, along_ray),
         reflected_ray_case(bent, along_normal),
         reflected_ray_case(floor_point({1e6, 0, -1e6}, {0.3, 1, -0.2}), along_normal),
+        // The bent mirror ray leaves below the floor: the error bound on the floor's underside.
+        reflected_ray_case(bent, kErrorBound),
+        reflected_ray_case(far_tilted, kErrorBound),
+        radiance_case({mirror(far_tilted, Color(0.2), Color(0.5)), mirror(a, Color(0.5), Color(1))},
+                      kEye, 4, kErrorBound),
         radiance_case({mirror(a, Color(0.3), Color(0))}, kEye, 3, along_ray),
         radiance_case({mirror(a, Color(0.3), {0, 0.5, 0}), mirror(a, Color(1), Color(0))}, kEye, 3,
                       along_ray),
@@ -273,33 +306,57 @@ std::vector<ProbeCase> hidden_cases() {
     };
 }
 
-// Random chains of up to six mirrors, anywhere from the origin to 1e4 away, with random bounces
-// (some fewer than the chain, some more), reflectances (some black) and both fixed-epsilon rules.
+// The oracle's cases, each drawn from its own generator, PortableRandom(kOracleSeed, k) for the
+// case at index k, so that `--case k` rebuilds that case alone on any platform.
+constexpr std::uint64_t kOracleSeed = 7177;
+
+// A mirror anywhere from the origin to 1e4 away, its rounding error from none to 1e3 ulps of its
+// position, seen from the normal's side; its mirror ray at least 0.05 off the geometric tangent
+// plane, so that every rule's leaving side is clear.
+SurfacePoint random_mirror_point(PortableRandom& random) {
+    SurfacePoint p;
+    p.position = random.unit_vector() * random.decade(0, 4);
+    const double size =
+        std::max({std::abs(p.position.x), std::abs(p.position.y), std::abs(p.position.z)});
+    const double error = random.unit() < 0.2 ? 0.0 : std::ldexp(size, -52) * random.decade(0, 3);
+    p.error = {random.uniform(0, error), random.uniform(0, error), random.uniform(0, error)};
+    p.normal = random.unit_vector();
+    p.shading_normal = glm::normalize(p.normal + 0.2 * random.unit_vector());
+    for (;;) {
+        p.to_eye = random.unit_vector();
+        if (glm::dot(p.to_eye, p.normal) < 0) p.to_eye = -p.to_eye;
+        const Vec3 mirrored =
+            2 * glm::dot(p.to_eye, p.shading_normal) * p.shading_normal - p.to_eye;
+        if (std::abs(glm::dot(mirrored, p.normal)) >= 0.05 * glm::length(mirrored)) return p;
+    }
+}
+
+// A random chain of up to six mirrors with random bounces (some fewer than the chain, some more),
+// reflectances (some black) and each offset rule in turn.
+ProbeCase random_radiance_case(PortableRandom& random, int k) {
+    Script script;
+    const std::int64_t length = random.integer(0, 6);
+    for (std::int64_t i = 0; i < length; ++i) {
+        const SurfacePoint p = random_mirror_point(random);
+        const Color reflectance =
+            i % 4 == 3 ? Color(0) : Color(random.unit(), random.unit(), random.unit());
+        script.push_back(mirror(p, {random.unit(), random.unit(), random.unit()}, reflectance));
+    }
+    if (k % 5 == 0) script.push_back(std::nullopt);
+    const Ray eye{random.unit_vector() * 10.0, random.unit_vector(), 0.0, kInf};
+    const OffsetRule rules[] = {OffsetRule::along_ray, OffsetRule::along_normal,
+                                OffsetRule::error_bound};
+    const OffsetRule rule = rules[k % 3];
+    const RayOffset offset{rule, rule == OffsetRule::error_bound ? 0.0 : random.decade(-6, -2)};
+    const int bounces = static_cast<int>(random.integer(0, 6));
+    return radiance_case(script, eye, bounces, offset);
+}
+
 std::vector<ProbeCase> oracle_cases() {
-    std::mt19937_64 rng(7177);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
     std::vector<ProbeCase> cases;
-    for (int k = 0; k < 200; ++k) {
-        Script script;
-        const int length = std::uniform_int_distribution<int>(0, 6)(rng);
-        for (int i = 0; i < length; ++i) {
-            SurfacePoint p;
-            p.error = Vec3(0.0);  // only the fixed-epsilon rules are asked, which never read it
-            p.position = random_unit(rng) * std::pow(10.0, 4 * unit(rng));
-            p.normal = random_unit(rng);
-            p.shading_normal = glm::normalize(p.normal + 0.2 * random_unit(rng));
-            p.to_eye = random_unit(rng);
-            if (glm::dot(p.to_eye, p.normal) < 0) p.to_eye = -p.to_eye;
-            const Color reflectance =
-                i % 4 == 3 ? Color(0) : Color(unit(rng), unit(rng), unit(rng));
-            script.push_back(mirror(p, {unit(rng), unit(rng), unit(rng)}, reflectance));
-        }
-        if (k % 5 == 0) script.push_back(std::nullopt);
-        const Ray eye{random_unit(rng) * 10.0, random_unit(rng), 0.0, kInf};
-        const RayOffset offset{k % 2 ? OffsetRule::along_normal : OffsetRule::along_ray,
-                               std::pow(10.0, -6 + 4 * unit(rng))};
-        cases.push_back(
-            radiance_case(script, eye, std::uniform_int_distribution<int>(0, 6)(rng), offset));
+    for (int k = 0; k < 300; ++k) {
+        PortableRandom random(kOracleSeed, cases.size());
+        cases.push_back(random_radiance_case(random, k));
     }
     return cases;
 }
