@@ -7,14 +7,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <limits>
-#include <random>
 #include <string>
+#include <utility>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "core/math/portable_random.h"
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
@@ -574,6 +576,8 @@ std::vector<ProbeCase> hidden_cases() {
         // An axis of length 1e-200 is still an axis: its square underflows, its direction does
         // not.
         rotation_case({0, 0, 1e-200}, 90),
+        // And one of length 1.4e200: its square overflows, its direction does not.
+        rotation_case({1e200, 0, -1e200}, 60),
         invalid_axis_case({0, 0, 0}, 0),
         exact_matrix_case("scaling", {0, -2, 0.5}, wide_scaling({0, -2, 0.5})),
         compose_case({rotate_op({2, -1, 0.5}, 33)}),
@@ -598,27 +602,42 @@ std::vector<ProbeCase> hidden_cases() {
         // Behind the origin: a miss.
         transformed_sphere_case("radii (1, 1, 2) at (0, 0, -5)", {{0, 0, 0}, {0, 0, 1}}, unit,
                                 ellipsoid),
+        // t_min past the near side (t = 3) but short of the far side (t = 7): the far side.
+        transformed_sphere_case("radii (1, 1, 2) at (0, 0, -5)", {{0, 0, 0}, {0, 0, -1}, 4, kInf},
+                                unit, ellipsoid),
+        // t_min past both sides: a miss.
+        transformed_sphere_case("radii (1, 1, 2) at (0, 0, -5)", {{0, 0, 0}, {0, 0, -1}, 7.5, kInf},
+                                unit, ellipsoid),
     };
 }
 
+// The oracle's cases, each drawn from its own generator, PortableRandom(kOracleSeed, k) for the
+// case at index k, so that `--case k` rebuilds that case alone on any platform; the cases that
+// share an op chain (a ray, a point and a normal under it) are drawn from their first one's.
+constexpr std::uint64_t kOracleSeed = 0x5EED'0005;
+
 // A chain of 1 to 6 random ops: offsets up to 1e3, any axis and angle, scale factors from 1e-2
 // to 1e2 in magnitude, some negative.
-std::vector<TransformOp> random_ops(std::mt19937_64& rng) {
-    std::uniform_real_distribution<double> u(0.0, 1.0);
-    const int count = std::uniform_int_distribution<int>(1, 6)(rng);
+std::vector<TransformOp> random_ops(PortableRandom& random) {
+    const std::int64_t count = random.integer(1, 6);
     std::vector<TransformOp> ops;
-    for (int k = 0; k < count; ++k) {
-        switch (std::uniform_int_distribution<int>(0, 2)(rng)) {
-            case 0:
-                ops.push_back(translate_op(std::pow(10.0, 4 * u(rng) - 1) * uniform(rng, -1, 1)));
+    for (std::int64_t k = 0; k < count; ++k) {
+        switch (random.integer(0, 2)) {
+            case 0: {
+                const double size = random.decade(-1, 3);
+                ops.push_back(translate_op(size * random.point(1)));
                 break;
-            case 1:
-                ops.push_back(rotate_op(uniform(rng, -1, 1), 800 * u(rng) - 400));
+            }
+            case 1: {
+                const Vec3 axis = random.point(1);
+                ops.push_back(rotate_op(axis, random.uniform(-400, 400)));
                 break;
+            }
             default: {
                 Vec3 factors;
                 for (int i = 0; i < 3; ++i) {
-                    factors[i] = std::pow(10.0, 4 * u(rng) - 2) * (u(rng) < 0.2 ? -1 : 1);
+                    const double size = random.decade(-2, 2);
+                    factors[i] = random.unit() < 0.2 ? -size : size;
                 }
                 ops.push_back(scale_op(factors));
             }
@@ -627,49 +646,72 @@ std::vector<TransformOp> random_ops(std::mt19937_64& rng) {
     return ops;
 }
 
+ProbeCase random_rotation_case(PortableRandom& random) {
+    const Vec3 axis = random.unit_vector() * (0.01 + 10 * random.unit());
+    return rotation_case(axis, random.uniform(-720, 720));
+}
+
+// A ray, a point and a normal under one op chain.
+std::vector<ProbeCase> random_frame_cases(PortableRandom& random) {
+    const std::vector<TransformOp> ops = random_ops(random);
+    const Transform t = transform_of(ops);
+    const std::string name = ops_text(ops);
+    const Vec3 origin = random.point(100);
+    const Vec3 direction = random.point(1);
+    const double t_min = random.unit();
+    const Ray ray{origin, direction, t_min, 10 + 100 * random.unit()};
+    const Vec3 point = random.point(10);
+    const Vec3 normal = random.unit_vector();
+    return {ray_to_object_case(name, t, ray), point_to_world_case(name, t, point),
+            normal_to_world_case(name, t, normal)};
+}
+
+// A sphere, a point on it and a ray from outside aimed at that point at least 17 degrees off
+// grazing (so that the point is where it enters); case k % 5 == 3 from inside, k % 5 == 4
+// passing by; every other one with a world direction that is not unit length.
+ProbeCase random_transformed_sphere_case(PortableRandom& random, int k) {
+    const std::vector<TransformOp> ops = random_ops(random);
+    const Transform t = transform_of(ops);
+    const Vec3 center = random.point(1);
+    const Sphere sphere{center, 0.5 + 1.5 * random.unit()};
+    const Vec3 normal = random.unit_vector();
+    Vec3 leaving = random.unit_vector();
+    if (glm::dot(leaving, normal) < 0.3) leaving = glm::normalize(leaving + 2.0 * normal);
+    const double distance = 0.5 + 5 * random.unit();
+    Vec3 origin = sphere.center + sphere.radius * normal + distance * sphere.radius * leaving;
+    const Vec3 towards = -leaving;
+    if (k % 5 == 3) origin = sphere.center + 0.8 * sphere.radius * random.unit_vector();
+    if (k % 5 == 4) {
+        // The line passes 1.2 to 2 radii from the centre.
+        const Vec3 side = glm::normalize(glm::cross(leaving, random.unit_vector()));
+        const double miss = 1.2 + 0.8 * random.unit();
+        origin = sphere.center + miss * sphere.radius * side + 5 * sphere.radius * leaving;
+    }
+    const Vec3 world_origin = Vec3(t.matrix * Vec4(origin, 1.0));
+    Vec3 world_direction = Vec3(t.matrix * Vec4(towards, 0.0));
+    const double speed = k % 2 ? 1.0 : 0.1 + 10 * random.unit();
+    world_direction *= speed / glm::length(world_direction);
+    return transformed_sphere_case(ops_text(ops), {world_origin, world_direction}, sphere, t);
+}
+
 std::vector<ProbeCase> oracle_cases() {
-    std::mt19937_64 rng(0x5EED'0005);
-    std::uniform_real_distribution<double> u(0.0, 1.0);
     std::vector<ProbeCase> cases;
     for (int k = 0; k < 100; ++k) {
-        cases.push_back(
-            rotation_case(random_unit(rng) * (0.01 + 10 * u(rng)), 1440 * u(rng) - 720));
-    }
-    for (int k = 0; k < 200; ++k)
-        cases.push_back(compose_case(random_ops(rng)));
-    for (int k = 0; k < 100; ++k) {
-        const std::vector<TransformOp> ops = random_ops(rng);
-        const Transform t = transform_of(ops);
-        const std::string name = ops_text(ops);
-        const Ray ray{uniform(rng, -100, 100), uniform(rng, -1, 1), u(rng), 10 + 100 * u(rng)};
-        cases.push_back(ray_to_object_case(name, t, ray));
-        cases.push_back(point_to_world_case(name, t, uniform(rng, -10, 10)));
-        cases.push_back(normal_to_world_case(name, t, random_unit(rng)));
+        PortableRandom random(kOracleSeed, cases.size());
+        cases.push_back(random_rotation_case(random));
     }
     for (int k = 0; k < 200; ++k) {
-        // A sphere, a point on it and a ray from outside aimed at that point at least 17 degrees
-        // off grazing (so that the point is where it enters); some from inside, some passing by.
-        const std::vector<TransformOp> ops = random_ops(rng);
-        const Transform t = transform_of(ops);
-        const Sphere sphere{uniform(rng, -1, 1), 0.5 + 1.5 * u(rng)};
-        const Vec3 normal = random_unit(rng);
-        Vec3 leaving = random_unit(rng);
-        if (glm::dot(leaving, normal) < 0.3) leaving = glm::normalize(leaving + 2.0 * normal);
-        Vec3 origin =
-            sphere.center + sphere.radius * normal + (0.5 + 5 * u(rng)) * sphere.radius * leaving;
-        const Vec3 towards = -leaving;
-        if (k % 5 == 3) origin = sphere.center + 0.8 * sphere.radius * random_unit(rng);
-        if (k % 5 == 4) {
-            // The line passes 1.2 to 2 radii from the centre.
-            const Vec3 side = glm::normalize(glm::cross(leaving, random_unit(rng)));
-            origin = sphere.center + (1.2 + 0.8 * u(rng)) * sphere.radius * side +
-                     5 * sphere.radius * leaving;
-        }
-        const Vec3 world_origin = Vec3(t.matrix * Vec4(origin, 1.0));
-        Vec3 world_direction = Vec3(t.matrix * Vec4(towards, 0.0));
-        world_direction *= (k % 2 ? 1.0 : 0.1 + 10 * u(rng)) / glm::length(world_direction);
-        cases.push_back(
-            transformed_sphere_case(ops_text(ops), {world_origin, world_direction}, sphere, t));
+        PortableRandom random(kOracleSeed, cases.size());
+        cases.push_back(compose_case(random_ops(random)));
+    }
+    for (int k = 0; k < 100; ++k) {
+        PortableRandom random(kOracleSeed, cases.size());
+        for (ProbeCase& c : random_frame_cases(random))
+            cases.push_back(std::move(c));
+    }
+    for (int k = 0; k < 200; ++k) {
+        PortableRandom random(kOracleSeed, cases.size());
+        cases.push_back(random_transformed_sphere_case(random, k));
     }
     return cases;
 }
