@@ -2,7 +2,6 @@
 // build/release/bin/raystep_stage5_tests directly to see every failure in full.
 
 #include <cmath>
-#include <random>
 #include <stdexcept>
 #include <vector>
 
@@ -10,6 +9,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "core/math/portable_random.h"
 #include "core/testing/catch.h"
 #include "core/testing/vec3_matchers.h"
 #include "stages/5_transforms/transform.h"
@@ -75,12 +75,11 @@ TEST_CASE("rotation: the axis need not be unit length", "[stage5]") {
 }
 
 TEST_CASE("rotation: agrees with glm::rotate about random axes", "[stage5]") {
-    std::mt19937_64 rng(5);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
     for (int k = 0; k < 200; ++k) {
-        const Vec3 axis{u(rng), u(rng), u(rng)};
-        const double degrees = 360.0 * u(rng);
-        const Vec3 p{u(rng), u(rng), u(rng)};
+        PortableRandom random(5, k);  // case k, the same on every platform
+        const Vec3 axis = random.point(1.0);
+        const double degrees = random.uniform(-360.0, 360.0);
+        const Vec3 p = random.point(1.0);
         CAPTURE(k, axis.x, axis.y, axis.z, degrees);
         const Mat4 ours = rotation(axis, degrees);
         const Mat4 theirs = glm::rotate(Mat4(1.0), glm::radians(degrees), axis);
@@ -123,25 +122,28 @@ TEST_CASE("compose: translate then rotate turns the object in place, then moves 
 }
 
 TEST_CASE("compose: the inverse undoes the matrix", "[stage5]") {
-    std::mt19937_64 rng(55);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    std::uniform_real_distribution<double> factor(0.25, 4.0);
     for (int k = 0; k < 200; ++k) {
+        PortableRandom random(55, k);  // case k, the same on every platform
         std::vector<TransformOp> ops;
         for (int n = 0; n < 5; ++n) {
             switch ((k + n) % 3) {
                 case 0:
-                    ops.push_back(translate_op({u(rng), u(rng), u(rng)}));
+                    ops.push_back(translate_op(random.point(1.0)));
                     break;
-                case 1:
-                    ops.push_back(rotate_op({u(rng), u(rng), u(rng)}, 180.0 * u(rng)));
+                case 1: {
+                    const Vec3 axis = random.point(1.0);
+                    ops.push_back(rotate_op(axis, random.uniform(-180.0, 180.0)));
                     break;
-                default:
-                    ops.push_back(scale_op({factor(rng), factor(rng), factor(rng)}));
+                }
+                default: {
+                    const double x = random.uniform(0.25, 4.0);
+                    const double y = random.uniform(0.25, 4.0);
+                    ops.push_back(scale_op({x, y, random.uniform(0.25, 4.0)}));
+                }
             }
         }
         const Transform t = compose(ops);
-        const Vec3 p{u(rng), u(rng), u(rng)};
+        const Vec3 p = random.point(1.0);
         CAPTURE(k);
         CHECK_THAT(apply_to_point(t.inverse, apply_to_point(t.matrix, p)), IsNear(p, 1e-12));
         CHECK_THAT(apply_to_point(t.matrix, apply_to_point(t.inverse, p)), IsNear(p, 1e-12));
@@ -224,12 +226,11 @@ TEST_CASE("intersect_transformed_sphere: the normal is the ellipsoid's analytic 
     const Vec3 centre{1, -2, 0.5};
     const Transform t = compose({translate_op(centre), scale_op(radii)});
     const Sphere unit{{0, 0, 0}, 1.0};
-    std::mt19937_64 rng(17);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
     int hits = 0;
     for (int k = 0; k < 500; ++k) {
-        const Vec3 origin = centre + 10.0 * glm::normalize(Vec3(u(rng), u(rng), u(rng)));
-        const Vec3 target = centre + 0.5 * radii * Vec3(u(rng), u(rng), u(rng));
+        PortableRandom random(17, k);  // case k, the same on every platform
+        const Vec3 origin = centre + 10.0 * random.unit_vector();
+        const Vec3 target = centre + 0.5 * radii * random.point(1.0);
         const Ray ray{origin, glm::normalize(target - origin)};
         const std::optional<Hit> hit = intersect_transformed_sphere(ray, unit, t);
         CAPTURE(k);
@@ -241,6 +242,28 @@ TEST_CASE("intersect_transformed_sphere: the normal is the ellipsoid's analytic 
         CHECK_THAT(hit->normal, IsNear(glm::normalize(gradient), 1e-12));
     }
     CHECK(hits == 500);
+}
+
+TEST_CASE("intersect_transformed_sphere: hits only within [t_min, t_max] of the world ray",
+          "[stage5]") {
+    // The unit sphere stretched to height 2 in z and moved to z = -5: down the z axis from the
+    // origin, the ray enters at t = 3 and leaves at t = 7. t counts along the world ray in
+    // both frames (ray_to_object keeps t_min and t_max), so the range is the world ray's.
+    const Transform t = compose({translate_op({0, 0, -5}), scale_op({1, 1, 2})});
+    const Sphere unit{{0, 0, 0}, 1.0};
+    const std::optional<Hit> near =
+        intersect_transformed_sphere(Ray{{0, 0, 0}, {0, 0, -1}}, unit, t);
+    REQUIRE(near);
+    CHECK(near->t == Approx(3.0).epsilon(kTight));
+    // From t = 4 on, the near side is behind: the far side, whose outward normal is -z.
+    const std::optional<Hit> far =
+        intersect_transformed_sphere(Ray{{0, 0, 0}, {0, 0, -1}, 4.0, 100.0}, unit, t);
+    REQUIRE(far);
+    CHECK(far->t == Approx(7.0).epsilon(kTight));
+    CHECK_THAT(far->normal, IsNear(Vec3(0, 0, -1), kTight));
+    // Past both sides, and short of the first: misses.
+    CHECK_FALSE(intersect_transformed_sphere(Ray{{0, 0, 0}, {0, 0, -1}, 7.5, 100.0}, unit, t));
+    CHECK_FALSE(intersect_transformed_sphere(Ray{{0, 0, 0}, {0, 0, -1}, 0.0, 2.5}, unit, t));
 }
 
 TEST_CASE("intersect_transformed_sphere: a ray past the ellipsoid misses", "[stage5]") {

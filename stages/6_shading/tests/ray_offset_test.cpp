@@ -7,10 +7,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <random>
 
 #include <glm/geometric.hpp>
 
+#include "core/math/portable_random.h"
 #include "core/testing/catch.h"
 #include "core/testing/vec3_matchers.h"
 #include "stages/6_shading/shading.h"
@@ -33,12 +33,6 @@ const Vec3 kDown{0, 0.6, -0.8};  // leaves by the back
 
 RayOffset rule(OffsetRule r, double epsilon) {
     return {r, epsilon};
-}
-
-// Random unit vectors and points, seeded so that a failure can be replayed.
-Vec3 random_unit(std::mt19937_64& rng) {
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    return glm::normalize(Vec3{u(rng), u(rng), u(rng)});
 }
 
 }  // namespace
@@ -108,23 +102,21 @@ TEST_CASE("spawn_ray: error_bound starts strictly beyond the error box, moves ~1
     // no farther than d plus a few ulps of the point (no light leaks through thin walls), and
     // sideways (perpendicular to n) it moves only by rounding, a few ulps.
     // Errors here are 1 to 64 units of 2^-52 of the point's size, as a renderer's are.
-    std::mt19937_64 rng(6);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    std::uniform_int_distribution<int> exponent(-3, 6);
     for (int k = 0; k < 1000; ++k) {
-        const double scale = std::pow(10.0, exponent(rng));
+        PortableRandom random(6, k);  // case k, the same on every platform
+        const double scale = std::pow(10.0, static_cast<double>(random.integer(-3, 6)));
         SurfacePoint point;
-        point.position =
-            scale * Vec3{200 * unit(rng) - 100, 200 * unit(rng) - 100, 200 * unit(rng) - 100};
+        point.position = random.point(100 * scale);
         const double size = std::max(
             {std::abs(point.position.x), std::abs(point.position.y), std::abs(point.position.z)});
         const double ulp_of_size = std::ldexp(size, -52);
-        point.error =
-            ulp_of_size * Vec3{1 + 63 * unit(rng), 1 + 63 * unit(rng), 1 + 63 * unit(rng)};
-        point.normal = random_unit(rng);
+        const double x = random.uniform(1, 64);
+        const double y = random.uniform(1, 64);
+        point.error = ulp_of_size * Vec3{x, y, random.uniform(1, 64)};
+        point.normal = random.unit_vector();
         point.shading_normal = point.normal;
         point.to_eye = point.normal;
-        const Vec3 direction = random_unit(rng);
+        const Vec3 direction = random.unit_vector();
         CAPTURE(k, point.position, point.error, point.normal, direction);
 
         const Ray ray = spawn_ray(point, direction, 5.0, rule(OffsetRule::error_bound, 0.0));

@@ -181,6 +181,22 @@ TEST_CASE("blinn_phong: shininess 0 makes max(N . H, 0)^0 = 1, also where N . H 
     CHECK_THAT(matte, IsNear(Color(0.6), kTight));
 }
 
+TEST_CASE("blinn_phong: no highlight where N . H < 0, whatever the shininess", "[stage6]") {
+    // The eye behind an interpolated normal N = (0.8, 0, 0.6) on the floor (the geometric normal
+    // (0, 0, 1) faces V = (-0.96, 0, 0.28)): L = (-0.28, 0, 0.96) gives N . L = 0.352 > 0, but
+    // N . (L + V) = 0.8 (-1.24) + 0.6 (1.24) = -0.248, so N . H < 0 and max(N . H, 0)^s = 0.
+    // Only the diffuse term is left: 0.5 * 0.352 = 0.176. Without the max, (N . H)^2 would add
+    // a highlight and (N . H)^0.5 would be NaN.
+    SurfacePoint point = on_floor({-0.96, 0, 0.28});
+    point.shading_normal = {0.8, 0, 0.6};
+    const LightSample light = white_light_from({-0.28, 0, 0.96});
+    for (const double shininess : {2.0, 0.5}) {
+        CAPTURE(shininess);
+        const Color got = blinn_phong(material(Color(0.5), Color(1.0), shininess), point, light);
+        CHECK_THAT(got, IsNear(Color(0.176), kTight));
+    }
+}
+
 TEST_CASE("local_shading: ambient + emission + each visible light's term", "[stage6]") {
     // A = (0.1, 0.2, 0.3), E = (0.2, 0, 0), Kd = 0.5, Ks = 0.
     // Light 1 straight above: N . L = 1, term 0.5 * 1 * (1, 1, 1) = (0.5, 0.5, 0.5).
