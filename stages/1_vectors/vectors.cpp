@@ -40,8 +40,9 @@ Vec3 reflect(const Vec3& d, const Vec3& n) {
 }
 
 Vec3 project_onto(const Vec3& v, const Vec3& onto) {
-    // The part of v along `onto`: (v . o^) o^ with o^ = onto / |onto|. Throw std::domain_error
-    // for a zero `onto`.
+    // The part of v along `onto`: (v . o^) o^ with o^ = onto / |onto|, which works for tiny and
+    // huge `onto` too (onto . onto would underflow or overflow). Throw std::domain_error for a
+    // zero `onto`.
     RAYSTEP_TODO(1, "project_onto", "Projection");
 }
 

@@ -27,7 +27,8 @@ Vec3 normalize(const Vec3& v);
 /// The length of d is kept; n must be unit length.
 Vec3 reflect(const Vec3& d, const Vec3& n);
 
-/// The projection of v onto the line along `onto`: ((v . onto) / (onto . onto)) onto.
+/// The projection of v onto the line along `onto`: ((v . onto) / (onto . onto)) onto, for every
+/// finite nonzero `onto`, tiny and huge ones too (whose onto . onto underflows or overflows).
 /// Throws std::domain_error when `onto` is zero.
 Vec3 project_onto(const Vec3& v, const Vec3& onto);
 
@@ -45,8 +46,10 @@ struct Frame {
 
 /// The lecture's frame from a and b: w = a / |a|, u = (b x w) / |b x w|, v = w x u.
 /// For a camera, a = lookfrom - lookat and b = up, so u points right, v up, w backwards.
-/// Throws std::domain_error when a or b is zero, or when b is parallel to a: when
-/// |b x w| <= kParallelSine |b| (see core/math/parallel_sine.h for why rounding makes "exactly
+/// Throws std::domain_error when a or b is zero or has an infinite or NaN component (no
+/// direction, as for normalize), or when b is parallel to a: when
+/// |b x w| <= kParallelSine |b|, a test relative to |b|, so that a tiny b across a is a frame and
+/// a huge b nearly along it is not (see core/math/parallel_sine.h for why rounding makes "exactly
 /// zero" the wrong test).
 Frame orthonormal_frame(const Vec3& a, const Vec3& b);
 

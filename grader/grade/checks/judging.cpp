@@ -66,6 +66,16 @@ Vec3 narrow(const WideVec& v) {
     return {static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)};
 }
 
+Vec3 uniform(PortableRandom& random, double low, double high) {
+    const double x = random.uniform(low, high);
+    const double y = random.uniform(low, high);
+    return {x, y, random.uniform(low, high)};
+}
+
+Vec3 random_unit(PortableRandom& random) {
+    return random.unit_vector();
+}
+
 Vec3 uniform(std::mt19937_64& rng, double low, double high) {
     std::uniform_real_distribution<double> u(low, high);
     return {u(rng), u(rng), u(rng)};

@@ -7,6 +7,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/math/portable_random.h"
 #include "grader/grade/check_definition.h"
 
 namespace raystep::grade {
@@ -56,8 +57,13 @@ struct WorkloadRun {
 std::vector<WorkloadTime> timed_workloads(const std::vector<WorkloadRun>& runs,
                                           const std::string& call, int repeat);
 
-/// Random inputs: each component uniform in [low, high); a direction uniform on the sphere (by
-/// rejection from the cube, away from the origin).
+/// Random inputs from a case's own generator, the same on every platform: each component
+/// uniform in [low, high); a direction uniform on the sphere.
+Vec3 uniform(PortableRandom& random, double low, double high);
+Vec3 random_unit(PortableRandom& random);
+
+/// The same from a std::mt19937_64 through std::uniform_real_distribution, whose output differs
+/// between standard libraries: only for the checks not yet drawn from PortableRandom.
 Vec3 uniform(std::mt19937_64& rng, double low, double high);
 Vec3 random_unit(std::mt19937_64& rng);
 

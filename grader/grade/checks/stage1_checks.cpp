@@ -2,8 +2,12 @@
 // long-double arithmetic on random vectors of every magnitude.
 
 #include <cmath>
-#include <random>
+#include <cstdint>
 
+#include <glm/geometric.hpp>
+
+#include "core/math/parallel_sine.h"
+#include "core/math/portable_random.h"
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
@@ -44,8 +48,9 @@ ProbeCase throws_domain_error(const std::string& call, std::initializer_list<Vec
     return vector_case(call, args, [](const ProbeAnswer& a) { return threw(a, "domain_error"); });
 }
 
-// orthonormal_frame(a, b) against the frame worked out by hand.
-ProbeCase frame_case(const Vec3& a, const Vec3& b, const Vec3& u, const Vec3& v, const Vec3& w) {
+// orthonormal_frame(a, b) against the expected frame, each component within `tolerance`.
+ProbeCase frame_case(const Vec3& a, const Vec3& b, const Vec3& u, const Vec3& v, const Vec3& w,
+                     double tolerance = 4 * kUnit) {
     return vector_case("orthonormal_frame", {a, b}, [=](const ProbeAnswer& answer) {
         if (answer.kind != ProbeAnswer::Kind::result) return wrong("a frame", "");
         const Vec3 got[3] = {probe::vec3_from(answer.value.at("u")),
@@ -54,8 +59,9 @@ ProbeCase frame_case(const Vec3& a, const Vec3& b, const Vec3& u, const Vec3& v,
         const Vec3 expected[3] = {u, v, w};
         for (int k = 0; k < 3; ++k) {
             for (int c = 0; c < 3; ++c) {
-                if (!(std::abs(got[k][c] - expected[k][c]) <= 4 * kUnit)) {
-                    return wrong("u " + full_text(u) + " v " + full_text(v) + " w " + full_text(w),
+                if (!(std::abs(got[k][c] - expected[k][c]) <= tolerance)) {
+                    return wrong("u " + full_text(u) + " v " + full_text(v) + " w " + full_text(w) +
+                                     " (within " + full_text(tolerance) + ")",
                                  "u " + full_text(got[0]) + " v " + full_text(got[1]) + " w " +
                                      full_text(got[2]));
                 }
@@ -87,49 +93,78 @@ std::vector<ProbeCase> public_cases() {
     };
 }
 
+// v / |v| worked out in long double, then rounded: what normalize must return within a few ulps.
+Vec3 wide_unit(const Vec3& v) {
+    const Wide length = std::sqrt(Wide(v.x) * v.x + Wide(v.y) * v.y + Wide(v.z) * v.z);
+    return {static_cast<double>(v.x / length), static_cast<double>(v.y / length),
+            static_cast<double>(v.z / length)};
+}
+
 // The hidden ones: the contract's edge cases a student's own tests may not reach.
 std::vector<ProbeCase> hidden_cases() {
     const double inf = HUGE_VAL;
+    const double r2 = std::sqrt(0.5);
     return {
         exact_number("length", {{1e-320, 0, 0}}, 1e-320),
         exact_number("length", {{1e300, 1e300, 1e300}}, std::sqrt(3.0) * 1e300, 4 * kUnit * 2e300),
         throws_domain_error("normalize", {{inf, 0, 0}}),
         throws_domain_error("normalize", {{std::nan(""), 1, 0}}),
         exact_vector("normalize", {{-2e250, 0, 0}}, {-1, 0, 0}, 2 * kUnit),
+        // Subnormal vectors are finite and nonzero: 1 / |v| overflows, v / |v| does not.
+        exact_vector("normalize", {{5e-324, 0, 0}}, {1, 0, 0}, 2 * kUnit),
+        exact_vector("normalize", {{-3e-320, 4e-320, 1e-321}}, wide_unit({-3e-320, 4e-320, 1e-321}),
+                     2 * kUnit),
         exact_vector("reflect", {{3, -4, 5}, {0, 0, 1}}, {3, -4, -5}),
         throws_domain_error("perpendicular_to", {{1, 2, 3}, {0, 0, 0}}),
+        // A tiny or huge `onto` is not zero: onto . onto underflows to 0 or overflows to inf, its
+        // unit vector does neither.
+        exact_vector("project_onto", {{2, 3, 4}, {0, 1e-200, 0}}, {0, 3, 0}, 2 * kUnit),
+        exact_vector("project_onto", {{2, 3, 4}, {0, -1e200, 0}}, {0, 3, 0}, 2 * kUnit),
+        exact_vector("perpendicular_to", {{2, 3, 4}, {0, 0, 3e-190}}, {2, 3, 0}, 8 * kUnit),
         throws_domain_error("orthonormal_frame", {{0, 0, 0}, {0, 1, 0}}),
+        throws_domain_error("orthonormal_frame", {{std::nan(""), 0, 1}, {0, 1, 0}}),
+        throws_domain_error("orthonormal_frame", {{0, 0, 1}, {0, inf, 0}}),
         throws_domain_error("orthonormal_frame", {{1, 1, 0}, {-2, -2, 0}}),
         // Parallel, but w = a / |a| is rounded, so b x w is a few 1e-16, not zero
         throws_domain_error("orthonormal_frame", {{1, 2, 3}, {2, 4, 6}}),
         throws_domain_error("orthonormal_frame", {{0.1, 0.2, 0.3}, {-3, -6, -9}}),
         frame_case({0, 0, 1e-150}, {0, 1e150, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}),
+        // "Parallel" is relative to |b|: a short b at right angles to a is no more parallel than
+        // a long one, and a long b whose sine with a is 1e-10 is parallel though |b x w| is 1e-4.
+        frame_case({0, 0, 1}, {0, 1e-10, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}),
+        frame_case({1e250, 0, 0}, {0, 0, 1e-250}, {0, 1, 0}, {0, 0, 1}, {1, 0, 0}),
+        frame_case({0, 0, 1}, {1e300, 1e300, 0}, {r2, -r2, 0}, {r2, r2, 0}, {0, 0, 1}),
+        throws_domain_error("orthonormal_frame", {{0, 0, 1}, {1e-4, 0, 1e6}}),
+        throws_domain_error("orthonormal_frame", {{1, 2, 3}, {2e100, 4e100, 6e100}}),
+        throws_domain_error("orthonormal_frame", {{0, 0, 1}, {1e-210, 0, 1e-200}}),
     };
 }
 
 // Random vectors whose components span 1e-100 to 1e100 in magnitude, either sign.
-Vec3 random_vector(std::mt19937_64& rng) {
-    std::uniform_real_distribution<double> mantissa(1.0, 10.0);
-    std::uniform_int_distribution<int> exponent(-100, 100);
-    std::bernoulli_distribution negative(0.5);
+Vec3 random_vector(PortableRandom& random) {
     Vec3 v;
     for (int k = 0; k < 3; ++k) {
-        v[k] = mantissa(rng) * std::pow(10.0, exponent(rng)) * (negative(rng) ? -1.0 : 1.0);
+        const double mantissa = random.uniform(1.0, 10.0);
+        const double exponent = static_cast<double>(random.integer(-100, 100));
+        v[k] = mantissa * std::pow(10.0, exponent) * (random.integer(0, 1) ? -1.0 : 1.0);
     }
     return v;
 }
 
-using Wide = long double;
+// Each kind of random case draws from its own seed, case k from PortableRandom(seed, k), so that
+// one case is rebuilt without the others.
+constexpr std::uint64_t kProductSeed = 1701;
+constexpr std::uint64_t kLengthSeed = 1702;
+constexpr std::uint64_t kFrameSeed = 1703;
 
 // dot and cross against long double, each within a few roundings of the sizes of its terms:
 // cancellation can take every digit, so the bound is relative to sum |a_i b_i|, not to the answer.
-std::vector<ProbeCase> oracle_cases() {
-    std::mt19937_64 rng(1701);
-    std::vector<ProbeCase> cases;
+void add_product_cases(std::vector<ProbeCase>& cases) {
     for (int k = 0; k < 200; ++k) {
+        PortableRandom random(kProductSeed, k);
         // Components within 1e±50 of each other, so that products stay in range.
-        Vec3 a = random_vector(rng) * 1e-50;
-        Vec3 b = random_vector(rng) * 1e-50;
+        const Vec3 a = random_vector(random) * 1e-50;
+        const Vec3 b = random_vector(random) * 1e-50;
         const Wide exact = Wide(a.x) * b.x + Wide(a.y) * b.y + Wide(a.z) * b.z;
         const Wide size =
             std::abs(Wide(a.x) * b.x) + std::abs(Wide(a.y) * b.y) + std::abs(Wide(a.z) * b.z);
@@ -143,16 +178,69 @@ std::vector<ProbeCase> oracle_cases() {
             (std::abs(Wide(b.x)) + std::abs(Wide(b.y)) + std::abs(Wide(b.z))));
         cases.push_back(exact_vector("cross", {a, b}, c, cross_size));
     }
+}
+
+// length and normalize at every magnitude, squares far beyond a double's range: they must not
+// overflow or underflow.
+void add_length_cases(std::vector<ProbeCase>& cases) {
     for (int k = 0; k < 200; ++k) {
-        // Every magnitude, squares far beyond a double's range: length must not overflow.
-        const Vec3 v = random_vector(rng) * (k % 2 ? 1e150 : 1e-150);
+        PortableRandom random(kLengthSeed, k);
+        const Vec3 v = random_vector(random) * (k % 2 ? 1e150 : 1e-150);
         const Wide exact = std::sqrt(Wide(v.x) * v.x + Wide(v.y) * v.y + Wide(v.z) * v.z);
         cases.push_back(exact_number("length", {v}, static_cast<double>(exact),
                                      static_cast<double>(3 * kUnit * exact)));
-        const Vec3 unit{static_cast<double>(v.x / exact), static_cast<double>(v.y / exact),
-                        static_cast<double>(v.z / exact)};
-        cases.push_back(exact_vector("normalize", {v}, unit, 4 * kUnit));
+        cases.push_back(exact_vector("normalize", {v}, wide_unit(v), 4 * kUnit));
     }
+}
+
+// A direction at `sine` from the unit vector w (a sine below 1 leaves the cosine's sign random).
+WideVec tilted(PortableRandom& random, const WideVec& w, Wide sine) {
+    WideVec side;
+    do {
+        side = widen(random.unit_vector());
+        side -= glm::dot(side, w) * w;
+    } while (glm::length(side) < Wide(0.1));
+    side /= glm::length(side);
+    const Wide cosine = std::sqrt(1 - sine * sine) * (random.integer(0, 1) ? -1 : 1);
+    return cosine * w + sine * side;
+}
+
+// orthonormal_frame on a and b of unrelated magnitudes (1e-100 to 1e100 each), against the frame
+// worked out in long double. A third are well apart (sine 0.01 to 1); a third nearly parallel
+// but a hundredfold above kParallelSine, a frame; a third a hundredfold below it, an error. The
+// frame inherits w's rounding, a few ulps of |b|, over |b x w|: its tolerance is 8 ulps / sine.
+void add_frame_cases(std::vector<ProbeCase>& cases) {
+    for (int k = 0; k < 300; ++k) {
+        PortableRandom random(kFrameSeed, k);
+        const Vec3 direction = random.unit_vector();
+        const Vec3 a = direction * random.decade(-100, 100);
+        const WideVec w_wide = widen(direction);
+        const Wide sine = k % 3 == 0   ? Wide(random.decade(-2, 0))
+                          : k % 3 == 1 ? Wide(kParallelSine) * Wide(random.decade(2, 4))
+                                       : Wide(kParallelSine) * Wide(random.decade(-4, -2));
+        // One draw per statement: the order of two draws in one expression is the compiler's.
+        const WideVec b_direction = tilted(random, w_wide, sine);
+        const WideVec b_wide = b_direction * Wide(random.decade(-100, 100));
+        const Vec3 b = narrow(b_wide);
+        if (k % 3 == 2) {
+            cases.push_back(throws_domain_error("orthonormal_frame", {a, b}));
+            continue;
+        }
+        // The expectation from the rounded inputs, as the student's code sees them.
+        const WideVec w = widen(a) / glm::length(widen(a));
+        const WideVec b_cross_w = glm::cross(widen(b), w);
+        const Wide actual_sine = glm::length(b_cross_w) / glm::length(widen(b));
+        const WideVec u = b_cross_w / glm::length(b_cross_w);
+        cases.push_back(frame_case(a, b, narrow(u), narrow(glm::cross(w, u)), narrow(w),
+                                   static_cast<double>(8 * kUnit / actual_sine)));
+    }
+}
+
+std::vector<ProbeCase> oracle_cases() {
+    std::vector<ProbeCase> cases;
+    add_product_cases(cases);
+    add_length_cases(cases);
+    add_frame_cases(cases);
     return cases;
 }
 
@@ -165,8 +253,8 @@ std::vector<CheckDefinition> stage1_checks() {
         case_check("stage1.hidden", 1, "unit", "vector functions on the contract's edge cases",
                    hidden_cases),
         case_check("stage1.oracle", 1, "oracle",
-                   "dot, cross, length and normalize against long double on random vectors of "
-                   "every magnitude",
+                   "dot, cross, length, normalize and orthonormal_frame against long double on "
+                   "random vectors of every magnitude",
                    oracle_cases),
     };
 }

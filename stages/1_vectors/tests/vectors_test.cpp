@@ -157,6 +157,12 @@ TEST_CASE("project_onto: onto the zero vector throws", "[stage1]") {
     REQUIRE_THROWS_AS(project_onto({1, 2, 3}, {0, 0, 0}), std::domain_error);
 }
 
+TEST_CASE("project_onto: a tiny or huge onto is a line like any other", "[stage1]") {
+    // onto . onto underflows to 0 for (0, 1e-200, 0) and overflows for (0, 1e200, 0).
+    CHECK_THAT(project_onto({2, 3, 4}, {0, 1e-200, 0}), IsNear(Vec3{0, 3, 0}, kTight));
+    CHECK_THAT(project_onto({2, 3, 4}, {0, 1e200, 0}), IsNear(Vec3{0, 3, 0}, kTight));
+}
+
 TEST_CASE("perpendicular_to: is what projection leaves, at right angles to the edge", "[stage1]") {
     CHECK_THAT(perpendicular_to({3, 4, 5}, {0, 2, 0}), IsNear(Vec3{3, 0, 5}, kTight));
     std::mt19937_64 rng(6);
@@ -219,6 +225,15 @@ TEST_CASE("orthonormal_frame: b at 1e-6 radians from a is still a frame", "[stag
     const Frame f = orthonormal_frame({0, 0, 1}, {1e-6, 0, 1});
     CHECK_THAT(f.u, IsNear(Vec3{0, -1, 0}, 1e-9));
     CHECK_THAT(f.v, IsNear(Vec3{1, 0, 0}, 1e-9));
+}
+
+TEST_CASE("orthonormal_frame: parallel is decided relative to |b|", "[stage1]") {
+    // A short b at right angles to a: |b x w| = 1e-10, yet the angle is 90 degrees.
+    const Frame f = orthonormal_frame({0, 0, 1}, {0, 1e-10, 0});
+    CHECK_THAT(f.u, IsNear(Vec3{1, 0, 0}, kTight));
+    CHECK_THAT(f.v, IsNear(Vec3{0, 1, 0}, kTight));
+    // A long b 1e-10 radians from a: |b x w| = 1e-4, yet b is parallel to a.
+    REQUIRE_THROWS_AS(orthonormal_frame({0, 0, 1}, {1e-4, 0, 1e6}), std::domain_error);
 }
 
 TEST_CASE("orthonormal_frame: a zero a or b throws", "[stage1]") {
