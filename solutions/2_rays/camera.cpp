@@ -61,9 +61,13 @@ Ray perspective_ray(const PerspectiveCamera& camera, int i, int j) {
 OrthographicCamera make_orthographic_camera(const Vec3& lookfrom, const Vec3& lookat,
                                             const Vec3& up, double left, double right,
                                             double bottom, double top, int width, int height) {
-    if (!(left < right) || !(bottom < top)) {
+    // Written so that NaN fails; a finite width and height also rule out infinite edges, whose
+    // rays would start at infinite or NaN points.
+    if (!(left < right && bottom < top && std::isfinite(right - left) &&
+          std::isfinite(top - bottom))) {
         throw std::domain_error(
-            "camera: the orthographic window needs left < right and bottom < top");
+            "camera: the orthographic window needs left < right and bottom < top, of finite width "
+            "and height");
     }
     check_image_size(width, height);
     return {lookfrom, orthonormal_frame(lookfrom - lookat, up), left, right, bottom, top, width,

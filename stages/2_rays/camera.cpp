@@ -29,7 +29,8 @@ Ray perspective_ray(const PerspectiveCamera& camera, int i, int j) {
 OrthographicCamera make_orthographic_camera(const Vec3& lookfrom, const Vec3& lookat,
                                             const Vec3& up, double left, double right,
                                             double bottom, double top, int width, int height) {
-    // Check the arguments (throw std::domain_error), then keep the frame and the window.
+    // Check the arguments (throw std::domain_error, NaN and infinite window edges too), then keep
+    // the frame and the window.
     RAYSTEP_TODO(2, "make_orthographic_camera", "The orthographic camera");
 }
 

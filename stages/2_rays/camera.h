@@ -46,8 +46,9 @@ struct OrthographicCamera {
     int height;
 };
 
-/// Throws std::domain_error unless left < right, bottom < top, width >= 1 and height >= 1, and
-/// for a frame orthonormal_frame rejects.
+/// Throws std::domain_error unless left < right and bottom < top with a finite width right - left
+/// and height top - bottom (so a NaN or infinite edge throws: it would give rays with NaN or
+/// infinite origins), width >= 1 and height >= 1, and for a frame orthonormal_frame rejects.
 OrthographicCamera make_orthographic_camera(const Vec3& lookfrom, const Vec3& lookat,
                                             const Vec3& up, double left, double right,
                                             double bottom, double top, int width, int height);

@@ -189,3 +189,15 @@ TEST_CASE("make_orthographic_camera: an empty window throws", "[stage2]") {
     CHECK_THROWS_AS(make_orthographic_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, -1, 1, 1, -1, 2, 2),
                     std::domain_error);
 }
+
+TEST_CASE("make_orthographic_camera: a NaN or infinite window edge throws", "[stage2]") {
+    // "left >= right" is false for a NaN left, so that test lets NaN through to every ray.
+    const double nan = std::nan("");
+    const double inf = HUGE_VAL;
+    CHECK_THROWS_AS(make_orthographic_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, nan, 1, -1, 1, 2, 2),
+                    std::domain_error);
+    CHECK_THROWS_AS(make_orthographic_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, -1, 1, -1, nan, 2, 2),
+                    std::domain_error);
+    CHECK_THROWS_AS(make_orthographic_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, -inf, 1, -1, 1, 2, 2),
+                    std::domain_error);
+}
