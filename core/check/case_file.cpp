@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <optional>
 #include <ostream>
 #include <sstream>
@@ -12,8 +13,8 @@
 
 #include "core/check/case_format.h"
 #include "core/errors/input_error.h"
-#include "core/scene/text_file.h"
 #include "core/scene/text_fields.h"
+#include "core/scene/text_file.h"
 
 namespace raystep {
 
@@ -21,6 +22,9 @@ namespace {
 
 constexpr std::string_view kKeywords[] = {"family", "description", "case",  "ray",
                                           "sphere", "triangle",    "plane", "end"};
+
+// How far from 1 an expected normal's length may be: what case scoring allows a reported one.
+constexpr double kUnitNormalSlack = 1e-9;
 
 // The expectation's optional part, as error messages quote it.
 constexpr const char* kMeasuredPart = "T tolerance TT normal NX NY NZ tolerance NT";
@@ -61,6 +65,11 @@ class CaseFileParser {
         if (open_case_) {
             throw InputError(name_, case_line_, open_case_name() + " has no 'end'");
         }
+        // No line is to blame for a file without families: it names the file alone.
+        if (families_.empty()) {
+            throw InputError(name_, 0, "no 'family' in the file: it has no cases to check");
+        }
+        require_cases_in_last_family();
         return std::move(families_);
     }
 
@@ -107,6 +116,19 @@ class CaseFileParser {
         return {x, y, number(what)};
     }
 
+    // An expected normal is unit length within the 1e-9 that scoring asks of a reported one
+    // (docs/case-files.md): any other length is a normal no correct method can match.
+    Vec3 unit_normal(const std::string& what) {
+        const Vec3 normal = vec3(what);
+        const double length =
+            std::sqrt(normal.x * normal.x + normal.y * normal.y + normal.z * normal.z);
+        if (!(std::abs(length - 1.0) <= kUnitNormalSlack)) {
+            fail(what + " " + exact_text(normal) + " is not unit length (its length is " +
+                 exact_text(length) + ")");
+        }
+        return normal;
+    }
+
     double tolerance(const std::string& what) {
         const std::string_view token = take(what);
         const double value = parse_finite_number(token, {name_, line_}, what);
@@ -115,6 +137,14 @@ class CaseFileParser {
     }
 
     std::string open_case_name() const { return "case " + std::to_string(open_case_->index); }
+
+    // A family without cases checks nothing, though its name would be listed as checked.
+    void require_cases_in_last_family() const {
+        if (!families_.empty() && families_.back().cases.empty()) {
+            throw InputError(name_, family_line_,
+                             "family '" + families_.back().name + "' has no cases");
+        }
+    }
 
     void require_no_open_case() const {
         if (open_case_) {
@@ -138,7 +168,17 @@ class CaseFileParser {
         word("seed");
         family.seed =
             static_cast<std::uint64_t>(parse_count(fields_[3], {name_, line_}, "the seed"));
+        // A name picks a family (--family) and labels its results: two of one name would be
+        // checked and reported as one.
+        const auto [first, added] = family_lines_.emplace(family.name, line_);
+        if (!added) {
+            fail("family '" + family.name + "' again: the first is on line " +
+                 std::to_string(first->second));
+        }
+        require_cases_in_last_family();
         families_.push_back(std::move(family));
+        family_line_ = line_;
+        case_lines_.clear();
     }
 
     void description() {
@@ -162,6 +202,13 @@ class CaseFileParser {
         RayCase ray_case;
         ray_case.index =
             static_cast<std::uint64_t>(parse_count(fields_[1], {name_, line_}, "the case index"));
+        // An index picks a case (--case) and names it in a counterexample: it must name one.
+        const auto [first, added] = case_lines_.emplace(ray_case.index, line_);
+        if (!added) {
+            fail("case " + std::to_string(ray_case.index) + " again in family '" +
+                 families_.back().name + "': the first is on line " +
+                 std::to_string(first->second));
+        }
         if (fields_.size() == 3) {
             if (fields_[2] != "watertight") {
                 fail("expected 'watertight' or nothing after the case index, found " +
@@ -184,6 +231,7 @@ class CaseFileParser {
         Ray& ray = open_case_->ray;
         ray.origin = vec3("the ray's origin");
         ray.direction = vec3("the ray's direction");
+        if (ray.direction == Vec3(0.0)) fail("the ray's direction is zero: the ray goes nowhere");
         ray.t_min = number("t_min");
         // An unbounded ray is the common case, so t_max alone may be infinite.
         if (fields_[8] == "inf") {
@@ -218,14 +266,21 @@ class CaseFileParser {
         CaseShape shape;
         if (kind == "sphere") {
             const Vec3 center = vec3("the centre");
-            shape = Sphere{center, number("the radius")};
+            const std::string_view radius_field = fields_[next_];
+            const double radius = number("the radius");
+            if (!(radius > 0.0)) {
+                fail("the radius " + quoted_field(radius_field) + " must be positive");
+            }
+            shape = Sphere{center, radius};
         } else if (kind == "triangle") {
             const Vec3 p0 = vec3("a vertex");
             const Vec3 p1 = vec3("a vertex");
             shape = Triangle{p0, p1, vec3("a vertex")};
         } else {
             const Vec3 point = vec3("the plane's point");
-            shape = Plane{point, vec3("the plane's normal")};
+            const Vec3 normal = vec3("the plane's normal");
+            if (normal == Vec3(0.0)) fail("the plane's normal is zero: it has no orientation");
+            shape = Plane{point, normal};
         }
         const Expectation expected = expectation(shape);
         open_case_->primitives.push_back({shape, expected});
@@ -258,7 +313,7 @@ class CaseFileParser {
         word("tolerance");
         e.t_tolerance = tolerance("the t tolerance");
         word("normal");
-        e.normal = vec3("the normal");
+        e.normal = unit_normal("the normal");
         word("tolerance");
         e.normal_tolerance = tolerance("the normal tolerance");
 
@@ -269,7 +324,7 @@ class CaseFileParser {
             ++next_;
             e.t_alternative = number("the alternative t");
             word("normal");
-            e.normal_alternative = vec3("the alternative normal");
+            e.normal_alternative = unit_normal("the alternative normal");
         }
         if (at("barycentric")) {
             if (!is_triangle) {
@@ -325,6 +380,9 @@ class CaseFileParser {
     std::vector<CaseFamily> families_;
     bool description_allowed_ = false;  // the previous line was `family`
     std::optional<RayCase> open_case_;
+    int family_line_ = 0;                      // the last family's line
+    std::map<std::string, int> family_lines_;  // every family's line, by name
+    std::map<std::uint64_t, int> case_lines_;  // the last family's cases' lines
     int case_line_ = 0;
     int ray_line_ = 0;  // 0 until the open case has its ray
 };

@@ -12,7 +12,10 @@ namespace raystep {
 /// Reads a case file: one or more families (docs/case-files.md). Throws InputError naming the
 /// file and line for anything malformed: an unknown keyword, a wrong number of fields, a number
 /// that does not parse or is not finite (t_max alone may be `inf`), a case without primitives, a
-/// missing `end`.
+/// missing `end`; and for what would be checked silently wrong: a radius that is not positive, a
+/// zero ray direction or plane normal, an expected normal that is not unit length, a file or
+/// family without cases, a case number twice in a family, a family name twice in the file (a file
+/// without families names the file alone).
 std::vector<CaseFamily> read_case_file(const std::filesystem::path& path);
 
 /// The same from text in memory; `name` is what messages call the file.

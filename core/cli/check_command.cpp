@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iterator>
+#include <map>
 #include <set>
 #include <stdexcept>
 #include <variant>
@@ -14,6 +15,7 @@
 #include "core/check/case_scoring.h"
 #include "core/check/check_report.h"
 #include "core/check/stage3_methods.h"
+#include "core/errors/input_error.h"
 
 namespace raystep {
 
@@ -51,8 +53,18 @@ std::string joined(const std::vector<std::string>& names) {
 // The families of every case file, narrowed by --family and --case.
 std::vector<CaseFamily> selected_families(const CheckArguments& arguments) {
     std::vector<CaseFamily> families;
+    // A name picks a family (--family) and labels its results, across files as within one.
+    std::map<std::string, std::filesystem::path> family_files;
     for (const std::filesystem::path& file : case_files(arguments)) {
         std::vector<CaseFamily> read = read_case_file(file);
+        for (const CaseFamily& family : read) {
+            const auto [first, added] = family_files.emplace(family.name, file);
+            if (!added) {
+                throw InputError(file.string(), 0,
+                                 "family '" + family.name + "' is in " + first->second.string() +
+                                     " too: one name, one family");
+            }
+        }
         std::move(read.begin(), read.end(), std::back_inserter(families));
     }
 

@@ -143,8 +143,8 @@ std::vector<CaseFamily> tricky_families() {
 
     CaseFamily tricky{"tricky-values", 2147483647, "internal  white   space  is kept", {}};
     tricky.cases = {first, second};
-    CaseFamily empty{"no-cases", 0, "", {}};
-    return {tricky, empty};
+    CaseFamily plain{"no-description", 0, "", {second}};
+    return {tricky, plain};
 }
 
 struct BadFile {
@@ -355,6 +355,55 @@ TEST_CASE("parse_case_file: every malformed line is reported as file:line: probl
         CHECK_THROWS_WITH(parse(file.text), file.message);
         CHECK_THROWS_AS(parse(file.text), InputError);
     }
+}
+
+TEST_CASE("parse_case_file: rejects what would be checked silently wrong, at its line", "[core]") {
+    const std::string family = "family f seed 1\n";
+    const std::string ray = "case 0\nray 0 0 1 0 0 -1 0 inf\n";       // lines 2 and 3
+    const std::string one_case = ray + "sphere 0 0 0 1 miss\nend\n";  // lines 2 to 5
+    const std::vector<BadFile> bad = {
+        {"a negative radius", family + ray + "sphere 0 0 0 -1 miss\n",
+         "t.cases:4: the radius '-1' must be positive"},
+        {"a zero radius", family + ray + "sphere 0 0 0 0 miss\n",
+         "t.cases:4: the radius '0' must be positive"},
+        {"a negative zero radius", family + ray + "sphere 0 0 0 -0 miss\n",
+         "t.cases:4: the radius '-0' must be positive"},
+        {"a ray without a direction", family + "case 0\nray 0 0 1 0 -0 0 0 inf\n",
+         "t.cases:3: the ray's direction is zero: the ray goes nowhere"},
+        {"a plane without a normal", family + ray + "plane 0 0 0 0 0 0 miss\n",
+         "t.cases:4: the plane's normal is zero: it has no orientation"},
+        {"an expected normal that is not unit length",
+         family + ray + "plane 0 0 0 0 0 1 hit 1 tolerance 0 normal 0 0 2 tolerance 0\n",
+         "t.cases:4: the normal (0, 0, 2) is not unit length (its length is 2)"},
+        {"an alternative normal that is not unit length",
+         family + ray +
+             "sphere 0 0 0 1 hit 0 tolerance 0 normal 0 0 1 tolerance 0 alternative 2 normal 0 0 "
+             "0\n",
+         "t.cases:4: the alternative normal (0, 0, 0) is not unit length (its length is 0)"},
+        {"an empty file", "", "t.cases: no 'family' in the file: it has no cases to check"},
+        {"a file of comments only", "# nothing yet\n\n",
+         "t.cases: no 'family' in the file: it has no cases to check"},
+        {"a family without cases at the end", family, "t.cases:1: family 'f' has no cases"},
+        {"a family without cases before the next", family + "family g seed 2\n" + one_case,
+         "t.cases:1: family 'f' has no cases"},
+        {"a case number twice in a family", family + one_case + one_case,
+         "t.cases:6: case 0 again in family 'f': the first is on line 2"},
+        {"a family name twice", family + one_case + family + one_case,
+         "t.cases:6: family 'f' again: the first is on line 1"},
+    };
+    for (const BadFile& file : bad) {
+        CAPTURE(file.why, file.text);
+        CHECK_THROWS_WITH(parse(file.text), file.message);
+        CHECK_THROWS_AS(parse(file.text), InputError);
+    }
+}
+
+TEST_CASE("parse_case_file: one case number in two families is two cases", "[core]") {
+    const std::string one_case = "case 0\nray 0 0 1 0 0 -1 0 inf\nsphere 0 0 0 1 miss\nend\n";
+    const std::vector<CaseFamily> families =
+        parse("family f seed 1\n" + one_case + "family g seed 1\n" + one_case);
+    REQUIRE(families.size() == 2);
+    CHECK(families[1].cases.at(0).index == 0);
 }
 
 TEST_CASE("read_case_file: a missing file is reported by its name", "[core]") {
