@@ -122,7 +122,10 @@ std::vector<ProbeCase> hidden_cases() {
         exact_vector("project_onto", {{2, 3, 4}, {0, -1e200, 0}}, {0, 3, 0}, 2 * kUnit),
         exact_vector("perpendicular_to", {{2, 3, 4}, {0, 0, 3e-190}}, {2, 3, 0}, 8 * kUnit),
         throws_domain_error("orthonormal_frame", {{0, 0, 0}, {0, 1, 0}}),
+        throws_domain_error("orthonormal_frame", {{0, 0, 1}, {0, 0, 0}}),
         throws_domain_error("orthonormal_frame", {{std::nan(""), 0, 1}, {0, 1, 0}}),
+        throws_domain_error("orthonormal_frame", {{0, 0, 1}, {1, std::nan(""), 0}}),
+        throws_domain_error("orthonormal_frame", {{0, -inf, 0}, {1, 0, 0}}),
         throws_domain_error("orthonormal_frame", {{0, 0, 1}, {0, inf, 0}}),
         throws_domain_error("orthonormal_frame", {{1, 1, 0}, {-2, -2, 0}}),
         // Parallel, but w = a / |a| is rounded, so b x w is a few 1e-16, not zero
