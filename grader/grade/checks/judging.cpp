@@ -6,8 +6,6 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include <glm/geometric.hpp>
-
 namespace raystep::grade {
 
 CheckDefinition case_check(std::string id, int stage, std::string kind, std::string name,
@@ -72,21 +70,9 @@ Vec3 uniform(PortableRandom& random, double low, double high) {
     return {x, y, random.uniform(low, high)};
 }
 
-Vec3 random_unit(PortableRandom& random) {
-    return random.unit_vector();
-}
-
 Vec3 uniform(std::mt19937_64& rng, double low, double high) {
     std::uniform_real_distribution<double> u(low, high);
     return {u(rng), u(rng), u(rng)};
-}
-
-Vec3 random_unit(std::mt19937_64& rng) {
-    for (;;) {
-        const Vec3 v = uniform(rng, -1, 1);
-        const double length = glm::length(v);
-        if (length > 0.1 && length <= 1) return v / length;
-    }
 }
 
 std::string full_text(double x) {

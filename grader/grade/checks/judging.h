@@ -57,15 +57,13 @@ struct WorkloadRun {
 std::vector<WorkloadTime> timed_workloads(const std::vector<WorkloadRun>& runs,
                                           const std::string& call, int repeat);
 
-/// Random inputs from a case's own generator, the same on every platform: each component
-/// uniform in [low, high); a direction uniform on the sphere.
+/// A random point from a case's own generator, the same on every platform: each component
+/// uniform in [low, high), drawn x, y, z in that order.
 Vec3 uniform(PortableRandom& random, double low, double high);
-Vec3 random_unit(PortableRandom& random);
 
 /// The same from a std::mt19937_64 through std::uniform_real_distribution, whose output differs
-/// between standard libraries: only for the checks not yet drawn from PortableRandom.
+/// between standard libraries: only for the checks that still draw from a std::mt19937_64.
 Vec3 uniform(std::mt19937_64& rng, double low, double high);
-Vec3 random_unit(std::mt19937_64& rng);
 
 /// The result as a number, vector or ray; throws (an unreadable answer) when it is not one.
 double result_number(const ProbeAnswer& answer);
