@@ -22,14 +22,15 @@ std::vector<ProbeCase> grid_resolution_cases();
 /// What a structure must do less of than brute force (stage4_work.cpp): a scene, fresh rays, and
 /// which structure and query answers them.
 struct WorkQuery {
-    std::string call;   ///< "bvh" or "grid"
-    std::string split;  ///< the BVH's split, "sah" or "median"; empty for the grid
+    std::string check_id;  ///< the check that asks, for the reproduce command
+    std::string call;      ///< "bvh" or "grid"
+    std::string split;     ///< the BVH's split, "sah" or "median"; empty for the grid
     bool occluded = false;
 };
 
 /// The primitive tests the submission's structure makes per ray, counted by the probe at stage 3's
 /// functions, against the reference structure's on the same scene and rays. Passed when the
-/// submission makes at most four times the reference's tests, or a 32nd of brute force's, whichever
+/// submission makes at most four times the reference's tests, or a 16th of brute force's, whichever
 /// is more (stage4_work.cpp says why); failed with the count and
 /// the dearest ray as a counterexample otherwise, or when it finds hits without testing anything
 /// through stage 3.

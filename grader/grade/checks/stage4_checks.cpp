@@ -209,9 +209,10 @@ std::string ray_text(const std::string& scene, std::size_t k, const Ray& r) {
 std::string scene_code(const AccelScene& scene) {
     if (!scene.code.empty()) return scene.code;
     return "// primitives: the grader's scene \"" + scene.name + "\", " +
-           std::to_string(scene.primitives.triangles.size()) + " triangles and " +
-           std::to_string(scene.primitives.spheres.size()) +
-           " spheres from its own seed; compare with closest_hit(ray, primitives)\n";
+           std::to_string(scene.primitives.triangles.size()) + " triangles, " +
+           std::to_string(scene.primitives.spheres.size()) + " spheres and " +
+           std::to_string(scene.primitives.planes.size()) +
+           " planes from its own seed; compare with closest_hit over its spheres and triangles\n";
 }
 
 std::string structure_code(const std::string& call, const std::string& split, bool occluded,
@@ -287,7 +288,7 @@ CheckMeasure measure_structure(const GradingContext& context, const BuiltProbe& 
     }
 
     // Right answers earn their points only from a structure that does less work than brute force
-    const CheckMeasure work = measure_work(context, probe, {call, split, occluded});
+    const CheckMeasure work = measure_work(context, probe, {id, call, split, occluded});
     for (const auto& [name, value] : work.metrics)
         measure.metrics[name] = value;
     if (work.outcome == Outcome::passed) {
