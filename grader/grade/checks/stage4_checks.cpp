@@ -305,7 +305,9 @@ CheckMeasure measure_structure(const GradingContext& context, const BuiltProbe& 
 
 // The structure's speed against the reference's on the same rays, in the same run, scored; and
 // against no structure at all (stage 3's closest_hit over every primitive), reported. A structure
-// whose hits differ from the reference's earns nothing for speed: fast and wrong is not fast.
+// whose hits differ from the reference's earns nothing for speed: fast and wrong is not fast. Nor
+// does one that does brute force's work: the workload asks the same rays pass after pass, and a
+// structure that remembers its answers would be fast there alone.
 CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& probe,
                            const std::string& structure) {
     if (!probe.program) return not_compiled(probe);
@@ -352,6 +354,16 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
         measure.summary = "the " + structure + " found " + student.checksum.dump() +
                           " hits where the reference finds " + reference.checksum.dump() +
                           ": a structure with wrong answers earns nothing for speed";
+        return measure;
+    }
+    const CheckMeasure work = measure_work(
+        context, probe,
+        {"stage4.speed." + structure, structure, structure == "bvh" ? "sah" : "", false});
+    if (work.outcome != Outcome::passed) {
+        measure.outcome = Outcome::failed;
+        measure.summary =
+            "a structure that does brute force's work earns nothing for speed: " + work.summary;
+        measure.counterexamples = work.counterexamples;
         return measure;
     }
     const WorkloadTime brute_force =
