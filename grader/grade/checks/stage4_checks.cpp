@@ -282,8 +282,11 @@ CheckMeasure measure_structure(const GradingContext& context, const BuiltProbe& 
     limits.cpu_seconds = 30;
     limits.wall = std::chrono::seconds(60);
     CheckMeasure measure = run_batched_cases(context, id, probe, batches, limits);
+    // Nothing to count for a stub or a build that failed; and a structure that ran out of time
+    // would only run out again on the work scene, doubling the grade's time for nothing
     if (context.only_case || measure.outcome == Outcome::not_implemented ||
-        measure.outcome == Outcome::did_not_compile || measure.grader_error) {
+        measure.outcome == Outcome::did_not_compile || measure.outcome == Outcome::timed_out ||
+        measure.grader_error) {
         return measure;
     }
 
