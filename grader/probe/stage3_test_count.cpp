@@ -4,6 +4,10 @@
 // (grader/CMakeLists.txt, stage3_counted_symbols), which sends the submission's calls to the
 // counting functions below and theirs on to the real ones (`__real_SYMBOL`). The count is the
 // grader's, not the structure's own TraversalStats, which a submission could report as it likes.
+//
+// What it cannot see: a submission that writes its own primitive tests into its stage-4 files, or
+// names the `__real_` symbols itself. Its tests must then give exactly the reference's t on every
+// ray of the structure checks, and the timed speed check still sees the work they do.
 
 #include "grader/probe/stage3_test_count.h"
 
@@ -40,7 +44,8 @@ std::uint64_t stage3_tests_counted() {
 }  // namespace raystep::probe
 
 // The real functions and their counting stand-ins, named as the linker's --wrap option names
-// them. The mangled names are those of the declarations in stages/3_intersect/intersect.h.
+// them. The mangled names are those of the declarations in stages/3_intersect/intersect.h. A
+// macro, since an asm label names one declaration: no template can stand for the six.
 #define RAYSTEP_COUNTED_TEST(MANGLED, NAME, Shape)                                         \
     std::optional<raystep::Hit> real_##NAME(const raystep::Ray&,                           \
                                             const raystep::Shape&) asm("__real_" MANGLED); \
