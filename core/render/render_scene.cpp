@@ -161,7 +161,10 @@ Ray camera_ray(const SceneCamera& camera, int i, int j) {
 }
 
 Ray camera_ray(const RenderScene& render_scene, int i, int j) {
-    return camera_ray(render_scene.camera, i, j);
+    Ray ray = camera_ray(render_scene.camera, i, j);
+    ray.t_min = std::max(ray.t_min, render_scene.camera_t_min);
+    ray.t_max = std::min(ray.t_max, render_scene.camera_t_max);
+    return ray;
 }
 
 const ObjectAttributes& attributes_of(const RenderScene& render_scene, PrimitiveKind kind,

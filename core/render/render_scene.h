@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <unordered_map>
 #include <variant>
@@ -49,6 +50,10 @@ struct RenderScene {
     PrimitiveList planes;    ///< the planes alone, tested one by one beside the BVH
     RayOffset ray_offset;    ///< how shadow and mirror rays leave a surface
     int bounces = 0;         ///< mirror bounces: maxdepth when something reflects, else 0
+    /// The part of each camera ray a render looks at, a near and a far clip: stage 2's rays run
+    /// over [0, inf), and the grader narrows them to see that stage 4 keeps to [t_min, t_max].
+    double camera_t_min = 0.0;
+    double camera_t_max = std::numeric_limits<double>::infinity();
 };
 
 /// The scene's `camera` (and `ortho`) over its width x height pixels, built by stage 2, whose
@@ -70,7 +75,8 @@ std::optional<PrimitiveHit> scene_closest_hit(const RenderScene& render_scene, c
 /// True when anything in the scene meets the ray within [t_min, t_max]: a shadow ray's question.
 bool scene_occluded(const RenderScene& render_scene, const Ray& ray);
 
-/// The camera ray through the centre of pixel (i, j), from stage 2.
+/// The camera ray through the centre of pixel (i, j), from stage 2; the RenderScene's, cut to its
+/// camera_t_min and camera_t_max.
 Ray camera_ray(const SceneCamera& camera, int i, int j);
 Ray camera_ray(const RenderScene& render_scene, int i, int j);
 

@@ -1,11 +1,13 @@
 // Stage 4 calls: build a BVH or a grid over the primitives given and answer every ray, closest
-// hit or occluded; the slab test on boxes. A workload call answers the same rays `repeat` times
-// (with a BVH, a grid, or no structure at all) and returns only a checksum: the grader times the
-// whole probe from outside.
+// hit or occluded; the same with the primitive tests each ray cost, counted by the probe itself
+// (stage3_test_count.h); the slab test on boxes; the grid's resolution. A workload call answers the
+// same rays `repeat` times (with a BVH, a grid, or no structure at all) and returns only a
+// checksum: the grader times the whole probe from outside.
 
 #include <stdexcept>
 
 #include "grader/probe/call_table.h"
+#include "grader/probe/stage3_test_count.h"
 #include "stages/4_accel/aabb.h"
 #include "stages/4_accel/bvh.h"
 #include "stages/4_accel/uniform_grid.h"
@@ -35,6 +37,21 @@ Json answer_rays(const Structure& structure, const Json& a) {
     return answers;
 }
 
+// What each ray cost the structure in primitive tests, as the probe counts them (never as the
+// structure reports them), and how many rays it answered with a hit or as occluded.
+template <class Structure>
+Json count_work(const Structure& structure, const Json& a) {
+    const bool occluded = a.value("occluded", false);
+    Json tests = Json::array();
+    std::size_t hits = 0;
+    for (const Ray& r : rays_from(a.at("rays"))) {
+        const std::uint64_t before = stage3_tests_counted();
+        hits += occluded ? structure.occluded(r) : structure.closest_hit(r).has_value();
+        tests.push_back(stage3_tests_counted() - before);
+    }
+    return Json{{"tests", tests}, {"hits", hits}};
+}
+
 // The same rays `repeat` times, counting hits so that no work can be optimized away.
 template <class Structure>
 Json run_workload(const Structure& structure, const Json& a) {
@@ -42,7 +59,8 @@ Json run_workload(const Structure& structure, const Json& a) {
     const int repeat = a.at("repeat").get<int>();
     std::size_t hits = 0;
     for (int k = 0; k < repeat; ++k) {
-        for (const Ray& r : rays) hits += structure.closest_hit(r).has_value();
+        for (const Ray& r : rays)
+            hits += structure.closest_hit(r).has_value();
     }
     return hits;
 }
@@ -66,6 +84,14 @@ void add_accel_calls(CallTable& table) {
         const UniformGrid grid(primitive_list_from(a.at("primitives")));
         return answer_rays(grid, a);
     };
+    table["bvh_work"] = [](const Json& a) {
+        const Bvh bvh(primitive_list_from(a.at("primitives")), split_from(a.at("split")));
+        return count_work(bvh, a);
+    };
+    table["grid_work"] = [](const Json& a) {
+        const UniformGrid grid(primitive_list_from(a.at("primitives")));
+        return count_work(grid, a);
+    };
     table["bvh_workload"] = [](const Json& a) {
         const Bvh bvh(primitive_list_from(a.at("primitives")), split_from(a.at("split")));
         return run_workload(bvh, a);
@@ -83,6 +109,11 @@ void add_accel_calls(CallTable& table) {
         const std::optional<Interval> inside = intersect_aabb(r, 1.0 / r.direction, box);
         if (!inside) return Json(nullptr);
         return Json{{"enter", number(inside->enter)}, {"exit", number(inside->exit)}};
+    };
+    table["grid_resolution"] = [](const Json& a) {
+        const Aabb box{vec3_from(a.at("min")), vec3_from(a.at("max"))};
+        const glm::ivec3 cells = grid_resolution(box, a.at("n").get<std::size_t>());
+        return Json::array({cells.x, cells.y, cells.z});
     };
 }
 

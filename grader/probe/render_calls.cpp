@@ -1,6 +1,7 @@
 // Whole images: a scene rendered in one view through every stage the view needs, at most
 // `max_width` pixels wide (the scene's own size scaled down, aspect kept), on one thread so that
-// a probe's CPU time is its own work.
+// a probe's CPU time is its own work; its camera rays cut to [camera_t_min, camera_t_max] when
+// they are given.
 
 #include <algorithm>
 #include <cmath>
@@ -27,7 +28,12 @@ void add_render_calls(CallTable& table) {
         RenderOptions options;
         options.view = *view;
         options.threads = 1;
-        return image(render_image(prepare_render_scene(scene), options));
+        RenderScene render_scene = prepare_render_scene(scene);
+        if (a.contains("camera_t_min"))
+            render_scene.camera_t_min = number_from(a.at("camera_t_min"));
+        if (a.contains("camera_t_max"))
+            render_scene.camera_t_max = number_from(a.at("camera_t_max"));
+        return image(render_image(render_scene, options));
     };
 }
 

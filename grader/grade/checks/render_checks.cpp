@@ -39,12 +39,23 @@ Scene scaled_scene(const fs::path& path) {
     return scene;
 }
 
-Image reference_render(const fs::path& path, View view) {
+// The part of each camera ray a render looks at: all of it, or a near and a far clip that a
+// structure must keep to (stage 2's rays start at 0 and never end).
+struct CameraClip {
+    double t_min = 0.0;
+    double t_max = HUGE_VAL;
+    std::string name;  ///< added to the check's id; empty for no clip
+};
+
+Image reference_render(const fs::path& path, View view, const CameraClip& clip) {
     const Scene scene = scaled_scene(path);
     RenderOptions options;
     options.view = view;
     options.threads = 1;
-    return render_image(prepare_render_scene(scene), options);
+    RenderScene render_scene = prepare_render_scene(scene);
+    render_scene.camera_t_min = clip.t_min;
+    render_scene.camera_t_max = clip.t_max;
+    return render_image(render_scene, options);
 }
 
 // The student's own render of the view, beside the reference image the release holds.
@@ -101,27 +112,36 @@ Counterexample pixel_counterexample(const GradingContext& context, const std::st
 }
 
 CheckMeasure measure_render(const GradingContext& context, const BuiltProbe& probe,
-                            const std::string& id, const std::string& scene, View view) {
+                            const std::string& id, const std::string& scene, View view,
+                            const CameraClip& clip) {
     const fs::path path = context.source / "scenes" / scene;
+    probe::Json args = {
+        {"scene", path.string()}, {"view", std::string(view_name(view))}, {"max_width", kWidth}};
+    std::string input = scene + ", " + std::string(view_name(view)) + " view";
+    if (!clip.name.empty()) {
+        args["camera_t_min"] = probe::number(clip.t_min);
+        args["camera_t_max"] = probe::number(clip.t_max);
+        input +=
+            ", camera rays over [" + full_text(clip.t_min) + ", " + full_text(clip.t_max) + "]";
+    }
     // The judge keeps the image; the diff comes once the run is over.
     std::optional<Image> student;
-    ProbeCase render_case{
-        scene + ", " + std::string(view_name(view)) + " view",
-        {"render",
-         {{"scene", path.string()}, {"view", std::string(view_name(view))}, {"max_width", kWidth}}},
-        [&student](const ProbeAnswer& answer) {
-            if (answer.kind != ProbeAnswer::Kind::result) return wrong("an image", "");
-            student =
-                probe::image_from(answer.value, static_cast<std::size_t>(kWidth) * kWidth * 4);
-            return right();
-        },
-        render_command(scene, view)};
+    ProbeCase render_case{input,
+                          {"render", args},
+                          [&student](const ProbeAnswer& answer) {
+                              if (answer.kind != ProbeAnswer::Kind::result)
+                                  return wrong("an image", "");
+                              student = probe::image_from(
+                                  answer.value, static_cast<std::size_t>(kWidth) * kWidth * 4);
+                              return right();
+                          },
+                          render_command(scene, view)};
     ProbeRunLimits limits;
     limits.readable = {context.source / "scenes"};
     CheckMeasure measure = run_cases(context, id, probe, {render_case}, limits);
     if (!student) return measure;
 
-    const Image reference = reference_render(path, view);
+    const Image reference = reference_render(path, view, clip);
     const ImageDiff diff = compare_images(reference, *student, kThreshold);
     const fs::path folder = context.report_folder / "renders" / id;
     write_image(reference, folder / "reference.png");
@@ -160,16 +180,18 @@ CheckMeasure measure_render(const GradingContext& context, const BuiltProbe& pro
     return measure;
 }
 
-CheckDefinition render_check(int stage, const std::string& scene, View view) {
-    const std::string stem = fs::path(scene).stem().string();
+CheckDefinition render_check(int stage, const std::string& scene, View view,
+                             const CameraClip& clip = {}) {
+    const std::string stem =
+        fs::path(scene).stem().string() + (clip.name.empty() ? "" : "-" + clip.name);
     const std::string id =
         (stage == 0 ? std::string("pipeline") : "stage" + std::to_string(stage)) + ".render." +
         stem + "." + std::string(view_name(view));
-    return {id, stage, "render",
-            "the " + std::string(view_name(view)) + " view of scenes/" + scene +
-                (stage == 0 ? ", every stage from the submission" : ""),
-            [=](const GradingContext& context, const BuiltProbe& probe) {
-                return measure_render(context, probe, id, scene, view);
+    std::string name = "the " + std::string(view_name(view)) + " view of scenes/" + scene;
+    if (!clip.name.empty()) name += ", camera rays cut to [t_min, t_max]";
+    if (stage == 0) name += ", every stage from the submission";
+    return {id, stage, "render", name, [=](const GradingContext& context, const BuiltProbe& probe) {
+                return measure_render(context, probe, id, scene, view, clip);
             }};
 }
 
@@ -183,6 +205,10 @@ std::vector<CheckDefinition> render_checks() {
         render_check(3, "stage3/spheres-on-plane.test", View::normal),
         render_check(3, "stage3/triangle-fan.test", View::barycentric),
         render_check(4, "stage4/sphere-field.test", View::depth),
+        // Camera rays from 9 to 25 along the field: the near spheres cut open, seen from inside,
+        // and the floor beyond 25 gone. A structure whose leaf test or walk forgets t_min or
+        // t_max shows the near spheres whole or the far floor.
+        render_check(4, "stage4/sphere-field.test", View::depth, {9.0, 25.0, "clipped"}),
         render_check(5, "stage5/ellipsoids.test", View::normal),
         render_check(5, "stage5/table.test", View::depth),
         render_check(6, "stage6/cornell-box.test", View::shaded),

@@ -1,15 +1,22 @@
 // Stage 4 checks: the BVH (both splits) and the grid must return exactly closest_hit's answer
 // (same primitive, same t) on seeded scenes made to break them: random soups, shared edges met by
-// axis-parallel rays, coincident primitives (ties), flat and degenerate ones; occluded must agree
-// with the closest hit; the slab test on the cases the formula gets wrong. The expected answers
-// come from the reference closest_hit, run here in the grader. Speed: the submission's BVH
-// against the reference's on the same rays, timed from outside the probe.
+// axis-parallel rays, coincident primitives (ties), flat and degenerate ones, lists of one kind,
+// empty lists and lists of planes only; rays with t_min > 0 and finite t_max in each; occluded
+// must agree with the closest hit over the same interval. The expected answers come from the
+// reference closest_hit, run here in the grader. Each structure check also counts the primitive
+// tests the structure makes (stage4_work.cpp): one that is right but does brute force's work
+// earns nothing. The slab test's entry and exit against the exact interval
+// (stage4_slab_cases.cpp); grid_resolution against the handout's rule
+// (stage4_grid_resolution_cases.cpp). Speed: the submission's structure against the reference's
+// on the same rays, timed from outside the probe.
 
 #include <chrono>
-#include <random>
+#include <cmath>
 
+#include "core/math/portable_random.h"
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
+#include "grader/grade/checks/stage4_cases.h"
 #include "grader/grade/checks/stage_checks.h"
 #include "stages/3_intersect/intersect.h"
 #include "stages/4_accel/traversal.h"
@@ -29,27 +36,61 @@ struct AccelScene {
     std::string code;
 };
 
+// [t_min, t_max] for ray k of a scene: a third start beyond 0, a third stop short, and every
+// sixth does both, so that a leaf test or a walk that forgets either end is seen.
+void bound_interval(PortableRandom& random, int k, Ray& ray) {
+    if (k % 3 == 1 || k % 6 == 5) ray.t_min = random.uniform(0.2, 2.0);
+    if (k % 3 == 2 || k % 6 == 5) ray.t_max = ray.t_min + random.uniform(0.1, 2.5);
+}
+
+// Small triangles and spheres in the cube [-1, 1]^3, met by rays from outside it and from inside
+// it; three planes beside them, which the structure must leave out.
 AccelScene random_soup(std::uint64_t seed) {
-    std::mt19937_64 rng(seed);
+    PortableRandom random(seed);
     AccelScene s{"random soup", {}, {}, ""};
     for (int k = 0; k < 300; ++k) {
-        const Vec3 c = uniform(rng, -1, 1);
-        s.primitives.triangles.push_back(
-            {c, c + uniform(rng, -0.2, 0.2), c + uniform(rng, -0.2, 0.2)});
+        const Vec3 c = random.point(1.0);
+        s.primitives.triangles.push_back({c, c + random.point(0.2), c + random.point(0.2)});
     }
-    std::uniform_real_distribution<double> radius(0.01, 0.15);
     for (int k = 0; k < 60; ++k)
-        s.primitives.spheres.push_back({uniform(rng, -1, 1), radius(rng)});
+        s.primitives.spheres.push_back({random.point(1.0), random.uniform(0.01, 0.15)});
+    for (int k = 0; k < 3; ++k)
+        s.primitives.planes.push_back({random.point(1.0), random.unit_vector()});
     for (int k = 0; k < 600; ++k) {
         // Half from outside the scene, half from inside it.
-        const Vec3 origin = k % 2 ? uniform(rng, -1, 1) : 3.0 * glm::normalize(uniform(rng, -1, 1));
-        s.rays.push_back({origin, uniform(rng, -1, 1) - origin});
+        const Vec3 origin = k % 2 ? random.point(1.0) : 3.0 * random.unit_vector();
+        Ray ray{origin, random.point(1.0) - origin};
+        bound_interval(random, k, ray);
+        s.rays.push_back(ray);
+    }
+    return s;
+}
+
+// One kind of primitive only: every sphere or every triangle index must still be the list's.
+AccelScene one_kind(std::uint64_t seed, bool spheres) {
+    PortableRandom random(seed);
+    AccelScene s{spheres ? "spheres only" : "triangles only", {}, {}, ""};
+    for (int k = 0; k < 120; ++k) {
+        const Vec3 c = random.point(1.0);
+        if (spheres) {
+            s.primitives.spheres.push_back({c, random.uniform(0.02, 0.2)});
+        } else {
+            s.primitives.triangles.push_back({c, c + random.point(0.3), c + random.point(0.3)});
+        }
+    }
+    for (int k = 0; k < 150; ++k) {
+        const Vec3 origin = k % 2 ? random.point(1.0) : 3.0 * random.unit_vector();
+        Ray ray{origin, random.point(1.0) - origin};
+        bound_interval(random, k, ray);
+        s.rays.push_back(ray);
     }
     return s;
 }
 
 // A grid of quads sharing edges and vertices, met by axis-parallel rays through the shared edges:
-// where slab tests with 0 * inf and children met at the same t go wrong.
+// where slab tests with 0 * inf and children met at the same t go wrong. Rays from z = 5 meet the
+// quads at t = 5 exactly, and some have t_min or t_max at 5 or an ulp beside it: both ends of
+// [t_min, t_max] belong to it.
 AccelScene shared_edges() {
     AccelScene s{
         "shared edges, axis-parallel rays",
@@ -70,10 +111,15 @@ AccelScene shared_edges() {
             s.primitives.triangles.push_back({a, c, d});
         }
     }
+    const double above = std::nextafter(5.0, HUGE_VAL);
+    const double below = std::nextafter(5.0, 0.0);
+    const double ends[][2] = {{0.0, HUGE_VAL}, {5.0, HUGE_VAL}, {above, HUGE_VAL},
+                              {0.0, 5.0},      {0.0, below},    {5.0, 5.0}};
     for (int i = 0; i <= 8; ++i) {
         for (int j = 0; j <= 8; ++j) {
-            s.rays.push_back({Vec3(i, j, 5), Vec3(0, 0, -1)});
-            s.rays.push_back({Vec3(i + 0.5, j, 5), Vec3(0, 0, -1)});
+            const auto& [t_min, t_max] = ends[(i + j) % 6];
+            s.rays.push_back({Vec3(i, j, 5), Vec3(0, 0, -1), t_min, t_max});
+            s.rays.push_back({Vec3(i + 0.5, j, 5), Vec3(0, 0, -1), t_min, t_max});
             s.rays.push_back({Vec3(i, -1, 0), Vec3(0, 1, 0)});  // in the plane: misses
         }
     }
@@ -83,10 +129,10 @@ AccelScene shared_edges() {
 // Coincident and stacked primitives: equal t on different primitives, which only comes_before's
 // order settles; degenerate triangles and zero-radius spheres, which are misses.
 AccelScene ties_and_degenerates(std::uint64_t seed) {
-    std::mt19937_64 rng(seed);
+    PortableRandom random(seed);
     AccelScene s{"ties and degenerate primitives", {}, {}, ""};
     for (int k = 0; k < 40; ++k) {
-        const Vec3 c = uniform(rng, -1, 1);
+        const Vec3 c = random.point(1.0);
         const Triangle t{c, c + Vec3(0.3, 0, 0), c + Vec3(0, 0.3, 0)};
         s.primitives.triangles.push_back(t);
         s.primitives.triangles.push_back(t);  // the same twice
@@ -96,18 +142,52 @@ AccelScene ties_and_degenerates(std::uint64_t seed) {
         s.primitives.spheres.push_back({c + Vec3(0, 0, 0.5), 0.0});
     }
     for (int k = 0; k < 400; ++k) {
-        const Vec3 target = s.primitives.triangles[static_cast<std::size_t>(3 * (k % 40))].p0 +
-                            uniform(rng, 0, 0.15);
-        const Vec3 origin = target + 2.0 * glm::normalize(uniform(rng, -1, 1));
+        const Vec3 target =
+            s.primitives.triangles[static_cast<std::size_t>(3 * (k % 40))].p0 +
+            Vec3(random.uniform(0, 0.15), random.uniform(0, 0.15), random.uniform(0, 0.15));
+        const Vec3 origin = target + 2.0 * random.unit_vector();
         Ray r{origin, target - origin};
-        if (k % 4 == 0) r.t_max = 0.9;  // stop short of some hits
+        if (k % 4 == 0) r.t_max = 0.9;                       // stop short of some hits
+        if (k % 4 == 1) r.t_min = random.uniform(0.8, 1.0);  // start near them
         s.rays.push_back(r);
     }
     return s;
 }
 
+// Nothing to build over: no primitives at all, or only planes, which stay outside the structure.
+// Every ray misses. Asked last: a structure that crashes here loses these rays' cases, not the
+// others'.
+AccelScene nothing_to_hold(bool planes) {
+    AccelScene s{planes ? "planes only" : "no primitives",
+                 {},
+                 {},
+                 planes ? "PrimitiveList primitives;\n"
+                          "primitives.planes.push_back({{0, 0, 0}, {0, 0, 1}});\n"
+                          "primitives.planes.push_back({{0, 0, 2}, {0, 1, 1}});\n"
+                        : "PrimitiveList primitives;\n"};
+    if (planes) {
+        s.primitives.planes.push_back({{0, 0, 0}, {0, 0, 1}});
+        s.primitives.planes.push_back({{0, 0, 2}, {0, 1, 1}});
+    }
+    s.rays = {{{0, 0, 5}, {0, 0, -1}},
+              {{0.5, 0.25, 5}, {0.1, 0.2, -1}, 1.0, 10.0},
+              {{0, 0, 0}, {1, 0, 0}},
+              {{3, -2, 1}, {0, 1, 0}}};
+    return s;
+}
+
 std::vector<AccelScene> scenes() {
-    return {random_soup(0xB7A1), shared_edges(), ties_and_degenerates(0x7135)};
+    return {random_soup(0xB7A1),   shared_edges(),         ties_and_degenerates(0x7135),
+            one_kind(0x5F1, true), one_kind(0x7A1, false), nothing_to_hold(false),
+            nothing_to_hold(true)};
+}
+
+// What a structure answers: closest_hit over the list's spheres and triangles, its planes left
+// out.
+std::optional<PrimitiveHit> structure_answer(const Ray& ray, const PrimitiveList& primitives) {
+    PrimitiveList held = primitives;
+    held.planes.clear();
+    return closest_hit(ray, held);
 }
 
 std::string hit_text(const std::optional<PrimitiveHit>& h) {
@@ -129,9 +209,10 @@ std::string ray_text(const std::string& scene, std::size_t k, const Ray& r) {
 std::string scene_code(const AccelScene& scene) {
     if (!scene.code.empty()) return scene.code;
     return "// primitives: the grader's scene \"" + scene.name + "\", " +
-           std::to_string(scene.primitives.triangles.size()) + " triangles and " +
-           std::to_string(scene.primitives.spheres.size()) +
-           " spheres from its own seed; compare with closest_hit(ray, primitives)\n";
+           std::to_string(scene.primitives.triangles.size()) + " triangles, " +
+           std::to_string(scene.primitives.spheres.size()) + " spheres and " +
+           std::to_string(scene.primitives.planes.size()) +
+           " planes from its own seed; compare with closest_hit over its spheres and triangles\n";
 }
 
 std::string structure_code(const std::string& call, const std::string& split, bool occluded,
@@ -144,7 +225,7 @@ std::string structure_code(const std::string& call, const std::string& split, bo
 // One ray's answer from the structure, exactly the reference closest_hit's.
 Judgement judge_ray(const ProbeAnswer& answer, const AccelScene& scene, std::size_t k,
                     bool occluded) {
-    const std::optional<PrimitiveHit> expected = closest_hit(scene.rays[k], scene.primitives);
+    const std::optional<PrimitiveHit> expected = structure_answer(scene.rays[k], scene.primitives);
     if (occluded) {
         const std::string expected_text = expected ? "occluded" : "not occluded";
         if (answer.kind != ProbeAnswer::Kind::result) return wrong(expected_text, "");
@@ -200,65 +281,46 @@ CheckMeasure measure_structure(const GradingContext& context, const BuiltProbe& 
     ProbeRunLimits limits;
     limits.cpu_seconds = 30;
     limits.wall = std::chrono::seconds(60);
-    return run_batched_cases(context, id, probe, batches, limits);
-}
-
-// The slab test where the formula goes wrong: 0 * inf at a slab plane, rays along a face, boxes
-// that are points or empty.
-std::vector<ProbeCase> slab_cases() {
-    const double inf = HUGE_VAL;
-    struct Slab {
-        Ray ray;
-        Vec3 min;
-        Vec3 max;
-        bool hit;
-    };
-    const Slab slabs[] = {
-        {{{0, 0, -5}, {0, 0, 1}}, {-1, -1, -1}, {1, 1, 1}, true},
-        {{{1, 0, -5}, {0, 0, 1}}, {-1, -1, -1}, {1, 1, 1}, true},  // on the x = 1 face's plane
-        {{{1.5, 0, -5}, {0, 0, 1}}, {-1, -1, -1}, {1, 1, 1}, false},
-        {{{-1, -1, -5}, {0, 0, 1}}, {-1, -1, -1}, {1, 1, 1}, true},  // along an edge
-        {{{0, 0, -5}, {0, 0, 1}}, {0, 0, 0}, {0, 0, 0}, true},       // a point box on the ray
-        {{{0, 0, -5}, {0, 0, 1}}, {inf, inf, inf}, {-inf, -inf, -inf}, false},  // the empty box
-        {{{0, 0, 5}, {0, 0, 1}}, {-1, -1, -1}, {1, 1, 1}, false},               // behind the origin
-        {{{0, 0, 0}, {0, 0, 1}}, {-1, -1, -1}, {1, 1, 1}, true},                // from inside
-        {{{0, 0, -5}, {0, 0, 1}, 0.0, 3.0}, {-1, -1, -1}, {1, 1, 1}, false},    // stops short
-    };
-    std::vector<ProbeCase> cases;
-    for (const Slab& slab : slabs) {
-        cases.push_back(
-            {"ray " + full_text(slab.ray.origin) + " + t " + full_text(slab.ray.direction) +
-                 ", box " + full_text(slab.min) + " to " + full_text(slab.max),
-             {"intersect_aabb",
-              {{"ray", probe::ray(slab.ray)},
-               {"min", probe::vec3(slab.min)},
-               {"max", probe::vec3(slab.max)}}},
-             [hit = slab.hit](const ProbeAnswer& answer) {
-                 if (answer.kind != ProbeAnswer::Kind::result)
-                     return wrong(hit ? "a hit" : "a miss", "");
-                 return answer.value.is_null() != hit ? right()
-                                                      : wrong(hit ? "a hit" : "a miss", "");
-             },
-             "intersect_aabb(" + cpp(slab.ray) + ", 1.0 / Vec3" + cpp(slab.ray.direction) +
-                 ", Aabb{" + cpp(slab.min) + ", " + cpp(slab.max) + "})"});
+    CheckMeasure measure = run_batched_cases(context, id, probe, batches, limits);
+    // Nothing to count for a stub or a build that failed; and a structure that ran out of time
+    // would only run out again on the work scene, doubling the grade's time for nothing
+    if (context.only_case || measure.outcome == Outcome::not_implemented ||
+        measure.outcome == Outcome::did_not_compile || measure.outcome == Outcome::timed_out ||
+        measure.grader_error) {
+        return measure;
     }
-    return cases;
+
+    // Right answers earn their points only from a structure that does less work than brute force
+    const CheckMeasure work = measure_work(context, probe, {id, call, split, occluded});
+    for (const auto& [name, value] : work.metrics)
+        measure.metrics[name] = value;
+    if (work.outcome == Outcome::passed) {
+        measure.summary += "; " + work.summary;
+        return measure;
+    }
+    measure.outcome = Outcome::failed;
+    measure.fraction = 0.0;
+    measure.summary += "; but " + work.summary;
+    measure.counterexamples.insert(measure.counterexamples.begin(), work.counterexamples.begin(),
+                                   work.counterexamples.end());
+    return measure;
 }
 
 // The structure's speed against the reference's on the same rays, in the same run, scored; and
 // against no structure at all (stage 3's closest_hit over every primitive), reported. A structure
-// whose hits differ from the reference's earns nothing for speed: fast and wrong is not fast.
+// whose hits differ from the reference's earns nothing for speed: fast and wrong is not fast. Nor
+// does one that does brute force's work: the workload asks the same rays pass after pass, and a
+// structure that remembers its answers would be fast there alone.
 CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& probe,
                            const std::string& structure) {
     if (!probe.program) return not_compiled(probe);
     CheckMeasure measure;
     AccelScene scene = random_soup(0x5BEED);
-    std::mt19937_64 rng(3);
+    PortableRandom random(3);
     // Many rays through a scene big enough that the structure is what costs.
     for (int k = 0; k < 3000; ++k) {
-        const Vec3 c = uniform(rng, -1, 1);
-        scene.primitives.triangles.push_back(
-            {c, c + uniform(rng, -0.05, 0.05), c + uniform(rng, -0.05, 0.05)});
+        const Vec3 c = random.point(1.0);
+        scene.primitives.triangles.push_back({c, c + random.point(0.05), c + random.point(0.05)});
     }
     constexpr int kRays = 20000;
     constexpr int kPasses = 20;
@@ -266,8 +328,8 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
     Json rays = Json::array();
     Json brute_force_rays = Json::array();
     for (int k = 0; k < kRays; ++k) {
-        const Vec3 origin = 3.0 * glm::normalize(uniform(rng, -1, 1));
-        rays.push_back(probe::ray({origin, uniform(rng, -0.8, 0.8) - origin}));
+        const Vec3 origin = 3.0 * random.unit_vector();
+        rays.push_back(probe::ray({origin, random.point(0.8) - origin}));
         if (k < kBruteForceRays) brute_force_rays.push_back(rays.back());
     }
     const Json primitives = probe::primitive_list(scene.primitives);
@@ -295,6 +357,16 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
         measure.summary = "the " + structure + " found " + student.checksum.dump() +
                           " hits where the reference finds " + reference.checksum.dump() +
                           ": a structure with wrong answers earns nothing for speed";
+        return measure;
+    }
+    const CheckMeasure work = measure_work(
+        context, probe,
+        {"stage4.speed." + structure, structure, structure == "bvh" ? "sah" : "", false});
+    if (work.outcome != Outcome::passed) {
+        measure.outcome = Outcome::failed;
+        measure.summary =
+            "a structure that does brute force's work earns nothing for speed: " + work.summary;
+        measure.counterexamples = work.counterexamples;
         return measure;
     }
     const WorkloadTime brute_force =
@@ -331,19 +403,32 @@ std::vector<CheckDefinition> stage4_checks() {
             }};
     };
     return {
-        {"stage4.unit.slab", 4, "unit", "intersect_aabb where the slab formula goes wrong",
+        {"stage4.unit.slab", 4, "unit",
+         "intersect_aabb's entry and exit against the exact interval, edges and corners included",
          [](const GradingContext& c, const BuiltProbe& p) {
              return run_cases(c, "stage4.unit.slab", p, slab_cases());
          }},
-        structure("stage4.oracle.bvh_sah", "the SAH BVH's closest hit, exactly closest_hit's",
-                  "bvh", "sah", false),
-        structure("stage4.oracle.bvh_median", "the median BVH's closest hit, exactly closest_hit's",
+        {"stage4.unit.grid_resolution", 4, "unit",
+         "grid_resolution against the handout's rule, thin and flat boxes included",
+         [](const GradingContext& c, const BuiltProbe& p) {
+             return run_cases(c, "stage4.unit.grid_resolution", p, grid_resolution_cases());
+         }},
+        structure(
+            "stage4.oracle.bvh_sah",
+            "the SAH BVH's closest hit, exactly closest_hit's, with less work than brute force",
+            "bvh", "sah", false),
+        structure("stage4.oracle.bvh_median",
+                  "the median BVH's closest hit, exactly closest_hit's, with less work than brute "
+                  "force",
                   "bvh", "median", false),
-        structure("stage4.oracle.bvh_occluded", "the BVH's occluded, as the closest hit says",
+        structure("stage4.oracle.bvh_occluded",
+                  "the BVH's occluded, as the closest hit says, with less work than brute force",
                   "bvh", "sah", true),
-        structure("stage4.oracle.grid", "the grid's closest hit, exactly closest_hit's", "grid", "",
-                  false),
-        structure("stage4.oracle.grid_occluded", "the grid's occluded, as the closest hit says",
+        structure("stage4.oracle.grid",
+                  "the grid's closest hit, exactly closest_hit's, with less work than brute force",
+                  "grid", "", false),
+        structure("stage4.oracle.grid_occluded",
+                  "the grid's occluded, as the closest hit says, with less work than brute force",
                   "grid", "", true),
         {"stage4.speed.bvh", 4, "speed",
          "the SAH BVH's speed against the reference's and brute force's, on the same rays",

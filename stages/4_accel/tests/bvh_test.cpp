@@ -3,6 +3,7 @@
 // A BVH must give exactly closest_hit's answer: the same primitive and the same t, compared
 // with ==. Both call the same stage-3 tests; only the order differs.
 
+#include <cmath>
 #include <random>
 #include <string>
 
@@ -28,7 +29,8 @@ PrimitiveList random_scene(std::mt19937_64& rng, int n) {
         list.triangles.push_back({c + s * random_point(rng, 1.0), c + s * random_point(rng, 1.0),
                                   c + s * random_point(rng, 1.0)});
     }
-    for (int k = 0; k < n / 4; ++k) list.spheres.push_back({random_point(rng, 5.0), 0.5 * size(rng)});
+    for (int k = 0; k < n / 4; ++k)
+        list.spheres.push_back({random_point(rng, 5.0), 0.5 * size(rng)});
     return list;
 }
 
@@ -38,7 +40,8 @@ Ray random_ray(std::mt19937_64& rng) {
 }
 
 // The BVH's answer is closest_hit's, bit for bit.
-void check_same(const std::optional<PrimitiveHit>& got, const std::optional<PrimitiveHit>& expected) {
+void check_same(const std::optional<PrimitiveHit>& got,
+                const std::optional<PrimitiveHit>& expected) {
     REQUIRE(got.has_value() == expected.has_value());
     if (!got) return;
     CHECK(got->kind == expected->kind);
@@ -48,7 +51,9 @@ void check_same(const std::optional<PrimitiveHit>& got, const std::optional<Prim
 
 const BvhSplit kSplits[] = {BvhSplit::median, BvhSplit::sah};
 
-std::string split_name(BvhSplit split) { return split == BvhSplit::median ? "median" : "sah"; }
+std::string split_name(BvhSplit split) {
+    return split == BvhSplit::median ? "median" : "sah";
+}
 
 }  // namespace
 
@@ -67,7 +72,8 @@ TEST_CASE("Bvh::closest_hit: equals closest_hit on random scenes and rays", "[st
     }
 }
 
-TEST_CASE("Bvh::closest_hit: rays from inside the scene, axis-parallel rays, short rays", "[stage4]") {
+TEST_CASE("Bvh::closest_hit: rays from inside the scene, axis-parallel rays, short rays",
+          "[stage4]") {
     std::mt19937_64 rng(4);
     const PrimitiveList list = random_scene(rng, 300);
     for (const BvhSplit split : kSplits) {
@@ -128,7 +134,8 @@ TEST_CASE("Bvh::closest_hit: rays through edges shared by the triangles of a gri
     }
 }
 
-TEST_CASE("Bvh::closest_hit: an empty scene, one primitive, primitives all at one point", "[stage4]") {
+TEST_CASE("Bvh::closest_hit: an empty scene, one primitive, primitives all at one point",
+          "[stage4]") {
     const Ray ray{{0, 0, 5}, {0, 0, -1}};
     for (const BvhSplit split : kSplits) {
         CAPTURE(split_name(split));
@@ -137,8 +144,45 @@ TEST_CASE("Bvh::closest_hit: an empty scene, one primitive, primitives all at on
         one.spheres = {{{0, 0, 0}, 1.0}};
         check_same(Bvh(one, split).closest_hit(ray), closest_hit(ray, one));
         PrimitiveList stacked;
-        for (int k = 0; k < 50; ++k) stacked.spheres.push_back({{0, 0, 0}, 1.0 + 0.01 * k});
+        for (int k = 0; k < 50; ++k)
+            stacked.spheres.push_back({{0, 0, 0}, 1.0 + 0.01 * k});
         check_same(Bvh(stacked, split).closest_hit(ray), closest_hit(ray, stacked));
+    }
+}
+
+TEST_CASE("Bvh: a list of planes only holds nothing, and never crashes", "[stage4]") {
+    // Planes are unbounded: they stay outside the BVH (the renderer tests them beside it), so a
+    // list of planes alone gives a tree with no node at all.
+    PrimitiveList planes;
+    planes.planes = {{{0, 0, 0}, {0, 0, 1}}, {{0, 0, 2}, {0, 1, 1}}};
+    const Ray ray{{0, 0, 5}, {0, 0, -1}};
+    for (const BvhSplit split : kSplits) {
+        CAPTURE(split_name(split));
+        const Bvh bvh(planes, split);
+        CHECK_FALSE(bvh.closest_hit(ray));
+        CHECK_FALSE(bvh.occluded(ray));
+    }
+}
+
+TEST_CASE("Bvh::closest_hit: nothing before t_min, nothing after t_max", "[stage4]") {
+    // From z = 5 down the z axis: the sphere's front at t = 4.5 and its back at 5.5, the
+    // triangle at 7. From t_min = 6 only the triangle is left; up to t_max = 5 only the front.
+    PrimitiveList list;
+    list.spheres = {{{0, 0, 0}, 0.5}};
+    list.triangles = {{{-1, -1, -2}, {1, -1, -2}, {0, 1, -2}}};
+    for (const BvhSplit split : kSplits) {
+        CAPTURE(split_name(split));
+        const Bvh bvh(list, split);
+        const Ray late{{0, 0, 5}, {0, 0, -1}, 6.0, HUGE_VAL};
+        const std::optional<PrimitiveHit> hit = bvh.closest_hit(late);
+        REQUIRE(hit);
+        CHECK(hit->kind == PrimitiveKind::triangle);
+        CHECK(hit->hit.t == 7.0);
+        const Ray inside{{0, 0, 5}, {0, 0, -1}, 5.0, 6.0};  // starts inside the sphere
+        check_same(bvh.closest_hit(inside), closest_hit(inside, list));
+        const Ray short_ray{{0, 0, 5}, {0, 0, -1}, 0.0, 5.0};
+        check_same(bvh.closest_hit(short_ray), closest_hit(short_ray, list));
+        CHECK_FALSE(bvh.occluded(Ray{{0, 0, 5}, {0, 0, -1}, 7.5, HUGE_VAL}));
     }
 }
 
@@ -192,7 +236,8 @@ TEST_CASE("Bvh: the SAH tree is no slower to walk than the median tree", "[stage
         median.closest_hit(ray, &median_cost);
         sah.closest_hit(ray, &sah_cost);
     }
-    CAPTURE(median_cost.nodes, median_cost.primitive_tests, sah_cost.nodes, sah_cost.primitive_tests);
+    CAPTURE(median_cost.nodes, median_cost.primitive_tests, sah_cost.nodes,
+            sah_cost.primitive_tests);
     CHECK(sah_cost.nodes + 2 * sah_cost.primitive_tests <=
           median_cost.nodes + 2 * median_cost.primitive_tests);
 }

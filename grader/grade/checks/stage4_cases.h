@@ -1,0 +1,40 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "grader/grade/check_definition.h"
+#include "stages/3_intersect/intersect.h"
+
+namespace raystep::grade {
+
+// The parts of stage 4's checks that live in their own files; stage4_checks.cpp lists the checks.
+
+/// intersect_aabb's entry and exit against the exact interval (stage4_slab_cases.cpp): origins
+/// inside the box, on a face and outside it, rays through edges and corners, t_min > 0 and finite
+/// t_max, the 0 * inf planes, empty and point boxes.
+std::vector<ProbeCase> slab_cases();
+
+/// grid_resolution against the handout's rule, thin and flat boxes included
+/// (stage4_grid_resolution_cases.cpp).
+std::vector<ProbeCase> grid_resolution_cases();
+
+/// What a structure must do less of than brute force (stage4_work.cpp): a scene, fresh rays, and
+/// which structure and query answers them.
+struct WorkQuery {
+    std::string check_id;  ///< the check that asks, for the reproduce command
+    std::string call;      ///< "bvh" or "grid"
+    std::string split;     ///< the BVH's split, "sah" or "median"; empty for the grid
+    bool occluded = false;
+};
+
+/// The primitive tests the submission's structure makes per ray, counted by the probe at stage 3's
+/// functions, against the reference structure's on the same scene and rays. Passed when the
+/// submission makes at most four times the reference's tests, or a 16th of brute force's, whichever
+/// is more (stage4_work.cpp says why); failed with the count and
+/// the dearest ray as a counterexample otherwise, or when it finds hits without testing anything
+/// through stage 3.
+CheckMeasure measure_work(const GradingContext& context, const BuiltProbe& probe,
+                          const WorkQuery& query);
+
+}  // namespace raystep::grade
