@@ -70,11 +70,6 @@ Vec3 uniform(PortableRandom& random, double low, double high) {
     return {x, y, random.uniform(low, high)};
 }
 
-Vec3 uniform(std::mt19937_64& rng, double low, double high) {
-    std::uniform_real_distribution<double> u(low, high);
-    return {u(rng), u(rng), u(rng)};
-}
-
 std::string full_text(double x) {
     char text[32];
     std::snprintf(text, sizeof text, "%.17g", x);

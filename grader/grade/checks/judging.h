@@ -1,7 +1,6 @@
 #pragma once
 
 #include <functional>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -60,10 +59,6 @@ std::vector<WorkloadTime> timed_workloads(const std::vector<WorkloadRun>& runs,
 /// A random point from a case's own generator, the same on every platform: each component
 /// uniform in [low, high), drawn x, y, z in that order.
 Vec3 uniform(PortableRandom& random, double low, double high);
-
-/// The same from a std::mt19937_64 through std::uniform_real_distribution, whose output differs
-/// between standard libraries: only for the checks that still draw from a std::mt19937_64.
-Vec3 uniform(std::mt19937_64& rng, double low, double high);
 
 /// The result as a number, vector or ray; throws (an unreadable answer) when it is not one.
 double result_number(const ProbeAnswer& answer);

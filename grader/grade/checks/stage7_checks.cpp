@@ -132,7 +132,8 @@ struct ExpectedRadiance {
 ExpectedRadiance expected_radiance(const Script& script, const Ray& eye, int bounces,
                                    const RayOffset& offset) {
     ExpectedRadiance e;
-    e.rays.push_back({widen(eye.origin), 0, widen(eye.direction), 0, eye.t_min, eye.t_max});
+    e.rays.push_back(
+        {widen(eye.origin), 0, widen(eye.direction), 0, eye.t_min, eye.t_max, std::nullopt});
     WideVec weight(1);
     // Each term is the local colour times a product of reflectances, all non-negative: a few
     // roundings per product and one per sum, relative to the terms' sum.
