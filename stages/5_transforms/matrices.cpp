@@ -28,6 +28,7 @@ Transform compose(const std::vector<TransformOp>& ops) {
     // Start from the identity and right-multiply, M = M * op, in file order. Build the inverse
     // alongside from each op's inverse (translate by -offset, rotate by -degrees, scale by
     // 1 / factors), left-multiplied: M^-1 = op^-1 * M^-1, since (A B)^-1 = B^-1 A^-1.
+    // A zero factor has no inverse: keep its 1 / 0 = infinity, never a finite stand-in.
     RAYSTEP_TODO(5, "compose", "The transform stack");
 }
 

@@ -36,8 +36,10 @@ struct Transform {
 /// The transform of a chain of scene ops in file order, right-multiplied as OpenGL does:
 /// M = M1 M2 ... Mn, so the last op written is the first applied to the object. The inverse is
 /// built from the ops' own inverses, M^-1 = Mn^-1 ... M1^-1, each exact in form (negated
-/// offset, opposite angle, reciprocal factors), never by inverting the product. No ops: the
-/// identity.
+/// offset, opposite angle, reciprocal factors), never by inverting the product. A zero factor's
+/// 1 / 0 is infinite, and M^-1 carries that infinity (NaN where a product meets it), never a
+/// finite number that passes for the inverse of a transform that has none. (Scene files cannot
+/// say `scale` with a zero factor: the loader rejects it.) No ops: the identity.
 Transform compose(const std::vector<TransformOp>& ops);
 
 /// The world ray in the object's frame: its origin by M^-1 as a point, its direction by M^-1 as

@@ -35,6 +35,7 @@ Color blinn_phong(const Material& material, const SurfacePoint& point, const Lig
     // With N the shading normal, L the light's direction, V the direction to the eye:
     //   H = normalize(L + V),  I = intensity (Kd max(N . L, 0) + Ks max(N . H, 0)^s).
     // N . L <= 0 means the light is behind the surface: return black, the highlight included.
+    // L + V = 0 (the eye exactly opposite the light) has no half vector: count N . H as 0.
     // Shininess 0 means max(N . H, 0)^0 = 1, also when N . H = 0 (std::pow(0, 0) is 1).
     RAYSTEP_TODO(6, "blinn_phong", "Blinn-Phong");
 }

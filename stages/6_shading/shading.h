@@ -50,7 +50,8 @@ LightSample sample_light(const DirectionalLight& light);
 
 /// One light's term, V_i left out: intensity (Kd max(N . L, 0) + Ks max(N . H, 0)^s), with N
 /// the shading normal. A light behind the surface (N . L <= 0) adds nothing, its highlight
-/// neither.
+/// neither. Where the eye is exactly opposite the light (L + V = 0, seen only through a bent
+/// shading normal) no direction lies halfway: N . H counts as 0 there, never a throw or a NaN.
 Color blinn_phong(const Material& material, const SurfacePoint& point, const LightSample& light);
 
 /// I = A + E + the blinn_phong terms of the lights that reach the point.

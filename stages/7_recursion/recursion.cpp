@@ -21,8 +21,9 @@ Color radiance(const ShadeFunction& shade, const Ray& ray, int bounces_left,
                const RayOffset& offset) {
     // hit = shade(ray); a miss is black. Otherwise
     //   I = local + Ks radiance(reflected ray, bounces_left - 1)   while bounces_left > 0,
-    // and just local when no bounce is left or Ks is black: then do not trace the reflected
-    // ray at all, it would cost a whole ray and add nothing.
+    // and just local when no bounce is left or Ks is black, exactly (0, 0, 0): then do not
+    // trace the reflected ray at all, it would cost a whole ray and add nothing. A weak mirror
+    // is not black: it still reflects.
     RAYSTEP_TODO(7, "radiance", "Recursive reflection");
 }
 

@@ -27,12 +27,14 @@ struct ShadedHit {
 using ShadeFunction = std::function<std::optional<ShadedHit>(const Ray&)>;
 
 /// The mirror ray at a hit: the incoming direction -V reflected about the shading normal
-/// (stage 1's reflect), leaving the surface by spawn_ray with the given offset, unbounded.
+/// (stage 1's reflect), leaving the surface by spawn_ray with the given offset, unbounded:
+/// distance infinity, not a large number standing in for it.
 Ray reflected_ray(const SurfacePoint& point, const RayOffset& offset);
 
 /// What the ray sees: black when it misses; else the local colour plus the reflectance times
 /// what the reflected ray sees, while bounces remain (`bounces_left`, maxdepth for an eye ray)
-/// and the reflectance is not black.
+/// and the reflectance is not black. Black is exactly (0, 0, 0): a weak mirror reflects too,
+/// however small its reflectance.
 Color radiance(const ShadeFunction& shade, const Ray& ray, int bounces_left,
                const RayOffset& offset);
 

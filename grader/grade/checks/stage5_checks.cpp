@@ -306,6 +306,37 @@ ProbeCase exact_inverse_case(const std::vector<TransformOp>& ops) {
             compose_code(ops)};
 }
 
+// A scale with a zero factor has no inverse, and 1 / 0 is infinite: M^-1 must carry that
+// infinity on the zero axis's diagonal (NaN where a product meets it) rather than a finite
+// stand-in, which would pass for an inverse and be none. M itself and the other axes'
+// reciprocals are exact.
+ProbeCase singular_scale_case(const Vec3& factors) {
+    const std::vector<TransformOp> ops{scale_op(factors)};
+    const Mat4 matrix = narrow(wide_scaling(widen(factors)));
+    std::string diagonal;
+    for (int k = 0; k < 3; ++k) {
+        diagonal += (k == 0 ? "" : ", ") + (factors[k] == 0.0 ? std::string("not finite (1 / 0)")
+                                                              : full_text(1.0 / factors[k]));
+    }
+    const std::string text = "matrix " + matrix_text(matrix) + ", inverse diagonal " + diagonal;
+    return {"compose(" + ops_text(ops) + "): a zero factor's reciprocal is infinite",
+            {"compose", ops_json(ops)},
+            [=](const ProbeAnswer& a) {
+                if (a.kind != ProbeAnswer::Kind::result) return wrong(text, "");
+                const Transform got = probe::transform_from(a.value);
+                const Judgement m = near_matrix(got.matrix, widen(matrix), WideMat(0.0L), "matrix");
+                if (!m.passed) return m;
+                for (int k = 0; k < 3; ++k) {
+                    const double entry = got.inverse[k][k];
+                    const bool ok =
+                        factors[k] == 0.0 ? !std::isfinite(entry) : entry == 1.0 / factors[k];
+                    if (!ok) return wrong(text, "inverse " + matrix_text(got.inverse));
+                }
+                return right();
+            },
+            compose_code(ops)};
+}
+
 // M v in long double, v = (x, y, z, w), and the size of the terms each coordinate sums.
 struct WideProduct {
     WideVec value;
@@ -580,6 +611,8 @@ std::vector<ProbeCase> hidden_cases() {
         rotation_case({1e200, 0, -1e200}, 60),
         invalid_axis_case({0, 0, 0}, 0),
         exact_matrix_case("scaling", {0, -2, 0.5}, wide_scaling({0, -2, 0.5})),
+        // The inverse of scale(2, 0, 0.5) does not exist: diagonal (0.5, 1 / 0, 2).
+        singular_scale_case({2, 0, 0.5}),
         compose_case({rotate_op({2, -1, 0.5}, 33)}),
         // M = R T: rotated after moving, so the origin goes to R (1, 0, 0) = (0, 1, 0).
         compose_case({rotate_op({0, 0, 1}, 90), translate_op({1, 0, 0})}),

@@ -169,8 +169,10 @@ WideTerm wide_blinn_phong(const Material& m, const SurfacePoint& p, const LightS
     const WideVec light = widen(l.direction);
     const Wide n_dot_l = glm::dot(n, light);
     if (!(n_dot_l > 0)) return {WideVec(0.0L), WideVec(0.0L)};
-    const WideVec half = glm::normalize(light + widen(p.to_eye));
-    const Wide n_dot_h = std::max(glm::dot(n, half), Wide(0));
+    // L + V = 0, the eye exactly opposite the light: no half vector, N . H counts as 0.
+    const WideVec sum = light + widen(p.to_eye);
+    const Wide n_dot_h =
+        sum == WideVec(0.0L) ? Wide(0) : std::max(glm::dot(n, glm::normalize(sum)), Wide(0));
     const Wide highlight = std::pow(n_dot_h, Wide(m.shininess));
     // Where N . H is 0 or below (the eye behind the shading normal), the highlight is 0^s, exact.
     const Wide highlight_error =
@@ -434,6 +436,13 @@ std::vector<ProbeCase> hidden_cases() {
                          {{-0.28, 0.96, 0}, 10.0, Color(1.0)}),
         blinn_phong_case(material(Color(0.0), Color(0.5), Color(1.0), Color(0.0), 0.5), bent_away,
                          {{-0.28, 0.96, 0}, 10.0, Color(1.0)}),
+        // The eye exactly opposite the light, L = -V = (0.96, -0.28, 0), which the shading
+        // normal (0.8, 0.6, 0) sees (N . L = 0.6): L + V = 0 has no direction, N . H counts as 0.
+        // Shininess 8: 0.5 * 0.6 = 0.3 and no highlight; shininess 0: 0^0 = 1, 0.3 + Ks.
+        blinn_phong_case(material(Color(0.0), Color(0.5), Color(1.0), Color(0.0), 8.0), bent_away,
+                         {{0.96, -0.28, 0}, 10.0, Color(1.0)}),
+        blinn_phong_case(material(Color(0.0), Color(0.5), {0.25, 0.5, 0.75}, Color(0.0), 0.0),
+                         bent_away, {{0.96, -0.28, 0}, 10.0, Color(1.0)}),
         // The eye in the mirror direction: H = N, (N . H)^1000 = 1; 0.5 * 0.8 + Ks.
         blinn_phong_case(material(Color(0.0), Color(0.5), {0.25, 0.5, 0.75}, Color(0.0), 1000.0),
                          lit_point(up, {-0.6, 0.8, 0}), {{0.6, 0.8, 0}, 10.0, Color(1.0)}),

@@ -51,9 +51,18 @@ std::string expected_text(const ExpectedRay& e) {
            full_text(e.t_min) + ", " + full_text(e.t_max) + "]";
 }
 
+// t_max as the cases judge it: exact, except that an unbounded ray may end at the largest
+// double, which no finite t exceeds, so that it admits the same hits as infinity. The header's
+// promise of infinity itself is one case's (unbounded_case): a ray bounded in name only loses
+// that promise, not every case that follows a mirror ray.
+bool same_t_max(double got, double expected) {
+    if (expected == kInf) return got >= std::numeric_limits<double>::max();
+    return got == expected;
+}
+
 // Written so that a NaN anywhere fails.
 bool matches(const Ray& got, const ExpectedRay& e) {
-    bool ok = got.t_min == e.t_min && got.t_max == e.t_max;
+    bool ok = got.t_min == e.t_min && same_t_max(got.t_max, e.t_max);
     for (int k = 0; k < 3; ++k) {
         ok = ok && std::abs(got.direction[k] - e.direction[k]) <= e.direction_tolerance;
         if (!e.region) ok = ok && std::abs(got.origin[k] - e.origin[k]) <= e.origin_tolerance;
@@ -109,6 +118,26 @@ ProbeCase reflected_ray_case(const SurfacePoint& p, const RayOffset& offset) {
                 return matches(got, e) ? right() : wrong(expected_text(e), ray_text(got));
             },
             "reflected_ray(" + cpp(p) + ", " + cpp(offset) + ")"};
+}
+
+// The header's "unbounded": t_max is infinity, as for a directional light's shadow ray, not a
+// large finite number standing in for it.
+ProbeCase unbounded_case(const SurfacePoint& p, const RayOffset& offset) {
+    const std::string text = "t_max infinity (reflected_ray is unbounded)";
+    return {"reflected_ray(" + point_text(p) + ", " + offset_text(offset) + "): unbounded",
+            {"reflected_ray", Json::array({probe::surface_point(p), probe::ray_offset(offset)})},
+            [=](const ProbeAnswer& answer) {
+                if (answer.kind != ProbeAnswer::Kind::result) return wrong(text, "");
+                const Ray got = probe::ray_from(answer.value);
+                if (got.t_max == kInf) return right();
+                const std::string note =
+                    got.t_max == std::numeric_limits<double>::max()
+                        ? " (the largest double admits the same hits, but the header promises "
+                          "infinity; only this case asks for it)"
+                        : "";
+                return wrong(text, "t_max " + full_text(got.t_max) + note);
+            },
+            "reflected_ray(" + cpp(p) + ", " + cpp(offset) + ").t_max"};
 }
 
 // --- radiance over a script
@@ -257,6 +286,7 @@ std::vector<ProbeCase> public_cases() {
         // An exact point (no rounding error): the error bound d is 0, and only spawn_ray's
         // one-ulp step takes the origin off the floor, to y = 2^-1074.
         reflected_ray_case(floor_point({0, 0, 0}, {1, 1, 0}), kErrorBound),
+        unbounded_case(floor_point({3, 0, -2}, {1, 2, 3}), along_normal),
         radiance_case({std::nullopt}, kEye, 5, along_ray),
         radiance_case({mirror(a, red, grey)}, kEye, 0, along_ray),
         radiance_case({mirror(a, red, grey), std::nullopt}, kEye, 1, along_ray),
@@ -292,11 +322,17 @@ std::vector<ProbeCase> hidden_cases() {
         // The bent mirror ray leaves below the floor: the error bound on the floor's underside.
         reflected_ray_case(bent, kErrorBound),
         reflected_ray_case(far_tilted, kErrorBound),
+        unbounded_case(bent, along_ray),
         radiance_case({mirror(far_tilted, Color(0.2), Color(0.5)), mirror(a, Color(0.5), Color(1))},
                       kEye, 4, kErrorBound),
         radiance_case({mirror(a, Color(0.3), Color(0))}, kEye, 3, along_ray),
         radiance_case({mirror(a, Color(0.3), {0, 0.5, 0}), mirror(a, Color(1), Color(0))}, kEye, 3,
                       along_ray),
+        // A weak mirror is still a mirror: Ks = (0.004, 0.002, 0.001) is not black, and shows a
+        // bright lamp, local (200, 100, 50), as 0.3 + (0.8, 0.2, 0.05).
+        radiance_case(
+            {mirror(a, Color(0.3), {0.004, 0.002, 0.001}), mirror(a, {200, 100, 50}, Color(0))},
+            kEye, 3, along_ray),
         radiance_case({mirror(a, Color(0.3), Color(1))}, kEye, -1, along_ray),
         radiance_case({mirror(bent, Color(0.2), Color(1)), mirror(a, Color(0.5), Color(1))}, kEye,
                       4, along_normal),

@@ -157,6 +157,16 @@ TEST_CASE("compose: the inverse comes from the ops, exact where they are", "[sta
     CHECK(t.inverse == scaling({1.0 / 1e-3, 1.0 / 1e-3, 1.0 / 1e-3}) * translation({-1e4, 0, 0}));
 }
 
+TEST_CASE("compose: a zero scale factor has no inverse, and its 1 / 0 stays infinite", "[stage5]") {
+    // scale(2, 0, 0.5) flattens y: its inverse would scale y by 1 / 0. A finite stand-in such as
+    // 1 would make M^-1 look like an inverse when there is none.
+    const Transform t = compose({scale_op({2, 0, 0.5})});
+    CHECK(t.matrix == scaling({2, 0, 0.5}));
+    CHECK(t.inverse[0][0] == 0.5);
+    CHECK_FALSE(std::isfinite(t.inverse[1][1]));
+    CHECK(t.inverse[2][2] == 2.0);
+}
+
 TEST_CASE("ray_to_object: the direction is not renormalized, so t is the same in both frames",
           "[stage5]") {
     const Transform t = compose({translate_op({1, 2, 3}), scale_op({2, 2, 2})});

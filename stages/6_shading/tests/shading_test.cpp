@@ -197,6 +197,21 @@ TEST_CASE("blinn_phong: no highlight where N . H < 0, whatever the shininess", "
     }
 }
 
+TEST_CASE("blinn_phong: the eye exactly opposite the light has no half vector, N . H counts as 0",
+          "[stage6]") {
+    // The bent normal of the test above, N = (0.8, 0, 0.6), V = (-0.96, 0, 0.28), with the light
+    // at L = -V = (0.96, 0, -0.28): N . L = 0.768 - 0.168 = 0.6 > 0, but L + V = 0, and
+    // normalize(L + V) has nothing to divide by. No direction lies halfway: N . H counts as 0,
+    // so shininess 8 leaves the diffuse 0.5 * 0.6 = 0.3, and shininess 0 adds Ks (0^0 = 1).
+    SurfacePoint point = on_floor({-0.96, 0, 0.28});
+    point.shading_normal = {0.8, 0, 0.6};
+    const LightSample light = white_light_from({0.96, 0, -0.28});
+    const Color shiny = blinn_phong(material(Color(0.5), Color(1.0), 8.0), point, light);
+    CHECK_THAT(shiny, IsNear(Color(0.3), kTight));
+    const Color flat = blinn_phong(material(Color(0.5), {0.25, 0.5, 1}, 0.0), point, light);
+    CHECK_THAT(flat, IsNear(Color{0.55, 0.8, 1.3}, kTight));
+}
+
 TEST_CASE("local_shading: ambient + emission + each visible light's term", "[stage6]") {
     // A = (0.1, 0.2, 0.3), E = (0.2, 0, 0), Kd = 0.5, Ks = 0.
     // Light 1 straight above: N . L = 1, term 0.5 * 1 * (1, 1, 1) = (0.5, 0.5, 0.5).

@@ -110,6 +110,17 @@ TEST_CASE("radiance: the reflectance weighs each colour channel", "[stage7]") {
     CHECK(asked.size() == 2);
 }
 
+TEST_CASE("radiance: a faint mirror is still a mirror: only an exactly black Ks stops it",
+          "[stage7]") {
+    // Reflectance 2^-8 = 0.00390625 is not black: one bounce adds c / 256, exact in binary.
+    // A cutoff "for speed" (say max(Ks) < 0.01) would drop the reflection and the second ray.
+    std::vector<Ray> asked;
+    const Color faint(0.00390625);
+    const Color got = radiance(facing_mirrors(faint, asked), kUpward, 1, kErrorBound);
+    CHECK(got == kLocal + faint * kLocal);
+    CHECK(asked.size() == 2);
+}
+
 TEST_CASE("radiance: a mirror ray that leaves the scene adds black", "[stage7]") {
     std::vector<Ray> asked;
     const Color got = radiance(mirror_then_sky(asked), {{0, 0, 1}, {0, 0, -1}}, 5, kErrorBound);
