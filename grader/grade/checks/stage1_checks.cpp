@@ -78,6 +78,7 @@ std::vector<ProbeCase> public_cases() {
         exact_vector("cross", {{1, 0, 0}, {0, 1, 0}}, {0, 0, 1}),
         exact_vector("cross", {{0, 1, 0}, {1, 0, 0}}, {0, 0, -1}),
         exact_number("length", {{3, 4, 0}}, 5.0),
+        exact_number("length", {{0, 0, 0}}, 0.0),
         exact_number("length", {{3e200, 4e200, 0}}, 5e200, 4 * kUnit * 5e200),
         exact_number("length", {{3e-200, 4e-200, 0}}, 5e-200, 4 * kUnit * 5e-200),
         exact_vector("normalize", {{0, 3, 4}}, {0, 0.6, 0.8}, 2 * kUnit),
