@@ -61,6 +61,23 @@ std::string barycentric_text(double beta, double gamma) {
     return "(" + exact_text(beta) + ", " + exact_text(gamma) + ")";
 }
 
+// The same primitive, bit for bit: any test gives both the same answer, so closest_hit's tie rule
+// decides between them whatever the rounding.
+bool same_shape(const CaseShape& a, const CaseShape& b) {
+    if (a.index() != b.index()) return false;
+    if (const auto* s = std::get_if<Sphere>(&a)) {
+        const Sphere& other = std::get<Sphere>(b);
+        return s->center == other.center && s->radius == other.radius;
+    }
+    if (const auto* t = std::get_if<Triangle>(&a)) {
+        const Triangle& other = std::get<Triangle>(b);
+        return t->p0 == other.p0 && t->p1 == other.p1 && t->p2 == other.p2;
+    }
+    const Plane& p = std::get<Plane>(a);
+    const Plane& other = std::get<Plane>(b);
+    return p.point == other.point && p.normal == other.normal;
+}
+
 // A primitive the closest hit may be on: an exact hit, or a near-boundary miss whose crossing
 // point a correct test may report.
 bool is_candidate(const Expectation& e) {
@@ -228,6 +245,19 @@ void judge_closest_hit(const RayCase& ray_case, const CaseAnswer& answer, CaseFi
     }
     if (e.near_boundary) ++findings.near_boundary_hits;
     check_measurements(e, hit, triangle, who, findings);
+
+    // Ties go to the primitive first in closest_hit's order. Only a copy of the chosen primitive
+    // ties whatever the rounding (two different surfaces through one point may round either way),
+    // and a copy is of the same kind, so "first" is first in the list.
+    for (std::size_t j = 0; j < k; ++j) {
+        if (same_shape(primitives[j].shape, primitives[k].shape)) {
+            findings.fail(Verdict::wrong_primitive,
+                          "closest_hit chose " + who + ", but " + label(ray_case, j) +
+                              " is the same primitive, hit at the same t, and comes first: ties "
+                              "go to the primitive listed first");
+            return;
+        }
+    }
 
     // Another primitive is clearly nearer when even the latest t its hit may have is below the
     // earliest the chosen one may have. fmax skips a NaN alternative.

@@ -28,8 +28,10 @@ constexpr std::size_t kCasesPerFamily = 40;
 
 // The contract on hand-picked cases, which random families reach seldom: a ray's [t_min, t_max]
 // cutting a hit off on either side, triangles in the coordinate planes (the projection method's
-// choice of axis), and several primitives at once, the nearest not the first in closest_hit's
-// order (spheres, triangles, planes).
+// choice of axis), several primitives at once, the nearest not the first in closest_hit's
+// order (spheres, triangles, planes), copies of one primitive, a tie that must go to the
+// first, and slivers whose double cross product is not zero though an edge's inward normal
+// rounds to zero (the half-spaces method's 0 / 0 barycentric).
 CaseFamily contract_family() {
     const double inf = HUGE_VAL;
     const Triangle in_z{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
@@ -77,6 +79,18 @@ CaseFamily contract_family() {
             many({{0.1, 0.1, 20}, {0, 0, -1}, 0.0, 8.0}, {far_sphere, in_z, at_z15}),
             many({{0.1, 0.1, 20}, {0, 0, -1}, 6.0, inf}, {far_sphere, in_z, at_z15}),
             many({{0.1, 0.1, 20}, {0, 0, -1}, 12.0, inf}, {far_sphere, in_z, at_z15}),
+            many({{0, 0, -5}, {0, 0, 1}}, {unit, unit}),  // ties
+            many({{0.3, -0.2, 5}, {0, 0, -1}}, {in_z, in_z, in_z}),
+            many({{0, 0, 5}, {0, 0, -1}}, {at_z3, at_z3}),
+            many({{0.1, 0.1, -5}, {0, 0, 1}}, {far_sphere, unit, in_z, unit, in_z}),
+            one({{1.0275703435596424, 0.78125, 3.2150703435596424},
+                 {-0.7071067811865475, -0.0, -0.7071067811865475}},
+                Triangle{{-0.875, 0.625, 0.875}, {-1.3125, 0.9374999999999999, 1.3125}, {0, 0, 0}}),
+            one({{-0.6853907864998738, -0.28125, 3.0582815729997477},
+                 {0.4472135954999579, -0.0, -0.8944271909999159}},
+                Triangle{{0.875, -0.375, 0.5},
+                         {0.4375, -0.18749999999999997, 0.24999999999999997},
+                         {0, 0, 0}}),
         }};
     for (std::size_t k = 0; k < family.cases.size(); ++k)
         family.cases[k].index = k;
