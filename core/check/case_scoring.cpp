@@ -246,15 +246,27 @@ void judge_closest_hit(const RayCase& ray_case, const CaseAnswer& answer, CaseFi
     if (e.near_boundary) ++findings.near_boundary_hits;
     check_measurements(e, hit, triangle, who, findings);
 
-    // Ties go to the primitive first in closest_hit's order. Only a copy of the chosen primitive
-    // ties whatever the rounding (two different surfaces through one point may round either way),
-    // and a copy is of the same kind, so "first" is first in the list.
-    for (std::size_t j = 0; j < k; ++j) {
-        if (same_shape(primitives[j].shape, primitives[k].shape)) {
+    // Ties go to the primitive first in closest_hit's order (spheres, triangles, planes, each in
+    // list order: the variant's order, then the case's). A tie is decidable only where rounding
+    // cannot break it: a copy of the chosen primitive, which every test answers alike, or an
+    // exact hit at the same t where neither t may round (both tolerances zero).
+    const auto first_in_order = [&](std::size_t j) {
+        const std::size_t rank_j = primitives[j].shape.index();
+        const std::size_t rank_k = primitives[k].shape.index();
+        return rank_j < rank_k || (rank_j == rank_k && j < k);
+    };
+    for (std::size_t j = 0; j < primitives.size(); ++j) {
+        if (j == k || !first_in_order(j)) continue;
+        const Expectation& other = primitives[j].expected;
+        const bool copy = same_shape(primitives[j].shape, primitives[k].shape);
+        const bool exact_tie = e.hit && other.hit && !other.near_boundary && other.t == e.t &&
+                               other.t_tolerance == 0.0 && e.t_tolerance == 0.0;
+        if (copy || exact_tie) {
             findings.fail(Verdict::wrong_primitive,
                           "closest_hit chose " + who + ", but " + label(ray_case, j) +
-                              " is the same primitive, hit at the same t, and comes first: ties "
-                              "go to the primitive listed first");
+                              " is hit at the same t and comes first in closest_hit's order "
+                              "(spheres, triangles, planes, each in list order): ties go to the "
+                              "first");
             return;
         }
     }

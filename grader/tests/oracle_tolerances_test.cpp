@@ -2,6 +2,7 @@
 // finite on every family and seed, near-boundary only within the rounding radius, the handout's
 // sphere accepted and the lecture's discriminant not, the reference within a few ulps.
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -11,6 +12,7 @@
 #include "core/check/case_scoring.h"
 #include "core/check/stage3_methods.h"
 #include "core/testing/catch.h"
+#include "grader/families/stage3_contract_cases.h"
 #include "grader/families/stage3_families.h"
 #include "grader/oracle/decide_cases.h"
 #include "grader/oracle/exact_intersection.h"
@@ -217,5 +219,59 @@ TEST_CASE("reference tests: no hit of any method on any family has a NaN or infi
                 }
             }
         }
+    }
+}
+
+TEST_CASE("contract cases: every reference method passes them, the exact ones with exact t",
+          "[oracle]") {
+    CaseFamily contract = contract_family();
+    decide_cases(contract);
+    CaseFamily exact = exact_family();
+    decide_cases(exact);
+    tighten_exact_family(exact);
+    std::vector<Stage3Method> methods = stage3_methods();
+    methods.push_back(sphere_method("intersect_sphere", intersect_sphere_stable_roots));
+    methods.push_back(sphere_method("intersect_sphere", handout_sphere));
+    Stage3Method moller_trumbore{"intersect_triangle", Stage3Method::Kind::triangle};
+    moller_trumbore.triangle = intersect_triangle_moller_trumbore;
+    methods.push_back(moller_trumbore);
+    for (const CaseFamily* family : {&contract, &exact}) {
+        for (const Stage3Method& method : methods) {
+            CAPTURE(family->name, method.name);
+            const MethodScore s = score(method, *family);
+            const std::string first_failure =
+                s.counterexamples.empty() ? "" : s.counterexamples.front().detail;
+            CAPTURE(first_failure);
+            CHECK(s.passed == s.cases);
+        }
+    }
+}
+
+TEST_CASE("contract cases: the exact ones fail a range, an edge rule or a tie rule broken",
+          "[oracle]") {
+    CaseFamily exact = exact_family();
+    decide_cases(exact);
+    tighten_exact_family(exact);
+    // A tie across kinds: the plane, the triangle and the sphere all at t = 5, listed plane
+    // first; closest_hit must choose the sphere.
+    const auto tie = std::find_if(exact.cases.begin(), exact.cases.end(), [](const RayCase& c) {
+        return c.primitives.size() == 3 && std::holds_alternative<Plane>(c.primitives[0].shape) &&
+               std::holds_alternative<Sphere>(c.primitives[2].shape);
+    });
+    REQUIRE(tie != exact.cases.end());
+    const Stage3Method closest{"closest_hit", Stage3Method::Kind::closest};
+    CaseAnswer plane_first;
+    plane_first.hits.resize(3);
+    plane_first.closest_hit = Hit{5.0, Vec3(0, 0, 1)};
+    plane_first.closest_primitive = 0;
+    std::string detail;
+    CHECK(score_case(closest, *tie, plane_first, detail) == Verdict::wrong_primitive);
+    CaseAnswer sphere_chosen = plane_first;
+    sphere_chosen.closest_primitive = 2;
+    CHECK(score_case(closest, *tie, sphere_chosen, detail) == Verdict::pass);
+    // Every exact case is decided strictly: nothing near a boundary.
+    for (const RayCase& ray_case : exact.cases) {
+        for (const CasePrimitive& primitive : ray_case.primitives)
+            CHECK_FALSE(primitive.expected.near_boundary);
     }
 }
