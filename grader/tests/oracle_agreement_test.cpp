@@ -2,12 +2,11 @@
 // and the reference solutions, which must agree with it away from every boundary (to within the
 // tolerances it reports). A failure here means the oracle, or its rounding budget, is wrong.
 
-#include <random>
-
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/intersections.h>
 #include <glm/geometric.hpp>
 
+#include "core/math/portable_random.h"
 #include "core/testing/catch.h"
 #include "grader/oracle/exact_intersection.h"
 #include "solutions/3_intersect/intersect_methods.h"
@@ -18,18 +17,12 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
 
-Vec3 random_point(std::mt19937_64& rng, double extent) {
-    std::uniform_real_distribution<double> u(-extent, extent);
-    return {u(rng), u(rng), u(rng)};
-}
-
 // A ray from outside the box, aimed at a random point of the triangle or a little beside it.
-Ray ray_towards(std::mt19937_64& rng, const Triangle& tri) {
-    std::uniform_real_distribution<double> u(-0.2, 1.2);
-    const double beta = u(rng);
-    const double gamma = u(rng);
+Ray ray_towards(PortableRandom& random, const Triangle& tri) {
+    const double beta = random.uniform(-0.2, 1.2);
+    const double gamma = random.uniform(-0.2, 1.2);
     const Vec3 target = tri.p0 + beta * (tri.p1 - tri.p0) + gamma * (tri.p2 - tri.p0);
-    const Vec3 origin = random_point(rng, 8.0) + Vec3(0, 0, 10);
+    const Vec3 origin = random.point(8.0) + Vec3(0, 0, 10);
     return {origin, target - origin};
 }
 
@@ -45,11 +38,11 @@ const std::pair<const char*, TriangleTest> kTriangleTests[] = {
 }  // namespace
 
 TEST_CASE("oracle: agrees with CGAL's ray-triangle test on random rays", "[oracle]") {
-    std::mt19937_64 rng(101);
     int hits = 0;
     for (int k = 0; k < 3000; ++k) {
-        const Triangle tri{random_point(rng, 2), random_point(rng, 2), random_point(rng, 2)};
-        const Ray ray = ray_towards(rng, tri);
+        PortableRandom random(101, k);
+        const Triangle tri{random.point(2), random.point(2), random.point(2)};
+        const Ray ray = ray_towards(random, tri);
         CAPTURE(k);
         const Expectation e = expect_triangle(ray, tri);
         const Kernel::Ray_3 cgal_ray(
@@ -65,11 +58,11 @@ TEST_CASE("oracle: agrees with CGAL's ray-triangle test on random rays", "[oracl
 }
 
 TEST_CASE("oracle: every reference triangle test agrees away from the boundaries", "[oracle]") {
-    std::mt19937_64 rng(102);
     int decided = 0;
     for (int k = 0; k < 3000; ++k) {
-        const Triangle tri{random_point(rng, 2), random_point(rng, 2), random_point(rng, 2)};
-        const Ray ray = ray_towards(rng, tri);
+        PortableRandom random(102, k);
+        const Triangle tri{random.point(2), random.point(2), random.point(2)};
+        const Ray ray = ray_towards(random, tri);
         const Expectation e = expect_triangle(ray, tri);
         if (e.near_boundary) continue;
         ++decided;
@@ -89,13 +82,12 @@ TEST_CASE("oracle: every reference triangle test agrees away from the boundaries
 }
 
 TEST_CASE("oracle: the reference sphere tests agree away from the boundaries", "[oracle]") {
-    std::mt19937_64 rng(103);
-    std::uniform_real_distribution<double> radius(0.1, 3.0);
     int decided = 0;
     for (int k = 0; k < 3000; ++k) {
-        const Sphere sphere{random_point(rng, 2), radius(rng)};
-        const Vec3 origin = random_point(rng, 8.0);
-        const Vec3 target = sphere.center + random_point(rng, sphere.radius * 1.2);
+        PortableRandom random(103, k);
+        const Sphere sphere{random.point(2), random.uniform(0.1, 3.0)};
+        const Vec3 origin = random.point(8.0);
+        const Vec3 target = sphere.center + random.point(sphere.radius * 1.2);
         const Ray ray{origin, target - origin};
         const Expectation e = expect_sphere(ray, sphere);
         if (e.near_boundary) continue;

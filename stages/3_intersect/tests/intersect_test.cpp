@@ -248,18 +248,21 @@ TEST_CASE("intersect_sphere: a ray starting just outside a large sphere hits it 
     CHECK_THAT(hit->normal, IsNear(Vec3(2e-8, 1, 0), 1e-12));
 }
 
-TEST_CASE("intersect_sphere: a small sphere far away is still hit, near the right distance", "[stage3]") {
-    // A 1 mm sphere 100 km away: b^2 and a c are both near 1e10, and their difference, the
-    // discriminant, keeps only a few of its digits, in the textbook and the stable form alike.
-    // The hit is still found, a fraction of a millimetre off; docs/stage3.md, "Ray-sphere",
-    // shows the rewrite of the discriminant that does better.
+TEST_CASE("intersect_sphere: a small sphere far away, hit to the nanometre", "[stage3]") {
+    // A 1 mm sphere 100 km away: b^2 and a c are both near 1e10, and b^2 - a c keeps only a few
+    // of its digits, a fraction of a millimetre. Written as a (r^2 - |f - (b / a) D|^2), r^2
+    // minus the squared distance from the centre to the ray's line, it has nothing to cancel.
+    // Exactly: 1e5 - 1e-3 = 99999.999, and 1e5 - sqrt(r^2 - 0.6e-3^2) = 99999.9992.
     const Sphere sphere{{1e5, 0, 0}, 1e-3};
     const std::optional<Hit> hit = intersect_sphere({{0, 0, 0}, {1, 0, 0}}, sphere);
     REQUIRE(hit);
-    CHECK(hit->t == Approx(1e5 - 1e-3).margin(1e-3));
+    CHECK(hit->t == Approx(99999.999).margin(1e-9));
     const std::optional<Hit> offset = intersect_sphere({{0, 0.6e-3, 0}, {1, 0, 0}}, sphere);
     REQUIRE(offset);
-    CHECK(offset->t == Approx(1e5 - 0.8e-3).margin(1e-3));  // half-chord sqrt(r^2 - h^2)
+    CHECK(offset->t == Approx(99999.9992).margin(1e-9));
+    CHECK_THAT(offset->normal, IsNear(Vec3(-0.8, 0.6, 0), 1e-5));
+    // A line 1.00001 r from the centre misses; b^2 - a c cannot tell it from a hit.
+    CHECK_FALSE(intersect_sphere({{0, 1.00001e-3, 0}, {1, 0, 0}}, sphere));
 }
 
 TEST_CASE("intersect_sphere: a huge sphere is hit where it should be", "[stage3]") {
