@@ -93,10 +93,10 @@ ParetoPoint score_point(const ParetoMethod& entry, const CaseFamily& family) {
     point.function = entry.method.name;
     point.cases = score.cases;
     // Against the exact answer for every method, near a boundary or not: the grading's "either
-    // passes" near a boundary would hide the hits a form reports on exact misses of small
-    // spheres. A leak is an exact hit that no primitive of the group reported.
+    // passes" near a boundary would hide a form's hits on exact misses. A leak (an exact hit on
+    // the group that no primitive of it reported) is a false miss.
     point.false_hits = score.exact_false_hits;
-    point.false_misses = score.exact_false_misses + score.count(Verdict::leak);
+    point.false_misses = score.exact_false_misses;
     // A NaN t has no distance in ulps (the verdicts already counted it as wrong), and JSON has no
     // infinity.
     std::vector<double> ulps;

@@ -163,8 +163,6 @@ void judge_primitive_tests(const Stage3Method& method, const RayCase& ray_case,
             check_finite(*hit, triangle, who, findings);
         }
         if (e.hit && !first_exact_hit) first_exact_hit = k;
-        findings.exact_false_hit = findings.exact_false_hit || (hit && !e.hit);
-        findings.exact_false_miss = findings.exact_false_miss || (!hit && e.hit);
 
         // The decision: near a boundary either answer passes.
         if (e.near_boundary) {
@@ -178,6 +176,11 @@ void judge_primitive_tests(const Stage3Method& method, const RayCase& ray_case,
         }
         if (hit) check_measurements(e, *hit, triangle, who, findings);
     }
+
+    // Against the exact answer, near a boundary or not: what the ray meets, not which neighbour
+    // of an edge takes it.
+    findings.exact_false_hit = reported_a_hit && !first_exact_hit;
+    findings.exact_false_miss = !reported_a_hit && first_exact_hit;
 
     // Rule 4: near an edge each neighbour may miss, but not all of them.
     if (ray_case.watertight && first_exact_hit && !reported_a_hit) {
@@ -237,7 +240,9 @@ void judge_closest_hit(const RayCase& ray_case, const CaseAnswer& answer, CaseFi
     const std::string who = label(ray_case, k);
     const bool triangle = is_triangle(primitives[k]);
     check_finite(hit, triangle, who, findings);
-    findings.exact_false_hit = !e.hit;
+    findings.exact_false_hit =
+        std::none_of(primitives.begin(), primitives.end(),
+                     [](const CasePrimitive& primitive) { return primitive.expected.hit; });
     if (!is_candidate(e)) {
         findings.fail(Verdict::false_hit,
                       who + ": expected a miss, got the closest hit at t = " + exact_text(hit.t));

@@ -48,9 +48,10 @@ struct MethodScore {
     std::array<std::size_t, kVerdictCount> counts{};  ///< cases per Verdict, by its int value
     std::size_t near_boundary_hits = 0;    ///< informational: hits reported where either passes
     std::size_t near_boundary_misses = 0;  ///< informational: misses reported where either passes
-    /// Against the exact answers alone, near a boundary or not: cases with a reported hit on a
-    /// primitive the ray misses exactly, and with a miss reported on one it hits exactly. What
-    /// the speed-against-error study counts, whatever the verdict.
+    /// Against the exact answers alone, near a boundary or not: cases where the method reported
+    /// a hit and the ray misses every primitive it tests exactly, and cases where it reported none
+    /// and the ray hits one exactly (a leak included). What the speed-against-error study counts,
+    /// whatever the verdict; which neighbour of a shared edge takes the ray is not counted.
     std::size_t exact_false_hits = 0;
     std::size_t exact_false_misses = 0;
     /// For every primitive whose exact answer is a hit (near a boundary or not) and which the
