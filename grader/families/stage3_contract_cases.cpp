@@ -42,7 +42,7 @@ CaseFamily contract_family() {
     CaseFamily family{
         "contract",
         0,
-        "t ranges, triangles in coordinate planes, nearest of several",
+        "t ranges, triangles in coordinate planes, nearest of several, ties, slivers",
         {
             one({{0.3, -0.2, 5}, {0, 0, -1}}, in_z),
             one({{0.3, -0.2, 5}, {0, 0, -1}, 6.0, inf}, in_z),  // before t_min

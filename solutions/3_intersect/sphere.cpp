@@ -88,24 +88,33 @@ std::optional<Hit> stable_sphere(const RayType& ray, const SphereType& sphere) {
     const Real r = sphere.radius / s;
     const Vector d = ray.direction / speed;
 
-    // The quadratic's coefficients, from the exact offset: b = D . (hi + lo) / |D| and
-    // c = |hi + lo|^2 - r^2, the large products split exactly.
-    CompensatedSum<Real> along;
-    CompensatedSum<Real> squares;
-    for (int k = 0; k < 3; ++k) {
-        along.add_product(ray.direction[k], hi[k], ray.direction[k] * lo[k]);
-        squares.add_product(hi[k], hi[k], (2 * hi[k] + lo[k]) * lo[k]);
+    // The quadratic's coefficients. Plain sums keep a few ulps of themselves unless they cancel
+    // (b below half of |f|, c below half of |f|^2 + r^2); then they are summed again from the
+    // exact offset, b = D . (hi + lo) / |D| and c = |hi + lo|^2 - r^2, the large products split
+    // exactly. The second way costs three times the first, and only rays that need it pay.
+    const Real f_squared = glm::dot(f, f);
+    Real b = glm::dot(d, f);
+    Real c = f_squared - r * r;
+    if (!(2 * std::abs(b) >= std::sqrt(f_squared))) {
+        CompensatedSum<Real> along;
+        for (int k = 0; k < 3; ++k)
+            along.add_product(ray.direction[k], hi[k], ray.direction[k] * lo[k]);
+        b = along.value() / speed;
     }
-    squares.add_product(-r, r);
-    const Real b = along.value() / speed;
-    const Real c = squares.value();
+    if (!(2 * std::abs(c) >= f_squared + r * r)) {
+        CompensatedSum<Real> squares;
+        for (int k = 0; k < 3; ++k)
+            squares.add_product(hi[k], hi[k], (2 * hi[k] + lo[k]) * lo[k]);
+        squares.add_product(-r, r);
+        c = squares.value();
+    }
 
     // The discriminant, in whichever form rounds less: b^2 - c, off by a few ulps of b^2 + |c|,
     // or r^2 minus the squared distance from C to the line, off by a few ulps of r |f| (f and d
     // round by an ulp of their size before the distance cancels). The first wins from just
     // outside a huge sphere, the second for a small sphere far away.
     Real discriminant = b * b - c;
-    if (!(b * b + std::abs(c) <= 2 * r * glm::length(f))) {
+    if (!(b * b + std::abs(c) <= 2 * r * std::sqrt(f_squared))) {
         const Vector to_line = f - b * d;
         discriminant = r * r - glm::dot(to_line, to_line);
     }

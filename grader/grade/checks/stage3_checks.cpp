@@ -140,7 +140,7 @@ std::vector<CheckDefinition> stage3_checks() {
     }
     checks.push_back(
         {"stage3.hidden", 3, "unit",
-         "every function on t ranges, triangles in coordinate planes and the nearest of several",
+         "every function on the contract: t ranges, edges, ties, degenerate input, the domain",
          [](const GradingContext& context, const BuiltProbe& probe) {
              return measure_methods(context, probe, stage3_methods(), decided_contract(),
                                     "stage3.hidden");
