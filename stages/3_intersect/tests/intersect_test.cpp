@@ -147,7 +147,10 @@ TEST_CASE("intersect_triangle_*: a degenerate triangle or a zero direction misse
     }
 }
 
-TEST_CASE("intersect_triangle_*: a collinear triangle off the axes is a miss, even when rounding leaves a tiny determinant", "[stage3]") {
+TEST_CASE(
+    "intersect_triangle_*: a collinear triangle off the axes is a miss, even when rounding leaves "
+    "a tiny determinant",
+    "[stage3]") {
     // (-2,-2,3), (1,-2,4), (7,-2,6) lie on one line (steps (3,0,1) and (6,0,2)). Cramer's
     // determinant is exactly 0 here, but a test that first transforms the vertices (the
     // watertight test shears them along the ray) rounds them off the line, finds a tiny
@@ -236,7 +239,8 @@ TEST_CASE("intersect_sphere: a zero radius or a zero direction misses, never NaN
     CHECK_FALSE(intersect_sphere({{0, 0, 5}, {0, 0, 0}}, {{0, 0, 0}, 1.0}));
 }
 
-TEST_CASE("intersect_sphere: a ray starting just outside a large sphere hits it at a tiny t", "[stage3]") {
+TEST_CASE("intersect_sphere: a ray starting just outside a large sphere hits it at a tiny t",
+          "[stage3]") {
     // Radius 5e7, origin 1 unit beside the top of the sphere, going down: the near root is
     // t = c / q = 1 / (5e7 + sqrt(2.5e15 - 1)) = 1e-8, and every intermediate here is exact. The
     // textbook -b - sqrt(b^2 - 4ac) subtracts two numbers near 1e8 that differ by 2e-8 and gets
