@@ -17,9 +17,12 @@ namespace raystep {
 
 namespace {
 
-// A reported normal passes as unit length when | |n| - 1 | <= this. Normalizing in double
-// precision leaves |n| within a few units of 2^-53 of 1; a normal that was never normalized, or
-// was divided by the wrong length, is off by far more.
+// A reported normal passes as unit length when | |n| - 1 | is at most this or the expectation's
+// normal_tolerance, whichever is larger. Normalizing in double precision leaves |n| within a few
+// units of 2^-53 of 1; a normal that was never normalized, or was divided by the wrong length, is
+// off by far more. The handout's sphere normal (P - C) / r is off 1 by the rounding of P - C over
+// r, which on a small sphere far away exceeds 1e-9 but never the normal_tolerance, which bounds
+// that same error: any n within normal_tolerance of a unit vector has | |n| - 1 | within it.
 constexpr double kUnitLengthTolerance = 1e-9;
 
 // What one case showed: the verdict and its reason, and what the family's score sums up.
@@ -29,6 +32,8 @@ struct CaseFindings {
     std::vector<double> t_ulps;
     std::size_t near_boundary_hits = 0;
     std::size_t near_boundary_misses = 0;
+    bool exact_false_hit = false;
+    bool exact_false_miss = false;
 
     // The enum lists the rules in the order in which they decide, so the smallest failing
     // verdict wins; among failures of one rule, the first found (the earliest primitive) explains.
@@ -54,6 +59,23 @@ bool is_finite(const Vec3& v) {
 
 std::string barycentric_text(double beta, double gamma) {
     return "(" + exact_text(beta) + ", " + exact_text(gamma) + ")";
+}
+
+// The same primitive, bit for bit: any test gives both the same answer, so closest_hit's tie rule
+// decides between them whatever the rounding.
+bool same_shape(const CaseShape& a, const CaseShape& b) {
+    if (a.index() != b.index()) return false;
+    if (const auto* s = std::get_if<Sphere>(&a)) {
+        const Sphere& other = std::get<Sphere>(b);
+        return s->center == other.center && s->radius == other.radius;
+    }
+    if (const auto* t = std::get_if<Triangle>(&a)) {
+        const Triangle& other = std::get<Triangle>(b);
+        return t->p0 == other.p0 && t->p1 == other.p1 && t->p2 == other.p2;
+    }
+    const Plane& p = std::get<Plane>(a);
+    const Plane& other = std::get<Plane>(b);
+    return p.point == other.point && p.normal == other.normal;
 }
 
 // A primitive the closest hit may be on: an exact hit, or a near-boundary miss whose crossing
@@ -102,7 +124,7 @@ void check_measurements(const Expectation& e, const Hit& hit, bool triangle, con
                                             exact_text(hit.t - expected.t));
     }
     const double length = glm::length(hit.normal);
-    if (!(std::abs(length - 1.0) <= kUnitLengthTolerance)) {
+    if (!(std::abs(length - 1.0) <= std::max(kUnitLengthTolerance, e.normal_tolerance))) {
         findings.fail(Verdict::wrong_normal, who + ": the normal " + exact_text(hit.normal) +
                                                  " has length " + exact_text(length) + ", not 1");
     } else if (!(glm::length(hit.normal - expected.normal) <= e.normal_tolerance)) {
@@ -155,6 +177,11 @@ void judge_primitive_tests(const Stage3Method& method, const RayCase& ray_case,
         if (hit) check_measurements(e, *hit, triangle, who, findings);
     }
 
+    // Against the exact answer, near a boundary or not: what the ray meets, not which neighbour
+    // of an edge takes it.
+    findings.exact_false_hit = reported_a_hit && !first_exact_hit;
+    findings.exact_false_miss = !reported_a_hit && first_exact_hit;
+
     // Rule 4: near an edge each neighbour may miss, but not all of them.
     if (ray_case.watertight && first_exact_hit && !reported_a_hit) {
         findings.fail(
@@ -197,6 +224,7 @@ void judge_closest_hit(const RayCase& ray_case, const CaseAnswer& answer, CaseFi
         } else if (any_candidate) {
             ++findings.near_boundary_misses;
         }
+        findings.exact_false_miss = first_exact_hit.has_value();
         return;
     }
 
@@ -212,6 +240,9 @@ void judge_closest_hit(const RayCase& ray_case, const CaseAnswer& answer, CaseFi
     const std::string who = label(ray_case, k);
     const bool triangle = is_triangle(primitives[k]);
     check_finite(hit, triangle, who, findings);
+    findings.exact_false_hit =
+        std::none_of(primitives.begin(), primitives.end(),
+                     [](const CasePrimitive& primitive) { return primitive.expected.hit; });
     if (!is_candidate(e)) {
         findings.fail(Verdict::false_hit,
                       who + ": expected a miss, got the closest hit at t = " + exact_text(hit.t));
@@ -219,6 +250,31 @@ void judge_closest_hit(const RayCase& ray_case, const CaseAnswer& answer, CaseFi
     }
     if (e.near_boundary) ++findings.near_boundary_hits;
     check_measurements(e, hit, triangle, who, findings);
+
+    // Ties go to the primitive first in closest_hit's order (spheres, triangles, planes, each in
+    // list order: the variant's order, then the case's). A tie is decidable only where rounding
+    // cannot break it: a copy of the chosen primitive, which every test answers alike, or an
+    // exact hit at the same t where neither t may round (both tolerances zero).
+    const auto first_in_order = [&](std::size_t j) {
+        const std::size_t rank_j = primitives[j].shape.index();
+        const std::size_t rank_k = primitives[k].shape.index();
+        return rank_j < rank_k || (rank_j == rank_k && j < k);
+    };
+    for (std::size_t j = 0; j < primitives.size(); ++j) {
+        if (j == k || !first_in_order(j)) continue;
+        const Expectation& other = primitives[j].expected;
+        const bool copy = same_shape(primitives[j].shape, primitives[k].shape);
+        const bool exact_tie = e.hit && other.hit && !other.near_boundary && other.t == e.t &&
+                               other.t_tolerance == 0.0 && e.t_tolerance == 0.0;
+        if (copy || exact_tie) {
+            findings.fail(Verdict::wrong_primitive,
+                          "closest_hit chose " + who + ", but " + label(ray_case, j) +
+                              " is hit at the same t and comes first in closest_hit's order "
+                              "(spheres, triangles, planes, each in list order): ties go to the "
+                              "first");
+            return;
+        }
+    }
 
     // Another primitive is clearly nearer when even the latest t its hit may have is below the
     // earliest the chosen one may have. fmax skips a NaN alternative.
@@ -318,6 +374,8 @@ MethodScore score_family(const Stage3Method& method, const CaseFamily& family,
         score.t_ulps.insert(score.t_ulps.end(), findings.t_ulps.begin(), findings.t_ulps.end());
         score.near_boundary_hits += findings.near_boundary_hits;
         score.near_boundary_misses += findings.near_boundary_misses;
+        score.exact_false_hits += findings.exact_false_hit ? 1 : 0;
+        score.exact_false_misses += findings.exact_false_miss ? 1 : 0;
     }
     return score;
 }

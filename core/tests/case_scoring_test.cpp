@@ -211,10 +211,10 @@ TEST_CASE("score_case: a normal must be unit length and near the expected one", 
     Expectation loose = expect_hit(5.0);
     loose.normal_tolerance = 0.5;
     const RayCase loose_case = make_case({{kSphere, loose}});
-    // Within the loose tolerance of (0, 0, 1), but 1.1 long.
-    const Scored long_normal = score(kSphereTest, loose_case, answer({hit_at(5.0, {0, 0, 1.1})}));
+    // Twice as long: off 1 by more than the tolerance allows any normal near a unit one.
+    const Scored long_normal = score(kSphereTest, loose_case, answer({hit_at(5.0, {0, 0, 2.0})}));
     CHECK(long_normal.verdict == Verdict::wrong_normal);
-    CHECK(long_normal.detail.find("has length 1.1000000000000001, not 1") != std::string::npos);
+    CHECK(long_normal.detail.find("has length 2, not 1") != std::string::npos);
     // Unit length within 1e-9 passes.
     CHECK(score(kSphereTest, loose_case, answer({hit_at(5.0, {0, 0, 1.0 + 5e-10})})).verdict ==
           Verdict::pass);
@@ -225,6 +225,18 @@ TEST_CASE("score_case: a normal must be unit length and near the expected one", 
     CHECK(tilted.detail ==
           "primitive 0 (sphere): expected the normal (0, 0, 1) within 0.125, got "
           "(0.59999999999999998, 0, 0.80000000000000004)");
+}
+
+TEST_CASE("score_case: a normal's length may be off 1 by its tolerance, as (P - C) / r is",
+          "[core]") {
+    // A small sphere far away: the hit point is known to 1e-6 of r, and so is |P - C| / r.
+    Expectation far = expect_hit(5.0);
+    far.normal_tolerance = 1e-6;
+    const RayCase ray_case = make_case({{kSphere, far}});
+    CHECK(score(kSphereTest, ray_case, answer({hit_at(5.0, {0, 0, 1.0 + 5e-7})})).verdict ==
+          Verdict::pass);
+    CHECK(score(kSphereTest, ray_case, answer({hit_at(5.0, {0, 0, 1.0 + 2e-6})})).verdict ==
+          Verdict::wrong_normal);
 }
 
 TEST_CASE("score_case: a triangle's beta and gamma must each be within tolerance", "[core]") {
@@ -327,6 +339,33 @@ TEST_CASE("score_case: closest_hit must report the nearest hit, mapped to its pr
           Verdict::not_finite);
 }
 
+TEST_CASE("score_case: closest_hit gives a tie between copies to the first", "[core]") {
+    const RayCase copies = make_case(
+        {{kSphere, expect_hit(5.0)}, {kSphere, expect_hit(5.0)}, {kPlane, expect_hit(9.0)}});
+    CHECK(score(kClosest, copies, closest_answer(0, hit_at(5.0))).verdict == Verdict::pass);
+    const Scored last = score(kClosest, copies, closest_answer(1, hit_at(5.0)));
+    CHECK(last.verdict == Verdict::wrong_primitive);
+    CHECK(last.detail.find("ties go to the first") != std::string::npos);
+}
+
+TEST_CASE("score_case: closest_hit gives an exact tie across kinds to spheres, then triangles",
+          "[core]") {
+    // Hits at exactly t = 5 that no rounding moves (tolerance 0), listed plane first.
+    Expectation exact_plane = expect_hit(5.0);
+    exact_plane.t_tolerance = 0.0;
+    Expectation exact_triangle = expect_triangle_hit(5.0, 0.25, 0.25);
+    exact_triangle.t_tolerance = 0.0;
+    const RayCase ray_case = make_case({{kPlane, exact_plane}, {kTriangle, exact_triangle}});
+    CHECK(score(kClosest, ray_case, closest_answer(1, hit_at(5.0, kUp, 0.25, 0.25))).verdict ==
+          Verdict::pass);
+    CHECK(score(kClosest, ray_case, closest_answer(0, hit_at(5.0))).verdict ==
+          Verdict::wrong_primitive);
+    // Where either t may round, the same two hits may go either way.
+    const RayCase rounded =
+        make_case({{kPlane, expect_hit(5.0)}, {kTriangle, expect_triangle_hit(5.0, 0.25, 0.25)}});
+    CHECK(score(kClosest, rounded, closest_answer(0, hit_at(5.0))).verdict == Verdict::pass);
+}
+
 TEST_CASE("score_case: closest_hit on a primitive the ray misses is a false hit", "[core]") {
     const RayCase ray_case = make_case({{kSphere, expect_miss()}, {kPlane, expect_hit(15.0)}});
     const Scored scored = score(kClosest, ray_case, closest_answer(0, hit_at(3.0)));
@@ -415,6 +454,25 @@ TEST_CASE("score_family: counts near-boundary answers of either kind", "[core]")
     CHECK(scored.near_boundary_hits == 1);
     CHECK(scored.near_boundary_misses == 1);
     CHECK(scored.t_ulps == std::vector<double>{0.0});
+}
+
+TEST_CASE("score_family: exact false hits and misses count what near-boundary forgives", "[core]") {
+    // A near-boundary miss reported as a hit passes, and is an exact false hit; a near-boundary
+    // hit reported as a miss passes, and is an exact false miss. Which neighbour of a shared edge
+    // takes the ray is neither.
+    CaseFamily family{"edges",
+                      1,
+                      "",
+                      {make_case({{kTriangle, near_miss_crossing(5.0)}}),
+                       make_case({{kTriangle, near_boundary(expect_triangle_hit(5.0, 0.0, 0.5))}}),
+                       shared_edge_case(true)}};
+    const MethodScore scored =
+        score_family(kTriangleTest, family,
+                     {answer({hit_at(5.0, kUp, 1.0, 0.0)}), answer({std::nullopt}),
+                      answer({std::nullopt, hit_at(5.0, kUp, 0.0, 0.5)})});
+    CHECK(scored.passed == 3);
+    CHECK(scored.exact_false_hits == 1);
+    CHECK(scored.exact_false_misses == 1);
 }
 
 TEST_CASE("score_family: a hit where the exact answer is a miss adds no t error", "[core]") {

@@ -49,15 +49,14 @@ const ParetoMethod& reference_method(const std::string& name) {
     return *found;
 }
 
-// The cases where a test that reports no triangle hit is wrong: an exact hit away from every
-// boundary, or a watertight group the ray meets (where a miss by all is a leak).
+// The cases where a test that reports no triangle hit is wrong against the exact answer: the ray
+// meets a triangle exactly, near a boundary or not (the study counts what the grading forgives).
 std::size_t cases_with_a_triangle_hit(const CaseFamily& family) {
     std::size_t count = 0;
     for (const RayCase& ray_case : family.cases) {
         const bool hit = std::any_of(
             ray_case.primitives.begin(), ray_case.primitives.end(), [&](const CasePrimitive& p) {
-                return std::holds_alternative<Triangle>(p.shape) && p.expected.hit &&
-                       (!p.expected.near_boundary || ray_case.watertight);
+                return std::holds_alternative<Triangle>(p.shape) && p.expected.hit;
             });
         count += hit;
     }
@@ -84,10 +83,13 @@ TEST_CASE("measure_pareto_family: the reference tests are right on the hand-comp
     const ParetoFamily result =
         measure_pareto_family(hand_computed_family(), reference_pareto_methods(), kQuick);
     CHECK(result.points.size() == reference_pareto_methods().size());
+    // The study counts against the exact answer, near a boundary too: a float test may hit the
+    // one case that passes within rounding of an edge and misses it exactly; a double test does
+    // not.
     for (const ParetoPoint& point : result.points) {
         CAPTURE(point.function);
         CHECK(point.cases > 0);
-        CHECK(point.false_hits == 0);
+        CHECK(point.false_hits <= (point.precision == "float" ? 1u : 0u));
         CHECK(point.false_misses == 0);
     }
 }

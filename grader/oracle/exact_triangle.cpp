@@ -13,9 +13,10 @@ namespace {
 struct TriangleGeometry {
     bool degenerate = true;  ///< a zero direction or a degenerate (collinear) triangle
     bool parallel = false;   ///< the ray is parallel to the triangle's plane
-    exact::Number u, v, w;  ///< signed volumes of the ray's line with edges p1p2, p2p0, p0p1
-    exact::Number den;      ///< u + v + w = D . N
+    exact::Number u, v, w;   ///< signed volumes of the ray's line with edges p1p2, p2p0, p0p1
+    exact::Number den;       ///< u + v + w = D . N
     exact::Number t;
+    exact::Vector normal;  ///< (p1 - p0) x (p2 - p0), exact
     CGAL::Sign signs[3] = {CGAL::ZERO, CGAL::ZERO, CGAL::ZERO};
     bool inside = false;    ///< the line meets the closed triangle
     bool in_range = false;  ///< t is in [t_min, t_max]
@@ -49,7 +50,8 @@ TriangleGeometry solve(const Ray& ray, const Triangle& tri) {
         return g;
     }
 
-    g.t = (a0 * CGAL::cross_product(p1 - p0, p2 - p0)) / g.den;
+    g.normal = CGAL::cross_product(p1 - p0, p2 - p0);
+    g.t = (a0 * g.normal) / g.den;
     const bool positive = g.signs[0] == CGAL::POSITIVE || g.signs[1] == CGAL::POSITIVE ||
                           g.signs[2] == CGAL::POSITIVE;
     const bool negative = g.signs[0] == CGAL::NEGATIVE || g.signs[1] == CGAL::NEGATIVE ||
@@ -81,6 +83,29 @@ PossibleAnswers possibly_inside(const CGAL::Sign signs[3], const bool within_sla
     return {can_be_inside, can_be_outside};
 }
 
+// The exact normal's direction and length, rounded. Its double cross product can round to
+// zero, or to a vector pointing anywhere, on a sliver whose edges are nearly parallel (their
+// products cancel), though the exact normal is not zero: scaling the exact normal by its largest
+// component is exact, rounding the scaled components costs half an ulp each, and normalizing
+// that vector of length 1 to sqrt(3) costs a few more.
+struct RoundedNormal {
+    Vec3 unit;
+    double length;
+};
+
+RoundedNormal rounded_normal(const exact::Vector& n) {
+    const exact::Number components[3] = {n.x(), n.y(), n.z()};
+    int largest = 0;
+    for (int k = 1; k < 3; ++k) {
+        if (CGAL::abs(components[k]) > CGAL::abs(components[largest])) largest = k;
+    }
+    const exact::Number size = CGAL::abs(components[largest]);
+    const Vec3 scaled{exact::rounded(components[0] / size), exact::rounded(components[1] / size),
+                      exact::rounded(components[2] / size)};
+    const double scaled_length = glm::length(scaled);
+    return {scaled / scaled_length, exact::rounded(size) * scaled_length};
+}
+
 }  // namespace
 
 std::optional<exact::HitTime> exact::triangle_hit_time(const Ray& ray, const Triangle& triangle) {
@@ -102,11 +127,12 @@ Expectation expect_triangle(const Ray& ray, const Triangle& tri) {
         return expected;
     }
 
-    // Sizes for the budget, in doubles: they only set tolerances.
+    // Sizes for the budget, in doubles: they only set tolerances. The normal's length comes
+    // from the exact normal: a sliver's double cross product can round to zero.
     const Vec3 e1 = tri.p1 - tri.p0;
     const Vec3 e2 = tri.p2 - tri.p0;
-    const Vec3 n = glm::cross(e1, e2);
-    const double n_length = glm::length(n);
+    const RoundedNormal n = rounded_normal(g.normal);
+    const double n_length = n.length;
     const double d_length = glm::length(ray.direction);
     const double den = std::abs(exact::approximate(g.den));
     const double t = exact::rounded(g.t);
@@ -123,8 +149,8 @@ Expectation expect_triangle(const Ray& ray, const Triangle& tri) {
     // direction's own slack.
     const double tilt = 2.0 * slack * (glm::length(e1) + glm::length(e2)) / n_length;
     const Vec3 point = ray.origin + t * ray.direction;
-    const double lever = std::max({glm::length(point - tri.p0), glm::length(point - tri.p1),
-                                   glm::length(point - tri.p2)});
+    const double lever = std::max(
+        {glm::length(point - tri.p0), glm::length(point - tri.p1), glm::length(point - tri.p2)});
     const double t_tolerance =
         (slack + tilt * lever) * n_length / den + kRelativeSlack * std::abs(t);
 
@@ -136,10 +162,9 @@ Expectation expect_triangle(const Ray& ray, const Triangle& tri) {
         const double b = glm::length(q - ray.origin);
         return d_length * (slack * (a + b) + kRelativeSlack * a * b);
     };
-    const bool within_slack[3] = {
-        std::abs(exact::approximate(g.u)) <= side_slack(tri.p1, tri.p2),
-        std::abs(exact::approximate(g.v)) <= side_slack(tri.p2, tri.p0),
-        std::abs(exact::approximate(g.w)) <= side_slack(tri.p0, tri.p1)};
+    const bool within_slack[3] = {std::abs(exact::approximate(g.u)) <= side_slack(tri.p1, tri.p2),
+                                  std::abs(exact::approximate(g.v)) <= side_slack(tri.p2, tri.p0),
+                                  std::abs(exact::approximate(g.w)) <= side_slack(tri.p0, tri.p1)};
     const PossibleAnswers inside = possibly_inside(g.signs, within_slack);
     const PossibleAnswers in_range = possible(g.in_range, near_range_end(ray, t, t_tolerance));
 
@@ -154,7 +179,7 @@ Expectation expect_triangle(const Ray& ray, const Triangle& tri) {
     const double smallest_altitude = n_length / longest_edge;
     expected.t = t;
     expected.t_tolerance = t_tolerance;
-    expected.normal = n / n_length;
+    expected.normal = n.unit;
     expected.normal_tolerance = tilt + kRelativeSlack;
     expected.beta = exact::rounded(g.v / g.den);
     expected.gamma = exact::rounded(g.w / g.den);

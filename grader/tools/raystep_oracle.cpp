@@ -7,9 +7,14 @@
 //       runs every reference method (the lecture's three triangle tests, Möller-Trumbore, the
 //       watertight test, three ray-sphere forms, the plane, closest_hit) on every family and
 //       prints a Markdown table of what each gets right: docs/stage3.md's measurements.
+//   raystep-oracle tolerances [--count N] [--seeds K] [--seed S] [--threads T]
+//       decides each family from seeds S to S + K - 1 and prints, per family, how many
+//       primitives are near a boundary, the largest normal tolerance and how many tolerances are
+//       not finite: how tight the oracle is (docs/measurements/stage3-oracle.md).
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -41,7 +46,8 @@ double seconds_since(Clock::time_point start) {
 std::vector<const Stage3Family*> chosen_families(const std::vector<std::string>& names) {
     std::vector<const Stage3Family*> chosen;
     if (names.empty()) {
-        for (const Stage3Family& family : stage3_families()) chosen.push_back(&family);
+        for (const Stage3Family& family : stage3_families())
+            chosen.push_back(&family);
         return chosen;
     }
     for (const std::string& name : names) {
@@ -62,17 +68,20 @@ CaseFamily decided_family(const Stage3Family& family, std::uint64_t seed, std::s
     for (unsigned t = 0; t < threads; ++t) {
         const std::size_t begin = std::min(count, t * chunk);
         const std::size_t end = std::min(count, begin + chunk);
-        parts[t].cases.assign(std::make_move_iterator(cases.cases.begin() + static_cast<long>(begin)),
-                              std::make_move_iterator(cases.cases.begin() + static_cast<long>(end)));
+        parts[t].cases.assign(
+            std::make_move_iterator(cases.cases.begin() + static_cast<long>(begin)),
+            std::make_move_iterator(cases.cases.begin() + static_cast<long>(end)));
     }
     std::vector<std::thread> workers;
     for (CaseFamily& part : parts) {
         workers.emplace_back([&part, &family] { decide_cases(part, family.t_ulps); });
     }
-    for (std::thread& worker : workers) worker.join();
+    for (std::thread& worker : workers)
+        worker.join();
     cases.cases.clear();
     for (CaseFamily& part : parts) {
-        for (RayCase& ray_case : part.cases) cases.cases.push_back(std::move(ray_case));
+        for (RayCase& ray_case : part.cases)
+            cases.cases.push_back(std::move(ray_case));
     }
     return cases;
 }
@@ -130,15 +139,17 @@ int run_cases(const std::vector<std::string>& names, std::uint64_t seed, std::si
     return 0;
 }
 
-int run_study(std::uint64_t seed, std::size_t count, std::size_t watertight_count, unsigned threads) {
+int run_study(std::uint64_t seed, std::size_t count, std::size_t watertight_count,
+              unsigned threads) {
     const std::vector<Stage3Method> methods = study_methods();
     std::size_t checks = 0;
     double oracle_seconds = 0.0;
     std::size_t watertight_rays = 0;
     std::size_t watertight_leaks = 0;
 
-    std::printf("| family | method | cases | pass | false hits | false misses | leaks | wrong t | "
-                "other | t ulps median | p99 | max |\n");
+    std::printf(
+        "| family | method | cases | pass | false hits | false misses | leaks | wrong t | "
+        "other | t ulps median | p99 | max |\n");
     std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (const Stage3Family& family : stage3_families()) {
         const bool shared = std::string(family.name).rfind("shared-", 0) == 0;
@@ -146,27 +157,29 @@ int run_study(std::uint64_t seed, std::size_t count, std::size_t watertight_coun
         const Clock::time_point start = Clock::now();
         const CaseFamily cases = decided_family(family, seed, n, threads);
         oracle_seconds += seconds_since(start);
-        for (const RayCase& ray_case : cases.cases) checks += ray_case.primitives.size();
+        for (const RayCase& ray_case : cases.cases)
+            checks += ray_case.primitives.size();
 
         for (const Stage3Method& method : methods) {
             std::vector<CaseAnswer> answers;
             answers.reserve(cases.cases.size());
-            for (const RayCase& ray_case : cases.cases) answers.push_back(run_method(method, ray_case));
+            for (const RayCase& ray_case : cases.cases)
+                answers.push_back(run_method(method, ray_case));
             const MethodScore score = score_family(method, cases, answers, 0);
             if (score.cases == 0) continue;
             std::size_t other = 0;
-            for (const Verdict v : {Verdict::not_finite, Verdict::wrong_normal,
-                                    Verdict::wrong_barycentrics, Verdict::wrong_primitive,
-                                    Verdict::threw}) {
+            for (const Verdict v :
+                 {Verdict::not_finite, Verdict::wrong_normal, Verdict::wrong_barycentrics,
+                  Verdict::wrong_primitive, Verdict::threw}) {
                 other += score.count(v);
             }
             const UlpSummary u = summarize_ulps(score.t_ulps);
             std::printf("| %s | %s | %zu | %s | %zu | %zu | %zu | %zu | %zu | %s | %s | %s |\n",
                         family.name, method.name.c_str(), score.cases,
-                        percent(score.passed, score.cases).c_str(),
-                        score.count(Verdict::false_hit), score.count(Verdict::false_miss),
-                        score.count(Verdict::leak), score.count(Verdict::wrong_t), other,
-                        ulps(u.median).c_str(), ulps(u.p99).c_str(), ulps(u.max).c_str());
+                        percent(score.passed, score.cases).c_str(), score.count(Verdict::false_hit),
+                        score.count(Verdict::false_miss), score.count(Verdict::leak),
+                        score.count(Verdict::wrong_t), other, ulps(u.median).c_str(),
+                        ulps(u.p99).c_str(), ulps(u.max).c_str());
             if (shared && method.name.rfind("watertight", 0) == 0) {
                 watertight_rays += score.cases;
                 watertight_leaks += score.count(Verdict::leak) + score.count(Verdict::false_miss);
@@ -174,13 +187,57 @@ int run_study(std::uint64_t seed, std::size_t count, std::size_t watertight_coun
         }
         std::fflush(stdout);
     }
-    std::printf("\noracle: %zu primitive checks in %.1f s on %u threads (%.0f per second per "
-                "thread)\n",
-                checks, oracle_seconds, threads, checks / oracle_seconds / threads);
-    std::printf("watertight test: %zu rays through shared edges and vertices, %zu false misses "
-                "or leaks\n",
-                watertight_rays, watertight_leaks);
+    std::printf(
+        "\noracle: %zu primitive checks in %.1f s on %u threads (%.0f per second per "
+        "thread)\n",
+        checks, oracle_seconds, threads, checks / oracle_seconds / threads);
+    std::printf(
+        "watertight test: %zu rays through shared edges and vertices, %zu false misses "
+        "or leaks\n",
+        watertight_rays, watertight_leaks);
     return watertight_leaks == 0 ? 0 : 1;
+}
+
+// The oracle's tolerances over many seeds: a non-finite one is a bug (docs/stage3.md, "How
+// tight the oracle is").
+int run_tolerances(std::uint64_t seed, std::size_t seeds, std::size_t count, unsigned threads) {
+    std::printf(
+        "| family | primitives | near boundary | max normal tolerance | max barycentric "
+        "tolerance | max t tolerance / \\|t\\| | not finite |\n");
+    std::printf("|---|---|---|---|---|---|---|\n");
+    std::size_t not_finite_total = 0;
+    for (const Stage3Family& family : stage3_families()) {
+        std::size_t primitives = 0;
+        std::size_t near = 0;
+        std::size_t not_finite = 0;
+        double normal = 0.0;
+        double barycentric = 0.0;
+        double relative_t = 0.0;
+        for (std::size_t k = 0; k < seeds; ++k) {
+            const CaseFamily cases = decided_family(family, seed + k, count, threads);
+            for (const RayCase& ray_case : cases.cases) {
+                for (const CasePrimitive& primitive : ray_case.primitives) {
+                    const Expectation& e = primitive.expected;
+                    ++primitives;
+                    near += e.near_boundary ? 1 : 0;
+                    if (std::isnan(e.t)) continue;
+                    const bool finite = std::isfinite(e.t_tolerance) &&
+                                        std::isfinite(e.normal_tolerance) &&
+                                        std::isfinite(e.barycentric_tolerance);
+                    not_finite += finite ? 0 : 1;
+                    normal = std::max(normal, e.normal_tolerance);
+                    barycentric = std::max(barycentric, e.barycentric_tolerance);
+                    if (e.t != 0.0)
+                        relative_t = std::max(relative_t, e.t_tolerance / std::abs(e.t));
+                }
+            }
+        }
+        not_finite_total += not_finite;
+        std::printf("| %s | %zu | %zu | %.3g | %.3g | %.3g | %zu |\n", family.name, primitives,
+                    near, normal, barycentric, relative_t, not_finite);
+        std::fflush(stdout);
+    }
+    return not_finite_total == 0 ? 0 : 1;
 }
 
 }  // namespace
@@ -209,10 +266,21 @@ int main(int argc, char** argv) {
     CLI::App* study = app.add_subcommand("study", "Measure every reference method on every family");
     study->add_option("--seed", seed, "The families' seed");
     study->add_option("--count", count, "Cases per family")->check(CLI::Range(1, 10000000));
-    study->add_option("--watertight-count", watertight_count,
-                      "Cases per shared-edge and shared-vertex family")
+    study
+        ->add_option("--watertight-count", watertight_count,
+                     "Cases per shared-edge and shared-vertex family")
         ->check(CLI::Range(1, 10000000));
     study->add_option("--threads", threads, "Threads for the oracle")->check(CLI::Range(1, 256));
+
+    std::size_t seeds = 10;
+    CLI::App* tolerances =
+        app.add_subcommand("tolerances", "Statistics of the oracle's tolerances over many seeds");
+    tolerances->add_option("--seed", seed, "The first seed");
+    tolerances->add_option("--seeds", seeds, "How many seeds")->check(CLI::Range(1, 100000));
+    tolerances->add_option("--count", count, "Cases per family and seed")
+        ->check(CLI::Range(1, 10000000));
+    tolerances->add_option("--threads", threads, "Threads for the oracle")
+        ->check(CLI::Range(1, 256));
 
     try {
         app.parse(argc, argv);
@@ -221,6 +289,7 @@ int main(int argc, char** argv) {
     }
     try {
         if (cases->parsed()) return run_cases(families, seed, count, folder, threads);
+        if (tolerances->parsed()) return run_tolerances(seed, seeds, count, threads);
         return run_study(seed, count, watertight_count, threads);
     } catch (const std::exception& error) {
         std::fprintf(stderr, "raystep-oracle: %s\n", error.what());

@@ -10,12 +10,59 @@ namespace raystep {
 
 namespace {
 
+// a + b as an unevaluated sum hi + lo, exactly (Knuth's TwoSum).
+template <class Real>
+void add_exactly(Real a, Real b, Real& hi, Real& lo) {
+    hi = a + b;
+    const Real b_part = hi - a;
+    lo = (a - (hi - b_part)) + (b - b_part);
+}
+
+// A sum of terms kept as a large part, summed exactly, and the small parts the exact sums shed,
+// summed in plain arithmetic (Ogita, Rump, Oishi 2005, "Accurate sum and dot product").
+template <class Real>
+struct CompensatedSum {
+    Real large = 0;
+    Real small = 0;
+
+    /// Adds large_term + small_term, large_term exactly.
+    void add(Real large_term, Real small_term) {
+        Real rounding;
+        add_exactly(large, large_term, large, rounding);
+        small += rounding + small_term;
+    }
+    /// Adds x * y, the product split exactly by a fused multiply-add.
+    void add_product(Real x, Real y, Real small_term = 0) {
+        const Real product = x * y;
+        add(product, std::fma(x, y, -product) + small_term);
+    }
+    Real value() const { return large + small; }
+};
+
+// The ray's origin relative to the centre, A - C = hi + lo exactly, in units of s. A - C rounded
+// is already off by an ulp of |A|: for an origin just outside a huge sphere that is most of the
+// gap between them.
+template <class Vector, class Real>
+void exact_offset(const Vector& origin, const Vector& center, Real s, Vector& hi, Vector& lo) {
+    for (int k = 0; k < 3; ++k) {
+        add_exactly(origin[k], -center[k], hi[k], lo[k]);
+        hi[k] /= s;
+        lo[k] /= s;
+    }
+}
+
 // With f = A - C and a unit direction d, |A + t d - C|^2 = r^2 is t^2 + 2 b t + c = 0 with
 // b = d . f, c = f . f - r^2, roots -b -+ sqrt(b^2 - c). Three things go wrong in that form:
 // - b^2 - c cancels catastrophically when the sphere is small and far (both terms ~ |f|^2, their
 //   difference ~ r^2). Rewritten as r^2 - |f - (f . d) d|^2, r^2 minus the squared distance from
 //   C to the ray's line, it has no such cancellation (Haines, Günther, Akenine-Möller, Ray
 //   Tracing Gems ch. 7, 2019).
+// - c = f . f - r^2 cancels when the origin is just outside a huge sphere (c ~ 2 r gap, far
+//   below r^2), and so does b = d . f when the ray meets it at a grazing angle. Both are summed
+//   from the exact offset with compensated products, to a few of their own ulps, so that the near
+//   root c / q is too; b^2 - c is then the more accurate discriminant wherever b^2 + |c| is
+//   below r |f|, and the distance form above elsewhere. docs/stage3.md, "How accurate the
+//   reference is", has the bound.
 // - -b + sqrt(...) cancels for the near root when b^2 >> |c|. With q = -(b + sign(b) sqrt(...)),
 //   the roots are q and c / q, and neither subtracts nearly equal numbers.
 // - Squares overflow for lengths above 1e154 and underflow below 1e-154. Everything is measured
@@ -35,15 +82,42 @@ std::optional<Hit> stable_sphere(const RayType& ray, const SphereType& sphere) {
     const Real size =
         std::max({std::abs(offset.x), std::abs(offset.y), std::abs(offset.z), sphere.radius});
     const Real s = std::ldexp(Real(1), std::ilogb(size));
+    Vector hi, lo;
+    exact_offset(ray.origin, sphere.center, s, hi, lo);
     const Vector f = offset / s;
     const Real r = sphere.radius / s;
     const Vector d = ray.direction / speed;
 
-    // The quadratic's coefficients and its discriminant
-    const Real b = glm::dot(d, f);
-    const Real c = glm::dot(f, f) - r * r;
-    const Vector to_line = f - b * d;
-    const Real discriminant = r * r - glm::dot(to_line, to_line);
+    // The quadratic's coefficients. Plain sums keep a few ulps of themselves unless they cancel
+    // (b below half of |f|, c below half of |f|^2 + r^2); then they are summed again from the
+    // exact offset, b = D . (hi + lo) / |D| and c = |hi + lo|^2 - r^2, the large products split
+    // exactly. The second way costs three times the first, and only rays that need it pay.
+    const Real f_squared = glm::dot(f, f);
+    Real b = glm::dot(d, f);
+    Real c = f_squared - r * r;
+    if (!(2 * std::abs(b) >= std::sqrt(f_squared))) {
+        CompensatedSum<Real> along;
+        for (int k = 0; k < 3; ++k)
+            along.add_product(ray.direction[k], hi[k], ray.direction[k] * lo[k]);
+        b = along.value() / speed;
+    }
+    if (!(2 * std::abs(c) >= f_squared + r * r)) {
+        CompensatedSum<Real> squares;
+        for (int k = 0; k < 3; ++k)
+            squares.add_product(hi[k], hi[k], (2 * hi[k] + lo[k]) * lo[k]);
+        squares.add_product(-r, r);
+        c = squares.value();
+    }
+
+    // The discriminant, in whichever form rounds less: b^2 - c, off by a few ulps of b^2 + |c|,
+    // or r^2 minus the squared distance from C to the line, off by a few ulps of r |f| (f and d
+    // round by an ulp of their size before the distance cancels). The first wins from just
+    // outside a huge sphere, the second for a small sphere far away.
+    Real discriminant = b * b - c;
+    if (!(b * b + std::abs(c) <= 2 * r * std::sqrt(f_squared))) {
+        const Vector to_line = f - b * d;
+        discriminant = r * r - glm::dot(to_line, to_line);
+    }
     if (!(discriminant >= 0)) return std::nullopt;  // the line passes the sphere; rejects NaN
 
     // Both roots without cancellation. q = 0 only when the origin is on the sphere and the ray

@@ -36,8 +36,15 @@ std::optional<Hit> halfspaces(const RayType& ray, const TriangleType& tri) {
     const Real d1 = glm::dot(p - tri.p2, n20);
     const Real d2 = glm::dot(p - tri.p0, n01);
     if (!(d0 >= 0 && d1 >= 0 && d2 >= 0)) return std::nullopt;  // also rejects NaN
-    const Real beta = d1 / glm::dot(tri.p1 - tri.p2, n20);
-    const Real gamma = d2 / glm::dot(tri.p2 - tri.p0, n01);
+
+    // A sliver whose opposite vertex rounds onto an edge's line has a zero inward normal there:
+    // the point is "inside" at distance 0 of 0, and the weight 0 / 0 would be NaN. Such a
+    // triangle is degenerate in this precision, a miss; the comparisons also reject NaN.
+    const Real height1 = glm::dot(tri.p1 - tri.p2, n20);
+    const Real height2 = glm::dot(tri.p2 - tri.p0, n01);
+    if (!(height1 > 0 && height2 > 0)) return std::nullopt;
+    const Real beta = d1 / height1;
+    const Real gamma = d2 / height2;
     return triangle_hit(tri, t, beta, gamma);
 }
 

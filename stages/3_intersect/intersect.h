@@ -18,8 +18,9 @@ namespace raystep {
 // NaN. Surfaces are two-sided: a ray meets a triangle or plane from either side.
 //
 // The domain: coordinates and direction components of magnitude 1e-100 to 1e100, or 0. The
-// tests multiply three of them, and beyond that range the product overflows or underflows a
-// double.
+// plane and triangle tests multiply three of them, and beyond that range the product overflows
+// or underflows a double. The sphere's quadratic multiplies four (b^2 is (D . f)^2): for
+// intersect_sphere the range is 1e-75 to 1e75.
 
 /// Ray-plane: t = (p0 - A) . N / (D . N). A ray parallel to the plane misses it, even when it
 /// lies in it.

@@ -8,8 +8,9 @@ namespace raystep {
 std::optional<Hit> intersect_sphere(const Ray& ray, const Sphere& sphere) {
     // Substitute R(t) = A + t D into |p - C|^2 = r^2: with f = A - C,
     //   a t^2 + 2 b t + c = 0,  a = D . D,  b = D . f,  c = f . f - r^2.
-    // Solve it in the stable form: q = -(b + sign(b) sqrt(b^2 - a c)), roots c / q and q / a
-    // (never subtract two nearly equal numbers). Return the smaller root in
+    // Compute the discriminant b^2 - a c as a (r^2 - |f - (b / a) D|^2), r^2 minus the squared
+    // distance from C to the ray's line. Solve in the stable form: q = -(b + sign(b) sqrt(disc)),
+    // roots c / q and q / a (never subtract two nearly equal numbers). Return the smaller root in
     // [t_min, t_max], else the larger; the normal is (P - C) / r.
     RAYSTEP_TODO(3, "intersect_sphere", "Ray-sphere");
 }

@@ -14,6 +14,7 @@
 
 #include "core/check/case_file.h"
 #include "core/check/case_scoring.h"
+#include "grader/families/stage3_contract_cases.h"
 #include "grader/families/stage3_families.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
@@ -26,68 +27,14 @@ namespace {
 constexpr std::uint64_t kHiddenSeed = 0x5EED'7A11'2026;
 constexpr std::size_t kCasesPerFamily = 40;
 
-// The contract on hand-picked cases, which random families reach seldom: a ray's [t_min, t_max]
-// cutting a hit off on either side, triangles in the coordinate planes (the projection method's
-// choice of axis), and several primitives at once, the nearest not the first in closest_hit's
-// order (spheres, triangles, planes).
-CaseFamily contract_family() {
-    const double inf = HUGE_VAL;
-    const Triangle in_z{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
-    const Triangle in_x{{2, -1, -1}, {2, 1, -1}, {2, 0, 1}};
-    const Triangle in_y{{-1, -3, -1}, {0, -3, 1}, {1, -3, -1}};
-    const Sphere unit{{0, 0, 0}, 1};
-    const Sphere far_sphere{{0, 0, 10}, 1};
-    const Plane at_z3{{0, 0, 3}, {0, 0, 1}};
-    const Plane at_z15{{0, 0, 15}, {0, 0, -1}};
-    const auto one = [](const Ray& ray, const CaseShape& shape) {
-        return RayCase{0, ray, {CasePrimitive{shape, {}}}, false};
-    };
-    const auto many = [](const Ray& ray, const std::vector<CaseShape>& shapes) {
-        RayCase c{0, ray, {}, false};
-        for (const CaseShape& shape : shapes)
-            c.primitives.push_back({shape, {}});
-        return c;
-    };
-    CaseFamily family{
-        "contract",
-        0,
-        "t ranges, triangles in coordinate planes, nearest of several",
-        {
-            one({{0.3, -0.2, 5}, {0, 0, -1}}, in_z),
-            one({{0.3, -0.2, 5}, {0, 0, -1}, 6.0, inf}, in_z),  // before t_min
-            one({{0.3, -0.2, 5}, {0, 0, -1}, 0.0, 4.0}, in_z),  // beyond t_max
-            one({{0.3, -0.2, 5}, {0, 0, 1}}, in_z),             // behind the origin
-            one({{3, 0, 5}, {0, 0, -1}}, in_z),
-            one({{-0.2, 0.5, 5}, {0.05, -0.1, -1}}, in_z),
-            one({{5, 0.1, 0.1}, {-1, 0, 0}}, in_x),
-            one({{5, 0.9, 0.9}, {-1, 0, 0}}, in_x),
-            one({{-4, -0.3, -0.5}, {1, 0.02, 0.03}}, in_x),
-            one({{0.1, 2, -0.2}, {0, -1, 0}}, in_y),
-            one({{0.9, 2, 0.9}, {0, -1, 0}}, in_y),
-            one({{0, 0, -5}, {0, 0, 1}}, unit),
-            one({{0, 0, -5}, {0, 0, 1}, 0.0, 3.0}, unit),  // both roots beyond t_max
-            one({{0, 0, -5}, {0, 0, 1}, 4.5, inf}, unit),  // the near root before t_min
-            one({{0, 0, -5}, {0, 0, 1}, 6.5, inf}, unit),  // both before t_min
-            one({{0, 0, 5}, {0, 0, 1}}, unit),             // behind the origin
-            one({{0, 0, 5}, {0, 0, -1}, 0.0, 3.0}, at_z3),
-            one({{0, 0, 5}, {0, 0, -1}, 0.0, 1.0}, at_z3),  // beyond t_max
-            one({{0, 0, 5}, {0, 0, -1}, 2.5, inf}, at_z3),  // before t_min
-            many({{0, 0, -5}, {0, 0, 1}}, {far_sphere, in_z, at_z3}),
-            many({{0.1, 0.1, 20}, {0, 0, -1}}, {far_sphere, in_z, at_z15}),
-            many({{0.1, 0.1, 20}, {0, 0, -1}, 0.0, 8.0}, {far_sphere, in_z, at_z15}),
-            many({{0.1, 0.1, 20}, {0, 0, -1}, 6.0, inf}, {far_sphere, in_z, at_z15}),
-            many({{0.1, 0.1, 20}, {0, 0, -1}, 12.0, inf}, {far_sphere, in_z, at_z15}),
-        }};
-    for (std::size_t k = 0; k < family.cases.size(); ++k)
-        family.cases[k].index = k;
-    return family;
-}
-
 const std::vector<CaseFamily>& decided_contract() {
     static const std::vector<CaseFamily> contract = [] {
         CaseFamily family = contract_family();
         decide_cases(family);
-        return std::vector<CaseFamily>{std::move(family)};
+        CaseFamily exact = exact_family();
+        decide_cases(exact);
+        tighten_exact_family(exact);
+        return std::vector<CaseFamily>{std::move(family), std::move(exact)};
     }();
     return contract;
 }
@@ -193,7 +140,7 @@ std::vector<CheckDefinition> stage3_checks() {
     }
     checks.push_back(
         {"stage3.hidden", 3, "unit",
-         "every function on t ranges, triangles in coordinate planes and the nearest of several",
+         "every function on the contract: t ranges, edges, ties, degenerate input, the domain",
          [](const GradingContext& context, const BuiltProbe& probe) {
              return measure_methods(context, probe, stage3_methods(), decided_contract(),
                                     "stage3.hidden");

@@ -147,7 +147,10 @@ TEST_CASE("intersect_triangle_*: a degenerate triangle or a zero direction misse
     }
 }
 
-TEST_CASE("intersect_triangle_*: a collinear triangle off the axes is a miss, even when rounding leaves a tiny determinant", "[stage3]") {
+TEST_CASE(
+    "intersect_triangle_*: a collinear triangle off the axes is a miss, even when rounding leaves "
+    "a tiny determinant",
+    "[stage3]") {
     // (-2,-2,3), (1,-2,4), (7,-2,6) lie on one line (steps (3,0,1) and (6,0,2)). Cramer's
     // determinant is exactly 0 here, but a test that first transforms the vertices (the
     // watertight test shears them along the ray) rounds them off the line, finds a tiny
@@ -236,7 +239,8 @@ TEST_CASE("intersect_sphere: a zero radius or a zero direction misses, never NaN
     CHECK_FALSE(intersect_sphere({{0, 0, 5}, {0, 0, 0}}, {{0, 0, 0}, 1.0}));
 }
 
-TEST_CASE("intersect_sphere: a ray starting just outside a large sphere hits it at a tiny t", "[stage3]") {
+TEST_CASE("intersect_sphere: a ray starting just outside a large sphere hits it at a tiny t",
+          "[stage3]") {
     // Radius 5e7, origin 1 unit beside the top of the sphere, going down: the near root is
     // t = c / q = 1 / (5e7 + sqrt(2.5e15 - 1)) = 1e-8, and every intermediate here is exact. The
     // textbook -b - sqrt(b^2 - 4ac) subtracts two numbers near 1e8 that differ by 2e-8 and gets
@@ -248,18 +252,21 @@ TEST_CASE("intersect_sphere: a ray starting just outside a large sphere hits it 
     CHECK_THAT(hit->normal, IsNear(Vec3(2e-8, 1, 0), 1e-12));
 }
 
-TEST_CASE("intersect_sphere: a small sphere far away is still hit, near the right distance", "[stage3]") {
-    // A 1 mm sphere 100 km away: b^2 and a c are both near 1e10, and their difference, the
-    // discriminant, keeps only a few of its digits, in the textbook and the stable form alike.
-    // The hit is still found, a fraction of a millimetre off; docs/stage3.md, "Ray-sphere",
-    // shows the rewrite of the discriminant that does better.
+TEST_CASE("intersect_sphere: a small sphere far away, hit to the nanometre", "[stage3]") {
+    // A 1 mm sphere 100 km away: b^2 and a c are both near 1e10, and b^2 - a c keeps only a few
+    // of its digits, a fraction of a millimetre. Written as a (r^2 - |f - (b / a) D|^2), r^2
+    // minus the squared distance from the centre to the ray's line, it has nothing to cancel.
+    // Exactly: 1e5 - 1e-3 = 99999.999, and 1e5 - sqrt(r^2 - 0.6e-3^2) = 99999.9992.
     const Sphere sphere{{1e5, 0, 0}, 1e-3};
     const std::optional<Hit> hit = intersect_sphere({{0, 0, 0}, {1, 0, 0}}, sphere);
     REQUIRE(hit);
-    CHECK(hit->t == Approx(1e5 - 1e-3).margin(1e-3));
+    CHECK(hit->t == Approx(99999.999).margin(1e-9));
     const std::optional<Hit> offset = intersect_sphere({{0, 0.6e-3, 0}, {1, 0, 0}}, sphere);
     REQUIRE(offset);
-    CHECK(offset->t == Approx(1e5 - 0.8e-3).margin(1e-3));  // half-chord sqrt(r^2 - h^2)
+    CHECK(offset->t == Approx(99999.9992).margin(1e-9));
+    CHECK_THAT(offset->normal, IsNear(Vec3(-0.8, 0.6, 0), 1e-5));
+    // A line 1.00001 r from the centre misses; b^2 - a c cannot tell it from a hit.
+    CHECK_FALSE(intersect_sphere({{0, 1.00001e-3, 0}, {1, 0, 0}}, sphere));
 }
 
 TEST_CASE("intersect_sphere: a huge sphere is hit where it should be", "[stage3]") {

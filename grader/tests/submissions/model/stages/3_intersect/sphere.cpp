@@ -25,7 +25,11 @@ std::optional<Hit> intersect_sphere(const Ray& ray, const Sphere& sphere) {
     if (a == 0.0) return std::nullopt;  // a zero direction
     const double b = dot(ray.direction, f);
     const double c = dot(f, f) - sphere.radius * sphere.radius;
-    const double discriminant = b * b - a * c;
+
+    // b^2 - a c as a (r^2 - |f - (b / a) D|^2): r^2 minus the squared distance from the centre
+    // to the ray's line, which does not cancel for a small sphere far away.
+    const Vec3 to_line = f - (b / a) * ray.direction;
+    const double discriminant = a * (sphere.radius * sphere.radius - dot(to_line, to_line));
     if (!(discriminant >= 0.0)) return std::nullopt;
 
     // The stable form: q = -(b + sign(b) sqrt(b^2 - a c)), roots q / a and c / q. q = 0 only

@@ -1,0 +1,155 @@
+#include "grader/families/stage3_contract_cases.h"
+
+#include <cmath>
+
+namespace raystep {
+
+namespace {
+
+RayCase one(const Ray& ray, const CaseShape& shape) {
+    return RayCase{0, ray, {CasePrimitive{shape, {}}}, false};
+}
+
+RayCase many(const Ray& ray, const std::vector<CaseShape>& shapes) {
+    RayCase c{0, ray, {}, false};
+    for (const CaseShape& shape : shapes)
+        c.primitives.push_back({shape, {}});
+    return c;
+}
+
+void number(CaseFamily& family) {
+    for (std::size_t k = 0; k < family.cases.size(); ++k)
+        family.cases[k].index = k;
+}
+
+}  // namespace
+
+// The contract on hand-picked cases, which random families reach seldom: a ray's [t_min, t_max]
+// cutting a hit off on either side, triangles in the coordinate planes (the projection method's
+// choice of axis), several primitives at once, the nearest not the first in closest_hit's
+// order (spheres, triangles, planes), copies of one primitive, a tie that must go to the
+// first, and slivers whose double cross product is not zero though an edge's inward normal
+// rounds to zero (the half-spaces method's 0 / 0 barycentric).
+CaseFamily contract_family() {
+    const double inf = HUGE_VAL;
+    const Triangle in_z{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
+    const Triangle in_x{{2, -1, -1}, {2, 1, -1}, {2, 0, 1}};
+    const Triangle in_y{{-1, -3, -1}, {0, -3, 1}, {1, -3, -1}};
+    const Sphere unit{{0, 0, 0}, 1};
+    const Sphere far_sphere{{0, 0, 10}, 1};
+    const Plane at_z3{{0, 0, 3}, {0, 0, 1}};
+    const Plane at_z15{{0, 0, 15}, {0, 0, -1}};
+    CaseFamily family{
+        "contract",
+        0,
+        "t ranges, triangles in coordinate planes, nearest of several, ties, slivers",
+        {
+            one({{0.3, -0.2, 5}, {0, 0, -1}}, in_z),
+            one({{0.3, -0.2, 5}, {0, 0, -1}, 6.0, inf}, in_z),  // before t_min
+            one({{0.3, -0.2, 5}, {0, 0, -1}, 0.0, 4.0}, in_z),  // beyond t_max
+            one({{0.3, -0.2, 5}, {0, 0, 1}}, in_z),             // behind the origin
+            one({{3, 0, 5}, {0, 0, -1}}, in_z),
+            one({{-0.2, 0.5, 5}, {0.05, -0.1, -1}}, in_z),
+            one({{5, 0.1, 0.1}, {-1, 0, 0}}, in_x),
+            one({{5, 0.9, 0.9}, {-1, 0, 0}}, in_x),
+            one({{-4, -0.3, -0.5}, {1, 0.02, 0.03}}, in_x),
+            one({{0.1, 2, -0.2}, {0, -1, 0}}, in_y),
+            one({{0.9, 2, 0.9}, {0, -1, 0}}, in_y),
+            one({{0, 0, -5}, {0, 0, 1}}, unit),
+            one({{0, 0, -5}, {0, 0, 1}, 0.0, 3.0}, unit),  // both roots beyond t_max
+            one({{0, 0, -5}, {0, 0, 1}, 4.5, inf}, unit),  // the near root before t_min
+            one({{0, 0, -5}, {0, 0, 1}, 6.5, inf}, unit),  // both before t_min
+            one({{0, 0, 5}, {0, 0, 1}}, unit),             // behind the origin
+            one({{0, 0, 5}, {0, 0, -1}, 0.0, 3.0}, at_z3),
+            one({{0, 0, 5}, {0, 0, -1}, 0.0, 1.0}, at_z3),  // beyond t_max
+            one({{0, 0, 5}, {0, 0, -1}, 2.5, inf}, at_z3),  // before t_min
+            many({{0, 0, -5}, {0, 0, 1}}, {far_sphere, in_z, at_z3}),
+            many({{0.1, 0.1, 20}, {0, 0, -1}}, {far_sphere, in_z, at_z15}),
+            many({{0.1, 0.1, 20}, {0, 0, -1}, 0.0, 8.0}, {far_sphere, in_z, at_z15}),
+            many({{0.1, 0.1, 20}, {0, 0, -1}, 6.0, inf}, {far_sphere, in_z, at_z15}),
+            many({{0.1, 0.1, 20}, {0, 0, -1}, 12.0, inf}, {far_sphere, in_z, at_z15}),
+            many({{0, 0, -5}, {0, 0, 1}}, {unit, unit}),  // ties
+            many({{0.3, -0.2, 5}, {0, 0, -1}}, {in_z, in_z, in_z}),
+            many({{0, 0, 5}, {0, 0, -1}}, {at_z3, at_z3}),
+            many({{0.1, 0.1, -5}, {0, 0, 1}}, {far_sphere, unit, in_z, unit, in_z}),
+            one({{1.0275703435596424, 0.78125, 3.2150703435596424},
+                 {-0.7071067811865475, -0.0, -0.7071067811865475}},
+                Triangle{{-0.875, 0.625, 0.875}, {-1.3125, 0.9374999999999999, 1.3125}, {0, 0, 0}}),
+            one({{-0.6853907864998738, -0.28125, 3.0582815729997477},
+                 {0.4472135954999579, -0.0, -0.8944271909999159}},
+                Triangle{{0.875, -0.375, 0.5},
+                         {0.4375, -0.18749999999999997, 0.24999999999999997},
+                         {0, 0, 0}}),
+        }};
+    number(family);
+    return family;
+}
+
+// The contract's exact sentences, on cases every correct test computes without rounding: small
+// dyadic coordinates, axis-parallel rays and edges, powers of two at the ends of the domain, so
+// that every product, quotient and square root is exact. There the oracle's "near a boundary,
+// either passes" does not apply, and each sentence of intersect.h has a case that fails a test
+// breaking it: t_min and t_max both included, edges and vertices belong to the triangle, surfaces
+// two-sided, a ray in a plane a miss, degenerate input a miss, ties to the first kind (spheres,
+// triangles, planes), the domain's ends.
+CaseFamily exact_family() {
+    const double inf = HUGE_VAL;
+    const double big = std::ldexp(1.0, 330);  // 2.2e99: three such factors stay finite
+    const double small = std::ldexp(1.0, -330);
+    const double sphere_big = std::ldexp(1.0, 250);  // the quadratic multiplies four
+    const double sphere_small = std::ldexp(1.0, -250);
+    const Triangle in_z{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
+    const Triangle in_y{{-1, -3, -1}, {0, -3, 1}, {1, -3, -1}};
+    const Triangle collinear{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}};
+    const Sphere unit{{0, 0, 0}, 1};
+    const Sphere under_z0{{0.25, -0.25, -1}, 1};  // touches z = 0 at (0.25, -0.25, 0)
+    const Plane at_z3{{0, 0, 3}, {0, 0, 1}};
+    const Plane z0{{0, 0, 0}, {0, 0, 1}};
+    const auto scaled = [](const Triangle& t, double k) {
+        return Triangle{t.p0 * k, t.p1 * k, t.p2 * k};
+    };
+    CaseFamily family{
+        "exact",
+        0,
+        "the contract on cases no rounding can move: range ends, edges, ties, the domain",
+        {
+            one({{0, 0, 5}, {0, 0, -1}, 0.0, 2.0}, at_z3),               // t = t_max
+            one({{0, 0, 5}, {0, 0, -1}, 2.0, inf}, at_z3),               // t = t_min
+            one({{0, 0, -5}, {0, 0, 1}, 4.0, inf}, unit),                // near root at t_min
+            one({{0, 0, -5}, {0, 0, 1}, 0.0, 4.0}, unit),                // near root at t_max
+            one({{0, 0, -5}, {0, 0, 1}, 5.0, 6.0}, unit),                // far root at t_max
+            one({{0.25, -0.25, 5}, {0, 0, -1}, 0.0, 5.0}, in_z),         // t = t_max
+            one({{0.25, -0.25, 5}, {0, 0, -1}, 5.0, inf}, in_z),         // t = t_min
+            one({{0.5, -1, 5}, {0, 0, -1}}, in_z),                       // on the edge p0 p1
+            one({{1, -1, 5}, {0, 0, -1}}, in_z),                         // on the vertex p1
+            one({{0.5, 2, -1}, {0, -1, 0}}, in_y),                       // on the edge p2 p0
+            one({{0.25, -0.25, -5}, {0, 0, 1}}, in_z),                   // from behind
+            one({{0, 0, 0}, {0, 0, 1}}, at_z3),                          // from behind
+            one({{0, 0, 3}, {1, 0, 0}}, at_z3),                          // in the plane: a miss
+            one({{-5, -0.5, 0}, {1, 0, 0}}, in_z),                       // in the triangle's plane
+            many({{0, 0, 5}, {0, 0, 0}}, {unit, in_z, at_z3}),           // a zero direction
+            one({{0, 0, 5}, {0, 0, -1}}, Sphere{{0, 0, 0}, 0.0}),        // a zero radius
+            one({{1, 1, 5}, {0, 0, -1}}, collinear),                     // a zero-area triangle
+            one({{0, 0, 5}, {0, 0, -1}}, Plane{{0, 0, 0}, {0, 0, 0}}),   // a zero normal
+            many({{0.25, -0.25, 5}, {0, 0, -1}}, {z0, in_z, under_z0}),  // a tie: the sphere
+            many({{0.25, -0.25, 5}, {0, 0, -1}}, {z0, in_z}),            // a tie: the triangle
+            one({{0, 0, 5 * big}, {0, 0, -big}}, Plane{{0, 0, 3 * big}, {0, 0, small}}),
+            one({{0.25 * big, -0.25 * big, 5 * big}, {0, 0, -big}}, scaled(in_z, big)),
+            one({{0.25 * small, -0.25 * small, 5 * small}, {0, 0, -small}}, scaled(in_z, small)),
+            one({{0, 0, -5 * sphere_big}, {0, 0, sphere_big}}, Sphere{{0, 0, 0}, sphere_big}),
+            one({{0, 0, -5 * sphere_small}, {0, 0, sphere_small}}, Sphere{{0, 0, 0}, sphere_small}),
+        }};
+    number(family);
+    return family;
+}
+
+void tighten_exact_family(CaseFamily& family) {
+    for (RayCase& ray_case : family.cases) {
+        for (CasePrimitive& primitive : ray_case.primitives) {
+            primitive.expected.near_boundary = false;
+            if (primitive.expected.hit) primitive.expected.t_tolerance = 0.0;
+        }
+    }
+}
+
+}  // namespace raystep
