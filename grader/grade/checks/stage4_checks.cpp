@@ -154,6 +154,82 @@ AccelScene ties_and_degenerates(std::uint64_t seed) {
     return s;
 }
 
+// Two walls a thousandth either side of the plane between a 2-cell grid's halves, met by rays
+// along x from 2^46 away, where t rounds to multiples of 2^-6: both walls' hits and the ray's
+// crossing of the plane all round to t = 2^46 + 1. The wall beyond the plane (triangle 0) wins
+// the tie by comes_before, but it lies more than the grid's margin from the plane, so it is
+// listed only in the next cell: a walk must go on while the next cell begins at or before the
+// best t, not only strictly before. Two small triangles in far corners set the grid's box to
+// [0, 2]^3.
+AccelScene tie_across_a_cell_boundary() {
+    AccelScene s{"a tie across a cell boundary, from far away",
+                 {},
+                 {},
+                 "PrimitiveList primitives;\n"
+                 "primitives.triangles.push_back({{1.002, 0, 0}, {1.002, 2, 0}, {1.002, 0, 2}});\n"
+                 "primitives.triangles.push_back({{0.998, 0, 0}, {0.998, 2, 0}, {0.998, 0, 2}});\n"
+                 "primitives.triangles.push_back({{0, 2, 2}, {0, 1.9, 2}, {0, 2, 1.9}});\n"
+                 "primitives.triangles.push_back({{2, 2, 2}, {2, 1.9, 2}, {2, 2, 1.9}});\n"};
+    s.primitives.triangles = {{{1.002, 0, 0}, {1.002, 2, 0}, {1.002, 0, 2}},
+                              {{0.998, 0, 0}, {0.998, 2, 0}, {0.998, 0, 2}},
+                              {{0, 2, 2}, {0, 1.9, 2}, {0, 2, 1.9}},
+                              {{2, 2, 2}, {2, 1.9, 2}, {2, 2, 1.9}}};
+    const double far = -0x1p46;
+    const double tie = 0x1p46 + 1.0;
+    for (const double y : {0.25, 0.5, 0.75}) {
+        for (const double z : {0.25, 0.5}) {
+            s.rays.push_back({{far, y, z}, {1, 0, 0}});
+            s.rays.push_back({{far, y, z}, {1, 0, 0}, 0.0, tie});
+        }
+    }
+    return s;
+}
+
+// Two walls an ulp apart on either side of the plane x = 2 between cells of a grid over [0, 4]^3
+// (20 primitives: four cells of exactly 1 a side), met by rays from beyond x = 0 through points
+// of them. The wall on the plane (triangle 0) touches the near cells only at the plane; the other
+// (triangle 1) lies wholly in them. Both hits mostly round to the same t, where triangle 0 wins
+// the tie, and the ray's crossing of the plane often rounds an ulp later: a grid that lists
+// triangle 0 only in the far cells stops at the near cells' end with triangle 1. So does a BVH
+// that enters a box only when it starts at or before the best t, with no slack, where the walls
+// are in different nodes: the box of triangle 0 starts at that crossing. Sixteen small triangles
+// out of the rays' way, and two in opposite corners that set the box, make up the 20.
+AccelScene walls_an_ulp_apart(std::uint64_t seed) {
+    PortableRandom random(seed);
+    AccelScene s{
+        "two walls an ulp apart on a cell boundary",
+        {},
+        {},
+        "PrimitiveList primitives;\n"
+        "const double before = std::nextafter(2.0, 0.0);\n"
+        "primitives.triangles.push_back({{2, 0.25, 0.25}, {2, 3.75, 0.25}, {2, 0.25, 3.75}});\n"
+        "primitives.triangles.push_back({{before, 0.25, 0.25}, {before, 3.75, 0.25}, "
+        "{before, 0.25, 3.75}});\n"
+        "primitives.triangles.push_back({{0, 0, 0}, {0.1, 0, 0}, {0, 0.1, 0}});\n"
+        "primitives.triangles.push_back({{4, 4, 4}, {3.9, 4, 4}, {4, 3.9, 4}});\n"
+        "for (int i = 0; i < 16; ++i) {\n"
+        "    const Vec3 c(0.25 + 0.225 * i, 3.5, 3.5);\n"
+        "    primitives.triangles.push_back({c, c + Vec3(0.1, 0, 0), c + Vec3(0, 0.1, 0.1)});\n"
+        "}\n"};
+    const double before = std::nextafter(2.0, 0.0);
+    s.primitives.triangles = {{{2, 0.25, 0.25}, {2, 3.75, 0.25}, {2, 0.25, 3.75}},
+                              {{before, 0.25, 0.25}, {before, 3.75, 0.25}, {before, 0.25, 3.75}},
+                              {{0, 0, 0}, {0.1, 0, 0}, {0, 0.1, 0}},
+                              {{4, 4, 4}, {3.9, 4, 4}, {4, 3.9, 4}}};
+    for (int i = 0; i < 16; ++i) {
+        const Vec3 c(0.25 + 0.225 * i, 3.5, 3.5);
+        s.primitives.triangles.push_back({c, c + Vec3(0.1, 0, 0), c + Vec3(0, 0.1, 0.1)});
+    }
+    for (int k = 0; k < 300; ++k) {
+        const Vec3 target(2, random.uniform(1.0, 2.0), random.uniform(1.0, 2.0));
+        const double x = k % 2 ? random.uniform(-3.0, -0.5) : random.uniform(-40.0, -10.0);
+        const Vec3 origin(x, target.y + random.uniform(-0.3, 0.3),
+                          target.z + random.uniform(-0.3, 0.3));
+        s.rays.push_back({origin, target - origin});
+    }
+    return s;
+}
+
 // Nothing to build over: no primitives at all, or only planes, which stay outside the structure.
 // Every ray misses. Asked last: a structure that crashes here loses these rays' cases, not the
 // others'.
@@ -177,9 +253,9 @@ AccelScene nothing_to_hold(bool planes) {
 }
 
 std::vector<AccelScene> scenes() {
-    return {random_soup(0xB7A1),   shared_edges(),         ties_and_degenerates(0x7135),
-            one_kind(0x5F1, true), one_kind(0x7A1, false), nothing_to_hold(false),
-            nothing_to_hold(true)};
+    return {random_soup(0xB7A1),        shared_edges(),         ties_and_degenerates(0x7135),
+            one_kind(0x5F1, true),      one_kind(0x7A1, false), tie_across_a_cell_boundary(),
+            walls_an_ulp_apart(0xB0DE), nothing_to_hold(false), nothing_to_hold(true)};
 }
 
 // What a structure answers: closest_hit over the list's spheres and triangles, its planes left

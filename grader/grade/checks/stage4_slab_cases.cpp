@@ -164,6 +164,7 @@ void random_interval(PortableRandom& random, int kind, Ray& ray) {
 }
 
 constexpr std::uint64_t kSlabSeed = 0x51AB;
+constexpr std::uint64_t kFacePlaneSeed = 0xFACE;
 
 // Direction components whose reciprocals round: t = n * (1/d) comes out an ulp off for some.
 constexpr double kOddSteps[] = {3.0, 5.0, 7.0, 9.0, 11.0};
@@ -257,6 +258,66 @@ std::vector<SlabCase> generated_cases() {
     return cases;
 }
 
+// Rays lying in a face's plane: the direction's component along that axis is +0 or -0 and the
+// origin is on the min or the max plane, so one of the axis' two t's is 0 * inf = NaN. Every
+// axis, both planes and both zeros, as the NaN must be harmless whichever axis it comes from
+// (a NaN on the last axis is not overwritten by another) and whichever bound it falls on. The
+// origin is outside the face (aimed into it), inside it, or on one of its edges (aimed inwards,
+// or along the edge, where a second axis gives a NaN too); t_min and t_max vary as elsewhere, so
+// a NaN that throws away t_min or t_max is seen as well as one that turns a hit into a miss.
+std::vector<SlabCase> face_plane_cases() {
+    static const char* const kAxes[] = {"x", "y", "z"};
+    static const char* const kPlaces[] = {"outside the face", "inside the face",
+                                          "on an edge of the face"};
+    const Vec3 min(-1, -2, 0.5), max(3, 1, 2.5);
+    std::vector<SlabCase> cases;
+    std::uint64_t number = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+        const int b = (axis + 1) % 3;
+        const int c = (axis + 2) % 3;
+        for (const bool on_max : {false, true}) {
+            for (const double zero : {0.0, -0.0}) {
+                for (int place = 0; place < 3; ++place) {
+                    for (int k = 0; k < 4; ++k) {
+                        PortableRandom random(kFacePlaneSeed, number++);
+                        SlabCase s{{},
+                                   min,
+                                   max,
+                                   std::string("in the ") + kAxes[axis] + " = " +
+                                       (on_max ? "max" : "min") + " face's plane, D." +
+                                       kAxes[axis] + " = " + (std::signbit(zero) ? "-0" : "+0") +
+                                       ", origin " + kPlaces[place]};
+                        Vec3 origin = inside(random, min, max);
+                        origin[axis] = on_max ? max[axis] : min[axis];
+                        Vec3 direction = random.unit_vector();
+                        if (place == 0) {
+                            // Beyond the face along b, aimed at a point inside it
+                            const Vec3 target = inside(random, min, max);
+                            origin[b] = min[b] - random.uniform(0.5, 3.0);
+                            direction[b] = target[b] - origin[b];
+                            direction[c] = target[c] - origin[c];
+                        } else if (place == 2) {
+                            // On the face's edge along c; inwards across b, or along the edge
+                            const bool edge_at_max = random.unit() < 0.5;
+                            origin[b] = edge_at_max ? max[b] : min[b];
+                            if (k % 2 == 0) {
+                                direction[b] = zero;
+                            } else {
+                                direction[b] = std::fabs(direction[b]) * (edge_at_max ? -1 : 1);
+                            }
+                        }
+                        direction[axis] = zero;
+                        s.ray = {origin, direction};
+                        random_interval(random, k, s.ray);
+                        cases.push_back(s);
+                    }
+                }
+            }
+        }
+    }
+    return cases;
+}
+
 // The cases the slab formula gets wrong when written straight from the slide.
 std::vector<SlabCase> named_cases() {
     const double inf = HUGE_VAL;
@@ -293,6 +354,8 @@ std::vector<SlabCase> named_cases() {
 std::vector<ProbeCase> slab_cases() {
     std::vector<SlabCase> all = named_cases();
     for (const SlabCase& c : generated_cases())
+        all.push_back(c);
+    for (const SlabCase& c : face_plane_cases())
         all.push_back(c);
     std::vector<ProbeCase> cases;
     for (const SlabCase& c : all) {

@@ -194,14 +194,17 @@ CheckMeasure measure_work(const GradingContext& context, const BuiltProbe& probe
         const auto most = std::max_element(counted[s].begin(), counted[s].end());
         if (*most <= held) continue;
         CheckMeasure measure =
-            failed("the structure tested some primitive more than once for one ray: " +
-                   std::to_string(*most) + " tests over " + std::to_string(held) +
-                   " primitives, so it earns nothing for its answers");
+            failed("the structure tested the same primitive more than once in one query (" +
+                   std::to_string(*most) + " tests of " + std::to_string(held) +
+                   " primitives for one ray), so it earns nothing for its answers. A primitive "
+                   "listed in several cells or nodes must be tested once per query: keep a "
+                   "mailbox of the primitives this query has tested, as docs/stage4.md's "
+                   "\"Mailboxing\" section shows");
         const std::size_t k = static_cast<std::size_t>(most - counted[s].begin());
         measure.counterexamples.push_back(
             {scene.name + ", ray " + std::to_string(k) + ": " + ray_text(scene.rays[k]),
              "at most " + std::to_string(held) + " primitive tests, one per primitive",
-             std::to_string(*most) + " primitive tests",
+             std::to_string(*most) + " primitive tests: some primitive tested more than once",
              context.reproduce + " --check " + query.check_id,
              "// count the stage-3 calls your structure makes for " + cpp(scene.rays[k])});
         return measure;

@@ -29,7 +29,8 @@ TEST_CASE("intersect_aabb: a ray through the cube enters and leaves where it sho
     CHECK(hit->exit == Approx(2.0));
 }
 
-TEST_CASE("intersect_aabb: a diagonal ray, entering through one face and leaving through another", "[stage4]") {
+TEST_CASE("intersect_aabb: a diagonal ray, entering through one face and leaving through another",
+          "[stage4]") {
     // From (-1, 0.5, 0.5) along (1, 0.25, 0): enters at x = 0 (t = 1), leaves at x = 1 (t = 2).
     const std::optional<Interval> hit = slab({{-1, 0.5, 0.5}, {1, 0.25, 0}}, kCube);
     REQUIRE(hit);
@@ -38,10 +39,10 @@ TEST_CASE("intersect_aabb: a diagonal ray, entering through one face and leaving
 }
 
 TEST_CASE("intersect_aabb: misses beside, behind, and beyond t_max", "[stage4]") {
-    CHECK_FALSE(slab({{2, 0.5, -1}, {0, 0, 1}}, kCube));          // beside
-    CHECK_FALSE(slab({{0.5, 0.5, -1}, {0, 0, -1}}, kCube));       // pointing away
+    CHECK_FALSE(slab({{2, 0.5, -1}, {0, 0, 1}}, kCube));              // beside
+    CHECK_FALSE(slab({{0.5, 0.5, -1}, {0, 0, -1}}, kCube));           // pointing away
     CHECK_FALSE(slab({{0.5, 0.5, -1}, {0, 0, 1}, 0.0, 0.5}, kCube));  // stops short
-    CHECK_FALSE(slab({{-1, -1, 0.5}, {1, 3, 0}}, kCube));        // passes the corner
+    CHECK_FALSE(slab({{-1, -1, 0.5}, {1, 3, 0}}, kCube));             // passes the corner
 }
 
 TEST_CASE("intersect_aabb: the interval is clipped to [t_min, t_max]", "[stage4]") {
@@ -58,13 +59,15 @@ TEST_CASE("intersect_aabb: from inside, the interval starts at t_min", "[stage4]
     CHECK(hit->exit == Approx(0.5));
 }
 
-TEST_CASE("intersect_aabb: a zero direction component with the origin inside that slab", "[stage4]") {
+TEST_CASE("intersect_aabb: a zero direction component with the origin inside that slab",
+          "[stage4]") {
     // D.y = 0: 1 / D.y is infinite, and (0 - 0.5) * inf = -inf, (1 - 0.5) * inf = +inf.
     CHECK(slab({{-1, 0.5, 0.5}, {1, 0, 0}}, kCube));
     CHECK_FALSE(slab({{-1, 1.5, 0.5}, {1, 0, 0}}, kCube));  // outside that slab: never enters
 }
 
-TEST_CASE("intersect_aabb: a zero direction component with the origin exactly on a slab plane", "[stage4]") {
+TEST_CASE("intersect_aabb: a zero direction component with the origin exactly on a slab plane",
+          "[stage4]") {
     // The origin on the plane y = 1 moving along x: (1 - 1) * inf = 0 * inf = NaN. The ray
     // runs along the box's top face, which the closed box contains: a hit, not a NaN that
     // empties the interval.
@@ -76,6 +79,31 @@ TEST_CASE("intersect_aabb: a zero direction component with the origin exactly on
     CHECK(slab({{-1, 0, 0.5}, {1, -0.0, 0}}, kCube));
     // Along the edge y = 1, z = 1: two NaN slabs at once.
     CHECK(slab({{-1, 1, 1}, {1, 0, 0}}, kCube));
+}
+
+TEST_CASE("intersect_aabb: a ray in any face's plane keeps its t_min and t_max", "[stage4]") {
+    // The NaN of 0 * inf comes from whichever axis the ray lies across, on the min or the max
+    // plane, with D = +0 or -0. Taken as a bound (std::max(t_near, enter) returns its NaN first
+    // argument) it empties the interval when it comes last, from z, and otherwise lets the next
+    // axis overwrite t_min and t_max.
+    for (int axis = 0; axis < 3; ++axis) {
+        for (const double plane : {0.0, 1.0}) {
+            for (const double zero : {0.0, -0.0}) {
+                const int along = (axis + 1) % 3;
+                Vec3 origin(0.5);
+                origin[axis] = plane;
+                origin[along] = -1;
+                Vec3 direction(0.0);
+                direction[axis] = zero;
+                direction[along] = 1;
+                INFO("axis " << axis << ", the plane " << plane << ", D = " << zero);
+                const std::optional<Interval> hit = slab({origin, direction, 1.25, 1.75}, kCube);
+                REQUIRE(hit);
+                CHECK(hit->enter == 1.25);
+                CHECK(hit->exit == Approx(1.75));
+            }
+        }
+    }
 }
 
 TEST_CASE("intersect_aabb: a flat box (zero thickness) is still hit", "[stage4]") {
@@ -90,7 +118,8 @@ TEST_CASE("intersect_aabb: an empty box is never hit", "[stage4]") {
     CHECK_FALSE(slab({{0.5, 0.5, -1}, {0, 0, 1}}, Aabb{}));
 }
 
-TEST_CASE("intersect_aabb: rays that touch a box's edge or corner are never lost to rounding", "[stage4]") {
+TEST_CASE("intersect_aabb: rays that touch a box's edge or corner are never lost to rounding",
+          "[stage4]") {
     // Rays from random origins aimed exactly at a corner or at a point of an edge of a box whose
     // coordinates are not round in binary: rounding in (bound - A) / D must not make the exit come
     // out before the entry.
@@ -101,7 +130,8 @@ TEST_CASE("intersect_aabb: rays that touch a box's edge or corner are never lost
         const Vec3 origin{u(rng), u(rng), u(rng)};
         const double s = std::uniform_real_distribution<double>(0.0, 1.0)(rng);
         const Vec3 target =
-            k % 2 == 0 ? box.max : Vec3(box.min.x, box.min.y, box.min.z + s * (box.max.z - box.min.z));
+            k % 2 == 0 ? box.max
+                       : Vec3(box.min.x, box.min.y, box.min.z + s * (box.max.z - box.min.z));
         const Ray ray{origin, target - origin};
         CAPTURE(k, origin.x, origin.y, origin.z);
         CHECK(slab(ray, box).has_value());
