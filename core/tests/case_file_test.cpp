@@ -363,15 +363,17 @@ TEST_CASE("parse_case_file: rejects what would be checked silently wrong, at its
     const std::string one_case = ray + "sphere 0 0 0 1 miss\nend\n";  // lines 2 to 5
     const std::vector<BadFile> bad = {
         {"a negative radius", family + ray + "sphere 0 0 0 -1 miss\n",
-         "t.cases:4: the radius '-1' must be positive"},
-        {"a zero radius", family + ray + "sphere 0 0 0 0 miss\n",
-         "t.cases:4: the radius '0' must be positive"},
-        {"a negative zero radius", family + ray + "sphere 0 0 0 -0 miss\n",
-         "t.cases:4: the radius '-0' must be positive"},
-        {"a ray without a direction", family + "case 0\nray 0 0 1 0 -0 0 0 inf\n",
-         "t.cases:3: the ray's direction is zero: the ray goes nowhere"},
-        {"a plane without a normal", family + ray + "plane 0 0 0 0 0 0 miss\n",
-         "t.cases:4: the plane's normal is zero: it has no orientation"},
+         "t.cases:4: the radius '-1' must not be negative"},
+        {"a hit on a sphere of radius 0",
+         family + ray + "sphere 0 0 0 0 hit 1 tolerance 0 normal 0 0 1 tolerance 0\n",
+         "t.cases:4: a hit on a sphere of radius 0: the contract makes it a miss"},
+        {"a hit on a ray without a direction",
+         family + "case 0\nray 0 0 1 0 -0 0 0 inf\n" +
+             "plane 0 0 0 0 0 1 hit 1 tolerance 0 normal 0 0 1 tolerance 0\n",
+         "t.cases:4: a hit on a ray whose direction is zero: the contract makes it a miss"},
+        {"a hit on a plane without a normal",
+         family + ray + "plane 0 0 0 0 0 0 hit 1 tolerance 0 normal 0 0 1 tolerance 0\n",
+         "t.cases:4: a hit on a plane whose normal is zero: the contract makes it a miss"},
         {"an expected normal that is not unit length",
          family + ray + "plane 0 0 0 0 0 1 hit 1 tolerance 0 normal 0 0 2 tolerance 0\n",
          "t.cases:4: the normal (0, 0, 2) is not unit length (its length is 2)"},
@@ -396,6 +398,18 @@ TEST_CASE("parse_case_file: rejects what would be checked silently wrong, at its
         CHECK_THROWS_WITH(parse(file.text), file.message);
         CHECK_THROWS_AS(parse(file.text), InputError);
     }
+}
+
+TEST_CASE("parse_case_file: degenerate input is a case when it expects the contract's miss",
+          "[core]") {
+    const std::vector<CaseFamily> families = parse(
+        "family f seed 1\n"
+        "case 0\nray 0 0 1 0 0 -1 0 inf\nsphere 0 0 0 0 miss\nplane 0 0 0 0 0 0 miss\nend\n"
+        "case 1\nray 0 0 1 0 0 0 0 inf\nsphere 0 0 0 1 miss\nend\n");
+    REQUIRE(families.size() == 1);
+    REQUIRE(families[0].cases.size() == 2);
+    CHECK(std::get<Sphere>(families[0].cases[0].primitives[0].shape).radius == 0.0);
+    CHECK(families[0].cases[1].ray.direction == Vec3(0.0));
 }
 
 TEST_CASE("parse_case_file: one case number in two families is two cases", "[core]") {
