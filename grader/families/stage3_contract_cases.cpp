@@ -17,6 +17,38 @@ RayCase many(const Ray& ray, const std::vector<CaseShape>& shapes) {
     return c;
 }
 
+// A triangle in the plane coordinate `axis` = 0.5, its normal along +axis (sign 1) or -axis
+// (sign -1), its vertices lifted off that plane by tilt times (0, 1, -0.5): a tilt of 0 puts the
+// normal exactly on the axis, the projection method's choice of the coordinate to drop. The
+// other two coordinates follow the axis cyclically, so that counter-clockwise there is +axis.
+Triangle axis_triangle(int axis, double sign, double tilt) {
+    const int u = (axis + 1) % 3;
+    const int v = (axis + 2) % 3;
+    const auto vertex = [&](double a, double b, double lift) {
+        Vec3 p;
+        p[axis] = 0.5 + lift;
+        p[u] = a;
+        p[v] = b;
+        return p;
+    };
+    const Vec3 p0 = vertex(-1, -1, 0);
+    const Vec3 p1 = vertex(1, -1, tilt);
+    const Vec3 p2 = vertex(0, 1, -0.5 * tilt);
+    return sign > 0 ? Triangle{p0, p1, p2} : Triangle{p0, p2, p1};
+}
+
+// A ray along -sign * axis (from the side the normal of axis_triangle points to) or against it,
+// through the point (0.2, -0.3) of the other two coordinates, well inside the triangle.
+Ray along_axis(int axis, double sign) {
+    Vec3 origin;
+    origin[axis] = 0.5 + 5 * sign;
+    origin[(axis + 1) % 3] = 0.2;
+    origin[(axis + 2) % 3] = -0.3;
+    Vec3 direction(0.0);
+    direction[axis] = -sign;
+    return Ray{origin, direction};
+}
+
 void number(CaseFamily& family) {
     for (std::size_t k = 0; k < family.cases.size(); ++k)
         family.cases[k].index = k;
@@ -28,8 +60,12 @@ void number(CaseFamily& family) {
 // cutting a hit off on either side, triangles in the coordinate planes (the projection method's
 // choice of axis), several primitives at once, the nearest not the first in closest_hit's
 // order (spheres, triangles, planes), copies of one primitive, a tie that must go to the
-// first, and slivers whose double cross product is not zero though an edge's inward normal
-// rounds to zero (the half-spaces method's 0 / 0 barycentric).
+// first, slivers whose double cross product is not zero though an edge's inward normal
+// rounds to zero (the half-spaces method's 0 / 0 barycentric), triangles whose normal lies on or
+// next to each positive and each negative axis (a projection that picks the axis by the signed
+// component instead of its magnitude projects those along a negative axis to a segment), and rays
+// nearly parallel to a plane, D . N from 1e-7 down to a few times the oracle's grazing bound, that
+// cross it inside [t_min, t_max] (only an exactly parallel ray misses).
 CaseFamily contract_family() {
     const double inf = HUGE_VAL;
     const Triangle in_z{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
@@ -81,6 +117,23 @@ CaseFamily contract_family() {
                          {0.4375, -0.18749999999999997, 0.24999999999999997},
                          {0, 0, 0}}),
         }};
+    for (int axis = 0; axis < 3; ++axis) {
+        for (const double sign : {1.0, -1.0}) {
+            for (const double tilt : {0.0, 1e-3, 1e-9}) {
+                family.cases.push_back(
+                    one(along_axis(axis, sign), axis_triangle(axis, sign, tilt)));
+            }
+            family.cases.push_back(one(along_axis(axis, -sign), axis_triangle(axis, sign, 0.0)));
+        }
+    }
+    const Plane z0{{0, 0, 0}, {0, 0, 1}};
+    const Plane tilted{{0, 0, 0}, {1, 1, 1}};
+    for (const double d_dot_n : {1e-7, 1e-9, 1e-11, 1e-13}) {
+        // From above z = 0 going down, and from below the tilted plane going up; both cross at
+        // t = 1, up to the rounding of the inputs.
+        family.cases.push_back(one({{-0.4, 0.2, d_dot_n}, {1, 0.5, -d_dot_n}, 0.5, 2.0}, z0));
+        family.cases.push_back(one({{-0.5, 0.5, -d_dot_n}, {1, -1, d_dot_n}, 0.5, 2.0}, tilted));
+    }
     number(family);
     return family;
 }
@@ -105,6 +158,12 @@ CaseFamily exact_family() {
     const Sphere under_z0{{0.25, -0.25, -1}, 1};  // touches z = 0 at (0.25, -0.25, 0)
     const Plane at_z3{{0, 0, 3}, {0, 0, 1}};
     const Plane z0{{0, 0, 0}, {0, 0, 1}};
+    // Rays a power of two off parallel to z0, down to 4 ulps of their length: D . N and t = 1
+    // are exact, so they hit, though the oracle counts the last as grazing.
+    const auto nearly_parallel = [](int exponent) {
+        const double height = std::ldexp(1.0, exponent);
+        return Ray{{-0.5, 0.25, height}, {1, 0, -height}, 0.5, 2.0};
+    };
     const auto scaled = [](const Triangle& t, double k) {
         return Triangle{t.p0 * k, t.p1 * k, t.p2 * k};
     };
@@ -133,6 +192,9 @@ CaseFamily exact_family() {
             one({{0, 0, 5}, {0, 0, -1}}, Plane{{0, 0, 0}, {0, 0, 0}}),   // a zero normal
             many({{0.25, -0.25, 5}, {0, 0, -1}}, {z0, in_z, under_z0}),  // a tie: the sphere
             many({{0.25, -0.25, 5}, {0, 0, -1}}, {z0, in_z}),            // a tie: the triangle
+            one(nearly_parallel(-24), z0),
+            one(nearly_parallel(-40), z0),
+            one(nearly_parallel(-50), z0),
             one({{0, 0, 5 * big}, {0, 0, -big}}, Plane{{0, 0, 3 * big}, {0, 0, small}}),
             one({{0.25 * big, -0.25 * big, 5 * big}, {0, 0, -big}}, scaled(in_z, big)),
             one({{0.25 * small, -0.25 * small, 5 * small}, {0, 0, -small}}, scaled(in_z, small)),

@@ -70,6 +70,31 @@ MethodScore score(const Stage3Method& method, const CaseFamily& cases) {
     return score_family(method, cases, answers);
 }
 
+// Ray-plane that calls a ray parallel when |D . N| is below 10^-exponent, as a student's
+// epsilon does: every other answer is the reference's.
+template <int Exponent>
+std::optional<Hit> plane_with_parallel_epsilon(const Ray& ray, const Plane& plane) {
+    if (std::abs(glm::dot(ray.direction, plane.normal)) < std::pow(10.0, -Exponent)) {
+        return std::nullopt;
+    }
+    return intersect_plane(ray, plane);
+}
+
+// Which coordinate of n is largest, in magnitude or as a signed number.
+int largest_axis(const Vec3& n, bool magnitude) {
+    const Vec3 m = magnitude ? glm::abs(n) : n;
+    return (m.x >= m.y && m.x >= m.z) ? 0 : (m.y >= m.z ? 1 : 2);
+}
+
+// The projection method that drops the signed largest coordinate of the normal: where that is
+// not the largest in magnitude, the triangle projects to a segment or a sliver and the ray
+// misses; elsewhere it is the reference's projection.
+std::optional<Hit> projection_by_signed_axis(const Ray& ray, const Triangle& triangle) {
+    const Vec3 n = glm::cross(triangle.p1 - triangle.p0, triangle.p2 - triangle.p0);
+    if (largest_axis(n, false) != largest_axis(n, true)) return std::nullopt;
+    return intersect_triangle_projection(ray, triangle);
+}
+
 const char* const kSphereFamilies[] = {"random-spheres", "axis-parallel", "origins-on-surface",
                                        "tangent-rays",   "tiny-spheres",  "huge-spheres",
                                        "far-spheres",    "stable-roots",  "closest-hit-scene"};
@@ -274,4 +299,32 @@ TEST_CASE("contract cases: the exact ones fail a range, an edge rule or a tie ru
         for (const CasePrimitive& primitive : ray_case.primitives)
             CHECK_FALSE(primitive.expected.near_boundary);
     }
+}
+
+TEST_CASE("contract cases: they fail a plane epsilon and a projection by the signed axis",
+          "[oracle]") {
+    CaseFamily contract = contract_family();
+    decide_cases(contract);
+    CaseFamily exact = exact_family();
+    decide_cases(exact);
+    tighten_exact_family(exact);
+    const auto plane = [](std::optional<Hit> (*test)(const Ray&, const Plane&)) {
+        Stage3Method method{"intersect_plane", Stage3Method::Kind::plane};
+        method.plane = test;
+        return method;
+    };
+    // The oracle's cases reach D . N = 1e-13; only the exact ones go below its grazing bound.
+    CHECK(score(plane(plane_with_parallel_epsilon<6>), contract).passed <
+          score(plane(intersect_plane), contract).passed);
+    CHECK(score(plane(plane_with_parallel_epsilon<12>), contract).passed <
+          score(plane(intersect_plane), contract).passed);
+    CHECK(score(plane(plane_with_parallel_epsilon<15>), exact).passed <
+          score(plane(intersect_plane), exact).passed);
+
+    Stage3Method signed_axis{"intersect_triangle_projection", Stage3Method::Kind::triangle};
+    signed_axis.triangle = projection_by_signed_axis;
+    const MethodScore s = score(signed_axis, contract);
+    // Every triangle whose normal lies on or next to a negative axis: three tilts and a ray from
+    // behind, on each axis.
+    CHECK(s.cases - s.passed >= 12);
 }
