@@ -99,6 +99,21 @@ const char* const kSphereFamilies[] = {"random-spheres", "axis-parallel", "origi
                                        "tangent-rays",   "tiny-spheres",  "huge-spheres",
                                        "far-spheres",    "stable-roots",  "closest-hit-scene"};
 
+// The contract family, decided by the oracle as the grader decides it.
+CaseFamily decided_contract_family() {
+    CaseFamily contract = contract_family();
+    decide_cases(contract);
+    return contract;
+}
+
+// The exact family, decided and then held to its exact answers, as the grader holds it.
+CaseFamily decided_exact_family() {
+    CaseFamily exact = exact_family();
+    decide_cases(exact);
+    tighten_exact_family(exact);
+    return exact;
+}
+
 }  // namespace
 
 TEST_CASE("oracle: every family on many seeds has finite tolerances, and its case file loads",
@@ -249,11 +264,8 @@ TEST_CASE("reference tests: no hit of any method on any family has a NaN or infi
 
 TEST_CASE("contract cases: every reference method passes them, the exact ones with exact t",
           "[oracle]") {
-    CaseFamily contract = contract_family();
-    decide_cases(contract);
-    CaseFamily exact = exact_family();
-    decide_cases(exact);
-    tighten_exact_family(exact);
+    const CaseFamily contract = decided_contract_family();
+    const CaseFamily exact = decided_exact_family();
     std::vector<Stage3Method> methods = stage3_methods();
     methods.push_back(sphere_method("intersect_sphere", intersect_sphere_stable_roots));
     methods.push_back(sphere_method("intersect_sphere", handout_sphere));
@@ -274,9 +286,7 @@ TEST_CASE("contract cases: every reference method passes them, the exact ones wi
 
 TEST_CASE("contract cases: the exact ones fail a range, an edge rule or a tie rule broken",
           "[oracle]") {
-    CaseFamily exact = exact_family();
-    decide_cases(exact);
-    tighten_exact_family(exact);
+    const CaseFamily exact = decided_exact_family();
     // A tie across kinds: the plane, the triangle and the sphere all at t = 5, listed plane
     // first; closest_hit must choose the sphere.
     const auto tie = std::find_if(exact.cases.begin(), exact.cases.end(), [](const RayCase& c) {
@@ -303,11 +313,8 @@ TEST_CASE("contract cases: the exact ones fail a range, an edge rule or a tie ru
 
 TEST_CASE("contract cases: they fail a plane epsilon and a projection by the signed axis",
           "[oracle]") {
-    CaseFamily contract = contract_family();
-    decide_cases(contract);
-    CaseFamily exact = exact_family();
-    decide_cases(exact);
-    tighten_exact_family(exact);
+    const CaseFamily contract = decided_contract_family();
+    const CaseFamily exact = decided_exact_family();
     const auto plane = [](std::optional<Hit> (*test)(const Ray&, const Plane&)) {
         Stage3Method method{"intersect_plane", Stage3Method::Kind::plane};
         method.plane = test;
