@@ -142,9 +142,9 @@ CaseFamily contract_family() {
 // dyadic coordinates, axis-parallel rays and edges, powers of two at the ends of the domain, so
 // that every product, quotient and square root is exact. There the oracle's "near a boundary,
 // either passes" does not apply, and each sentence of intersect.h has a case that fails a test
-// breaking it: t_min and t_max both included, edges and vertices belong to the triangle, surfaces
-// two-sided, a ray in a plane a miss, degenerate input a miss, ties to the first kind (spheres,
-// triangles, planes), the domain's ends.
+// breaking it: t_min and t_max both included, edges and vertices belong to the triangle, a
+// tangent ray touches the sphere, surfaces two-sided, a ray in a plane a miss, degenerate input a
+// miss, ties to the first kind (spheres, triangles, planes), the domain's ends.
 CaseFamily exact_family() {
     const double inf = HUGE_VAL;
     const double big = std::ldexp(1.0, 330);  // 2.2e99: three such factors stay finite
@@ -177,6 +177,8 @@ CaseFamily exact_family() {
             one({{0, 0, -5}, {0, 0, 1}, 4.0, inf}, unit),                // near root at t_min
             one({{0, 0, -5}, {0, 0, 1}, 0.0, 4.0}, unit),                // near root at t_max
             one({{0, 0, -5}, {0, 0, 1}, 5.0, 6.0}, unit),                // far root at t_max
+            one({{1, 0, -5}, {0, 0, 1}}, unit),                          // tangent: a double root
+            one({{0, -0.5, -5}, {0, 0, 1}}, Sphere{{0, 0, 0}, 0.5}),     // tangent from below
             one({{0.25, -0.25, 5}, {0, 0, -1}, 0.0, 5.0}, in_z),         // t = t_max
             one({{0.25, -0.25, 5}, {0, 0, -1}, 5.0, inf}, in_z),         // t = t_min
             one({{0.5, -1, 5}, {0, 0, -1}}, in_z),                       // on the edge p0 p1

@@ -43,8 +43,9 @@ std::optional<Hit> intersect_triangle_cramer(const Ray& ray, const Triangle& tri
 std::optional<Hit> intersect_triangle(const Ray& ray, const Triangle& triangle);
 
 /// Ray-sphere: the smaller root of |A + t D - C|^2 = r^2 within [t_min, t_max], else the larger
-/// (a ray starting inside the sphere hits it from within), computed in a form that stays
-/// accurate for spheres that are tiny, huge or far from the ray's origin.
+/// (a ray starting inside the sphere hits it from within; a tangent ray touches it at its double
+/// root), computed in a form that stays accurate for spheres that are tiny, huge or far from the
+/// ray's origin.
 std::optional<Hit> intersect_sphere(const Ray& ray, const Sphere& sphere);
 
 /// All the primitives of a scene, by kind, for closest_hit.
