@@ -1,5 +1,6 @@
 #include "core/render/shade_hit.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -27,19 +28,26 @@ std::string blocker(const RenderScene& render_scene, const Ray& shadow) {
            ") at t=" + to_text(hit->hit.t);
 }
 
+// A light as the trace names it, "point light (line 12)": built only for a trace, never per hit
+// of a render.
+std::string light_name(const char* kind, std::uint32_t line) {
+    return std::string(kind) + " light (line " + std::to_string(line) + ")";
+}
+
 // One light at the point: its sample, or nothing when it cannot reach the point.
 std::optional<LightSample> reaching(const RenderScene& render_scene, const SurfacePoint& point,
-                                    const LightSample& light, const std::string& name,
+                                    const LightSample& light, const char* kind, std::uint32_t line,
                                     TraceLog* trace) {
     if (glm::dot(point.normal, light.direction) <= 0.0) {
-        if (trace) trace->add(name + ": behind the surface, no shadow ray");
+        if (trace) trace->add(light_name(kind, line) + ": behind the surface, no shadow ray");
         return std::nullopt;
     }
     const Ray shadow = shadow_ray(point, light, render_scene.ray_offset);
     const bool blocked = scene_occluded(render_scene, shadow);
     if (trace) {
-        trace->add(name + ": direction " + to_text(light.direction) + " distance " +
-                   to_text(light.distance) + " intensity " + to_text(light.intensity));
+        trace->add(light_name(kind, line) + ": direction " + to_text(light.direction) +
+                   " distance " + to_text(light.distance) + " intensity " +
+                   to_text(light.intensity));
         trace->add("  shadow ray " + describe(shadow) + ": " + blocker(render_scene, shadow));
     }
     if (blocked) return std::nullopt;
@@ -75,19 +83,17 @@ ShadedHit shade_hit(const RenderScene& render_scene, const Ray& ray, const Primi
     std::vector<LightSample> visible;
     std::vector<std::string> names;
     for (const PointLight& light : scene.point_lights) {
-        const std::string name = "point light (line " + std::to_string(light.line) + ")";
         const LightSample sample = sample_light(light, point.position);
-        if (reaching(render_scene, point, sample, name, trace)) {
+        if (reaching(render_scene, point, sample, "point", light.line, trace)) {
             visible.push_back(sample);
-            names.push_back(name);
+            if (trace) names.push_back(light_name("point", light.line));
         }
     }
     for (const DirectionalLight& light : scene.directional_lights) {
-        const std::string name = "directional light (line " + std::to_string(light.line) + ")";
         const LightSample sample = sample_light(light);
-        if (reaching(render_scene, point, sample, name, trace)) {
+        if (reaching(render_scene, point, sample, "directional", light.line, trace)) {
             visible.push_back(sample);
-            names.push_back(name);
+            if (trace) names.push_back(light_name("directional", light.line));
         }
     }
 
