@@ -4,14 +4,11 @@
 #include <stdexcept>
 
 #include "core/testing/catch.h"
+#include "core/testing/scratch_folder.h"
 
 using namespace raystep;
 
 namespace {
-
-std::filesystem::path scratch(const std::string& name) {
-    return std::filesystem::temp_directory_path() / "raystep-image-io-test" / name;
-}
 
 // A 3 x 2 image whose pixels are all different, with the top-left one red.
 Image pattern() {
@@ -28,7 +25,8 @@ Image pattern() {
 }  // namespace
 
 TEST_CASE("write_image: PNG round trip keeps row 0 at the top and clamps to [0, 1]", "[core]") {
-    const std::filesystem::path file = scratch("pattern.png");
+    const testing::ScratchFolder scratch("image-io-test");
+    const std::filesystem::path file = scratch.path() / "pattern.png";
     write_image(pattern(), file);
     const Image back = read_image(file);
     REQUIRE(back.width() == 3);
@@ -42,7 +40,8 @@ TEST_CASE("write_image: PNG round trip keeps row 0 at the top and clamps to [0, 
 }
 
 TEST_CASE("write_image: EXR keeps the floats as they are", "[core]") {
-    const std::filesystem::path file = scratch("pattern.exr");
+    const testing::ScratchFolder scratch("image-io-test");
+    const std::filesystem::path file = scratch.path() / "pattern.exr";
     write_image(pattern(), file);
     const Image back = read_image(file);
     CHECK(back.at(1, 1) == Color(2.0, -1.0, 0.25));
@@ -50,10 +49,12 @@ TEST_CASE("write_image: EXR keeps the floats as they are", "[core]") {
 }
 
 TEST_CASE("write_image: an unknown format is an error naming the file", "[core]") {
-    CHECK_THROWS_WITH(write_image(pattern(), scratch("pattern.unknown-format")),
+    const testing::ScratchFolder scratch("image-io-test");
+    CHECK_THROWS_WITH(write_image(pattern(), scratch.path() / "pattern.unknown-format"),
                       Catch::Matchers::Contains("pattern.unknown-format"));
 }
 
 TEST_CASE("read_image: a missing file is an error naming it", "[core]") {
-    CHECK_THROWS_AS(read_image(scratch("missing.png")), std::runtime_error);
+    const testing::ScratchFolder scratch("image-io-test");
+    CHECK_THROWS_AS(read_image(scratch.path() / "missing.png"), std::runtime_error);
 }

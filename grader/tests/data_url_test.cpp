@@ -2,9 +2,8 @@
 
 #include <fstream>
 
-#include <unistd.h>
-
 #include "core/testing/catch.h"
+#include "core/testing/scratch_folder.h"
 #include "grader/protocol/base64.h"
 
 using namespace raystep::grade;
@@ -12,26 +11,13 @@ using raystep::base64;
 
 namespace {
 
-// A file of its own for one test case, removed after it.
-class ScratchFile {
-  public:
-    ScratchFile(const std::string& name, const std::string& bytes)
-        : path_(std::filesystem::temp_directory_path() /
-                ("raystep-data-url-test-" + std::to_string(::getpid()) + "-" + name)) {
-        std::ofstream(path_, std::ios::binary) << bytes;
-    }
-    ~ScratchFile() {
-        std::error_code ignored;
-        std::filesystem::remove(path_, ignored);
-    }
-    ScratchFile(const ScratchFile&) = delete;
-    ScratchFile& operator=(const ScratchFile&) = delete;
-
-    const std::filesystem::path& path() const { return path_; }
-
-  private:
-    std::filesystem::path path_;
-};
+// A file holding bytes, in a scratch folder of its own.
+std::filesystem::path write_file(const raystep::testing::ScratchFolder& folder,
+                                 const std::string& name, const std::string& bytes) {
+    const std::filesystem::path path = folder.path() / name;
+    std::ofstream(path, std::ios::binary) << bytes;
+    return path;
+}
 
 }  // namespace
 
@@ -54,18 +40,20 @@ TEST_CASE("base64: RFC 4648's test vectors, padding included", "[report]") {
 
 TEST_CASE("image_data_url: an image file as a data URL of its media type", "[report]") {
     const std::string bytes("\x89PNG\r\n\x1a\n\x00\x01\xff", 11);
-    const ScratchFile png("image.png", bytes);
-    CHECK(image_data_url(png.path(), 1000) == "data:image/png;base64," + base64(bytes));
-    const ScratchFile jpeg("photo.JPG", "jpeg");
-    CHECK(image_data_url(jpeg.path(), 1000) == "data:image/jpeg;base64," + base64("jpeg"));
+    const raystep::testing::ScratchFolder scratch("data-url-test");
+    const auto png = write_file(scratch, "image.png", bytes);
+    CHECK(image_data_url(png, 1000) == "data:image/png;base64," + base64(bytes));
+    const auto jpeg = write_file(scratch, "photo.JPG", "jpeg");
+    CHECK(image_data_url(jpeg, 1000) == "data:image/jpeg;base64," + base64("jpeg"));
 }
 
 TEST_CASE("image_data_url: nothing for a missing file, another type, or one too large",
           "[report]") {
     CHECK_FALSE(image_data_url("/nonexistent/raystep/image.png", 1000));
-    const ScratchFile text("page.html", "<script>alert(1)</script>");
-    CHECK_FALSE(image_data_url(text.path(), 1000));
-    const ScratchFile large("large.png", std::string(2000, 'x'));
-    CHECK_FALSE(image_data_url(large.path(), 1999));
-    CHECK(image_data_url(large.path(), 2000));
+    const raystep::testing::ScratchFolder scratch("data-url-test");
+    const auto text = write_file(scratch, "page.html", "<script>alert(1)</script>");
+    CHECK_FALSE(image_data_url(text, 1000));
+    const auto large = write_file(scratch, "large.png", std::string(2000, 'x'));
+    CHECK_FALSE(image_data_url(large, 1999));
+    CHECK(image_data_url(large, 2000));
 }

@@ -5,9 +5,8 @@
 #include <fstream>
 #include <sstream>
 
-#include <unistd.h>
-
 #include "core/testing/catch.h"
+#include "core/testing/scratch_folder.h"
 #include "grader/protocol/base64.h"
 #include "grader/report/report_text.h"
 #include "report_example.h"
@@ -18,34 +17,12 @@ using raystep::base64;
 using raystep::testing::example_report;
 using raystep::testing::kHiddenSecret;
 using raystep::testing::kHostile;
+using raystep::testing::ScratchFolder;
 using raystep::testing::XmlDocument;
 
 namespace {
 
 using Strings = std::vector<std::string>;
-
-// A folder of its own for one test case, removed after it: ctest runs the cases in parallel, and
-// other builds on the machine may run them at the same time.
-class ScratchFolder {
-  public:
-    ScratchFolder()
-        : path_(std::filesystem::temp_directory_path() /
-                ("raystep-html-report-test-" + std::to_string(::getpid()))) {
-        std::filesystem::remove_all(path_);
-        std::filesystem::create_directories(path_);
-    }
-    ~ScratchFolder() {
-        std::error_code ignored;
-        std::filesystem::remove_all(path_, ignored);
-    }
-    ScratchFolder(const ScratchFolder&) = delete;
-    ScratchFolder& operator=(const ScratchFolder&) = delete;
-
-    const std::filesystem::path& path() const { return path_; }
-
-  private:
-    std::filesystem::path path_;
-};
 
 std::string read(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
@@ -89,7 +66,7 @@ std::string written(const std::filesystem::path& folder, Audience audience,
 }  // namespace
 
 TEST_CASE("html_report: one well-formed page with no script", "[report]") {
-    const ScratchFolder scratch;
+    const ScratchFolder scratch("html-report-test");
     const std::string html = written(scratch.path(), Audience::instructor);
     const XmlDocument page(html);
     INFO(page.errors());
@@ -108,7 +85,7 @@ TEST_CASE("html_report: one well-formed page with no script", "[report]") {
 }
 
 TEST_CASE("html_report: the header, the stage table and a section per check", "[report]") {
-    const ScratchFolder scratch;
+    const ScratchFolder scratch("html-report-test");
     const XmlDocument page(written(scratch.path(), Audience::instructor));
     REQUIRE(page.well_formed());
     CHECK(page.values("//header//h1") == Strings{"alice <b>& \"bob\""});
@@ -131,7 +108,7 @@ TEST_CASE("html_report: the header, the stage table and a section per check", "[
 }
 
 TEST_CASE("html_report: render checks show their three images side by side", "[report]") {
-    const ScratchFolder scratch;
+    const ScratchFolder scratch("html-report-test");
     const std::filesystem::path& folder = scratch.path();
     const XmlDocument page(written(scratch.path(), Audience::instructor));
     REQUIRE(page.well_formed());
@@ -151,7 +128,7 @@ TEST_CASE("html_report: render checks show their three images side by side", "[r
 }
 
 TEST_CASE("html_report: counterexamples with their commands, hostile text as text", "[report]") {
-    const ScratchFolder scratch;
+    const ScratchFolder scratch("html-report-test");
     const XmlDocument page(written(scratch.path(), Audience::student));
     REQUIRE(page.well_formed());
     const std::string edges = "//article[.//code[text()='stage3.oracle.shared-edges']]";
@@ -165,7 +142,7 @@ TEST_CASE("html_report: counterexamples with their commands, hostile text as tex
 }
 
 TEST_CASE("html_report: the student's page has no withheld check", "[report]") {
-    const ScratchFolder scratch;
+    const ScratchFolder scratch("html-report-test");
     const std::string html = written(scratch.path(), Audience::student);
     CHECK_THAT(html, !Catch::Matchers::Contains(kHiddenSecret));
     const XmlDocument page(html);
@@ -178,7 +155,7 @@ TEST_CASE("html_report: the student's page has no withheld check", "[report]") {
 }
 
 TEST_CASE("html_report: the speed-versus-error chart goes where issue 7 will put it", "[report]") {
-    const ScratchFolder scratch;
+    const ScratchFolder scratch("html-report-test");
     CHECK_THAT(written(scratch.path(), Audience::student),
                !Catch::Matchers::Contains("speed-versus-error"));
     const std::string svg =
@@ -195,7 +172,7 @@ TEST_CASE("html_report: the speed-versus-error chart goes where issue 7 will put
 }
 
 TEST_CASE("html_report: the student's page carries its images inside it as data URLs", "[report]") {
-    const ScratchFolder scratch;
+    const ScratchFolder scratch("html-report-test");
     const XmlDocument page(written(scratch.path(), Audience::student));
     REQUIRE(page.well_formed());
     CHECK(page.values("//meta[@http-equiv='Content-Security-Policy']/@content") ==
@@ -220,7 +197,7 @@ TEST_CASE("html_report: the student's page carries its images inside it as data 
 
 TEST_CASE("html_report: the student's page has the student's commands, the instructor's both",
           "[report]") {
-    const ScratchFolder scratch;
+    const ScratchFolder scratch("html-report-test");
     const std::string student = written(scratch.path(), Audience::student);
     CHECK_THAT(student, !Catch::Matchers::Contains("raystep-grade submission"));
     const XmlDocument page(written(scratch.path(), Audience::instructor));

@@ -3,12 +3,12 @@
 #include <filesystem>
 #include <fstream>
 
-#include <unistd.h>
-
 #include "core/testing/catch.h"
+#include "core/testing/scratch_folder.h"
 #include "grader/report/report_text.h"
 #include "report_example.h"
 
+using namespace raystep;
 using namespace raystep::grade;
 using raystep::testing::example_report;
 using raystep::testing::kHiddenSecret;
@@ -124,9 +124,8 @@ TEST_CASE("prairielearn_results: an empty report scores 0, and a huge one stays 
 
 TEST_CASE("prairielearn_results: render checks carry their images, failing ones first, under 1 MB",
           "[report]") {
-    const std::filesystem::path folder =
-        std::filesystem::temp_directory_path() /
-        ("raystep-prairielearn-test-" + std::to_string(::getpid()));
+    const testing::ScratchFolder scratch("prairielearn-test");
+    const std::filesystem::path& folder = scratch.path();
     std::filesystem::create_directories(folder / "render");
     // 100 KB an image, 3 a check: one check's images as data URLs take about 400 KB.
     std::ofstream(folder / "render/large.png", std::ios::binary) << std::string(100'000, 'p');
@@ -145,7 +144,6 @@ TEST_CASE("prairielearn_results: render checks carry their images, failing ones 
     }
     report.checks[9].images = {"render/small.png", "render/missing.png", ""};
     const std::string text = prairielearn_results(report, folder).dump();
-    std::filesystem::remove_all(folder);
 
     CHECK(text.size() < 1'000'000);
     const nlohmann::json tests = nlohmann::json::parse(text).at("tests");

@@ -7,6 +7,7 @@
 
 #include "core/bench/pareto_json.h"
 #include "core/testing/catch.h"
+#include "core/testing/scratch_folder.h"
 #include "grader/grade/checks/stage_checks.h"
 
 using namespace raystep;
@@ -15,7 +16,8 @@ using namespace raystep::grade;
 namespace {
 
 // The reference's JSON with one family: Cramer at 20 Mrays/s.
-std::filesystem::path write_reference(const std::string& family_name) {
+std::filesystem::path write_reference(const testing::ScratchFolder& folder,
+                                      const std::string& family_name) {
     ParetoFamily family;
     family.name = family_name;
     family.description = "rays through shared edges";
@@ -27,8 +29,7 @@ std::filesystem::path write_reference(const std::string& family_name) {
     cramer.cases = 100;
     cramer.mrays_per_second = 20.0;
     family.points = {cramer};
-    const std::filesystem::path path =
-        std::filesystem::temp_directory_path() / ("raystep-pareto-" + family_name + ".json");
+    const std::filesystem::path path = folder.path() / (family_name + ".json");
     std::ofstream(path) << pareto_json("machine", "2026-11-21", {family}, {}).dump();
     return path;
 }
@@ -49,8 +50,9 @@ GradeReport report_with_measurement(Outcome outcome) {
 
 TEST_CASE("speed_error_chart_svg: the submission is a labelled diamond at its speed ratio",
           "[report]") {
+    const testing::ScratchFolder scratch("speed-error-chart-test");
     const std::string svg = speed_error_chart_svg(report_with_measurement(Outcome::passed),
-                                                  write_reference("shared-edges"));
+                                                  write_reference(scratch, "shared-edges"));
     REQUIRE(!svg.empty());
     CHECK(svg.find(">your intersect_triangle</text>") != std::string::npos);
     CHECK(svg.find("Diamond: yours on 2000 cases") != std::string::npos);
@@ -60,14 +62,15 @@ TEST_CASE("speed_error_chart_svg: the submission is a labelled diamond at its sp
 }
 
 TEST_CASE("speed_error_chart_svg: no chart without a measurement or a reference", "[report]") {
-    const std::filesystem::path reference = write_reference("shared-edges");
+    const testing::ScratchFolder scratch("speed-error-chart-test");
+    const std::filesystem::path reference = write_reference(scratch, "shared-edges");
     CHECK(speed_error_chart_svg(report_with_measurement(Outcome::not_implemented), reference)
               .empty());
     CHECK(speed_error_chart_svg(GradeReport{}, reference).empty());
     CHECK(speed_error_chart_svg(report_with_measurement(Outcome::passed),
                                 reference.string() + ".missing")
               .empty());
-    CHECK(
-        speed_error_chart_svg(report_with_measurement(Outcome::passed), write_reference("slivers"))
-            .empty());
+    CHECK(speed_error_chart_svg(report_with_measurement(Outcome::passed),
+                                write_reference(scratch, "slivers"))
+              .empty());
 }

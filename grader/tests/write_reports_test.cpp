@@ -5,10 +5,10 @@
 #include <set>
 #include <sstream>
 
-#include <unistd.h>
 #include <nlohmann/json.hpp>
 
 #include "core/testing/catch.h"
+#include "core/testing/scratch_folder.h"
 #include "grader/grade/report_json.h"
 #include "grader/report/markup_escape.h"
 #include "grader/report/report_text.h"
@@ -18,33 +18,12 @@
 using namespace raystep::grade;
 using raystep::testing::example_report;
 using raystep::testing::kHiddenSecret;
+using raystep::testing::ScratchFolder;
 using raystep::testing::XmlDocument;
 
 namespace fs = std::filesystem;
 
 namespace {
-
-// A folder of its own for one test case, removed after it.
-class ScratchFolder {
-  public:
-    ScratchFolder()
-        : path_(fs::temp_directory_path() /
-                ("raystep-write-reports-test-" + std::to_string(::getpid()))) {
-        fs::remove_all(path_);
-        fs::create_directories(path_);
-    }
-    ~ScratchFolder() {
-        std::error_code ignored;
-        fs::remove_all(path_, ignored);
-    }
-    ScratchFolder(const ScratchFolder&) = delete;
-    ScratchFolder& operator=(const ScratchFolder&) = delete;
-
-    const fs::path& path() const { return path_; }
-
-  private:
-    fs::path path_;
-};
 
 std::string read(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
@@ -106,7 +85,7 @@ std::vector<std::string> leaks_in(const std::string& text, const GradeReport& re
 
 TEST_CASE("write_reports: the student's folder and the instructor's, and nothing else",
           "[report]") {
-    const ScratchFolder scratch;
+    const ScratchFolder scratch("write-reports-test");
     const fs::path output = written(scratch.path() / "out");
     CHECK(files_under(student_folder(output)) ==
           std::set<std::string>{"index.html", "junit.xml", "results.json"});
@@ -124,7 +103,7 @@ TEST_CASE("write_reports: the student's folder and the instructor's, and nothing
 }
 
 TEST_CASE("write_reports: no student's file names a withheld check or its inputs", "[report]") {
-    const ScratchFolder scratch;
+    const ScratchFolder scratch("write-reports-test");
     const GradeReport report = example_report();
     const fs::path output = written(scratch.path() / "out", report);
     for (const std::string& file : files_under(student_folder(output))) {
@@ -160,7 +139,7 @@ TEST_CASE("write_reports: no student's file names a withheld check or its inputs
 }
 
 TEST_CASE("write_reports: the student's page is one file, and its JUnit XML is valid", "[report]") {
-    const ScratchFolder scratch;
+    const ScratchFolder scratch("write-reports-test");
     const fs::path output = written(scratch.path() / "out");
     const XmlDocument page(read(student_folder(output) / "index.html"));
     REQUIRE(page.well_formed());
@@ -190,7 +169,7 @@ TEST_CASE("write_reports: the student's page is one file, and its JUnit XML is v
 
 TEST_CASE("write_reports: report.json in the instructor's folder reads back as the report",
           "[report]") {
-    const ScratchFolder scratch;
+    const ScratchFolder scratch("write-reports-test");
     const GradeReport report = example_report();
     const fs::path output = written(scratch.path() / "out", report);
     const GradeReport back =
@@ -203,7 +182,7 @@ TEST_CASE("write_reports: report.json in the instructor's folder reads back as t
 }
 
 TEST_CASE("write_reports: a folder that cannot be made is an error naming it", "[report]") {
-    const ScratchFolder scratch;
+    const ScratchFolder scratch("write-reports-test");
     const fs::path blocker = scratch.path() / "blocker";
     std::ofstream(blocker) << "a file where the folder should be";
     CHECK_THROWS_WITH(write_reports(example_report(), blocker / "out"),
