@@ -34,8 +34,9 @@ if(count EQUAL 0)
 endif()
 
 # Code and handouts point at sections too, as docs/stageN.md, "Section": each must exist.
-file(GLOB_RECURSE sources ${ROOT}/core/*.h ${ROOT}/core/*.cpp ${ROOT}/stages/*.h ${ROOT}/stages/*.cpp
-     ${ROOT}/solutions/*.h ${ROOT}/solutions/*.cpp ${ROOT}/grader/*.h ${ROOT}/grader/*.cpp
+file(GLOB_RECURSE sources ${ROOT}/base/*.h ${ROOT}/base/*.cpp ${ROOT}/stages/*.h ${ROOT}/stages/*.cpp
+     ${ROOT}/solutions/*.h ${ROOT}/solutions/*.cpp ${ROOT}/app/*.h ${ROOT}/app/*.cpp
+     ${ROOT}/studies/*.h ${ROOT}/studies/*.cpp ${ROOT}/grader/*.h ${ROOT}/grader/*.cpp
      ${ROOT}/docs/*.md)
 set(references 0)
 foreach(source IN LISTS sources)

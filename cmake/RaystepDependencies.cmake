@@ -49,7 +49,7 @@ if(NOT TARGET CLI11::CLI11)
 endif()
 
 # Mesh coordinates are parsed straight to double, the precision of the whole student API, where
-# the installed tinyobjloader offers it (Debian builds both variants); core/scene uses
+# the installed tinyobjloader offers it (Debian builds both variants); base/scene uses
 # tinyobj::real_t, so either variant compiles.
 find_package(tinyobjloader CONFIG QUIET)
 add_library(raystep_tinyobjloader INTERFACE)

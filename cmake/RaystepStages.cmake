@@ -92,7 +92,7 @@ function(raystep_add_stage folder)
             endif()
         endforeach()
         add_library(raystep_stage${number}_reference STATIC ${solution_sources})
-        target_link_libraries(raystep_stage${number}_reference PUBLIC raystep_core ${lower_reference})
+        target_link_libraries(raystep_stage${number}_reference PUBLIC raystep_base ${lower_reference})
         raystep_set_compile_options(raystep_stage${number}_reference)
     endif()
 
@@ -100,7 +100,7 @@ function(raystep_add_stage folder)
         list(TRANSFORM files PREPEND ${PROJECT_SOURCE_DIR}/stages/${folder}/
              OUTPUT_VARIABLE student_sources)
         add_library(raystep_stage${number} STATIC ${student_sources})
-        target_link_libraries(raystep_stage${number} PUBLIC raystep_core ${lower})
+        target_link_libraries(raystep_stage${number} PUBLIC raystep_base ${lower})
         raystep_set_compile_options(raystep_stage${number})
         # A stub names its parameters, as the slide does, before the student uses them.
         if(MSVC)
@@ -112,7 +112,7 @@ function(raystep_add_stage folder)
         # The solution, but over the student's lower stages: compiled a second time, because a
         # program must hold one definition of each lower-stage function, the student's.
         add_library(raystep_stage${number} STATIC ${solution_sources})
-        target_link_libraries(raystep_stage${number} PUBLIC raystep_core ${lower})
+        target_link_libraries(raystep_stage${number} PUBLIC raystep_base ${lower})
         raystep_set_compile_options(raystep_stage${number})
     else()
         add_library(raystep_stage${number} ALIAS raystep_stage${number}_reference)

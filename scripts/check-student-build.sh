@@ -1,29 +1,30 @@
 #!/usr/bin/env bash
 # What students meet, checked.
-#   1. A student release, as `raystep-grade release` writes it (no solutions/, no grader/, the
-#      reference images in scenes/), built as a student would.
+#   1. A student release, as `raystep-grade release` writes it (no solutions/, studies/ or
+#      grader/, the reference images in scenes/), built as a student would.
 #      Every public test must fail with a NotImplemented message and no test binary may crash;
 #      `raystep render` and `raystep trace` must stop with the message of the stub that stopped
-#      them; `raystep check` must report every stage-3 function as not implemented; `raystep bench`
-#      must report the stubs in its rows and exit 0; every `raystep demo` must stop at a stub, and
-#      `raystep bench --pareto` must say that only raystep-reference has the study; `raystep info`,
-#      which runs no stage code, must work.
+#      them; `raystep check` must report every stage-3 function as not implemented; every
+#      `raystep demo` must stop at a stub; `raystep info`, which runs no stage code, must work;
+#      `raystep bench`, the studies' command, is not there.
 #   2. A mixed build, RAYSTEP_STUDENT_STAGES=1: the reference stage 2 must call the student's
 #      stage 1, so a render stops at a stage-1 stub.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
-scene=core/tests/data/good/quad.test
+scene=base/tests/data/good/quad.test
 stub_message='stage [0-9]+: [A-Za-z_:]+ is not implemented yet, see docs/stage[0-9]+\.md, section "[^"]+"'
 
 release=$(mktemp -d)
 trap 'rm -rf "$release"' EXIT
 rmdir "$release"
 build/release/bin/raystep-grade release "$release" >/dev/null
-if [ -e "$release/solutions" ] || [ -e "$release/grader" ]; then
-    echo "FAIL the release holds solutions/ or grader/"
-    exit 1
-fi
+for folder in solutions studies grader; do
+    if [ -e "$release/$folder" ]; then
+        echo "FAIL the release holds $folder/"
+        exit 1
+    fi
+done
 cmake -S "$release" -B "$release/build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
     -DRAYSTEP_WARNINGS_AS_ERRORS=ON >/dev/null
 cmake --build "$release/build"
@@ -81,17 +82,12 @@ check_command "raystep check reports every stage-3 function as a stub" 1 \
 check_command "raystep info needs no stage" 0 "^primitives" "$bin/raystep" info "$scene"
 check_command "raystep render of the full image names the stub" 1 "^raystep: $stub_message" \
     "$bin/raystep" render "$scene" -o "$release/full.png"
-check_command "raystep bench reports each stub in its row and goes on" 0 \
-    "[|] BVH SAH +[|] not implemented: $stub_message" \
-    "$bin/raystep" bench --quick --workload spheres-primary
-check_command "raystep bench --epsilon reports the stub that stopped each scene" 0 \
-    "^- stopped: $stub_message" "$bin/raystep" bench --epsilon
 for demo in $("$bin/raystep" demo --list | awk 'NR > 1 {print $1}'); do
     check_command "raystep demo $demo stops at a stub" 1 "$stub_message" \
         "$bin/raystep" demo "$demo" -o "$release/demo-$demo.png"
 done
-check_command "raystep bench --pareto names raystep-reference" 1 \
-    "run raystep-reference bench --pareto" "$bin/raystep" bench --pareto
+check_command "raystep in a release has no bench: the studies are the instructor's" 2 \
+    "bench" "$bin/raystep" bench
 
 cmake -S "$root" -B "$root/build/student-stage1" -G Ninja -DCMAKE_BUILD_TYPE=Release \
     -DRAYSTEP_STUDENT_STAGES=1 -DRAYSTEP_WARNINGS_AS_ERRORS=ON >/dev/null

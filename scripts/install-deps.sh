@@ -23,10 +23,12 @@ grading_packages=(
 # What the rest needs: OpenImageIO's command-line tools (iv, idiff) to look at renders; the labels
 # of `raystep demo` (OpenImageIO draws text only with a TrueType font it is given); the report
 # tests (the XML parsed back with libxml2, the HTML report shown in headless Chromium); and
-# `raystep-reference bench` (the Embree baseline, and the bunny mesh of CGAL's demo data). The
-# build configures without any of them, and the tests that need one say so and are skipped.
+# `raystep-reference bench` (the Embree baseline, and the bunny mesh of CGAL's demo data); the
+# format check (clang-format 14, Debian 12's). The build configures without any of them, and the
+# tests that need one say so and are skipped.
 other_packages=(
     openimageio-tools fonts-dejavu-core libxml2-dev chromium libembree-dev libcgal-demo
+    clang-format
 )
 
 case "${1:-}" in

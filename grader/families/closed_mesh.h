@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/math/types.h"
+#include "base/math/types.h"
 
 namespace raystep {
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/check/ray_case.h"
+#include "app/check/ray_case.h"
 
 namespace raystep {
 

@@ -5,8 +5,8 @@
 #include <string_view>
 #include <vector>
 
-#include "core/check/ray_case.h"
-#include "core/math/portable_random.h"
+#include "app/check/ray_case.h"
+#include "base/math/portable_random.h"
 
 namespace raystep {
 

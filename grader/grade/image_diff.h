@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <filesystem>
 
-#include "core/image/image.h"
+#include "base/image/image.h"
 
 namespace raystep::grade {
 

@@ -34,9 +34,10 @@ std::string first_lines(const std::string& text) {
     return kept;
 }
 
-// The headers a submission compiles against: the contracts, never the solutions or the grader.
+// The headers a submission compiles against: the stages' contracts and what they build on (base/),
+// never the solutions, the studies or the grader.
 void copy_headers(const fs::path& source, const fs::path& include) {
-    for (const char* folder : {"core", "stages"}) {
+    for (const char* folder : {"base", "stages"}) {
         for (const auto& entry : fs::recursive_directory_iterator(source / folder)) {
             if (!entry.is_regular_file() || entry.path().extension() != ".h") continue;
             const fs::path target = include / fs::relative(entry.path(), source);
@@ -51,7 +52,7 @@ void copy_headers(const fs::path& source, const fs::path& include) {
 // reference. System libraries stay where they are: the sandbox shows /usr.
 struct StagedToolchain {
     fs::path common;
-    std::vector<std::string> objects;    ///< the probe's calls, the renderer, core/check
+    std::vector<std::string> objects;    ///< the probe's calls, the renderer, app/check
     std::vector<std::string> libraries;  ///< below the stages, in link order
     std::map<int, fs::path> stage_libraries;
 };
@@ -115,7 +116,7 @@ void require_sandbox_reaches(const fs::path& include, const fs::path& work) {
     SandboxPolicy policy;
     policy.read_only = {include};
     policy.working_directory = include;
-    const SandboxRun run = run_sandboxed({"test", "-r", (include / "core").string()}, "", policy);
+    const SandboxRun run = run_sandboxed({"test", "-r", (include / "base").string()}, "", policy);
     if (run.exit_code != 0) {
         throw std::runtime_error(
             "the sandbox cannot show its user the work folder " + work.string() + ": " +

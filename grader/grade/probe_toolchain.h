@@ -13,11 +13,11 @@ namespace raystep::grade {
 struct ProbeToolchain {
     std::filesystem::path compiler;
     std::vector<std::string> compile_flags;
-    std::vector<std::filesystem::path> probe_objects;  ///< the calls, the renderer, core/check
+    std::vector<std::filesystem::path> probe_objects;  ///< the calls, the renderer, app/check
     std::vector<std::filesystem::path> libraries;      ///< below the stages: protocol, scene, core
     std::vector<std::string> link_flags;
     std::map<int, std::filesystem::path> stage_libraries;  ///< each stage's reference library
-    std::filesystem::path source;  ///< the repository: its core/ and stages/ headers, scenes/
+    std::filesystem::path source;  ///< the repository: its base/ and stages/ headers, scenes/
 };
 
 /// Reads probe-toolchain.json. Throws std::runtime_error naming the file when it is missing or

@@ -4,9 +4,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "core/image/image_io.h"
-#include "core/render/tile_renderer.h"
-#include "core/scene/scene_loader.h"
+#include "base/image/image_io.h"
+#include "app/render/tile_renderer.h"
+#include "base/scene/scene_loader.h"
 
 namespace raystep::grade {
 
@@ -17,7 +17,7 @@ namespace {
 // What a student's repository leaves out, relative to the repository's root.
 bool withheld(const fs::path& relative) {
     const std::string first = relative.begin()->string();
-    if (first == "solutions" || first == "grader" || first == ".git" || first == ".ci" ||
+    if (first == "solutions" || first == "studies" || first == "grader" || first == ".git" || first == ".ci" ||
         first == "build" || first == "out") {
         return true;
     }

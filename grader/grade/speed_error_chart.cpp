@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <fstream>
 
-#include "core/bench/pareto_chart.h"
-#include "core/bench/pareto_json.h"
+#include "studies/speed_error/pareto_chart.h"
+#include "studies/speed_error/pareto_json.h"
 #include "grader/grade/checks/stage_checks.h"
 
 namespace raystep::grade {

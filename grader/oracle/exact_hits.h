@@ -5,7 +5,7 @@
 
 #include <optional>
 
-#include "core/scene/shapes.h"
+#include "base/scene/shapes.h"
 #include "grader/oracle/exact_kernel.h"
 #include "stages/2_rays/ray.h"
 

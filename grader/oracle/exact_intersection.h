@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "core/check/ray_case.h"
+#include "app/check/ray_case.h"
 
 namespace raystep {
 

@@ -8,7 +8,7 @@
 #include <CGAL/Gmpq.h>
 #include <gmpxx.h>
 
-#include "core/math/types.h"
+#include "base/math/types.h"
 #include "grader/oracle/nearest_double.h"
 
 namespace raystep::exact {

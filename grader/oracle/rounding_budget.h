@@ -9,7 +9,7 @@
 #include <cmath>
 #include <initializer_list>
 
-#include "core/math/types.h"
+#include "base/math/types.h"
 #include "grader/oracle/exact_intersection.h"
 
 namespace raystep {

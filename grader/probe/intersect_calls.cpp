@@ -1,11 +1,11 @@
 // Stage 3 calls: one stage-3 function over a list of ray cases (questions only: the probe never
-// sees the oracle's expectations), answered as core/check answers them for `raystep check`; and
+// sees the oracle's expectations), answered as app/check answers them for `raystep check`; and
 // a triangle test's workload, timed by the grader from outside, as the stage-4 workloads are.
 
 #include <algorithm>
 #include <stdexcept>
 
-#include "core/check/stage3_methods.h"
+#include "app/check/stage3_methods.h"
 #include "grader/probe/call_table.h"
 
 namespace raystep::probe {

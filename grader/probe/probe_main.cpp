@@ -13,7 +13,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
-#include "core/errors/not_implemented.h"
+#include "base/errors/not_implemented.h"
 #include "grader/probe/call_table.h"
 
 using namespace raystep;

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "core/render/tile_renderer.h"
-#include "core/scene/scene_loader.h"
+#include "app/render/tile_renderer.h"
+#include "base/scene/scene_loader.h"
 #include "grader/probe/call_table.h"
 #include "grader/protocol/image_json.h"
 

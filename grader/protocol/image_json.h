@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/image/image.h"
+#include "base/image/image.h"
 #include "grader/protocol/probe_json.h"
 
 namespace raystep::probe {

@@ -4,9 +4,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/check/case_answer.h"
-#include "core/check/ray_case.h"
-#include "core/scene/scene.h"
+#include "app/check/case_answer.h"
+#include "app/check/ray_case.h"
+#include "base/scene/scene.h"
 #include "stages/3_intersect/intersect.h"
 #include "stages/5_transforms/transform.h"
 #include "stages/6_shading/shading.h"

@@ -11,10 +11,10 @@
 
 #include <glm/ext/matrix_transform.hpp>
 
-#include "core/bench/bench_geometry.h"
-#include "core/bench/bench_rays.h"
-#include "core/scene/mesh_loader.h"
-#include "core/testing/catch.h"
+#include "studies/structures/bench_geometry.h"
+#include "studies/structures/bench_rays.h"
+#include "base/scene/mesh_loader.h"
+#include "base/testing/catch.h"
 #include "grader/families/closed_mesh.h"
 #include "grader/families/stage3_families.h"
 #include "solutions/4_accel/node_test.h"

@@ -1,6 +1,6 @@
 #include "grader/report/audience.h"
 
-#include "core/testing/catch.h"
+#include "base/testing/catch.h"
 #include "report_example.h"
 
 using namespace raystep::grade;

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "core/testing/catch.h"
+#include "base/testing/catch.h"
 #include "solutions/4_accel/bvh_binary_tree.h"
 
 using namespace raystep;

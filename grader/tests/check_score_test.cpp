@@ -3,7 +3,7 @@
 
 #include "grader/grade/check_score.h"
 
-#include "core/testing/catch.h"
+#include "base/testing/catch.h"
 
 using namespace raystep::grade;
 

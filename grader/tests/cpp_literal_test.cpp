@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <limits>
 
-#include "core/testing/catch.h"
+#include "base/testing/catch.h"
 
 using namespace raystep;
 using namespace raystep::grade;

@@ -2,8 +2,8 @@
 
 #include <fstream>
 
-#include "core/testing/catch.h"
-#include "core/testing/scratch_folder.h"
+#include "base/testing/catch.h"
+#include "base/testing/scratch_folder.h"
 #include "grader/protocol/base64.h"
 
 using namespace raystep::grade;

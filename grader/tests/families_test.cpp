@@ -3,7 +3,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/testing/catch.h"
+#include "base/testing/catch.h"
 #include "grader/families/closed_mesh.h"
 #include "grader/families/stage3_families.h"
 #include "grader/oracle/decide_cases.h"

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "core/testing/catch.h"
+#include "base/testing/catch.h"
 #include "report_example.h"
 
 using namespace raystep::grade;

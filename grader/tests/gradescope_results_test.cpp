@@ -2,7 +2,7 @@
 
 #include <set>
 
-#include "core/testing/catch.h"
+#include "base/testing/catch.h"
 #include "grader/report/report_text.h"
 #include "report_example.h"
 

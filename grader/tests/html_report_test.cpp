@@ -5,8 +5,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/testing/catch.h"
-#include "core/testing/scratch_folder.h"
+#include "base/testing/catch.h"
+#include "base/testing/scratch_folder.h"
 #include "grader/protocol/base64.h"
 #include "grader/report/report_text.h"
 #include "report_example.h"

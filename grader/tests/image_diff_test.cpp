@@ -3,11 +3,11 @@
 #include <cmath>
 #include <limits>
 
-#include "core/render/render_scene.h"
-#include "core/render/tile_renderer.h"
-#include "core/scene/scene_loader.h"
-#include "core/testing/catch.h"
-#include "core/testing/filled_image.h"
+#include "app/render/render_scene.h"
+#include "app/render/tile_renderer.h"
+#include "base/scene/scene_loader.h"
+#include "base/testing/catch.h"
+#include "base/testing/filled_image.h"
 
 using namespace raystep;
 using grade::compare_images;

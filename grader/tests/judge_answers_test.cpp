@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "core/testing/catch.h"
+#include "base/testing/catch.h"
 #include "grader/grade/check_definition.h"
 
 using namespace raystep::grade;

@@ -1,6 +1,6 @@
 #include "grader/report/junit_xml.h"
 
-#include "core/testing/catch.h"
+#include "base/testing/catch.h"
 #include "grader/report/report_text.h"
 #include "report_example.h"
 #include "xml_document.h"

@@ -6,8 +6,8 @@
 #include <CGAL/intersections.h>
 #include <glm/geometric.hpp>
 
-#include "core/math/portable_random.h"
-#include "core/testing/catch.h"
+#include "base/math/portable_random.h"
+#include "base/testing/catch.h"
 #include "grader/oracle/exact_intersection.h"
 #include "solutions/3_intersect/intersect_methods.h"
 

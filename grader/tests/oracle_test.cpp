@@ -7,8 +7,8 @@
 
 #include <gmpxx.h>
 
-#include "core/testing/catch.h"
-#include "core/testing/vec3_matchers.h"
+#include "base/testing/catch.h"
+#include "base/testing/vec3_matchers.h"
 #include "grader/oracle/exact_intersection.h"
 #include "grader/oracle/nearest_double.h"
 

@@ -8,10 +8,10 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/check/case_file.h"
-#include "core/check/case_scoring.h"
-#include "core/check/stage3_methods.h"
-#include "core/testing/catch.h"
+#include "app/check/case_file.h"
+#include "app/check/case_scoring.h"
+#include "app/check/stage3_methods.h"
+#include "base/testing/catch.h"
 #include "grader/families/stage3_contract_cases.h"
 #include "grader/families/stage3_families.h"
 #include "grader/oracle/decide_cases.h"

@@ -3,8 +3,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/testing/catch.h"
-#include "core/testing/scratch_folder.h"
+#include "base/testing/catch.h"
+#include "base/testing/scratch_folder.h"
 #include "grader/report/report_text.h"
 #include "report_example.h"
 

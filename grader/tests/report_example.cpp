@@ -5,8 +5,8 @@
 
 #include <glm/common.hpp>
 
-#include "core/image/image.h"
-#include "core/image/image_io.h"
+#include "base/image/image.h"
+#include "base/image/image_io.h"
 
 namespace raystep::testing {
 

@@ -14,8 +14,8 @@
 #include <string>
 #include <tuple>
 
-#include "core/image/image.h"
-#include "core/image/image_io.h"
+#include "base/image/image.h"
+#include "base/image/image_io.h"
 #include "grader/grade/write_reports.h"
 #include "grader/report/console_summary.h"
 #include "report_example.h"

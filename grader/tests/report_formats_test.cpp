@@ -1,5 +1,5 @@
 // What every report format must agree on: the outcome of each check, and the intake problem.
-#include "core/testing/catch.h"
+#include "base/testing/catch.h"
 #include "grader/report/console_summary.h"
 #include "grader/report/gradescope_results.h"
 #include "grader/report/html_report.h"

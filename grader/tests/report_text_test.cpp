@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/testing/catch.h"
+#include "base/testing/catch.h"
 #include "report_example.h"
 
 using namespace raystep::grade;

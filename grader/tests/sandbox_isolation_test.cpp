@@ -12,7 +12,7 @@
 #include <fstream>
 #include <string>
 
-#include "core/testing/catch.h"
+#include "base/testing/catch.h"
 #include "grader/sandbox/sandbox_user.h"
 #include "sandbox_test_support.h"
 

@@ -6,7 +6,7 @@
 #include <thread>
 #include <vector>
 
-#include "core/testing/catch.h"
+#include "base/testing/catch.h"
 #include "sandbox_test_support.h"
 
 using namespace raystep::grade;

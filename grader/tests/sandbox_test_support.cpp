@@ -13,7 +13,7 @@
 #include <stdexcept>
 #include <thread>
 
-#include "core/testing/catch.h"
+#include "base/testing/catch.h"
 
 namespace raystep::grade::testing {
 

@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "core/bench/pareto_json.h"
-#include "core/testing/catch.h"
-#include "core/testing/scratch_folder.h"
+#include "studies/speed_error/pareto_json.h"
+#include "base/testing/catch.h"
+#include "base/testing/scratch_folder.h"
 #include "grader/grade/checks/stage_checks.h"
 
 using namespace raystep;

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "core/check/case_file.h"
-#include "core/testing/catch.h"
+#include "app/check/case_file.h"
+#include "base/testing/catch.h"
 #include "grader/grade/checks/stage_checks.h"
 #include "grader/protocol/probe_json.h"
 

@@ -4,8 +4,8 @@
 // without the --wrap options counts nothing; a count that followed stage 3 into its own calls
 // (intersect_triangle handing over to one of the lecture methods) counts too much.
 
-#include "core/math/portable_random.h"
-#include "core/testing/catch.h"
+#include "base/math/portable_random.h"
+#include "base/testing/catch.h"
 #include "grader/grade/probe_client.h"
 #include "stages/4_accel/bvh.h"
 #include "stages/4_accel/uniform_grid.h"

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "core/testing/catch.h"
+#include "base/testing/catch.h"
 #include "grader/grade/batch.h"
 #include "grader/grade/submission.h"
 #include "grader/grade/work_folder.h"

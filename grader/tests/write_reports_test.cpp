@@ -7,8 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/testing/catch.h"
-#include "core/testing/scratch_folder.h"
+#include "base/testing/catch.h"
+#include "base/testing/scratch_folder.h"
 #include "grader/grade/report_json.h"
 #include "grader/report/markup_escape.h"
 #include "grader/report/report_text.h"

@@ -24,10 +24,10 @@
 
 #include <CLI/CLI.hpp>
 
-#include "core/check/case_file.h"
-#include "core/check/case_scoring.h"
-#include "core/check/check_report.h"
-#include "core/check/stage3_methods.h"
+#include "app/check/case_file.h"
+#include "app/check/case_scoring.h"
+#include "app/check/check_report.h"
+#include "app/check/stage3_methods.h"
 #include "grader/families/stage3_families.h"
 #include "grader/oracle/decide_cases.h"
 #include "solutions/3_intersect/intersect_methods.h"

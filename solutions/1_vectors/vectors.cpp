@@ -6,7 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "core/math/to_text.h"
+#include "base/math/to_text.h"
 
 namespace raystep {
 

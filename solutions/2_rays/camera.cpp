@@ -8,7 +8,7 @@
 
 #include <glm/trigonometric.hpp>
 
-#include "core/math/to_text.h"
+#include "base/math/to_text.h"
 
 namespace raystep {
 

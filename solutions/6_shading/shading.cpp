@@ -7,7 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "core/math/to_text.h"
+#include "base/math/to_text.h"
 #include "stages/1_vectors/vectors.h"
 
 namespace raystep {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "core/errors/not_implemented.h"
+#include "base/errors/not_implemented.h"
 
 namespace raystep {
 

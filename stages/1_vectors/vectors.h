@@ -1,7 +1,7 @@
 #pragma once
 
-#include "core/math/parallel_sine.h"
-#include "core/math/types.h"
+#include "base/math/parallel_sine.h"
+#include "base/math/types.h"
 
 namespace raystep {
 
@@ -49,7 +49,7 @@ struct Frame {
 /// Throws std::domain_error when a or b is zero or has an infinite or NaN component (no
 /// direction, as for normalize), or when b is parallel to a: when
 /// |b x w| <= kParallelSine |b|, a test relative to |b|, so that a tiny b across a is a frame and
-/// a huge b nearly along it is not (see core/math/parallel_sine.h for why rounding makes "exactly
+/// a huge b nearly along it is not (see base/math/parallel_sine.h for why rounding makes "exactly
 /// zero" the wrong test).
 Frame orthonormal_frame(const Vec3& a, const Vec3& b);
 

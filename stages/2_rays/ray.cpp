@@ -2,7 +2,7 @@
 
 #include "stages/2_rays/ray.h"
 
-#include "core/errors/not_implemented.h"
+#include "base/errors/not_implemented.h"
 
 namespace raystep {
 

@@ -2,7 +2,7 @@
 
 #include <limits>
 
-#include "core/math/types.h"
+#include "base/math/types.h"
 
 namespace raystep {
 

@@ -1,6 +1,6 @@
 // Stage 3: the closest hit over a list. Handout: docs/stage3.md.
 
-#include "core/errors/not_implemented.h"
+#include "base/errors/not_implemented.h"
 #include "stages/3_intersect/intersect.h"
 
 namespace raystep {

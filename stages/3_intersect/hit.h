@@ -1,6 +1,6 @@
 #pragma once
 
-#include "core/math/types.h"
+#include "base/math/types.h"
 
 namespace raystep {
 

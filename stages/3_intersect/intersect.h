@@ -4,7 +4,7 @@
 #include <optional>
 #include <vector>
 
-#include "core/scene/shapes.h"
+#include "base/scene/shapes.h"
 #include "stages/2_rays/ray.h"
 #include "stages/3_intersect/hit.h"
 

@@ -1,6 +1,6 @@
 // Stage 3: ray-triangle by 3D half-spaces. Handout: docs/stage3.md.
 
-#include "core/errors/not_implemented.h"
+#include "base/errors/not_implemented.h"
 #include "stages/1_vectors/vectors.h"
 #include "stages/3_intersect/intersect.h"
 

@@ -1,6 +1,6 @@
 // Stage 4: the slab test. Handout: docs/stage4.md.
 
-#include "core/errors/not_implemented.h"
+#include "base/errors/not_implemented.h"
 #include "stages/4_accel/aabb.h"
 
 namespace raystep {

@@ -6,7 +6,7 @@
 
 #include <glm/common.hpp>
 
-#include "core/scene/shapes.h"
+#include "base/scene/shapes.h"
 #include "stages/2_rays/ray.h"
 
 namespace raystep {

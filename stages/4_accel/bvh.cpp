@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "core/errors/not_implemented.h"
+#include "base/errors/not_implemented.h"
 
 namespace raystep {
 

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/errors/not_implemented.h"
+#include "base/errors/not_implemented.h"
 
 namespace raystep {
 

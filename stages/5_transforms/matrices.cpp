@@ -1,6 +1,6 @@
 // Stage 5: the transform matrices and the stack's product. Handout: docs/stage5.md.
 
-#include "core/errors/not_implemented.h"
+#include "base/errors/not_implemented.h"
 #include "stages/5_transforms/transform.h"
 
 namespace raystep {

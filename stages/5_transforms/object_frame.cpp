@@ -1,6 +1,6 @@
 // Stage 5: rays into an object's frame, points and normals back out. Handout: docs/stage5.md.
 
-#include "core/errors/not_implemented.h"
+#include "base/errors/not_implemented.h"
 #include "stages/5_transforms/transform.h"
 
 namespace raystep {

@@ -3,8 +3,8 @@
 #include <optional>
 #include <vector>
 
-#include "core/scene/scene.h"
-#include "core/scene/shapes.h"
+#include "base/scene/scene.h"
+#include "base/scene/shapes.h"
 #include "stages/2_rays/ray.h"
 #include "stages/3_intersect/hit.h"
 

@@ -7,7 +7,7 @@
 #include <limits>
 #include <stdexcept>
 
-#include "core/errors/not_implemented.h"
+#include "base/errors/not_implemented.h"
 #include "stages/1_vectors/vectors.h"
 
 namespace raystep {

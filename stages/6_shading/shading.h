@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "core/scene/scene.h"
+#include "base/scene/scene.h"
 #include "stages/2_rays/ray.h"
 
 namespace raystep {
@@ -23,7 +23,7 @@ struct SurfacePoint {
     Vec3 position;        ///< the hit point
     Vec3 error;           ///< per coordinate, a bound on how far rounding put `position` off
                           ///< the surface, wide enough for intersection tests near it
-                          ///< (core/render/surface_point.h)
+                          ///< (app/render/surface_point.h)
     Vec3 normal;          ///< unit geometric normal, turned to the side the ray came from
     Vec3 shading_normal;  ///< unit normal for lighting (interpolated on `trinormal` triangles),
                           ///< on the same side as `normal`
@@ -59,7 +59,7 @@ Color local_shading(const Material& material, const SurfacePoint& point,
                     const std::vector<LightSample>& visible_lights);
 
 // Rays that leave a surface (shadow rays here, mirror rays in stage 7) start by one of the
-// rules of RayOffset (core/scene/scene.h): the scene's `rayoffset` command or `raystep render
+// rules of RayOffset (base/scene/scene.h): the scene's `rayoffset` command or `raystep render
 // --ray-offset` picks one.
 
 /// A ray leaving the surface at `point` along the unit `direction`, for hits up to `distance`

@@ -2,10 +2,10 @@
 
 #include <string>
 
-#include "core/math/types.h"
-#include "core/scene/ray_offset.h"
-#include "core/scene/scene.h"
-#include "core/scene/shapes.h"
+#include "base/math/types.h"
+#include "base/scene/ray_offset.h"
+#include "base/scene/scene.h"
+#include "base/scene/shapes.h"
 #include "stages/2_rays/ray.h"
 #include "stages/5_transforms/transform.h"
 #include "stages/6_shading/shading.h"

@@ -6,7 +6,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "core/math/portable_random.h"
+#include "base/math/portable_random.h"
 #include "grader/grade/check_definition.h"
 
 namespace raystep::grade {

@@ -6,9 +6,9 @@
 #include <cmath>
 #include <filesystem>
 
-#include "core/image/image_io.h"
-#include "core/render/tile_renderer.h"
-#include "core/scene/scene_loader.h"
+#include "base/image/image_io.h"
+#include "app/render/tile_renderer.h"
+#include "base/scene/scene_loader.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
 #include "grader/grade/image_diff.h"

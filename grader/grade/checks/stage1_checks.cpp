@@ -6,8 +6,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/math/parallel_sine.h"
-#include "core/math/portable_random.h"
+#include "base/math/parallel_sine.h"
+#include "base/math/portable_random.h"
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"

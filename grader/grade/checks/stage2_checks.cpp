@@ -10,7 +10,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/math/portable_random.h"
+#include "base/math/portable_random.h"
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"

@@ -1,7 +1,7 @@
 // Stage 3 checks: every intersection function on the hard-case families (grader/families) and on
 // hand-picked cases of the contract,
 // decided by the exact oracle (grader/oracle), scored as `raystep check` scores them
-// (core/check/case_scoring.h). The seeds are the grader's own, not the public case files': a
+// (app/check/case_scoring.h). The seeds are the grader's own, not the public case files': a
 // submission is graded on cases it has not seen.
 //
 // A leak (a ray through a shared edge that no triangle of the mesh reports) is counted and
@@ -12,8 +12,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "core/check/case_file.h"
-#include "core/check/case_scoring.h"
+#include "app/check/case_file.h"
+#include "app/check/case_scoring.h"
 #include "grader/families/stage3_contract_cases.h"
 #include "grader/families/stage3_families.h"
 #include "grader/grade/checks/judging.h"

@@ -11,8 +11,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/check/case_scoring.h"
-#include "core/check/check_report.h"
+#include "app/check/case_scoring.h"
+#include "app/check/check_report.h"
 #include "grader/families/stage3_families.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
@@ -28,7 +28,7 @@ constexpr std::uint64_t kSeed = 0x5EED'5EED'2026;
 // Leaks are a few percent of these rays for the lecture methods: 2,000 cases resolve that to
 // half a percent.
 constexpr std::size_t kCases = 2000;
-// The timed pairs, the family's first as the bench takes them (core/bench/pareto_study.cpp),
+// The timed pairs, the family's first as the bench takes them (studies/speed_error/pareto_study.cpp),
 // each tested kPasses times: 20 million tests, half a second or more of the reference's Cramer,
 // so that the sandbox's start-up time, which varies by tens of milliseconds from run to run and
 // is subtracted, stays small beside it.

@@ -19,7 +19,7 @@
 
 #include <cmath>
 
-#include "core/math/portable_random.h"
+#include "base/math/portable_random.h"
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage4_cases.h"

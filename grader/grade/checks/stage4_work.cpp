@@ -24,7 +24,7 @@
 #include <iterator>
 #include <optional>
 
-#include "core/math/portable_random.h"
+#include "base/math/portable_random.h"
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage4_cases.h"

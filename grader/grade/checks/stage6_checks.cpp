@@ -13,7 +13,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/math/portable_random.h"
+#include "base/math/portable_random.h"
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/error_bound_origin.h"
 #include "grader/grade/checks/judging.h"

@@ -2,8 +2,8 @@
 
 #include <vector>
 
-#include "core/check/ray_case.h"
-#include "core/check/stage3_methods.h"
+#include "app/check/ray_case.h"
+#include "app/check/stage3_methods.h"
 #include "grader/grade/check_definition.h"
 
 namespace raystep::grade {

@@ -11,8 +11,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/testing/catch.h"
-#include "core/testing/vec3_matchers.h"
+#include "base/testing/catch.h"
+#include "base/testing/vec3_matchers.h"
 #include "stages/1_vectors/vectors.h"
 
 using namespace raystep;

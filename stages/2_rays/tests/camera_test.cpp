@@ -9,8 +9,8 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "core/testing/catch.h"
-#include "core/testing/vec3_matchers.h"
+#include "base/testing/catch.h"
+#include "base/testing/vec3_matchers.h"
 #include "stages/2_rays/camera.h"
 
 using namespace raystep;

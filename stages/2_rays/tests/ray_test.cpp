@@ -1,7 +1,7 @@
 // Public tests for stage 2, rays. Run them with `ctest --test-dir build/release -L stage2`.
 
 #include "stages/2_rays/ray.h"
-#include "core/testing/catch.h"
+#include "base/testing/catch.h"
 
 using namespace raystep;
 

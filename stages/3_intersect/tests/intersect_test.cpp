@@ -7,8 +7,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/testing/catch.h"
-#include "core/testing/vec3_matchers.h"
+#include "base/testing/catch.h"
+#include "base/testing/vec3_matchers.h"
 #include "stages/3_intersect/intersect.h"
 
 using namespace raystep;

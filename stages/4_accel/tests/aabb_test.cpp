@@ -4,7 +4,7 @@
 #include <limits>
 #include <random>
 
-#include "core/testing/catch.h"
+#include "base/testing/catch.h"
 #include "stages/4_accel/aabb.h"
 
 using namespace raystep;

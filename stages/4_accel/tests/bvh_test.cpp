@@ -7,7 +7,7 @@
 #include <random>
 #include <string>
 
-#include "core/testing/catch.h"
+#include "base/testing/catch.h"
 #include "stages/4_accel/bvh.h"
 
 using namespace raystep;

@@ -8,7 +8,7 @@
 #include <limits>
 #include <random>
 
-#include "core/testing/catch.h"
+#include "base/testing/catch.h"
 #include "stages/4_accel/uniform_grid.h"
 
 using namespace raystep;

@@ -9,9 +9,9 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "core/math/portable_random.h"
-#include "core/testing/catch.h"
-#include "core/testing/vec3_matchers.h"
+#include "base/math/portable_random.h"
+#include "base/testing/catch.h"
+#include "base/testing/vec3_matchers.h"
 #include "stages/5_transforms/transform.h"
 
 using namespace raystep;

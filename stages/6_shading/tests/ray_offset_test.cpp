@@ -10,9 +10,9 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/math/portable_random.h"
-#include "core/testing/catch.h"
-#include "core/testing/vec3_matchers.h"
+#include "base/math/portable_random.h"
+#include "base/testing/catch.h"
+#include "base/testing/vec3_matchers.h"
 #include "stages/6_shading/shading.h"
 
 using namespace raystep;

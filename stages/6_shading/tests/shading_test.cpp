@@ -10,8 +10,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "core/testing/catch.h"
-#include "core/testing/vec3_matchers.h"
+#include "base/testing/catch.h"
+#include "base/testing/vec3_matchers.h"
 #include "stages/6_shading/shading.h"
 
 using namespace raystep;

@@ -11,8 +11,8 @@
 #include <optional>
 #include <vector>
 
-#include "core/testing/catch.h"
-#include "core/testing/vec3_matchers.h"
+#include "base/testing/catch.h"
+#include "base/testing/vec3_matchers.h"
 #include "stages/7_recursion/recursion.h"
 
 using namespace raystep;

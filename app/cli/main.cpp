@@ -1,0 +1,65 @@
+#include <cstdio>
+#include <exception>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "app/cli/check_command.h"
+#include "app/cli/command_registry.h"
+#include "app/cli/demo_command.h"
+#include "app/cli/info_command.h"
+#include "app/cli/render_command.h"
+#include "app/cli/trace_command.h"
+#include "base/errors/input_error.h"
+#include "base/errors/not_implemented.h"
+
+// The `raystep` command. Library code throws; only here do errors become a message on stderr and
+// an exit code: 0 success, 1 a failure (bad input, a stub, an error), 2 a bad command line.
+int main(int argc, char** argv) {
+    using namespace raystep;
+
+    CLI::App app{"raystep: a ray tracer built one lecture at a time", "raystep"};
+    app.require_subcommand(1);
+    RenderArguments render;
+    InfoArguments info;
+    TraceArguments trace;
+    CheckArguments check;
+    DemoArguments demo;
+    CLI::App* render_command = add_render_command(app, render);
+    CLI::App* info_command = add_info_command(app, info);
+    CLI::App* trace_command = add_trace_command(app, trace);
+    CLI::App* check_command = add_check_command(app, check);
+    std::vector<AddedCommand> added;
+    for (const AddCommand add : CommandRegistry::entries())
+        added.push_back(add(app));
+    CLI::App* demo_command = add_demo_command(app, demo);
+
+    if (argc == 1) {
+        std::fputs(app.help().c_str(), stderr);
+        return 2;
+    }
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& error) {
+        const int code = app.exit(error);
+        return code == 0 ? 0 : 2;
+    }
+
+    try {
+        if (render_command->parsed()) return run_render(render);
+        if (info_command->parsed()) return run_info(info);
+        if (trace_command->parsed()) return run_trace(trace);
+        if (check_command->parsed()) return run_check(check);
+        if (demo_command->parsed()) return run_demo(demo);
+        for (const AddedCommand& command : added) {
+            if (command.command->parsed()) return command.run();
+        }
+    } catch (const NotImplemented& stub) {
+        std::fprintf(stderr, "raystep: %s\n", stub.what());
+    } catch (const InputError& error) {
+        std::fprintf(stderr, "%s\n", error.what());
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "raystep: %s\n", error.what());
+    }
+    return 1;
+}

@@ -1,0 +1,67 @@
+#include "app/cli/render_command.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <thread>
+
+#include "base/image/image_io.h"
+#include "app/render/render_scene.h"
+#include "app/render/terminal.h"
+#include "app/render/tile_renderer.h"
+#include "base/scene/scene_loader.h"
+
+namespace raystep {
+
+CLI::App* add_render_command(CLI::App& app, RenderArguments& arguments) {
+    CLI::App* command = app.add_subcommand("render", "Render a scene to an image file");
+    command->add_option("scene", arguments.scene, "Scene file")
+        ->required()
+        ->check(CLI::ExistingFile);
+    command->add_option("-o,--output", arguments.output,
+                        "Image file; its extension picks the format (.png, .exr, ...). "
+                        "Default: the scene's 'output', else SCENE with .png");
+    command->add_option("--threads", arguments.threads, "Worker threads (default: all cores)")
+        ->check(CLI::Range(1, 1024));
+    command
+        ->add_option("--view", arguments.view,
+                     "What to show: the stage whose output you want to see")
+        ->check(CLI::IsMember(view_names()));
+    add_ray_offset_options(*command, arguments.ray_offset);
+    return command;
+}
+
+int run_render(const RenderArguments& arguments) {
+    Scene scene = load_scene(arguments.scene);
+    apply_ray_offset(arguments.ray_offset, scene);
+    const View view = *parse_view(arguments.view);
+
+    std::filesystem::path output = arguments.output;
+    if (output.empty()) {
+        output = scene.output.empty()
+                     ? std::filesystem::path(arguments.scene).replace_extension(".png")
+                     : std::filesystem::path(scene.output);
+    }
+
+    RenderOptions options;
+    options.view = view;
+    options.threads = arguments.threads;
+    options.progress = is_terminal(stderr);
+    options.label = output.filename().string();
+
+    const auto start = std::chrono::steady_clock::now();
+    const RenderScene render_scene = prepare_render_scene(scene);
+    const Image image = render_image(render_scene, options);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    write_image(image, output);
+
+    const unsigned threads = arguments.threads > 0
+                                 ? static_cast<unsigned>(arguments.threads)
+                                 : std::max(1u, std::thread::hardware_concurrency());
+    std::printf("wrote %s (%d x %d, view %s, %.2f s on %u threads)\n", output.string().c_str(),
+                image.width(), image.height(), arguments.view.c_str(), seconds, threads);
+    return 0;
+}
+
+}  // namespace raystep

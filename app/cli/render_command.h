@@ -1,0 +1,25 @@
+#pragma once
+
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "app/cli/ray_offset_option.h"
+
+namespace raystep {
+
+/// `raystep render SCENE [-o FILE] [--threads N] [--view VIEW] [--ray-offset RULE [--epsilon E]]`
+struct RenderArguments {
+    std::string scene;
+    std::string output;
+    int threads = 0;
+    std::string view = "full";
+    RayOffsetArguments ray_offset;
+};
+
+CLI::App* add_render_command(CLI::App& app, RenderArguments& arguments);
+
+/// Renders and writes the image; the exit code. Errors propagate to main.
+int run_render(const RenderArguments& arguments);
+
+}  // namespace raystep

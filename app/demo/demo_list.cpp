@@ -1,0 +1,51 @@
+#include "app/demo/demo_list.h"
+
+#include <stdexcept>
+
+#include "app/demo/demos.h"
+
+namespace raystep {
+
+const std::vector<DemoEntry>& demo_list() {
+    static const std::vector<DemoEntry> kDemos = {
+        {"ray-directions",
+         "stage 2: each camera ray's direction as a colour, perspective and orthographic",
+         ray_directions_demo},
+        {"barycentrics", "stage 3: barycentric coordinates as RGB on a triangle fan and a quad",
+         barycentrics_demo},
+        {"watertight",
+         "stage 3: a closed mesh far from the origin, watertight test beside a leaking one",
+         watertight_demo},
+        {"bvh-cost", "stage 4: BVH nodes visited plus triangles tested per pixel, as a heat map",
+         bvh_cost_demo},
+        {"grid-cost", "stage 4: the same for a uniform grid, on the same scale: where a grid loses",
+         grid_cost_demo},
+        {"normal-transform",
+         "stage 5: normals by M (wrong) beside M^-T (right) under non-uniform scale",
+         normal_transform_demo},
+        {"shadow-acne",
+         "stage 6: shadow acne for shadow-ray offsets epsilon = 0, too small, good, error bound",
+         shadow_acne_demo},
+    };
+    return kDemos;
+}
+
+std::vector<std::string> demo_names() {
+    std::vector<std::string> names;
+    for (const DemoEntry& demo : demo_list())
+        names.emplace_back(demo.name);
+    return names;
+}
+
+const DemoEntry& find_demo(std::string_view name) {
+    for (const DemoEntry& demo : demo_list()) {
+        if (demo.name == name) return demo;
+    }
+    std::string known;
+    for (const DemoEntry& demo : demo_list()) {
+        known += (known.empty() ? "" : ", ") + std::string(demo.name);
+    }
+    throw std::invalid_argument("no demo '" + std::string(name) + "'; the demos are " + known);
+}
+
+}  // namespace raystep

@@ -1,0 +1,27 @@
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "app/demo/demo_figure.h"
+
+namespace raystep {
+
+/// A demo as `raystep demo` lists it.
+struct DemoEntry {
+    std::string_view name;         ///< on the command line: `raystep demo NAME`
+    std::string_view description;  ///< one line: what it shows and for which stage
+    DemoFigure (*make)(const DemoSize& size);
+};
+
+/// Every demo, in lecture order.
+const std::vector<DemoEntry>& demo_list();
+
+/// Every demo's name, in the order of demo_list.
+std::vector<std::string> demo_names();
+
+/// The demo with this name. Throws std::invalid_argument naming the demos when none has it.
+const DemoEntry& find_demo(std::string_view name);
+
+}  // namespace raystep

@@ -1,0 +1,34 @@
+#pragma once
+
+#include "app/demo/demo_figure.h"
+
+namespace raystep {
+
+// The lecture demos of `raystep demo NAME`, one per file. Each renders its panels at the
+// panel_size its figure needs on an image of `size`, through the stages' public API, so that a
+// stage that is not implemented yet stops it with its NotImplemented message.
+
+/// Stage 2: each camera ray's direction as a colour, perspective beside orthographic.
+DemoFigure ray_directions_demo(const DemoSize& size);
+
+/// Stage 3: barycentric coordinates (1 - beta - gamma, beta, gamma) as RGB on triangles.
+DemoFigure barycentrics_demo(const DemoSize& size);
+
+/// Stage 5: ellipsoids coloured by their normals, taken to the world by M (wrong) beside M^-T.
+DemoFigure normal_transform_demo(const DemoSize& size);
+
+/// Stage 4: the BVH's cost per pixel as a heat map, on a bunny and a bunny in a stadium.
+DemoFigure bvh_cost_demo(const DemoSize& size);
+
+/// Stage 4: the uniform grid's cost per pixel, on the same scenes and scale as bvh_cost_demo.
+DemoFigure grid_cost_demo(const DemoSize& size);
+
+/// Stage 6: one scene's shadows with ray offsets epsilon = 0, too small, good and the error
+/// bound, each panel captioned with its pixels of acne.
+DemoFigure shadow_acne_demo(const DemoSize& size);
+
+/// Stage 3: a closed mesh far from the origin under the renderer's triangle test beside the
+/// lecture's half-space test, the pixels where a ray leaks through the mesh in magenta.
+DemoFigure watertight_demo(const DemoSize& size);
+
+}  // namespace raystep

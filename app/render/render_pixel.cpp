@@ -1,0 +1,203 @@
+#include "app/render/render_pixel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+
+#include "base/math/to_text.h"
+#include "app/render/heat_map.h"
+#include "app/render/shade_hit.h"
+
+namespace raystep {
+
+namespace {
+
+// Above this many primitives a trace lists only the ones hit and counts the misses: a mesh's
+// 75,000 lines of "miss" would bury what the trace is for.
+constexpr std::size_t kTraceEveryPrimitiveUpTo = 64;
+
+std::string describe(const Hit& hit) {
+    std::string text = "hit t=" + to_text(hit.t) + " normal " + to_text(hit.normal);
+    if (hit.beta != 0.0 || hit.gamma != 0.0) {
+        text += " beta=" + to_text(hit.beta) + " gamma=" + to_text(hit.gamma);
+    }
+    return text;
+}
+
+// Each primitive of one kind, tested on its own with the stage-3 function closest_hit uses;
+// `scene_index` maps a list position to the primitive's place in the scene.
+template <class Shape, class Intersect, class SceneIndex>
+void trace_each(const RenderScene& render_scene, const Ray& ray, PrimitiveKind kind,
+                const std::vector<Shape>& shapes, Intersect intersect, SceneIndex scene_index,
+                TraceLog& trace) {
+    const bool list_all = shapes.size() <= kTraceEveryPrimitiveUpTo;
+    std::size_t misses = 0;
+    for (std::size_t k = 0; k < shapes.size(); ++k) {
+        const std::optional<Hit> hit = intersect(ray, shapes[k]);
+        if (!hit) ++misses;
+        if (hit || list_all) {
+            const std::size_t index = scene_index(k);
+            trace.add(std::string(kind_name(kind)) + " " + std::to_string(index) + " (line " +
+                      std::to_string(attributes_of(render_scene, kind, index).line) +
+                      "): " + (hit ? describe(*hit) : "miss"));
+        }
+    }
+    if (!list_all && misses > 0) {
+        trace.add(std::to_string(misses) + " other " + kind_name(kind) + "s: miss");
+    }
+}
+
+// A sphere under a transform, with the ray in its own frame: where stage 5 goes wrong, the
+// object-frame ray shows it.
+void trace_ellipsoids(const RenderScene& render_scene, const Ray& ray, TraceLog& trace) {
+    for (const TransformedSphere& s : render_scene.transformed_spheres) {
+        const Ray object = ray_to_object(s.transform, ray);
+        const std::optional<Hit> hit = intersect_transformed_sphere(ray, s.sphere, s.transform);
+        trace.add("sphere " + std::to_string(s.index) + " (line " +
+                  std::to_string(render_scene.scene->spheres[s.index].attributes.line) +
+                  ", under a transform): object-frame ray origin " + to_text(object.origin) +
+                  " direction " + to_text(object.direction) + ": " +
+                  (hit ? describe(*hit) : "miss"));
+    }
+}
+
+void trace_primitives(const RenderScene& render_scene, const Ray& ray, TraceLog& trace) {
+    const PrimitiveList& list = render_scene.primitives;
+    const auto same = [](std::size_t k) { return k; };
+    trace_each(
+        render_scene, ray, PrimitiveKind::sphere, list.spheres, intersect_sphere,
+        [&](std::size_t k) { return render_scene.sphere_index[k]; }, trace);
+    trace_ellipsoids(render_scene, ray, trace);
+    trace_each(render_scene, ray, PrimitiveKind::triangle, list.triangles, intersect_triangle, same,
+               trace);
+    trace_each(render_scene, ray, PrimitiveKind::plane, list.planes, intersect_plane, same, trace);
+}
+
+Color direction_color(const Vec3& direction) {
+    return 0.5 * (direction + Vec3(1.0));
+}
+
+// The finished image: stage 6's colour, and where something reflects, stage 7's recursion over
+// it. The eye ray's hit is already known; every later ray is found and shaded here.
+Color full_colour(const RenderScene& render_scene, const Ray& eye_ray,
+                  const std::optional<PrimitiveHit>& eye_hit, TraceLog* trace) {
+    if (render_scene.bounces == 0) {
+        return eye_hit ? shade_hit(render_scene, eye_ray, *eye_hit, trace).local : Color(0.0);
+    }
+    int rays = 0;
+    const ShadeFunction shade = [&](const Ray& ray) -> std::optional<ShadedHit> {
+        const std::optional<PrimitiveHit> hit =
+            rays++ == 0 ? eye_hit : scene_closest_hit(render_scene, ray, nullptr);
+        if (trace && rays > 1) {
+            trace->add("reflected ray " + std::to_string(rays - 1) + ": origin " +
+                       to_text(ray.origin) + " direction " + to_text(ray.direction) +
+                       (hit ? " hits " + std::string(kind_name(hit->kind)) + " " +
+                                  std::to_string(hit->index) + " at t=" + to_text(hit->hit.t)
+                            : std::string(" leaves the scene")));
+        }
+        if (!hit) return std::nullopt;
+        return shade_hit(render_scene, ray, *hit, trace);
+    };
+    const Color colour = radiance(shade, eye_ray, render_scene.bounces, render_scene.ray_offset);
+    if (trace) trace->add("colour " + to_text(colour));
+    return colour;
+}
+
+}  // namespace
+
+Color render_pixel(const RenderScene& render_scene, View view, int i, int j, TraceLog* trace) {
+    // Stage 2: the camera ray
+    const Ray ray = camera_ray(render_scene, i, j);
+    if (trace) {
+        trace->add("camera ray: origin " + to_text(ray.origin) + " direction " +
+                   to_text(ray.direction) + " t in [" + to_text(ray.t_min) + ", " +
+                   to_text(ray.t_max) + "]");
+    }
+    if (view == View::rays) return direction_color(ray.direction);
+
+    // Stages 3 and 4: the closest hit, through the BVH when the scene has one
+    if (trace) trace_primitives(render_scene, ray, *trace);
+    TraversalStats cost;
+    const std::optional<PrimitiveHit> closest = scene_closest_hit(render_scene, ray, &cost);
+    if (trace) {
+        if (render_scene.bvh) {
+            trace->add("BVH: " + std::to_string(cost.nodes) + " nodes visited, " +
+                       std::to_string(cost.primitive_tests) + " primitives tested");
+        }
+        if (closest) {
+            trace->add("closest_hit: " + std::string(kind_name(closest->kind)) + " " +
+                       std::to_string(closest->index) + " at t=" + to_text(closest->hit.t) +
+                       " point " + to_text(ray.at(closest->hit.t)) + " normal " +
+                       to_text(closest->hit.normal));
+        } else {
+            trace->add("closest_hit: miss");
+        }
+    }
+
+    switch (view) {
+        case View::depth:
+            return Color(closest ? closest->hit.t : std::numeric_limits<double>::infinity());
+        case View::normal:
+            return closest ? direction_color(closest->hit.normal) : Color(0.0);
+        case View::cost:
+            return Color(static_cast<double>(cost.nodes + cost.primitive_tests));
+        case View::barycentric:
+            if (!closest) return Color(0.0);
+            if (closest->kind != PrimitiveKind::triangle) return Color(0.25);
+            return {1.0 - closest->hit.beta - closest->hit.gamma, closest->hit.beta,
+                    closest->hit.gamma};
+        case View::shaded:
+            if (!closest) return Color(0.0);
+            return shade_hit(render_scene, ray, *closest, trace).local;
+        case View::full:
+            return full_colour(render_scene, ray, closest, trace);
+        case View::rays:
+            break;
+    }
+    return Color(0.0);
+}
+
+namespace {
+
+// Inverse depth: the nearest positive t in the image is white, twice as far 0.5.
+void finish_depth(Image& image) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (int j = 0; j < image.height(); ++j) {
+        for (int i = 0; i < image.width(); ++i) {
+            const double t = image.at(i, j).r;
+            if (t > 0.0) nearest = std::min(nearest, t);
+        }
+    }
+    for (int j = 0; j < image.height(); ++j) {
+        for (int i = 0; i < image.width(); ++i) {
+            const double t = image.at(i, j).r;
+            // t = 0 (a hit on the eye plane of an orthographic camera) is as near as it gets.
+            const double grey = !std::isfinite(t) ? 0.0 : (t > 0.0 ? nearest / t : 1.0);
+            image.set(i, j, Color(grey));
+        }
+    }
+}
+
+void finish_cost(Image& image) {
+    double most = 0.0;
+    for (int j = 0; j < image.height(); ++j) {
+        for (int i = 0; i < image.width(); ++i)
+            most = std::max(most, image.at(i, j).r);
+    }
+    for (int j = 0; j < image.height(); ++j) {
+        for (int i = 0; i < image.width(); ++i) {
+            image.set(i, j, heat_colour(most > 0.0 ? image.at(i, j).r / most : 0.0));
+        }
+    }
+}
+
+}  // namespace
+
+void finish_view(Image& image, View view) {
+    if (view == View::depth) finish_depth(image);
+    if (view == View::cost) finish_cost(image);
+}
+
+}  // namespace raystep

@@ -1,0 +1,25 @@
+#include "app/render/render_plan.h"
+
+namespace raystep {
+
+std::size_t bvh_primitives(const SceneFeatures& features) {
+    return features.spheres - features.transformed_spheres + features.triangles;
+}
+
+bool uses_bvh(const SceneFeatures& features) {
+    return bvh_primitives(features) >= kBvhFromPrimitives;
+}
+
+std::vector<int> stages_for_view(const SceneFeatures& features, View view) {
+    std::vector<int> stages = {1, 2};
+    if (view == View::rays) return stages;
+    stages.push_back(3);
+    if (uses_bvh(features)) stages.push_back(4);
+    if (features.uses_transforms()) stages.push_back(5);
+    if (view != View::shaded && view != View::full) return stages;
+    stages.push_back(6);
+    if (view == View::full && features.uses_reflection()) stages.push_back(7);
+    return stages;
+}
+
+}  // namespace raystep

@@ -1,0 +1,32 @@
+#pragma once
+
+#include <vector>
+
+#include "app/render/view.h"
+#include "base/scene/scene_features.h"
+
+namespace raystep {
+
+/// Primitives from which the renderer builds a BVH; below, it tests every one. `raystep bench
+/// --threshold` measures that the reference BVH is faster per ray from 2 to 4 primitives on, but
+/// below 16 brute force costs at most about 160 ns a ray, 0.05 s for a 640 x 480 image: nothing
+/// a student or a lecturer notices, while a scene of a handful of primitives (every scene of
+/// stages 2 and 3) renders with stages 1 to 3 alone, before stage 4 exists (docs/stage4.md,
+/// "When a structure pays"). Planes are unbounded and always tested one by one.
+inline constexpr std::size_t kBvhFromPrimitives = 16;
+
+/// The primitives a BVH would hold: spheres and triangles, but not the spheres under a transform
+/// (ellipsoids, intersected one by one in their own frame) nor planes (unbounded).
+std::size_t bvh_primitives(const SceneFeatures& features);
+
+/// True when the renderer builds a BVH for a scene with these features.
+bool uses_bvh(const SceneFeatures& features);
+
+/// The stages whose code renders this view of a scene with these features, in lecture order:
+/// what a render of it exercises, and so what its image can grade. Only what the scene uses
+/// counts: acceleration (stage 4) only for scenes big enough to gain from it, transforms
+/// (stage 5) only when an object has one, reflection (stage 7) only when a material reflects and
+/// maxdepth allows a bounce.
+std::vector<int> stages_for_view(const SceneFeatures& features, View view);
+
+}  // namespace raystep

@@ -1,0 +1,112 @@
+#include "app/render/shade_hit.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "base/math/to_text.h"
+#include "app/render/surface_point.h"
+
+namespace raystep {
+
+namespace {
+
+std::string describe(const Ray& ray) {
+    return "origin " + to_text(ray.origin) + " direction " + to_text(ray.direction) + " t in [" +
+           to_text(ray.t_min) + ", " + to_text(ray.t_max) + "]";
+}
+
+// What blocks a shadow ray, for the trace: the nearest blocker, though the render only asks
+// whether there is one.
+std::string blocker(const RenderScene& render_scene, const Ray& shadow) {
+    const std::optional<PrimitiveHit> hit = scene_closest_hit(render_scene, shadow, nullptr);
+    if (!hit) return "reaches the light";
+    return "blocked by " + std::string(kind_name(hit->kind)) + " " + std::to_string(hit->index) +
+           " (line " + std::to_string(attributes_of(render_scene, hit->kind, hit->index).line) +
+           ") at t=" + to_text(hit->hit.t);
+}
+
+// A light as the trace names it, "point light (line 12)": built only for a trace, never per hit
+// of a render.
+std::string light_name(const char* kind, std::uint32_t line) {
+    return std::string(kind) + " light (line " + std::to_string(line) + ")";
+}
+
+// One light at the point: its sample, or nothing when it cannot reach the point.
+std::optional<LightSample> reaching(const RenderScene& render_scene, const SurfacePoint& point,
+                                    const LightSample& light, const char* kind, std::uint32_t line,
+                                    TraceLog* trace) {
+    if (glm::dot(point.normal, light.direction) <= 0.0) {
+        if (trace) trace->add(light_name(kind, line) + ": behind the surface, no shadow ray");
+        return std::nullopt;
+    }
+    const Ray shadow = shadow_ray(point, light, render_scene.ray_offset);
+    const bool blocked = scene_occluded(render_scene, shadow);
+    if (trace) {
+        trace->add(light_name(kind, line) + ": direction " + to_text(light.direction) +
+                   " distance " + to_text(light.distance) + " intensity " +
+                   to_text(light.intensity));
+        trace->add("  shadow ray " + describe(shadow) + ": " + blocker(render_scene, shadow));
+    }
+    if (blocked) return std::nullopt;
+    return light;
+}
+
+// The diffuse and specular parts of one light's term, each from blinn_phong with the other
+// colour zeroed: the trace shows which one a wrong pixel gets wrong.
+void trace_terms(const Material& material, const SurfacePoint& point, const LightSample& light,
+                 const std::string& name, TraceLog& trace) {
+    Material diffuse_only = material;
+    diffuse_only.specular = Color(0.0);
+    Material specular_only = material;
+    specular_only.diffuse = Color(0.0);
+    trace.add("  " + name + " diffuse " + to_text(blinn_phong(diffuse_only, point, light)) +
+              " specular " + to_text(blinn_phong(specular_only, point, light)));
+}
+
+}  // namespace
+
+ShadedHit shade_hit(const RenderScene& render_scene, const Ray& ray, const PrimitiveHit& hit,
+                    TraceLog* trace) {
+    const Scene& scene = *render_scene.scene;
+    const ObjectAttributes& attributes = attributes_of(render_scene, hit.kind, hit.index);
+    const Material& material = scene.materials[attributes.material];
+    const SurfacePoint point = surface_point(render_scene, ray, hit);
+    if (trace) {
+        trace->add("surface point " + to_text(point.position) + " error " + to_text(point.error) +
+                   " normal " + to_text(point.normal) + " shading normal " +
+                   to_text(point.shading_normal));
+    }
+
+    std::vector<LightSample> visible;
+    std::vector<std::string> names;
+    for (const PointLight& light : scene.point_lights) {
+        const LightSample sample = sample_light(light, point.position);
+        if (reaching(render_scene, point, sample, "point", light.line, trace)) {
+            visible.push_back(sample);
+            if (trace) names.push_back(light_name("point", light.line));
+        }
+    }
+    for (const DirectionalLight& light : scene.directional_lights) {
+        const LightSample sample = sample_light(light);
+        if (reaching(render_scene, point, sample, "directional", light.line, trace)) {
+            visible.push_back(sample);
+            if (trace) names.push_back(light_name("directional", light.line));
+        }
+    }
+
+    const Color local = local_shading(material, point, visible);
+    if (trace) {
+        trace->add("shading: ambient " + to_text(material.ambient) + " emission " +
+                   to_text(material.emission));
+        for (std::size_t k = 0; k < visible.size(); ++k) {
+            trace_terms(material, point, visible[k], names[k], *trace);
+        }
+        trace->add("local colour " + to_text(local));
+    }
+    return {point, local, material.specular};
+}
+
+}  // namespace raystep

@@ -1,0 +1,187 @@
+#include "app/demo/demos.h"
+
+#include <string>
+#include <vector>
+
+#include "app/demo/demo_list.h"
+#include "base/testing/catch.h"
+
+using namespace raystep;
+
+namespace {
+
+// Half the lecture size in each direction: a quarter of the pixels, so that all the demos
+// together render in about a second.
+const DemoSize kTestSize{320, 240};
+
+const Color kLeak(1.0, 0.0, 1.0);
+
+void check_panels(const DemoFigure& figure, int count) {
+    REQUIRE(figure.panels.size() == static_cast<std::size_t>(count));
+    CHECK_FALSE(figure.title.empty());
+    const PanelSize panel = panel_size(kTestSize, count, figure.scale.has_value());
+    for (const DemoPanel& p : figure.panels) {
+        CAPTURE(p.caption);
+        CHECK_FALSE(p.caption.empty());
+        CHECK(p.image.width() == panel.width);
+        CHECK(p.image.height() == panel.height);
+    }
+    const Image image = draw_figure(figure, kTestSize, std::nullopt);
+    CHECK(image.width() == kTestSize.width);
+    CHECK(image.height() == kTestSize.height);
+}
+
+int count_colour(const Image& image, const Color& colour) {
+    int count = 0;
+    for (int j = 0; j < image.height(); ++j) {
+        for (int i = 0; i < image.width(); ++i) {
+            if (image.at(i, j) == colour) ++count;
+        }
+    }
+    return count;
+}
+
+// Pixels where any channel differs by more than `step`, and where `a` is darker than `b` by more.
+int differing_pixels(const Image& a, const Image& b, double step) {
+    int count = 0;
+    for (int j = 0; j < a.height(); ++j) {
+        for (int i = 0; i < a.width(); ++i) {
+            const Color d = glm::abs(a.at(i, j) - b.at(i, j));
+            if (d.r > step || d.g > step || d.b > step) ++count;
+        }
+    }
+    return count;
+}
+
+int darker_pixels(const Image& a, const Image& b, double step) {
+    int count = 0;
+    for (int j = 0; j < a.height(); ++j) {
+        for (int i = 0; i < a.width(); ++i) {
+            const Color d = b.at(i, j) - a.at(i, j);
+            if (d.r > step || d.g > step || d.b > step) ++count;
+        }
+    }
+    return count;
+}
+
+// Pixels at `cost` or more on a heat map's scale, for costs above its red stop (the middle of
+// the scale), where the colour climbs in green towards yellow and white.
+int pixels_costing_at_least(const Image& image, double cost, const LogHeatScale& scale) {
+    const Color threshold = log_heat_colour(cost, scale);
+    int count = 0;
+    for (int j = 0; j < image.height(); ++j) {
+        for (int i = 0; i < image.width(); ++i) {
+            const Color c = image.at(i, j);
+            if (c.r >= threshold.r - 1e-6 && c.g >= threshold.g - 1e-6) ++count;
+        }
+    }
+    return count;
+}
+
+}  // namespace
+
+TEST_CASE("demo_list: the seven lecture demos, in lecture order, each described", "[core]") {
+    CHECK(demo_names() == std::vector<std::string>{"ray-directions", "barycentrics", "watertight",
+                                                   "bvh-cost", "grid-cost", "normal-transform",
+                                                   "shadow-acne"});
+    for (const DemoEntry& demo : demo_list()) {
+        CAPTURE(demo.name);
+        CHECK(demo.description.substr(0, 6) == "stage ");
+        CHECK(&find_demo(demo.name) == &demo);
+    }
+}
+
+TEST_CASE("find_demo: an unknown name is refused with the list of demos", "[core]") {
+    CHECK_THROWS_WITH(find_demo("teapot"),
+                      "no demo 'teapot'; the demos are ray-directions, barycentrics, watertight, "
+                      "bvh-cost, grid-cost, normal-transform, shadow-acne");
+}
+
+TEST_CASE("ray_directions_demo: perspective rays fan out, orthographic rays are one colour",
+          "[core]") {
+    const DemoFigure figure = ray_directions_demo(kTestSize);
+    check_panels(figure, 2);
+    const Image& perspective = figure.panels[0].image;
+    const Image& orthographic = figure.panels[1].image;
+    // Down -z: (0.5, 0.5, 0) on every orthographic pixel
+    CHECK(count_colour(orthographic, Color(0.5, 0.5, 0.0)) ==
+          orthographic.width() * orthographic.height());
+    // Red grows to the right, green upwards
+    const int w = perspective.width();
+    const int h = perspective.height();
+    CHECK(perspective.at(w - 1, h / 2).r > perspective.at(0, h / 2).r + 0.3);
+    CHECK(perspective.at(w / 2, 0).g > perspective.at(w / 2, h - 1).g + 0.3);
+}
+
+TEST_CASE("barycentrics_demo: red, green and blue corners on the triangles", "[core]") {
+    const DemoFigure figure = barycentrics_demo(kTestSize);
+    check_panels(figure, 2);
+    for (const DemoPanel& panel : figure.panels) {
+        CAPTURE(panel.caption);
+        int reddish = 0;
+        int greenish = 0;
+        int blueish = 0;
+        for (int j = 0; j < panel.image.height(); ++j) {
+            for (int i = 0; i < panel.image.width(); ++i) {
+                const Color c = panel.image.at(i, j);
+                reddish += c.r > 0.8;
+                greenish += c.g > 0.8;
+                blueish += c.b > 0.8;
+            }
+        }
+        CHECK(reddish > 0);
+        CHECK(greenish > 0);
+        CHECK(blueish > 0);
+    }
+}
+
+TEST_CASE("watertight_demo: intersect_triangle never leaks, the half-space test does", "[core]") {
+    const DemoFigure figure = watertight_demo(kTestSize);
+    check_panels(figure, 2);
+    CHECK(count_colour(figure.panels[0].image, kLeak) == 0);
+    CHECK(count_colour(figure.panels[1].image, kLeak) > 0);
+    CHECK(figure.panels[0].caption == "intersect_triangle: 0 leaking pixels");
+    CHECK(figure.panels[1].caption ==
+          "half-spaces: " + thousands(count_colour(figure.panels[1].image, kLeak)) +
+              " leaking pixels");
+}
+
+TEST_CASE("bvh_cost_demo and grid_cost_demo: the grid pays far more in the stadium",
+          "[core][meshes]") {
+    const DemoFigure bvh = bvh_cost_demo(kTestSize);
+    const DemoFigure grid = grid_cost_demo(kTestSize);
+    check_panels(bvh, 2);
+    check_panels(grid, 2);
+    REQUIRE(bvh.scale);
+    REQUIRE(grid.scale);
+    CHECK(bvh.scale->top == grid.scale->top);
+    // The BVH never needs 1,000 steps for a ray; the grid's rays through the bunny's cells do
+    CHECK(pixels_costing_at_least(bvh.panels[1].image, 1000, *bvh.scale) == 0);
+    CHECK(pixels_costing_at_least(grid.panels[1].image, 1000, *grid.scale) > 100);
+}
+
+TEST_CASE("normal_transform_demo: normals by M and by M^-T differ on the ellipsoids only",
+          "[core]") {
+    const DemoFigure figure = normal_transform_demo(kTestSize);
+    check_panels(figure, 2);
+    const Image& by_m = figure.panels[0].image;
+    const Image& by_inverse_transpose = figure.panels[1].image;
+    const int pixels = by_m.width() * by_m.height();
+    // The shapes, and so the background, are the same; the colours on them are not
+    CHECK(count_colour(by_m, Color(0.0)) == count_colour(by_inverse_transpose, Color(0.0)));
+    CHECK(differing_pixels(by_m, by_inverse_transpose, 0.1) > pixels / 20);
+}
+
+TEST_CASE("shadow_acne_demo: acne falls as epsilon grows, none with the error bound", "[core]") {
+    const DemoFigure figure = shadow_acne_demo(kTestSize);
+    check_panels(figure, 4);
+    const Image& error_bound = figure.panels[3].image;
+    const int zero = darker_pixels(figure.panels[0].image, error_bound, 0.05);
+    const int too_small = darker_pixels(figure.panels[1].image, error_bound, 0.05);
+    const int good = darker_pixels(figure.panels[2].image, error_bound, 0.05);
+    CAPTURE(zero, too_small, good);
+    CHECK(zero > too_small);
+    CHECK(too_small > good);
+    CHECK(good == 0);
+    CHECK(figure.panels[0].caption == "epsilon = 0: " + thousands(zero) + " pixels of acne");
+}

@@ -1,0 +1,72 @@
+#include "base/scene/scene_features.h"
+
+#include <string>
+
+#include "app/render/render_plan.h"
+#include "base/scene/scene_loader.h"
+#include "base/testing/catch.h"
+
+using namespace raystep;
+
+namespace {
+
+Scene parse(const std::string& text) {
+    return parse_scene("camera 0 0 5 0 0 0 0 1 0 45\n" + text, "inline.test", RAYSTEP_TEST_DATA);
+}
+
+}  // namespace
+
+TEST_CASE("scene_features: counts primitives by kind, mesh triangles among them", "[core]") {
+    const SceneFeatures f = scene_features(
+        parse("sphere 0 0 0 1\nsphere 1 0 0 1\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+              "tri 0 1 2\nmesh meshes/square.off\nplane 0 0 0 0 1 0\n"));
+    CHECK(f.spheres == 2);
+    CHECK(f.triangles == 3);
+    CHECK(f.mesh_triangles == 2);
+    CHECK(f.meshes == 1);
+    CHECK(f.planes == 1);
+    CHECK(f.primitives() == 6);
+    CHECK_FALSE(f.uses_transforms());
+    CHECK_FALSE(f.uses_lights());
+    CHECK_FALSE(f.uses_reflection());
+}
+
+TEST_CASE("scene_features: transforms count only where an object uses one", "[core]") {
+    CHECK_FALSE(scene_features(parse("translate 1 0 0\n")).uses_transforms());
+    const SceneFeatures f =
+        scene_features(parse("sphere 0 0 0 1\ntranslate 1 0 0\nsphere 0 0 0 1\n"));
+    CHECK(f.transforms == 1);
+    CHECK(f.transformed_objects == 1);
+}
+
+TEST_CASE("scene_features: reflection needs a specular material and maxdepth above 0", "[core]") {
+    CHECK(scene_features(parse("specular 0.5 0.5 0.5\nsphere 0 0 0 1\n")).reflective_objects == 1);
+    CHECK_FALSE(
+        scene_features(parse("maxdepth 0\nspecular 1 1 1\nsphere 0 0 0 1\n")).uses_reflection());
+    CHECK_FALSE(scene_features(parse("sphere 0 0 0 1\nspecular 1 1 1\n")).uses_reflection());
+}
+
+TEST_CASE("stages_for_view: each view runs its stages and only what the scene uses", "[core]") {
+    const SceneFeatures plain = scene_features(parse("sphere 0 0 0 1\n"));
+    CHECK(stages_for_view(plain, View::rays) == std::vector<int>{1, 2});
+    CHECK(stages_for_view(plain, View::normal) == std::vector<int>{1, 2, 3});
+    CHECK(stages_for_view(plain, View::full) == std::vector<int>{1, 2, 3, 6});
+    const SceneFeatures rich = scene_features(
+        parse("point 0 5 0 1 1 1\nspecular 1 1 1\ntranslate 0 1 0\nsphere 0 0 0 1\n"));
+    CHECK(stages_for_view(rich, View::depth) == std::vector<int>{1, 2, 3, 5});
+    CHECK(stages_for_view(rich, View::shaded) == std::vector<int>{1, 2, 3, 5, 6});
+    CHECK(stages_for_view(rich, View::full) == std::vector<int>{1, 2, 3, 5, 6, 7});
+}
+
+TEST_CASE("uses_bvh: spheres under a transform stay out of the BVH", "[core]") {
+    std::string ellipsoids = "scale 1 2 1\n";
+    std::string spheres;
+    for (std::size_t k = 0; k < kBvhFromPrimitives; ++k) {
+        ellipsoids += "sphere " + std::to_string(3 * k) + " 0 0 1\n";
+        spheres += "sphere " + std::to_string(3 * k) + " 0 0 1\n";
+    }
+    const SceneFeatures transformed = scene_features(parse(ellipsoids));
+    CHECK(transformed.transformed_spheres == kBvhFromPrimitives);
+    CHECK_FALSE(uses_bvh(transformed));
+    CHECK(uses_bvh(scene_features(parse(spheres))));
+}

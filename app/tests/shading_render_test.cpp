@@ -1,0 +1,104 @@
+// The renderer's use of stages 5, 6 and 7: one pixel at a time, on scenes whose colour can be
+// worked out by hand.
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "app/render/render_pixel.h"
+#include "base/scene/scene_loader.h"
+#include "base/testing/catch.h"
+#include "base/testing/vec3_matchers.h"
+
+using namespace raystep;
+using raystep::testing::IsNear;
+
+namespace {
+
+constexpr double kTight = 1e-12;
+
+// A 1 x 1 image from (0, 0, 5) down -z: its one ray goes straight through the origin.
+const std::string kCentreCamera = "size 1 1\ncamera 0 0 5 0 0 0 0 1 0 45\n";
+
+Color pixel(const std::string& text, View view, TraceLog* trace = nullptr) {
+    const Scene scene = parse_scene(text, "shading.test", ".");
+    return render_pixel(prepare_render_scene(scene), view, 0, 0, trace);
+}
+
+bool has_line_starting(const TraceLog& trace, const std::string& start) {
+    return std::any_of(trace.lines().begin(), trace.lines().end(),
+                       [&](const std::string& line) { return line.rfind(start, 0) == 0; });
+}
+
+}  // namespace
+
+TEST_CASE("shaded view: ambient plus a head-on directional light's diffuse term", "[core]") {
+    // The ray meets the unit sphere at (0, 0, 1), normal +z; the light comes from +z, so
+    // N . L = 1: I = A + Kd = 0.1 + 0.5.
+    const Color c = pixel(kCentreCamera +
+                              "directional 0 0 1 1 1 1\nambient 0.1 0.1 0.1\ndiffuse 0.5 0.5 0.5\n"
+                              "sphere 0 0 0 1\n",
+                          View::shaded);
+    CHECK_THAT(c, IsNear(Color(0.6), kTight));
+}
+
+TEST_CASE("shaded view: a point light is divided by its attenuation", "[core]") {
+    // The plane z = 0 at the origin, the light 2 above it: att = 0 + 0 * 2 + 1 * 2^2 = 4, so
+    // I = Kd / 4 = 0.8 / 4.
+    const Color c = pixel(kCentreCamera +
+                              "attenuation 0 0 1\npoint 0 0 2 1 1 1\nambient 0 0 0\n"
+                              "diffuse 0.8 0.8 0.8\nplane 0 0 0 0 0 1\n",
+                          View::shaded);
+    CHECK_THAT(c, IsNear(Color(0.2), kTight));
+}
+
+TEST_CASE("shaded view: an object between the point and the light leaves only ambient", "[core]") {
+    // The camera looks at the origin from (3, 0, 3), past the sphere (its ray stays 1.06 from
+    // the centre (0, 0, 1.5), beyond the radius 0.5), and sees the plane z = 0 there. The shadow
+    // ray from the origin straight up to the light at z = 3 goes through the sphere.
+    const std::string scene =
+        "size 1 1\ncamera 3 0 3 0 0 0 0 0 1 30\npoint 0 0 3 1 1 1\nambient 0.1 0.1 0.1\n"
+        "diffuse 0.5 0.5 0.5\nplane 0 0 0 0 0 1\nsphere 0 0 1.5 0.5\n";
+    CHECK_THAT(pixel(scene, View::shaded), IsNear(Color(0.1), kTight));
+    // Without the sphere, the light reaches: 0.1 + 0.5 (N . L = 1, no attenuation).
+    const std::string unblocked = scene.substr(0, scene.find("sphere"));
+    CHECK_THAT(pixel(unblocked, View::shaded), IsNear(Color(0.6), kTight));
+}
+
+TEST_CASE("full view: a mirror adds its reflectance times what the reflected ray sees", "[core]") {
+    // The plane z = 0 reflects the eye ray back up +z, where a sphere behind the camera (the eye
+    // ray starts at z = 5 and goes down) glows with ambient 0.8. I = 0.1 + 0.5 * 0.8.
+    const std::string scene = kCentreCamera +
+                              "ambient 0.1 0.1 0.1\nspecular 0.5 0.5 0.5\nplane 0 0 0 0 0 1\n"
+                              "ambient 0.8 0.8 0.8\nspecular 0 0 0\nsphere 0 0 10 1\n";
+    CHECK_THAT(pixel(scene + "maxdepth 1\n", View::full), IsNear(Color(0.5), kTight));
+    // maxdepth 0 turns reflection off; the shaded view never reflects.
+    CHECK_THAT(pixel(scene + "maxdepth 0\n", View::full), IsNear(Color(0.1), kTight));
+    CHECK_THAT(pixel(scene + "maxdepth 1\n", View::shaded), IsNear(Color(0.1), kTight));
+}
+
+TEST_CASE("full view: an ellipsoid is shaded with its transformed normal", "[core]") {
+    // The unit sphere squashed to (2, 1, 0.5) and lit from +z: the eye ray meets its top at
+    // (0, 0, 0.5), where the normal is +z, so I = Kd exactly; with M n instead of M^-T n it
+    // would still be +z here, so also check the depth: t = 5 - 0.5.
+    const std::string scene = kCentreCamera +
+                              "directional 0 0 1 1 1 1\nambient 0 0 0\ndiffuse 0.7 0.7 0.7\n"
+                              "scale 2 1 0.5\nsphere 0 0 0 1\n";
+    CHECK_THAT(pixel(scene, View::full), IsNear(Color(0.7), kTight));
+    CHECK(pixel(scene, View::depth).r == Approx(4.5).epsilon(kTight));
+}
+
+TEST_CASE("trace: the full view prints every shadow ray, shading term and reflected ray",
+          "[core]") {
+    TraceLog trace;
+    pixel(kCentreCamera +
+              "point 0 0 3 1 1 1\nambient 0.1 0.1 0.1\ndiffuse 0.5 0.5 0.5\n"
+              "specular 0.5 0.5 0.5\nshininess 10\nmaxdepth 2\nplane 0 0 0 0 0 1\n",
+          View::full, &trace);
+    CHECK(has_line_starting(trace, "surface point (0, 0, 0)"));
+    CHECK(has_line_starting(trace, "point light (line 3): direction (0, 0, 1) distance 3"));
+    CHECK(has_line_starting(trace, "  shadow ray origin"));
+    CHECK(has_line_starting(trace, "  point light (line 3) diffuse (0.5, 0.5, 0.5)"));
+    CHECK(has_line_starting(trace, "reflected ray 1: origin"));
+    CHECK(has_line_starting(trace, "colour ("));
+}

@@ -1,0 +1,62 @@
+#include "app/render/trace_log.h"
+
+#include <string>
+
+#include "app/render/render_pixel.h"
+#include "base/scene/scene_loader.h"
+#include "base/testing/catch.h"
+
+using namespace raystep;
+
+namespace {
+
+std::vector<std::string> trace(const std::string& text, View view, int x, int y) {
+    const Scene scene = parse_scene(text, "trace.test", RAYSTEP_TEST_DATA);
+    const RenderScene render_scene = prepare_render_scene(scene);
+    TraceLog log;
+    render_pixel(render_scene, view, x, y, &log);
+    return log.lines();
+}
+
+}  // namespace
+
+TEST_CASE("trace: lists the camera ray, every primitive with its result, and the closest hit",
+          "[core]") {
+    const std::vector<std::string> lines = trace(
+        "size 3 3\ncamera 0 0 5 0 0 0 0 1 0 45\nsphere 0 0 0 1\nsphere 0 0 -3 1\n"
+        "sphere 5 0 0 1\nplane 0 0 -10 0 0 1\n",
+        View::normal, 1, 1);
+    REQUIRE(lines.size() == 6);
+    CHECK(lines[0] == "camera ray: origin (0, 0, 5) direction (0, 0, -1) t in [0, inf]");
+    CHECK(lines[1] == "sphere 0 (line 3): hit t=4 normal (0, 0, 1)");
+    CHECK(lines[2] == "sphere 1 (line 4): hit t=7 normal (0, 0, 1)");
+    CHECK(lines[3] == "sphere 2 (line 5): miss");
+    CHECK(lines[4] == "plane 0 (line 6): hit t=15 normal (0, 0, 1)");
+    CHECK(lines[5] == "closest_hit: sphere 0 at t=4 point (0, 0, 1) normal (0, 0, 1)");
+}
+
+TEST_CASE("trace: the rays view stops after the camera ray", "[core]") {
+    const std::vector<std::string> lines =
+        trace("size 3 3\ncamera 0 0 5 0 0 0 0 1 0 45\nsphere 0 0 0 1\n", View::rays, 1, 1);
+    REQUIRE(lines.size() == 1);
+    CHECK(lines[0].rfind("camera ray:", 0) == 0);
+}
+
+TEST_CASE("trace: a mesh's misses are counted, not listed one by one", "[core]") {
+    std::string text = "size 3 3\ncamera 0 0 5 0 0 0 0 1 0 45\n";
+    for (int k = 0; k < 100; ++k) text += "sphere " + std::to_string(10 + k) + " 0 0 0.5\n";
+    text += "sphere 0 0 0 1\n";
+    const std::vector<std::string> lines = trace(text, View::depth, 1, 1);
+    REQUIRE(lines.size() == 5);
+    CHECK(lines[1] == "sphere 100 (line 103): hit t=4 normal (0, 0, 1)");
+    CHECK(lines[2] == "100 other spheres: miss");
+    // 101 spheres: enough for a BVH, which says what the ray cost.
+    CHECK(lines[3].rfind("BVH: ", 0) == 0);
+    CHECK(lines[4].rfind("closest_hit: sphere 100", 0) == 0);
+}
+
+TEST_CASE("trace: a miss says so", "[core]") {
+    const std::vector<std::string> lines =
+        trace("size 3 3\ncamera 0 0 5 0 0 0 0 1 0 45\nsphere 9 9 9 1\n", View::depth, 0, 0);
+    CHECK(lines.back() == "closest_hit: miss");
+}

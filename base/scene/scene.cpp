@@ -1,0 +1,17 @@
+#include "base/scene/scene.h"
+
+#include <algorithm>
+
+namespace raystep {
+
+std::vector<TransformOp> transform_ops(const Scene& scene, std::uint32_t node) {
+    std::vector<TransformOp> ops;
+    while (node != 0) {
+        ops.push_back(scene.transforms.at(node).op);
+        node = scene.transforms[node].parent;
+    }
+    std::reverse(ops.begin(), ops.end());
+    return ops;
+}
+
+}  // namespace raystep

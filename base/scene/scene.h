@@ -1,0 +1,162 @@
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "base/math/types.h"
+#include "base/scene/ray_offset.h"
+#include "base/scene/shapes.h"
+
+namespace raystep {
+
+// The scene as the file describes it, before any rendering decision: what the loader reads and
+// `raystep info` reports. Nothing here is precomputed for speed; the renderer builds what a
+// scene needs from it. docs/scene-format.md gives the commands.
+
+/// Surface properties of the CSE167 local model, I = A + E + sum of lights (D, S, shininess),
+/// with S also the mirror reflectance.
+struct Material {
+    Color ambient{0.2, 0.2, 0.2};
+    Color diffuse{0.0, 0.0, 0.0};
+    Color specular{0.0, 0.0, 0.0};
+    Color emission{0.0, 0.0, 0.0};
+    double shininess = 0.0;
+
+    bool operator==(const Material& other) const {
+        return ambient == other.ambient && diffuse == other.diffuse && specular == other.specular &&
+               emission == other.emission && shininess == other.shininess;
+    }
+};
+
+/// One command of the transform stack, kept as written so that stage 5 can build the matrix.
+struct TransformOp {
+    enum class Kind { translate, rotate, scale };
+    Kind kind;
+    Vec3 vector;               ///< offset, rotation axis or scale factors
+    double angle_degrees = 0;  ///< rotate only
+};
+
+/// The transform stack as a tree: every translate, rotate or scale adds a node whose parent is
+/// the node in force before it, so the transform of an object is the chain of ops from the root
+/// to its node, right-multiplied in file order as in OpenGL: M = op1 op2 ... opN, and the last
+/// op written is the first applied to the object. Scene::transforms[0] is the root, the
+/// identity; each object stores its node. A tree (not a list of ops per object) keeps memory
+/// linear in the file's length however deep the stack or long the chains.
+struct TransformNode {
+    std::uint32_t parent = 0;  ///< the node this op right-multiplies; the root's is itself
+    TransformOp op{TransformOp::Kind::translate, Vec3(0.0), 0.0};
+    bool identity = true;      ///< this node's whole chain changes nothing
+};
+
+/// Where an object came from and how it is placed and shaded.
+struct ObjectAttributes {
+    std::uint32_t material = 0;   ///< index into Scene::materials
+    std::uint32_t transform = 0;  ///< node in Scene::transforms; 0 (the root) is the identity
+    std::uint32_t line = 0;       ///< the line of the scene file that made it
+};
+
+struct SceneSphere {
+    Sphere shape;
+    ObjectAttributes attributes;
+};
+
+/// A triangle from `tri`, `trinormal` or a mesh. `vertex_normals` indexes
+/// Scene::vertex_normals for `trinormal` triangles (smooth shading) and is -1 otherwise;
+/// `mesh` indexes Scene::meshes for mesh triangles and is -1 otherwise.
+struct SceneTriangle {
+    Triangle shape;
+    ObjectAttributes attributes;
+    std::int32_t vertex_normals = -1;
+    std::int32_t mesh = -1;
+};
+
+struct ScenePlane {
+    Plane shape;
+    ObjectAttributes attributes;
+};
+
+/// Per-vertex normals of a `trinormal` triangle, as written (not normalized).
+struct VertexNormals {
+    Vec3 n0;
+    Vec3 n1;
+    Vec3 n2;
+};
+
+/// A mesh file loaded by `mesh FILE`; its triangles are in Scene::triangles.
+struct SceneMesh {
+    std::string path;  ///< as resolved against the scene file's folder
+    std::uint32_t first_triangle = 0;
+    std::uint32_t triangle_count = 0;
+    std::uint32_t line = 0;
+};
+
+/// Light falls off as 1 / (constant + linear d + quadratic d^2) with distance d.
+struct Attenuation {
+    double constant = 1.0;
+    double linear = 0.0;
+    double quadratic = 0.0;
+};
+
+/// `point x y z r g b`, in world coordinates, with the attenuation in force when it was read.
+struct PointLight {
+    Vec3 position;
+    Color color;
+    Attenuation attenuation;
+    std::uint32_t line = 0;
+};
+
+/// `directional x y z r g b`: light from the direction (x, y, z) (pointing towards the light),
+/// in world coordinates; never attenuated.
+struct DirectionalLight {
+    Vec3 direction;
+    Color color;
+    std::uint32_t line = 0;
+};
+
+/// The view window of `ortho l r b t`, in the camera's (u, v) plane.
+struct OrthoWindow {
+    double left;
+    double right;
+    double bottom;
+    double top;
+};
+
+/// `camera` (and `ortho`): the eye, what it looks at, the up hint, the vertical field of view.
+/// With `ortho` the projection is orthographic over that window and fovy is unused.
+struct CameraSpec {
+    Vec3 lookfrom;
+    Vec3 lookat;
+    Vec3 up;
+    double fovy_degrees = 0;
+    std::optional<OrthoWindow> ortho;
+    std::uint32_t line = 0;
+};
+
+struct Scene {
+    std::string path;  ///< the scene file, as given
+    int width = 640;   ///< `size`
+    int height = 480;
+    int max_depth = 5;   ///< `maxdepth`: mirror bounces after the first hit
+    std::string output;  ///< `output`; empty when the file names none
+    CameraSpec camera;
+    RayOffset ray_offset;  ///< `rayoffset`
+
+    std::vector<Material> materials;
+    std::vector<TransformNode> transforms{TransformNode{}};
+
+    std::vector<SceneSphere> spheres;
+    std::vector<SceneTriangle> triangles;
+    std::vector<ScenePlane> planes;
+    std::vector<SceneMesh> meshes;
+    std::vector<VertexNormals> vertex_normals;
+
+    std::vector<PointLight> point_lights;
+    std::vector<DirectionalLight> directional_lights;
+};
+
+/// The ops of a transform node, root first: the order they were written in the file.
+std::vector<TransformOp> transform_ops(const Scene& scene, std::uint32_t node);
+
+}  // namespace raystep

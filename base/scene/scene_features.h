@@ -1,0 +1,32 @@
+#pragma once
+
+#include <cstddef>
+
+#include "base/scene/scene.h"
+
+namespace raystep {
+
+/// What a scene uses, counted: the facts from which the renderer decides what to build and the
+/// grader decides which stages a render of it grades.
+struct SceneFeatures {
+    std::size_t spheres = 0;
+    std::size_t triangles = 0;  ///< all triangles, mesh triangles included
+    std::size_t mesh_triangles = 0;
+    std::size_t meshes = 0;
+    std::size_t planes = 0;
+    std::size_t transforms = 0;           ///< distinct non-identity transforms in use
+    std::size_t transformed_objects = 0;  ///< primitives under one of them
+    std::size_t transformed_spheres = 0;  ///< of those, spheres: ellipsoids, outside the BVH
+    std::size_t point_lights = 0;
+    std::size_t directional_lights = 0;
+    std::size_t reflective_objects = 0;  ///< specular > 0 with maxdepth > 0: mirrors
+
+    std::size_t primitives() const { return spheres + triangles + planes; }
+    bool uses_transforms() const { return transformed_objects > 0; }
+    bool uses_lights() const { return point_lights + directional_lights > 0; }
+    bool uses_reflection() const { return reflective_objects > 0; }
+};
+
+SceneFeatures scene_features(const Scene& scene);
+
+}  // namespace raystep

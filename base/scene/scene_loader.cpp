@@ -1,0 +1,582 @@
+#include "base/scene/scene_loader.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "base/errors/input_error.h"
+#include "base/math/parallel_sine.h"
+#include "base/math/to_text.h"
+#include "base/scene/mesh_loader.h"
+#include "base/scene/text_fields.h"
+#include "base/scene/text_file.h"
+
+namespace raystep {
+
+namespace {
+
+// Limits that keep a typo from exhausting memory or the stack; each is far above any real
+// scene and each is reported as an error, never clamped.
+constexpr long kMaxImageSide = 32768;
+constexpr long kMaxImagePixels = 1L << 27;  // 128 Mpixels, 1.5 GiB of float RGB
+constexpr long kMaxDepth = 1000;
+
+// A direction (an up vector, a normal, an axis, a scale factor) must have its largest component
+// in this range: then |v|^2 neither overflows nor underflows, and normalizing or inverting it is
+// safe in anyone's code.
+constexpr double kSmallestDirection = 1e-150;
+constexpr double kLargestDirection = 1e150;
+
+// Every number in a scene: the range in which products of three coordinates still fit in a
+// double, the domain of the stage-3 contract.
+constexpr double kLargestNumber = 1e100;
+
+constexpr std::uint32_t kUnregistered = std::numeric_limits<std::uint32_t>::max();
+
+double largest_magnitude(const Vec3& v) {
+    return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+}
+
+// Translate by 0, scale by 1 and rotate by 0 degrees change nothing, so an object under only
+// such ops needs no matrix at all.
+bool is_identity(const TransformOp& op) {
+    switch (op.kind) {
+        case TransformOp::Kind::translate:
+            return op.vector == Vec3(0.0);
+        case TransformOp::Kind::scale:
+            return op.vector == Vec3(1.0);
+        case TransformOp::Kind::rotate:
+            return op.angle_degrees == 0.0;
+    }
+    return false;
+}
+
+class SceneParser {
+  public:
+    SceneParser(std::string name, std::filesystem::path folder)
+        : name_(std::move(name)), folder_(std::move(folder)) {
+        scene_.path = name_;
+    }
+
+    void parse_line(std::string_view text) {
+        ++line_;
+        split_fields(text, fields_);
+        if (fields_.empty()) return;
+
+        const Command& command = find_command(fields_[0]);
+        const std::size_t given = fields_.size() - 1;
+        if (given < command.argument_count ||
+            given > command.argument_count + command.optional_count) {
+            const std::string count =
+                command.optional_count == 0
+                    ? std::to_string(command.argument_count)
+                    : std::to_string(command.argument_count) + " or " +
+                          std::to_string(command.argument_count + command.optional_count);
+            fail("'" + std::string(command.name) + "' takes " + count + " argument" +
+                 (count == "1" ? "" : "s") +
+                 (command.arguments.empty() ? "" : " (" + std::string(command.arguments) + ")") +
+                 ", found " + std::to_string(given));
+        }
+        (this->*command.handle)();
+    }
+
+    Scene finish() {
+        if (camera_line_ == 0) {
+            throw InputError(name_, 0, "the scene has no 'camera' command, so nothing can be seen");
+        }
+        scene_.camera.ortho = ortho_;
+        return std::move(scene_);
+    }
+
+  private:
+    struct Command {
+        std::string_view name;
+        std::string_view arguments;  // names of the arguments, separated by spaces; [optional]
+        void (SceneParser::*handle)();
+        std::size_t argument_count = 0;
+        std::size_t optional_count = 0;
+
+        Command(std::string_view command, std::string_view argument_names,
+                void (SceneParser::*handler)())
+            : name(command), arguments(argument_names), handle(handler) {
+            std::vector<std::string_view> names;
+            split_fields(arguments, names);
+            for (const std::string_view argument : names) {
+                ++(argument.front() == '[' ? optional_count : argument_count);
+            }
+        }
+    };
+
+    static const std::vector<Command>& commands() {
+        static const std::vector<Command> table = {
+            {"size", "width height", &SceneParser::size},
+            {"maxdepth", "depth", &SceneParser::maxdepth},
+            {"output", "filename", &SceneParser::output},
+            {"camera", "fromx fromy fromz atx aty atz upx upy upz fovy", &SceneParser::camera},
+            {"ortho", "left right bottom top", &SceneParser::ortho},
+            {"rayoffset", "rule [epsilon]", &SceneParser::rayoffset},
+            {"sphere", "x y z radius", &SceneParser::sphere},
+            {"plane", "x y z nx ny nz", &SceneParser::plane},
+            {"maxverts", "count", &SceneParser::maxverts},
+            {"maxvertnorms", "count", &SceneParser::maxvertnorms},
+            {"vertex", "x y z", &SceneParser::vertex},
+            {"vertexnormal", "x y z nx ny nz", &SceneParser::vertexnormal},
+            {"tri", "v0 v1 v2", &SceneParser::tri},
+            {"trinormal", "v0 v1 v2", &SceneParser::trinormal},
+            {"mesh", "file", &SceneParser::mesh},
+            {"translate", "x y z", &SceneParser::translate},
+            {"rotate", "axisx axisy axisz degrees", &SceneParser::rotate},
+            {"scale", "x y z", &SceneParser::scale},
+            {"pushTransform", "", &SceneParser::push_transform},
+            {"popTransform", "", &SceneParser::pop_transform},
+            {"directional", "x y z r g b", &SceneParser::directional},
+            {"point", "x y z r g b", &SceneParser::point},
+            {"attenuation", "constant linear quadratic", &SceneParser::attenuation},
+            {"ambient", "r g b", &SceneParser::ambient},
+            {"diffuse", "r g b", &SceneParser::diffuse},
+            {"specular", "r g b", &SceneParser::specular},
+            {"shininess", "s", &SceneParser::shininess},
+            {"emission", "r g b", &SceneParser::emission},
+        };
+        return table;
+    }
+
+    const Command& find_command(std::string_view name) const {
+        const std::vector<Command>& table = commands();
+        const auto found = std::find_if(table.begin(), table.end(),
+                                        [&](const Command& c) { return c.name == name; });
+        if (found != table.end()) return *found;
+
+        std::string message = "unknown command " + quoted_field(name);
+        // A typo is a few characters off a command; a longer word is not worth measuring.
+        if (name.size() <= 20) {
+            const auto nearest = std::min_element(
+                table.begin(), table.end(), [&](const Command& a, const Command& b) {
+                    return edit_distance(name, a.name) < edit_distance(name, b.name);
+                });
+            if (edit_distance(name, nearest->name) <= 2) {
+                message += "; did you mean '" + std::string(nearest->name) + "'?";
+            }
+        }
+        fail(message);
+    }
+
+    // Arguments
+
+    [[noreturn]] void fail(const std::string& problem) const {
+        throw InputError(name_, line_, problem);
+    }
+
+    double number(std::size_t k, std::string_view what) const {
+        const double value = parse_finite_number(fields_[k], {name_, line_}, what);
+        if (std::abs(value) > kLargestNumber) {
+            fail(std::string(what) + " " + quoted_field(fields_[k]) +
+                 " is beyond 1e100, the range in which the renderer computes reliably");
+        }
+        return value;
+    }
+
+    long count(std::size_t k, std::string_view what) const {
+        return parse_count(fields_[k], {name_, line_}, what);
+    }
+
+    Vec3 vec3(std::size_t first, std::string_view what) const {
+        return {number(first, what), number(first + 1, what), number(first + 2, what)};
+    }
+
+    // A vector used for its direction only.
+    Vec3 direction(std::size_t first, std::string_view what) const {
+        const Vec3 v = vec3(first, "a component of " + std::string(what));
+        const double m = largest_magnitude(v);
+        if (m == 0.0) fail(std::string(what) + " is zero");
+        if (m < kSmallestDirection || m > kLargestDirection) {
+            fail(std::string(what) + " " + to_text(v) +
+                 " is too short or too long to normalize reliably; scale it towards 1");
+        }
+        return v;
+    }
+
+    Color color(std::size_t first) const {
+        const Color c = vec3(first, "a colour component");
+        if (c.r < 0 || c.g < 0 || c.b < 0) {
+            fail("colour " + to_text(c) + " has a negative component");
+        }
+        return c;
+    }
+
+    void once(std::uint32_t& seen_on_line, std::string_view command) {
+        if (seen_on_line != 0) {
+            fail("'" + std::string(command) + "' was already given on line " +
+                 std::to_string(seen_on_line));
+        }
+        seen_on_line = static_cast<std::uint32_t>(line_);
+    }
+
+    // Image and camera
+
+    void size() {
+        once(size_line_, "size");
+        const long width = count(1, "the width");
+        const long height = count(2, "the height");
+        if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide) {
+            fail("image size " + std::to_string(width) + " x " + std::to_string(height) +
+                 " is out of range: each side must be 1 to " + std::to_string(kMaxImageSide));
+        }
+        if (width * height > kMaxImagePixels) {
+            fail("image size " + std::to_string(width) + " x " + std::to_string(height) +
+                 " has more than " + std::to_string(kMaxImagePixels) + " pixels");
+        }
+        scene_.width = static_cast<int>(width);
+        scene_.height = static_cast<int>(height);
+    }
+
+    void maxdepth() {
+        once(maxdepth_line_, "maxdepth");
+        const long depth = count(1, "the depth");
+        if (depth > kMaxDepth) {
+            fail("maxdepth " + std::to_string(depth) + " is above the limit of " +
+                 std::to_string(kMaxDepth));
+        }
+        scene_.max_depth = static_cast<int>(depth);
+    }
+
+    void output() {
+        once(output_line_, "output");
+        scene_.output = std::string(fields_[1]);
+    }
+
+    void rayoffset() {
+        once(rayoffset_line_, "rayoffset");
+        const std::optional<OffsetRule> rule = parse_offset_rule(fields_[1]);
+        if (!rule) {
+            fail("unknown ray offset rule " + quoted_field(fields_[1]) +
+                 "; the rules are along-ray, along-normal and error-bound");
+        }
+        scene_.ray_offset.rule = *rule;
+        if (!uses_epsilon(*rule)) {
+            if (fields_.size() > 2) fail("error-bound takes no epsilon: it needs no tuning");
+            return;
+        }
+        if (fields_.size() < 3) {
+            fail(std::string(offset_rule_name(*rule)) + " needs an epsilon, the offset distance");
+        }
+        const double epsilon = number(2, "epsilon");
+        if (!(epsilon > 0.0)) fail("epsilon " + quoted_field(fields_[2]) + " must be positive");
+        scene_.ray_offset.epsilon = epsilon;
+    }
+
+    void camera() {
+        once(camera_line_, "camera");
+        CameraSpec& c = scene_.camera;
+        c.lookfrom = vec3(1, "lookfrom");
+        c.lookat = vec3(4, "lookat");
+        c.up = direction(7, "the up vector");
+        c.fovy_degrees = number(10, "fovy");
+        c.line = static_cast<std::uint32_t>(line_);
+
+        // The field of view: tan(fovy / 2) must be positive and finite.
+        if (!(c.fovy_degrees > 0.0 && c.fovy_degrees < 180.0)) {
+            fail("fovy " + std::string(fields_[10]) +
+                 " is out of range: the field of view must be strictly between 0 and 180 degrees");
+        }
+        // The view direction must exist and span a plane with the up hint. (Every number is at
+        // most 1e100, so the difference is finite.)
+        const Vec3 view = c.lookat - c.lookfrom;
+        const double view_size = largest_magnitude(view);
+        if (view_size == 0.0) {
+            fail("lookfrom and lookat are the same point " + to_text(c.lookfrom) +
+                 ", so there is no view direction");
+        }
+        // Both scaled by their largest component, so that the products cannot overflow; written
+        // so that a NaN counts as parallel.
+        const Vec3 a = view / view_size;
+        const Vec3 b = c.up / largest_magnitude(c.up);
+        if (!(glm::length(glm::cross(a, b)) > kParallelSine * glm::length(a) * glm::length(b))) {
+            fail("the up vector " + to_text(c.up) + " is parallel to the view direction " +
+                 to_text(view) + ", so the camera cannot tell up from down; choose another up");
+        }
+    }
+
+    void ortho() {
+        once(ortho_line_, "ortho");
+        const OrthoWindow window{number(1, "left"), number(2, "right"), number(3, "bottom"),
+                                 number(4, "top")};
+        if (!(window.left < window.right) || !(window.bottom < window.top)) {
+            fail("ortho window must have left < right and bottom < top");
+        }
+        ortho_ = window;
+    }
+
+    // Geometry
+
+    ObjectAttributes attributes() {
+        if (material_id_ == kUnregistered) {
+            scene_.materials.push_back(material_);
+            material_id_ = static_cast<std::uint32_t>(scene_.materials.size() - 1);
+        }
+        const std::uint32_t node = transform_stack_.back();
+        const std::uint32_t transform = scene_.transforms[node].identity ? 0 : node;
+        return {material_id_, transform, static_cast<std::uint32_t>(line_)};
+    }
+
+    void sphere() {
+        const Vec3 center = vec3(1, "the centre");
+        const double radius = number(4, "the radius");
+        if (!(radius > 0.0)) fail("radius " + std::string(fields_[4]) + " must be positive");
+        scene_.spheres.push_back({{center, radius}, attributes()});
+    }
+
+    void plane() {
+        const Vec3 point = vec3(1, "the point");
+        const Vec3 normal = direction(4, "the plane's normal");
+        scene_.planes.push_back({{point, normal}, attributes()});
+    }
+
+    // maxverts and maxvertnorms are promises, checked as the vertices come; never capacities to
+    // allocate, so that a typo cannot reserve gigabytes.
+    void maxverts() {
+        max_vertices_ = count(1, "the vertex count");
+        if (static_cast<std::size_t>(max_vertices_) < vertices_.size()) {
+            fail("maxverts " + std::to_string(max_vertices_) + " is less than the " +
+                 std::to_string(vertices_.size()) + " vertices already given");
+        }
+    }
+
+    void maxvertnorms() {
+        max_normal_vertices_ = count(1, "the vertex count");
+        if (static_cast<std::size_t>(max_normal_vertices_) < normal_vertices_.size()) {
+            fail("maxvertnorms " + std::to_string(max_normal_vertices_) + " is less than the " +
+                 std::to_string(normal_vertices_.size()) + " vertexnormals already given");
+        }
+    }
+
+    void vertex() {
+        if (max_vertices_ >= 0 && vertices_.size() == static_cast<std::size_t>(max_vertices_)) {
+            fail("more vertices than 'maxverts " + std::to_string(max_vertices_) + "' declared");
+        }
+        vertices_.push_back(vec3(1, "a coordinate"));
+    }
+
+    void vertexnormal() {
+        if (max_normal_vertices_ >= 0 &&
+            normal_vertices_.size() == static_cast<std::size_t>(max_normal_vertices_)) {
+            fail("more vertexnormals than 'maxvertnorms " + std::to_string(max_normal_vertices_) +
+                 "' declared");
+        }
+        const Vec3 position = vec3(1, "a coordinate");
+        const Vec3 normal = direction(4, "the vertex normal");
+        normal_vertices_.push_back({position, normal});
+    }
+
+    std::array<std::size_t, 3> indices(std::size_t available, std::string_view pile) const {
+        std::array<std::size_t, 3> result{};
+        for (std::size_t k = 0; k < 3; ++k) {
+            const long index = count(k + 1, "a vertex index");
+            if (static_cast<std::size_t>(index) >= available) {
+                fail("vertex index " + std::to_string(index) +
+                     " is out of range: " + std::to_string(available) + " " + std::string(pile) +
+                     " defined so far, numbered from 0");
+            }
+            result[k] = static_cast<std::size_t>(index);
+        }
+        return result;
+    }
+
+    void tri() {
+        const auto [i0, i1, i2] = indices(vertices_.size(), "vertices");
+        SceneTriangle triangle;
+        triangle.shape = {vertices_[i0], vertices_[i1], vertices_[i2]};
+        triangle.attributes = attributes();
+        scene_.triangles.push_back(triangle);
+    }
+
+    void trinormal() {
+        const auto [i0, i1, i2] = indices(normal_vertices_.size(), "vertexnormals");
+        SceneTriangle triangle;
+        triangle.shape = {normal_vertices_[i0].first, normal_vertices_[i1].first,
+                          normal_vertices_[i2].first};
+        triangle.attributes = attributes();
+        triangle.vertex_normals = static_cast<std::int32_t>(scene_.vertex_normals.size());
+        scene_.vertex_normals.push_back({normal_vertices_[i0].second, normal_vertices_[i1].second,
+                                         normal_vertices_[i2].second});
+        scene_.triangles.push_back(triangle);
+    }
+
+    void mesh() {
+        std::filesystem::path file{std::string(fields_[1])};
+        if (file.is_relative()) file = folder_ / file;
+        std::error_code error;
+        if (!std::filesystem::exists(file, error)) {
+            fail("mesh file " + quoted_field(fields_[1]) + " not found (looked for " +
+                 quoted_field(file.string()) + ")");
+        }
+        TriangleMesh loaded;
+        try {
+            loaded = load_mesh(file);
+        } catch (const InputError& mesh_error) {
+            fail(std::string("in mesh: ") + mesh_error.what());
+        }
+
+        SceneMesh record;
+        record.path = file.string();
+        record.first_triangle = static_cast<std::uint32_t>(scene_.triangles.size());
+        record.triangle_count = static_cast<std::uint32_t>(loaded.faces.size());
+        record.line = static_cast<std::uint32_t>(line_);
+        const auto mesh_id = static_cast<std::int32_t>(scene_.meshes.size());
+        scene_.meshes.push_back(record);
+
+        const ObjectAttributes shared = attributes();
+        scene_.triangles.reserve(scene_.triangles.size() + loaded.faces.size());
+        for (const auto& face : loaded.faces) {
+            SceneTriangle triangle;
+            triangle.shape = {loaded.positions[face[0]], loaded.positions[face[1]],
+                              loaded.positions[face[2]]};
+            triangle.attributes = shared;
+            triangle.mesh = mesh_id;
+            scene_.triangles.push_back(triangle);
+        }
+    }
+
+    // The transform stack. Each op becomes a tree node under the node in force: the OpenGL
+    // right-multiplication, in memory linear in the file's length.
+
+    void add_op(const TransformOp& op) {
+        TransformNode node;
+        node.parent = transform_stack_.back();
+        node.op = op;
+        node.identity = scene_.transforms[node.parent].identity && is_identity(op);
+        scene_.transforms.push_back(node);
+        transform_stack_.back() = static_cast<std::uint32_t>(scene_.transforms.size() - 1);
+    }
+
+    void translate() { add_op({TransformOp::Kind::translate, vec3(1, "the offset"), 0.0}); }
+
+    void rotate() {
+        const Vec3 axis = direction(1, "the rotation axis");
+        add_op({TransformOp::Kind::rotate, axis, number(4, "the angle")});
+    }
+
+    void scale() {
+        const Vec3 factors = vec3(1, "a scale factor");
+        for (const double factor : {factors.x, factors.y, factors.z}) {
+            if (factor == 0.0) {
+                fail("scale " + to_text(factors) +
+                     " has a zero factor, which flattens objects and has no inverse");
+            }
+            // The inverse transform and the normal matrix divide by each factor.
+            if (std::abs(factor) < kSmallestDirection || std::abs(factor) > kLargestDirection) {
+                fail("scale " + to_text(factors) +
+                     " has a factor whose inverse overflows or underflows");
+            }
+        }
+        add_op({TransformOp::Kind::scale, factors, 0.0});
+    }
+
+    void push_transform() { transform_stack_.push_back(transform_stack_.back()); }
+
+    void pop_transform() {
+        if (transform_stack_.size() == 1) fail("popTransform without a matching pushTransform");
+        transform_stack_.pop_back();
+    }
+
+    // Lights: world coordinates, whatever the transform stack holds.
+
+    void directional() {
+        const Vec3 towards_light = direction(1, "the light's direction");
+        scene_.directional_lights.push_back(
+            {towards_light, color(4), static_cast<std::uint32_t>(line_)});
+    }
+
+    void point() {
+        scene_.point_lights.push_back(
+            {vec3(1, "the position"), color(4), attenuation_, static_cast<std::uint32_t>(line_)});
+    }
+
+    void attenuation() {
+        const Attenuation a{number(1, "the constant term"), number(2, "the linear term"),
+                            number(3, "the quadratic term")};
+        if (a.constant < 0 || a.linear < 0 || a.quadratic < 0) {
+            fail("attenuation terms must not be negative");
+        }
+        if (a.constant == 0 && a.linear == 0 && a.quadratic == 0) {
+            fail("attenuation 0 0 0 would divide the light by zero");
+        }
+        attenuation_ = a;
+    }
+
+    // Materials: the current state, given to every object made after it.
+
+    void set_material(Color Material::*field) {
+        material_.*field = color(1);
+        material_id_ = kUnregistered;
+    }
+
+    void ambient() { set_material(&Material::ambient); }
+    void diffuse() { set_material(&Material::diffuse); }
+    void specular() { set_material(&Material::specular); }
+    void emission() { set_material(&Material::emission); }
+
+    void shininess() {
+        const double s = number(1, "the shininess");
+        if (s < 0) fail("shininess " + std::string(fields_[1]) + " must not be negative");
+        material_.shininess = s;
+        material_id_ = kUnregistered;
+    }
+
+    std::string name_;
+    std::filesystem::path folder_;
+    int line_ = 0;
+    std::vector<std::string_view> fields_;
+    Scene scene_;
+
+    std::uint32_t size_line_ = 0;
+    std::uint32_t maxdepth_line_ = 0;
+    std::uint32_t output_line_ = 0;
+    std::uint32_t camera_line_ = 0;
+    std::uint32_t ortho_line_ = 0;
+    std::uint32_t rayoffset_line_ = 0;
+    std::optional<OrthoWindow> ortho_;
+
+    Material material_;
+    std::uint32_t material_id_ = kUnregistered;
+    Attenuation attenuation_;
+    std::vector<std::uint32_t> transform_stack_{0};  // tree nodes; the root is the identity
+
+    long max_vertices_ = -1;
+    long max_normal_vertices_ = -1;
+    std::vector<Vec3> vertices_;
+    std::vector<std::pair<Vec3, Vec3>> normal_vertices_;
+};
+
+}  // namespace
+
+Scene parse_scene(std::string_view text, const std::string& name,
+                  const std::filesystem::path& folder) {
+    SceneParser parser(name, folder);
+    std::string line;
+    std::size_t start = 0;
+    while (start < text.size()) {
+        // A line ends at "\n", "\r\n" or a lone "\r" (old Mac files).
+        std::size_t end = text.find_first_of("\r\n", start);
+        if (end == std::string_view::npos) end = text.size();
+        // A copy per line keeps each field NUL- or space-terminated for strtod.
+        line.assign(text.substr(start, end - start));
+        parser.parse_line(line);
+        start = end + 1;
+        if (end + 1 < text.size() && text[end] == '\r' && text[end + 1] == '\n') ++start;
+    }
+    return parser.finish();
+}
+
+Scene load_scene(const std::filesystem::path& path) {
+    const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : ".";
+    return parse_scene(read_text_file(path, "scene file"), path.string(), folder);
+}
+
+}  // namespace raystep

@@ -1,0 +1,68 @@
+#!/usr/bin/env python3
+"""The layers of ARCHITECTURE.md, checked on every #include: a file may include its own layer and
+the layers below it, never one above. CGAL is the grader's oracle's alone (grader/oracle/ and its
+tests) and Embree the bench baseline's (studies/structures/embree/): students build neither.
+
+    scripts/check-layers.py [ROOT]
+
+Prints each include that crosses a layer the wrong way as file:line and exits 1; exits 0 when
+there is none."""
+
+import pathlib
+import re
+import sys
+
+# Each layer and the layers its files may include, bottom up.
+ALLOWED = {
+    "base": {"base"},
+    "stages": {"base", "stages"},
+    "solutions": {"base", "stages", "solutions"},
+    "app": {"base", "stages", "app"},
+    "studies": {"base", "stages", "solutions", "app", "studies"},
+    "grader": {"base", "stages", "solutions", "app", "studies", "grader"},
+}
+INCLUDE = re.compile(r'^\s*#\s*include\s*["<]([^">]+)[">]')
+# Outside libraries that only some folders may include: (include prefix, folders, why).
+CONFINED = [
+    ("CGAL/", ("grader/oracle/", "grader/tests/"), "CGAL belongs to grader/oracle/ and its tests"),
+    ("embree", ("studies/structures/embree/",), "Embree belongs to studies/structures/embree/"),
+]
+
+
+def problems_in(root: pathlib.Path, source: pathlib.Path):
+    shown = source.relative_to(root).as_posix()
+    layer = shown.split("/")[0]
+    lines = source.read_text(encoding="utf-8", errors="replace").splitlines()
+    for number, line in enumerate(lines, start=1):
+        match = INCLUDE.match(line)
+        if not match:
+            continue
+        included = match.group(1)
+        top = included.split("/")[0]
+        if top in ALLOWED and top not in ALLOWED[layer]:
+            yield (f"{shown}:{number}: {layer}/ includes {included}, a layer above it "
+                   f"(allowed: {', '.join(sorted(ALLOWED[layer]))})")
+        for prefix, folders, why in CONFINED:
+            if included.startswith(prefix) and not shown.startswith(folders):
+                yield f"{shown}:{number}: includes {included}: {why}"
+
+
+def main() -> int:
+    root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else ".").resolve()
+    sources = [path for layer in ALLOWED for path in sorted((root / layer).rglob("*"))
+               if path.suffix in (".h", ".cpp") and path.is_file()]
+    if not sources:
+        print(f"no source files under {root}: the check would prove nothing", file=sys.stderr)
+        return 1
+    problems = [problem for source in sources for problem in problems_in(root, source)]
+    if problems:
+        print("includes that cross a layer the wrong way (ARCHITECTURE.md, \"Layers\"):",
+              file=sys.stderr)
+        print("\n".join(problems), file=sys.stderr)
+        return 1
+    print(f"{len(sources)} files include only their own layer and those below it")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
