@@ -7,19 +7,19 @@
 #include <memory>
 #include <thread>
 
-#include "studies/structures/baseline_registry.h"
-#include "studies/structures/bench_scenes.h"
-#include "studies/epsilon/epsilon_measure.h"
-#include "studies/structures/growth.h"
+#include "app/cli/command_registry.h"
+#include "app/render/terminal.h"
 #include "studies/common/machine_description.h"
 #include "studies/common/number_text.h"
-#include "studies/structures/our_structures.h"
+#include "studies/epsilon/epsilon_measure.h"
 #include "studies/speed_error/pareto_registry.h"
+#include "studies/structures/baseline_registry.h"
+#include "studies/structures/bench_scenes.h"
+#include "studies/structures/growth.h"
+#include "studies/structures/our_structures.h"
 #include "studies/structures/speed_bar.h"
 #include "studies/structures/threshold.h"
 #include "studies/structures/workload_table.h"
-#include "app/cli/command_registry.h"
-#include "app/render/terminal.h"
 
 namespace raystep {
 

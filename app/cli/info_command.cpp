@@ -3,8 +3,8 @@
 #include <chrono>
 #include <cstdio>
 
-#include "base/math/to_text.h"
 #include "app/render/render_plan.h"
+#include "base/math/to_text.h"
 #include "base/scene/scene_features.h"
 #include "base/scene/scene_loader.h"
 

@@ -5,10 +5,10 @@
 #include <filesystem>
 #include <thread>
 
-#include "base/image/image_io.h"
 #include "app/render/render_scene.h"
 #include "app/render/terminal.h"
 #include "app/render/tile_renderer.h"
+#include "base/image/image_io.h"
 #include "base/scene/scene_loader.h"
 
 namespace raystep {

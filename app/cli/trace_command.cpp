@@ -8,10 +8,10 @@
 #include <random>
 #include <stdexcept>
 
-#include "base/errors/not_implemented.h"
-#include "base/math/to_text.h"
 #include "app/render/render_pixel.h"
 #include "app/render/render_scene.h"
+#include "base/errors/not_implemented.h"
+#include "base/math/to_text.h"
 #include "base/scene/scene_loader.h"
 
 namespace raystep {

@@ -6,9 +6,9 @@
 #include <optional>
 #include <string>
 
-#include "base/math/to_text.h"
 #include "app/render/heat_map.h"
 #include "app/render/shade_hit.h"
+#include "base/math/to_text.h"
 
 namespace raystep {
 

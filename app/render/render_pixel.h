@@ -1,10 +1,10 @@
 #pragma once
 
-#include "base/image/image.h"
-#include "base/math/types.h"
 #include "app/render/render_scene.h"
 #include "app/render/trace_log.h"
 #include "app/render/view.h"
+#include "base/image/image.h"
+#include "base/math/types.h"
 
 namespace raystep {
 

@@ -6,8 +6,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "base/math/to_text.h"
 #include "app/render/surface_point.h"
+#include "base/math/to_text.h"
 
 namespace raystep {
 

@@ -3,9 +3,9 @@
 #include <functional>
 #include <string>
 
-#include "base/image/image.h"
 #include "app/render/render_scene.h"
 #include "app/render/view.h"
+#include "base/image/image.h"
 
 namespace raystep {
 

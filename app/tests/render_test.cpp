@@ -9,8 +9,8 @@
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "base/math/to_text.h"
 #include "app/render/render_pixel.h"
+#include "base/math/to_text.h"
 #include "base/scene/scene_loader.h"
 #include "base/testing/catch.h"
 

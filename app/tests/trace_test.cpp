@@ -44,7 +44,8 @@ TEST_CASE("trace: the rays view stops after the camera ray", "[core]") {
 
 TEST_CASE("trace: a mesh's misses are counted, not listed one by one", "[core]") {
     std::string text = "size 3 3\ncamera 0 0 5 0 0 0 0 1 0 45\n";
-    for (int k = 0; k < 100; ++k) text += "sphere " + std::to_string(10 + k) + " 0 0 0.5\n";
+    for (int k = 0; k < 100; ++k)
+        text += "sphere " + std::to_string(10 + k) + " 0 0 0.5\n";
     text += "sphere 0 0 0 1\n";
     const std::vector<std::string> lines = trace(text, View::depth, 1, 1);
     REQUIRE(lines.size() == 5);

@@ -20,7 +20,8 @@ TriangleMesh load_mesh(const std::filesystem::path& path) {
         throw InputError(path.string(), 0, "not a regular file");
     }
     std::string extension = path.extension().string();
-    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    for (char& c : extension)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (extension == ".obj") return load_obj_mesh(path);
     if (extension == ".off") return load_off_mesh(path);
     throw InputError(path.string(), 0,

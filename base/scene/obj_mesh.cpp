@@ -32,8 +32,9 @@ void check_obj_lines(const std::filesystem::path& path) {
         const TextPosition where{name, line};
         if (fields[0] == "v") {
             if (fields.size() < 4) {
-                throw InputError(name, line, "a vertex needs 3 coordinates, this one has " +
-                                                 std::to_string(fields.size() - 1));
+                throw InputError(name, line,
+                                 "a vertex needs 3 coordinates, this one has " +
+                                     std::to_string(fields.size() - 1));
             }
             for (std::size_t k = 1; k < fields.size(); ++k) {
                 parse_finite_number(fields[k], where, "a vertex coordinate");
@@ -41,8 +42,9 @@ void check_obj_lines(const std::filesystem::path& path) {
             ++vertices;
         } else if (fields[0] == "f") {
             if (fields.size() < 4) {
-                throw InputError(name, line, "a face needs at least 3 vertices, this one has " +
-                                                 std::to_string(fields.size() - 1));
+                throw InputError(name, line,
+                                 "a face needs at least 3 vertices, this one has " +
+                                     std::to_string(fields.size() - 1));
             }
             for (std::size_t k = 1; k < fields.size(); ++k) {
                 // A corner is v, v/vt, v//vn or v/vt/vn; v counts from 1, or back from the last

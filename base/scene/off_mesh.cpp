@@ -14,7 +14,7 @@ namespace {
 // The OFF file line by line, skipping blank and comment lines; every record of the format is one
 // line, so a short line is an error at that line, never a borrow from the next.
 class OffLines {
-public:
+  public:
     OffLines(std::istream& in, const std::string& file) : in_(in), file_(file) {}
 
     /// The next line's fields; throws when the file ends before `what`.
@@ -30,8 +30,8 @@ public:
     /// Requires at least `count` fields on the current line.
     void require(std::size_t count, std::string_view what) const {
         if (fields_.size() < count) {
-            fail(std::string(what) + " needs " + std::to_string(count) + " numbers, this line has " +
-                 std::to_string(fields_.size()));
+            fail(std::string(what) + " needs " + std::to_string(count) +
+                 " numbers, this line has " + std::to_string(fields_.size()));
         }
     }
 
@@ -47,7 +47,7 @@ public:
         throw InputError(file_, line_, problem);
     }
 
-private:
+  private:
     std::istream& in_;
     const std::string& file_;
     std::string text_;

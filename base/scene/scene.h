@@ -47,7 +47,7 @@ struct TransformOp {
 struct TransformNode {
     std::uint32_t parent = 0;  ///< the node this op right-multiplies; the root's is itself
     TransformOp op{TransformOp::Kind::translate, Vec3(0.0), 0.0};
-    bool identity = true;      ///< this node's whole chain changes nothing
+    bool identity = true;  ///< this node's whole chain changes nothing
 };
 
 /// Where an object came from and how it is placed and shaded.

@@ -26,7 +26,8 @@ SceneFeatures scene_features(const Scene& scene) {
     features.spheres = scene.spheres.size();
     features.triangles = scene.triangles.size();
     features.meshes = scene.meshes.size();
-    for (const SceneMesh& mesh : scene.meshes) features.mesh_triangles += mesh.triangle_count;
+    for (const SceneMesh& mesh : scene.meshes)
+        features.mesh_triangles += mesh.triangle_count;
     features.planes = scene.planes.size();
     features.point_lights = scene.point_lights.size();
     features.directional_lights = scene.directional_lights.size();

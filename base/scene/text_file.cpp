@@ -9,7 +9,8 @@ namespace raystep {
 
 std::string read_text_file(const std::filesystem::path& path, const std::string& what) {
     std::error_code error;
-    if (!std::filesystem::exists(path, error)) throw InputError(path.string(), 0, what + " not found");
+    if (!std::filesystem::exists(path, error))
+        throw InputError(path.string(), 0, what + " not found");
     if (!std::filesystem::is_regular_file(path, error)) {
         throw InputError(path.string(), 0, "not a regular file");
     }

@@ -48,43 +48,55 @@ TEST_CASE("load_mesh: OBJ negative indices count back from the last vertex", "[c
 TEST_CASE("load_mesh: OFF errors name the file and the line", "[core]") {
     const std::string bad_index = (kMeshes / "bad_index.off").string();
     CHECK(error_of(kMeshes / "bad_index.off") ==
-          bad_index + ":6: vertex index 3 is out of range: the file has 3 vertices, numbered from 0");
-    CHECK_THAT(error_of(kMeshes / "bad_header.off"),
-               Catch::Matchers::Contains("bad_header.off:1: expected 'OFF' at the start, found 'OFX'"));
+          bad_index +
+              ":6: vertex index 3 is out of range: the file has 3 vertices, numbered from 0");
+    CHECK_THAT(
+        error_of(kMeshes / "bad_header.off"),
+        Catch::Matchers::Contains("bad_header.off:1: expected 'OFF' at the start, found 'OFX'"));
     CHECK_THAT(error_of(kMeshes / "truncated.off"),
                Catch::Matchers::Contains("truncated.off:5: the file ends before vertex 2 of 3"));
-    CHECK_THAT(error_of(kMeshes / "non_finite.off"),
-               Catch::Matchers::Contains("non_finite.off:4: a vertex coordinate 'inf' is not finite"));
+    CHECK_THAT(
+        error_of(kMeshes / "non_finite.off"),
+        Catch::Matchers::Contains("non_finite.off:4: a vertex coordinate 'inf' is not finite"));
 }
 
 TEST_CASE("load_mesh: an OFF record is one line and never borrows from the next", "[core]") {
     CHECK_THAT(error_of(kMeshes / "short_face.off"),
                Catch::Matchers::Contains("short_face.off:6: a face of 3 vertices lists only 2"));
-    CHECK_THAT(error_of(kMeshes / "short_vertex.off"),
-               Catch::Matchers::Contains("short_vertex.off:3: a vertex needs 3 numbers, this line has 2"));
+    CHECK_THAT(
+        error_of(kMeshes / "short_vertex.off"),
+        Catch::Matchers::Contains("short_vertex.off:3: a vertex needs 3 numbers, this line has 2"));
 }
 
-TEST_CASE("load_mesh: an OFF header promising more than the file holds allocates nothing", "[core]") {
-    CHECK_THAT(error_of(kMeshes / "huge_header.off"),
-               Catch::Matchers::Contains("huge_header.off:2: the header promises 999999999999 vertices"));
+TEST_CASE("load_mesh: an OFF header promising more than the file holds allocates nothing",
+          "[core]") {
+    CHECK_THAT(
+        error_of(kMeshes / "huge_header.off"),
+        Catch::Matchers::Contains("huge_header.off:2: the header promises 999999999999 vertices"));
 }
 
 TEST_CASE("load_mesh: OBJ errors name the file and the line", "[core]") {
     CHECK_THAT(error_of(kMeshes / "bad_index.obj"),
-               Catch::Matchers::Contains("bad_index.obj:4: vertex index 4 is out of range: the file has 3 vertices"));
+               Catch::Matchers::Contains(
+                   "bad_index.obj:4: vertex index 4 is out of range: the file has 3 vertices"));
     CHECK_THAT(error_of(kMeshes / "bad_coordinate.obj"),
-               Catch::Matchers::Contains("bad_coordinate.obj:2: a vertex coordinate 'abc' is not a number"));
+               Catch::Matchers::Contains(
+                   "bad_coordinate.obj:2: a vertex coordinate 'abc' is not a number"));
     CHECK_THAT(error_of(kMeshes / "short_face.obj"),
-               Catch::Matchers::Contains("short_face.obj:4: a face needs at least 3 vertices, this one has 2"));
-    CHECK_THAT(error_of(kMeshes / "huge_index.obj"),
-               Catch::Matchers::Contains("huge_index.obj:4: vertex index 99999999999 is out of range"));
-    CHECK_THAT(error_of(kMeshes / "bad_relative_index.obj"),
-               Catch::Matchers::Contains("bad_relative_index.obj:4: vertex index -4 is out of range"));
+               Catch::Matchers::Contains(
+                   "short_face.obj:4: a face needs at least 3 vertices, this one has 2"));
+    CHECK_THAT(
+        error_of(kMeshes / "huge_index.obj"),
+        Catch::Matchers::Contains("huge_index.obj:4: vertex index 99999999999 is out of range"));
+    CHECK_THAT(
+        error_of(kMeshes / "bad_relative_index.obj"),
+        Catch::Matchers::Contains("bad_relative_index.obj:4: vertex index -4 is out of range"));
 }
 
 TEST_CASE("load_mesh: an unknown extension, a missing file or a folder is an error", "[core]") {
     CHECK_THAT(error_of(kMeshes / "cube.ply"),
                Catch::Matchers::Contains("unknown mesh format '.ply'"));
-    CHECK_THAT(error_of(kMeshes / "missing.off"), Catch::Matchers::Contains("missing.off: not a regular file"));
+    CHECK_THAT(error_of(kMeshes / "missing.off"),
+               Catch::Matchers::Contains("missing.off: not a regular file"));
     CHECK_THAT(error_of(kMeshes), Catch::Matchers::Contains("not a regular file"));
 }

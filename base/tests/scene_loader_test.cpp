@@ -152,14 +152,16 @@ TEST_CASE("parse_scene: the material in force is the one an object gets", "[core
 }
 
 TEST_CASE("parse_scene: transforms right-multiply and pushTransform saves the stack", "[core]") {
-    const Scene scene = parse(kCamera +
-                              "sphere 0 0 0 1\n"
-                              "translate 1 0 0\n"
-                              "pushTransform\nrotate 0 1 0 90\nscale 2 2 2\nsphere 0 0 0 1\npopTransform\n"
-                              "sphere 0 0 0 1\n");
+    const Scene scene =
+        parse(kCamera +
+              "sphere 0 0 0 1\n"
+              "translate 1 0 0\n"
+              "pushTransform\nrotate 0 1 0 90\nscale 2 2 2\nsphere 0 0 0 1\npopTransform\n"
+              "sphere 0 0 0 1\n");
     REQUIRE(scene.spheres.size() == 3);
     CHECK(scene.spheres[0].attributes.transform == 0);  // the identity
-    const std::vector<TransformOp> inner = transform_ops(scene, scene.spheres[1].attributes.transform);
+    const std::vector<TransformOp> inner =
+        transform_ops(scene, scene.spheres[1].attributes.transform);
     REQUIRE(inner.size() == 3);
     CHECK(inner[0].kind == TransformOp::Kind::translate);
     CHECK(inner[0].vector == Vec3(1, 0, 0));
@@ -167,14 +169,16 @@ TEST_CASE("parse_scene: transforms right-multiply and pushTransform saves the st
     CHECK(inner[1].vector == Vec3(0, 1, 0));
     CHECK(inner[1].angle_degrees == 90.0);
     CHECK(inner[2].kind == TransformOp::Kind::scale);
-    const std::vector<TransformOp> outer = transform_ops(scene, scene.spheres[2].attributes.transform);
+    const std::vector<TransformOp> outer =
+        transform_ops(scene, scene.spheres[2].attributes.transform);
     REQUIRE(outer.size() == 1);  // popTransform restored "translate 1 0 0"
     CHECK(outer[0].vector == Vec3(1, 0, 0));
 }
 
 TEST_CASE("parse_scene: objects under one stack state share one transform", "[core]") {
-    const Scene scene = parse(kCamera + "translate 0 1 0\nsphere 0 0 0 1\nsphere 1 0 0 1\n"
-                                        "pushTransform\nsphere 2 0 0 1\npopTransform\n");
+    const Scene scene = parse(kCamera +
+                              "translate 0 1 0\nsphere 0 0 0 1\nsphere 1 0 0 1\n"
+                              "pushTransform\nsphere 2 0 0 1\npopTransform\n");
     const std::uint32_t shared = scene.spheres[0].attributes.transform;
     CHECK(shared != 0);
     CHECK(scene.spheres[1].attributes.transform == shared);
@@ -182,7 +186,8 @@ TEST_CASE("parse_scene: objects under one stack state share one transform", "[co
 }
 
 TEST_CASE("parse_scene: transforms that change nothing need no matrix", "[core]") {
-    const Scene scene = parse(kCamera + "translate 0 0 0\nscale 1 1 1\nrotate 0 0 1 0\nsphere 0 0 0 1\n");
+    const Scene scene =
+        parse(kCamera + "translate 0 0 0\nscale 1 1 1\nrotate 0 0 1 0\nsphere 0 0 0 1\n");
     CHECK(scene.spheres[0].attributes.transform == 0);
 }
 
@@ -191,7 +196,8 @@ TEST_CASE("parse_scene: a deep transform stack costs memory in proportion to the
     // nested pushTransform/translate pairs with a sphere each once took 8 GB.
     std::ostringstream text;
     text << kCamera;
-    for (int k = 0; k < 20000; ++k) text << "pushTransform\ntranslate 0 0 1\nsphere 0 0 0 1\n";
+    for (int k = 0; k < 20000; ++k)
+        text << "pushTransform\ntranslate 0 0 1\nsphere 0 0 0 1\n";
     const Scene scene = parse(text.str());
     REQUIRE(scene.spheres.size() == 20000);
     CHECK(scene.transforms.size() == 20001);  // the root and one node per translate

@@ -38,10 +38,11 @@ ClosedMesh icosphere(int levels) {
     ClosedMesh mesh;
     // The icosahedron: the cyclic permutations of (0, +-1, +-phi).
     const double phi = (1.0 + std::sqrt(5.0)) / 2.0;
-    const Vec3 corners[12] = {{-1, phi, 0}, {1, phi, 0},  {-1, -phi, 0}, {1, -phi, 0},
-                              {0, -1, phi}, {0, 1, phi},  {0, -1, -phi}, {0, 1, -phi},
-                              {phi, 0, -1}, {phi, 0, 1},  {-phi, 0, -1}, {-phi, 0, 1}};
-    for (const Vec3& c : corners) mesh.vertices.push_back(glm::normalize(c));
+    const Vec3 corners[12] = {{-1, phi, 0}, {1, phi, 0}, {-1, -phi, 0}, {1, -phi, 0},
+                              {0, -1, phi}, {0, 1, phi}, {0, -1, -phi}, {0, 1, -phi},
+                              {phi, 0, -1}, {phi, 0, 1}, {-phi, 0, -1}, {-phi, 0, 1}};
+    for (const Vec3& c : corners)
+        mesh.vertices.push_back(glm::normalize(c));
     mesh.faces = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
                   {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
                   {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},

@@ -15,8 +15,8 @@ struct ClosedMesh {
     std::vector<std::array<std::uint32_t, 3>> faces;  ///< counter-clockwise seen from outside
 
     struct Edge {
-        std::uint32_t a, b;         ///< its vertices
-        std::uint32_t faces[2];     ///< the two faces that share it
+        std::uint32_t a, b;      ///< its vertices
+        std::uint32_t faces[2];  ///< the two faces that share it
     };
     std::vector<Edge> edges;
     std::vector<std::vector<std::uint32_t>> vertex_faces;  ///< the fan around each vertex

@@ -4,8 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "base/image/image_io.h"
 #include "app/render/tile_renderer.h"
+#include "base/image/image_io.h"
 #include "base/scene/scene_loader.h"
 
 namespace raystep::grade {
@@ -17,8 +17,8 @@ namespace {
 // What a student's repository leaves out, relative to the repository's root.
 bool withheld(const fs::path& relative) {
     const std::string first = relative.begin()->string();
-    if (first == "solutions" || first == "studies" || first == "grader" || first == ".git" || first == ".ci" ||
-        first == "build" || first == "out") {
+    if (first == "solutions" || first == "studies" || first == "grader" || first == ".git" ||
+        first == ".ci" || first == "build" || first == "out") {
         return true;
     }
     return relative == fs::path("docs/instructor.md") || relative == fs::path("scenes/meshes");
@@ -26,7 +26,8 @@ bool withheld(const fs::path& relative) {
 
 std::size_t copy_tree(const fs::path& source, const fs::path& output) {
     std::size_t files = 0;
-    for (auto it = fs::recursive_directory_iterator(source); it != fs::recursive_directory_iterator(); ++it) {
+    for (auto it = fs::recursive_directory_iterator(source);
+         it != fs::recursive_directory_iterator(); ++it) {
         const fs::path relative = fs::relative(it->path(), source);
         if (withheld(relative)) {
             if (it->is_directory()) it.disable_recursion_pending();
@@ -49,7 +50,8 @@ std::vector<std::string> scene_views(const fs::path& scene) {
         if (line.rfind("# views:", 0) != 0) continue;
         std::istringstream words(line.substr(8));
         std::vector<std::string> views;
-        for (std::string view; words >> view;) views.push_back(view);
+        for (std::string view; words >> view;)
+            views.push_back(view);
         return views;
     }
     return {"full"};
@@ -59,7 +61,8 @@ std::vector<std::string> scene_views(const fs::path& scene) {
 
 ReleaseSummary make_release(const fs::path& source, const fs::path& output) {
     if (fs::exists(output) && !fs::is_empty(output)) {
-        throw std::runtime_error(output.string() + " is not empty: a release goes into a new folder");
+        throw std::runtime_error(output.string() +
+                                 " is not empty: a release goes into a new folder");
     }
     fs::create_directories(output);
     ReleaseSummary summary;

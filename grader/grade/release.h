@@ -8,9 +8,9 @@ namespace raystep::grade {
 
 /// What went into a release.
 struct ReleaseSummary {
-    std::size_t files = 0;                 ///< copied from the repository
-    std::size_t reference_images = 0;      ///< rendered into scenes/
-    std::vector<std::string> skipped;      ///< scenes that could not be rendered, and why
+    std::size_t files = 0;             ///< copied from the repository
+    std::size_t reference_images = 0;  ///< rendered into scenes/
+    std::vector<std::string> skipped;  ///< scenes that could not be rendered, and why
 };
 
 /// Writes the student starter repository into `output` (which must not exist, or be empty):
@@ -20,6 +20,7 @@ struct ReleaseSummary {
 /// them, rendered with the reference into scenes/<stage>/reference/<scene>.<view>.png, so that
 /// students compare their renders with the reference's without having its code. Throws
 /// std::runtime_error when `output` is not empty or cannot be written.
-ReleaseSummary make_release(const std::filesystem::path& source, const std::filesystem::path& output);
+ReleaseSummary make_release(const std::filesystem::path& source,
+                            const std::filesystem::path& output);
 
 }  // namespace raystep::grade

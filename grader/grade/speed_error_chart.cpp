@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <fstream>
 
+#include "grader/grade/checks/stage_checks.h"
 #include "studies/speed_error/pareto_chart.h"
 #include "studies/speed_error/pareto_json.h"
-#include "grader/grade/checks/stage_checks.h"
 
 namespace raystep::grade {
 

@@ -22,7 +22,8 @@ std::vector<StageManifest> read_stage_manifests(const std::filesystem::path& sou
         }
         stages.push_back(stage);
     }
-    if (stages.empty()) throw std::runtime_error(source.string() + "/stages has no stage manifests");
+    if (stages.empty())
+        throw std::runtime_error(source.string() + "/stages has no stage manifests");
     std::sort(stages.begin(), stages.end(),
               [](const StageManifest& a, const StageManifest& b) { return a.number < b.number; });
     return stages;

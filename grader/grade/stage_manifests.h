@@ -10,8 +10,8 @@ namespace raystep::grade {
 /// lists (docs/design: the grader takes those files and nothing else).
 struct StageManifest {
     int number = 0;
-    std::string folder;               ///< "3_intersect"
-    std::vector<std::string> files;   ///< "sphere.cpp", ...
+    std::string folder;              ///< "3_intersect"
+    std::vector<std::string> files;  ///< "sphere.cpp", ...
 };
 
 /// Every stages/N_topic/manifest.txt of the repository at `source`, in stage order.

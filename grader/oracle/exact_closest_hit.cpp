@@ -15,7 +15,8 @@ double rounded(const HitTime& time) {
 }
 
 int compare(const HitTime& t1, const HitTime& t2) {
-    if (!t1.is_root && !t2.is_root) return static_cast<int>(CGAL::compare(t1.rational, t2.rational));
+    if (!t1.is_root && !t2.is_root)
+        return static_cast<int>(CGAL::compare(t1.rational, t2.rational));
 
     // A root involves a square root: evaluate both far beyond double precision instead.
     constexpr mpfr_prec_t kPrecision = 4096;
@@ -51,7 +52,8 @@ int compare(const HitTime& t1, const HitTime& t2) {
 
 Expectation expect_primitive(const Ray& ray, const CaseShape& shape) {
     if (const auto* sphere = std::get_if<Sphere>(&shape)) return expect_sphere(ray, *sphere);
-    if (const auto* triangle = std::get_if<Triangle>(&shape)) return expect_triangle(ray, *triangle);
+    if (const auto* triangle = std::get_if<Triangle>(&shape))
+        return expect_triangle(ray, *triangle);
     return expect_plane(ray, std::get<Plane>(shape));
 }
 

@@ -72,9 +72,8 @@ Expectation expect_plane(const Ray& ray, const Plane& plane) {
 
     expected.t = t;
     expected.t_tolerance = t_tolerance;
-    const Vec3 scaled =
-        plane.normal / std::max({std::abs(plane.normal.x), std::abs(plane.normal.y),
-                                 std::abs(plane.normal.z)});
+    const Vec3 scaled = plane.normal / std::max({std::abs(plane.normal.x), std::abs(plane.normal.y),
+                                                 std::abs(plane.normal.z)});
     expected.normal = scaled / glm::length(scaled);
     expected.normal_tolerance = 4.0 * kRelativeSlack;
     return expected;

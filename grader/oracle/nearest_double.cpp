@@ -11,7 +11,7 @@ constexpr mpfr_prec_t kDoublePrecision = 53;
 // MPFR emulates IEEE double when its exponent range is double's: [-1073, 1024] with 53 bits, and
 // mpfr_subnormalize after each rounding (MPFR manual, "Exponent Related Functions").
 class DoubleExponentRange {
-public:
+  public:
     DoubleExponentRange() : emin_(mpfr_get_emin()), emax_(mpfr_get_emax()) {
         mpfr_set_emin(-1073);
         mpfr_set_emax(1024);
@@ -23,34 +23,34 @@ public:
     DoubleExponentRange(const DoubleExponentRange&) = delete;
     DoubleExponentRange& operator=(const DoubleExponentRange&) = delete;
 
-private:
+  private:
     mpfr_exp_t emin_;
     mpfr_exp_t emax_;
 };
 
 // An MPFR number that frees itself.
 class Real {
-public:
+  public:
     explicit Real(mpfr_prec_t precision) { mpfr_init2(value_, precision); }
     ~Real() { mpfr_clear(value_); }
     Real(const Real&) = delete;
     Real& operator=(const Real&) = delete;
     mpfr_ptr get() { return value_; }
 
-private:
+  private:
     mpfr_t value_;
 };
 
 // A rational that frees itself.
 class Rational {
-public:
+  public:
     Rational() { mpq_init(value_); }
     ~Rational() { mpq_clear(value_); }
     Rational(const Rational&) = delete;
     Rational& operator=(const Rational&) = delete;
     mpq_ptr get() { return value_; }
 
-private:
+  private:
     mpq_t value_;
 };
 

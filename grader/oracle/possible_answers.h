@@ -17,7 +17,9 @@ struct PossibleAnswers {
 };
 
 /// The exact answer, and the other one too when `near` (within rounding of the boundary).
-inline PossibleAnswers possible(bool exact, bool near) { return {exact || near, !exact || near}; }
+inline PossibleAnswers possible(bool exact, bool near) {
+    return {exact || near, !exact || near};
+}
 
 /// Both decisions must say yes.
 inline PossibleAnswers both(PossibleAnswers a, PossibleAnswers b) {

@@ -27,6 +27,8 @@ inline double largest_coordinate(std::initializer_list<Vec3> points) {
 }
 
 /// How far a position may move: the slack of the problem's magnitude.
-inline double position_slack(double magnitude) { return kRelativeSlack * magnitude; }
+inline double position_slack(double magnitude) {
+    return kRelativeSlack * magnitude;
+}
 
 }  // namespace raystep

@@ -15,13 +15,13 @@ namespace raystep::probe {
 using Call = std::function<Json(const Json& arguments)>;
 using CallTable = std::map<std::string, Call>;
 
-void add_vector_calls(CallTable& table);      ///< stage 1
-void add_ray_calls(CallTable& table);         ///< stage 2
-void add_intersect_calls(CallTable& table);   ///< stage 3
-void add_accel_calls(CallTable& table);       ///< stage 4
-void add_transform_calls(CallTable& table);   ///< stage 5
-void add_shading_calls(CallTable& table);     ///< stage 6
-void add_recursion_calls(CallTable& table);   ///< stage 7
-void add_render_calls(CallTable& table);      ///< whole images, through every stage a view needs
+void add_vector_calls(CallTable& table);     ///< stage 1
+void add_ray_calls(CallTable& table);        ///< stage 2
+void add_intersect_calls(CallTable& table);  ///< stage 3
+void add_accel_calls(CallTable& table);      ///< stage 4
+void add_transform_calls(CallTable& table);  ///< stage 5
+void add_shading_calls(CallTable& table);    ///< stage 6
+void add_recursion_calls(CallTable& table);  ///< stage 7
+void add_render_calls(CallTable& table);     ///< whole images, through every stage a view needs
 
 }  // namespace raystep::probe

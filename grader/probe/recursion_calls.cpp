@@ -24,7 +24,8 @@ void add_recursion_calls(CallTable& table) {
     };
     table["radiance"] = [](const Json& a) {
         std::vector<std::optional<ShadedHit>> script;
-        for (const Json& step : a.at("script")) script.push_back(shaded_hit_from(step));
+        for (const Json& step : a.at("script"))
+            script.push_back(shaded_hit_from(step));
         Json asked = Json::array();
         std::size_t next = 0;
         const ShadeFunction shade = [&](const Ray& r) -> std::optional<ShadedHit> {

@@ -21,12 +21,13 @@ void add_shading_calls(CallTable& table) {
     };
     table["local_shading"] = [](const Json& a) {
         std::vector<LightSample> lights;
-        for (const Json& l : a.at(2)) lights.push_back(light_sample_from(l));
+        for (const Json& l : a.at(2))
+            lights.push_back(light_sample_from(l));
         return vec3(local_shading(material_from(a.at(0)), surface_point_from(a.at(1)), lights));
     };
     table["spawn_ray"] = [](const Json& a) {
-        return ray(spawn_ray(surface_point_from(a.at(0)), vec3_from(a.at(1)),
-                             number_from(a.at(2)), ray_offset_from(a.at(3))));
+        return ray(spawn_ray(surface_point_from(a.at(0)), vec3_from(a.at(1)), number_from(a.at(2)),
+                             ray_offset_from(a.at(3))));
     };
     table["shadow_ray"] = [](const Json& a) {
         return ray(shadow_ray(surface_point_from(a.at(0)), light_sample_from(a.at(1)),

@@ -14,7 +14,8 @@ void add_transform_calls(CallTable& table) {
     table["scaling"] = [](const Json& a) { return mat4(scaling(vec3_from(a.at(0)))); };
     table["compose"] = [](const Json& a) {
         std::vector<TransformOp> ops;
-        for (const Json& op : a) ops.push_back(transform_op_from(op));
+        for (const Json& op : a)
+            ops.push_back(transform_op_from(op));
         return transform(compose(ops));
     };
     table["ray_to_object"] = [](const Json& a) {

@@ -55,7 +55,8 @@ Vec3 vec3_from(const Json& j) {
 Json mat4(const Mat4& m) {
     Json j = Json::array();
     for (int column = 0; column < 4; ++column) {
-        for (int row = 0; row < 4; ++row) j.push_back(number(m[column][row]));
+        for (int row = 0; row < 4; ++row)
+            j.push_back(number(m[column][row]));
     }
     return j;
 }
@@ -64,7 +65,8 @@ Mat4 mat4_from(const Json& j) {
     Mat4 m;
     for (int column = 0; column < 4; ++column) {
         for (int row = 0; row < 4; ++row) {
-            m[column][row] = number_from(element(j, static_cast<std::size_t>(4 * column + row), 16));
+            m[column][row] =
+                number_from(element(j, static_cast<std::size_t>(4 * column + row), 16));
         }
     }
     return m;
@@ -84,7 +86,8 @@ Ray ray_from(const Json& j) {
 
 std::vector<Ray> rays_from(const Json& j) {
     std::vector<Ray> rays;
-    for (const Json& r : j) rays.push_back(ray_from(r));
+    for (const Json& r : j)
+        rays.push_back(ray_from(r));
     return rays;
 }
 
@@ -163,17 +166,23 @@ Plane plane_from(const Json& j) {
 
 Json primitive_list(const PrimitiveList& list) {
     Json j = {{"spheres", Json::array()}, {"triangles", Json::array()}, {"planes", Json::array()}};
-    for (const Sphere& s : list.spheres) j["spheres"].push_back(sphere(s));
-    for (const Triangle& t : list.triangles) j["triangles"].push_back(triangle(t));
-    for (const Plane& p : list.planes) j["planes"].push_back(plane(p));
+    for (const Sphere& s : list.spheres)
+        j["spheres"].push_back(sphere(s));
+    for (const Triangle& t : list.triangles)
+        j["triangles"].push_back(triangle(t));
+    for (const Plane& p : list.planes)
+        j["planes"].push_back(plane(p));
     return j;
 }
 
 PrimitiveList primitive_list_from(const Json& j) {
     PrimitiveList list;
-    for (const Json& s : field(j, "spheres")) list.spheres.push_back(sphere_from(s));
-    for (const Json& t : field(j, "triangles")) list.triangles.push_back(triangle_from(t));
-    for (const Json& p : field(j, "planes")) list.planes.push_back(plane_from(p));
+    for (const Json& s : field(j, "spheres"))
+        list.spheres.push_back(sphere_from(s));
+    for (const Json& t : field(j, "triangles"))
+        list.triangles.push_back(triangle_from(t));
+    for (const Json& p : field(j, "planes"))
+        list.planes.push_back(plane_from(p));
     return list;
 }
 
@@ -207,8 +216,10 @@ TransformOp transform_op_from(const Json& j) {
 }
 
 Json material(const Material& m) {
-    return {{"ambient", vec3(m.ambient)},   {"diffuse", vec3(m.diffuse)},
-            {"specular", vec3(m.specular)}, {"emission", vec3(m.emission)},
+    return {{"ambient", vec3(m.ambient)},
+            {"diffuse", vec3(m.diffuse)},
+            {"specular", vec3(m.specular)},
+            {"emission", vec3(m.emission)},
             {"shininess", number(m.shininess)}};
 }
 
@@ -304,7 +315,9 @@ Json case_question(const RayCase& c) {
             primitives.push_back({{"plane", plane(std::get<Plane>(p.shape))}});
         }
     }
-    return {{"index", c.index}, {"ray", ray(c.ray)}, {"primitives", primitives},
+    return {{"index", c.index},
+            {"ray", ray(c.ray)},
+            {"primitives", primitives},
             {"watertight", c.watertight}};
 }
 
@@ -329,7 +342,8 @@ RayCase case_question_from(const Json& j) {
 
 Json case_answer(const CaseAnswer& a) {
     Json hits = Json::array();
-    for (const std::optional<Hit>& h : a.hits) hits.push_back(hit(h));
+    for (const std::optional<Hit>& h : a.hits)
+        hits.push_back(hit(h));
     Json j = {{"hits", hits},
               {"closest_hit", hit(a.closest_hit)},
               {"not_implemented", a.not_implemented},
@@ -340,7 +354,8 @@ Json case_answer(const CaseAnswer& a) {
 
 CaseAnswer case_answer_from(const Json& j) {
     CaseAnswer a;
-    for (const Json& h : field(j, "hits")) a.hits.push_back(hit_from(h));
+    for (const Json& h : field(j, "hits"))
+        a.hits.push_back(hit_from(h));
     const Json& closest = field(j, "closest_primitive");
     if (!closest.is_null()) a.closest_primitive = index_from(closest);
     a.closest_hit = hit_from(field(j, "closest_hit"));

@@ -15,7 +15,12 @@ body { margin: 0; background: var(--panel); color: var(--ink);
 main { max-width: 1100px; margin: 0 auto; padding: 0 24px 32px; }
 code, pre { font: 13px/1.4 ui-monospace, "SFMono-Regular", Menlo, "DejaVu Sans Mono", monospace; }
 h1 { font-size: 22px; margin: 0 0 4px; }
-h2 { font-size: 18px; margin: 28px 0 10px; padding-bottom: 4px; border-bottom: 2px solid var(--line); }
+h2 {
+  font-size: 18px;
+  margin: 28px 0 10px;
+  padding-bottom: 4px;
+  border-bottom: 2px solid var(--line);
+}
 h3 { font-size: 16px; margin: 0; flex: 1; }
 a { color: #1f5fa8; }
 .page-head { background: var(--ink); color: #fff; padding: 20px 24px; }
@@ -40,7 +45,8 @@ th { font-weight: 600; color: var(--muted); font-size: 13px; }
 .bar { display: block; width: 100%; min-width: 120px; height: 10px; border-radius: 5px;
        background: #e6e9ed; overflow: hidden; margin-top: 6px; }
 .bar span { display: block; height: 100%; background: var(--passed); }
-.check { background: var(--paper); border: 1px solid var(--line); border-left: 5px solid var(--missing);
+.check { background: var(--paper); border: 1px solid var(--line);
+         border-left: 5px solid var(--missing);
          border-radius: 6px; padding: 12px 16px; margin: 12px 0; }
 .check.passed { border-left-color: var(--passed); }
 .check.failed { border-left-color: var(--failed); }
@@ -48,7 +54,8 @@ th { font-weight: 600; color: var(--muted); font-size: 13px; }
 .check.did-not-compile { border-left-color: var(--compile); }
 .check-head { display: flex; align-items: center; gap: 12px; }
 .badge { display: inline-block; min-width: 118px; text-align: center; padding: 2px 8px;
-         border-radius: 12px; color: #fff; font-size: 12px; font-weight: 700; text-transform: uppercase;
+         border-radius: 12px; color: #fff; font-size: 12px; font-weight: 700;
+         text-transform: uppercase;
          letter-spacing: 0.03em; background: var(--missing); white-space: nowrap; }
 .badge.passed { background: var(--passed); }
 .badge.failed { background: var(--failed); }
@@ -67,7 +74,12 @@ figure img { display: block; width: 100%; height: auto; image-rendering: pixelat
 figcaption { color: var(--muted); font-size: 13px; text-align: center; margin-top: 4px; }
 .missing-image { border: 1px dashed var(--line); color: var(--muted); padding: 24px 8px;
                  text-align: center; font-size: 13px; overflow-wrap: anywhere; }
-.counterexamples { width: 100%; margin-top: 12px; border: 1px solid var(--line); table-layout: fixed; }
+.counterexamples {
+  width: 100%;
+  margin-top: 12px;
+  border: 1px solid var(--line);
+  table-layout: fixed;
+}
 .counterexamples th:first-child { width: 36px; }
 .counterexamples td { white-space: pre-wrap; overflow-wrap: anywhere; font-size: 13px; }
 .counterexamples tr.reproduce td { background: var(--panel); border-bottom: 2px solid var(--line); }
@@ -75,8 +87,14 @@ figcaption { color: var(--muted); font-size: 13px; text-align: center; margin-to
 details { margin-top: 12px; }
 summary { cursor: pointer; color: var(--muted); font-size: 13px; }
 pre { background: #1d232b; color: #e8edf2; padding: 10px 12px; border-radius: 6px;
-      white-space: pre-wrap; overflow-wrap: anywhere; max-height: 420px; overflow: auto; margin: 6px 0 0; }
-.chart svg { max-width: 100%; height: auto; background: var(--paper); border: 1px solid var(--line); }
+      white-space: pre-wrap; overflow-wrap: anywhere; max-height: 420px; overflow: auto;
+      margin: 6px 0 0; }
+.chart svg {
+  max-width: 100%;
+  height: auto;
+  background: var(--paper);
+  border: 1px solid var(--line);
+}
 footer { color: var(--muted); font-size: 13px; margin-top: 32px; }
 @media (max-width: 720px) { .images { grid-template-columns: 1fr; } }
 )css";

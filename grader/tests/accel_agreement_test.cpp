@@ -11,8 +11,6 @@
 
 #include <glm/ext/matrix_transform.hpp>
 
-#include "studies/structures/bench_geometry.h"
-#include "studies/structures/bench_rays.h"
 #include "base/scene/mesh_loader.h"
 #include "base/testing/catch.h"
 #include "grader/families/closed_mesh.h"
@@ -20,6 +18,8 @@
 #include "solutions/4_accel/node_test.h"
 #include "stages/4_accel/bvh.h"
 #include "stages/4_accel/uniform_grid.h"
+#include "studies/structures/bench_geometry.h"
+#include "studies/structures/bench_rays.h"
 
 using namespace raystep;
 

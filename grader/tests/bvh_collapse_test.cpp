@@ -49,7 +49,8 @@ std::vector<BinaryNode> balanced_tree(std::size_t primitives, bool shared) {
 // A leaf, then the rest: as deep as a binary tree over n primitives can be.
 std::vector<BinaryNode> chain_tree(std::size_t primitives) {
     std::vector<BinaryNode> tree;
-    add_subtree(tree, 0, primitives, false, [](std::size_t begin, std::size_t) { return begin + 1; });
+    add_subtree(tree, 0, primitives, false,
+                [](std::size_t begin, std::size_t) { return begin + 1; });
     return tree;
 }
 

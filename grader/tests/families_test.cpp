@@ -10,7 +10,8 @@
 
 using namespace raystep;
 
-TEST_CASE("icosphere: closed, every edge shared by two faces, vertices on the unit sphere", "[families]") {
+TEST_CASE("icosphere: closed, every edge shared by two faces, vertices on the unit sphere",
+          "[families]") {
     const ClosedMesh mesh = icosphere(2);
     CHECK(mesh.faces.size() == 320);
     CHECK(mesh.vertices.size() == 162);
@@ -19,8 +20,10 @@ TEST_CASE("icosphere: closed, every edge shared by two faces, vertices on the un
         CAPTURE(edge.a, edge.b);
         CHECK(edge.faces[0] != edge.faces[1]);
     }
-    for (const Vec3& v : mesh.vertices) CHECK(glm::length(v) == Approx(1.0));
-    for (const auto& fan : mesh.vertex_faces) CHECK((fan.size() == 5 || fan.size() == 6));
+    for (const Vec3& v : mesh.vertices)
+        CHECK(glm::length(v) == Approx(1.0));
+    for (const auto& fan : mesh.vertex_faces)
+        CHECK((fan.size() == 5 || fan.size() == 6));
 }
 
 TEST_CASE("generate_cases: a case depends only on the seed and its index", "[families]") {
@@ -42,7 +45,8 @@ TEST_CASE("generate_cases: a case depends only on the seed and its index", "[fam
 }
 
 TEST_CASE("shared-edge and shared-vertex cases share their vertices bit for bit", "[families]") {
-    for (const char* name : {"shared-edges", "shared-edges-far", "shared-vertices", "shared-vertices-far"}) {
+    for (const char* name :
+         {"shared-edges", "shared-edges-far", "shared-vertices", "shared-vertices-far"}) {
         CAPTURE(name);
         const CaseFamily family = generate_cases(*find_stage3_family(name), 3, 50);
         for (const RayCase& ray_case : family.cases) {
@@ -62,7 +66,8 @@ TEST_CASE("shared-edge and shared-vertex cases share their vertices bit for bit"
     }
 }
 
-TEST_CASE("a shared group is watertight exactly when all its triangles face the ray one way", "[families]") {
+TEST_CASE("a shared group is watertight exactly when all its triangles face the ray one way",
+          "[families]") {
     for (const char* name : {"shared-edges", "shared-vertices-far"}) {
         CAPTURE(name);
         const CaseFamily family = generate_cases(*find_stage3_family(name), 4, 400);
@@ -94,7 +99,8 @@ TEST_CASE("the far families really are 1e5 to 1e6 from the origin", "[families]"
     }
 }
 
-TEST_CASE("in-plane rays are in the triangle's plane exactly, and the oracle says miss", "[families]") {
+TEST_CASE("in-plane rays are in the triangle's plane exactly, and the oracle says miss",
+          "[families]") {
     CaseFamily family = generate_cases(*find_stage3_family("in-plane"), 11, 100);
     decide_cases(family);
     for (const RayCase& ray_case : family.cases) {

@@ -22,7 +22,9 @@ const double kInf = std::numeric_limits<double>::infinity();
 // The right triangle (0,0,0) (1,0,0) (0,1,0) in the z = 0 plane.
 const Triangle kUnitTriangle{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
 
-Ray down_at(double x, double y) { return {{x, y, 2}, {0, 0, -1}}; }
+Ray down_at(double x, double y) {
+    return {{x, y, 2}, {0, 0, -1}};
+}
 
 double nearest(const char* rational) {
     const mpq_class q(rational);
@@ -60,7 +62,8 @@ TEST_CASE("nearest_double: subnormals and overflow round as IEEE doubles do", "[
     CHECK(nearest_double(huge.get_mpq_t()) == kInf);
 }
 
-TEST_CASE("nearest_double_of_root: irrational roots at rising precision, rational ones exactly", "[oracle]") {
+TEST_CASE("nearest_double_of_root: irrational roots at rising precision, rational ones exactly",
+          "[oracle]") {
     // t^2 - 2 = 0: a = 1, b = 0, c = -2.
     CHECK(root("1", "0", "-2", false) == 1.4142135623730951);
     CHECK(root("1", "0", "-2", true) == -1.4142135623730951);
@@ -84,7 +87,9 @@ TEST_CASE("expect_triangle: a ray through the interior hits, away from any bound
     CHECK(e.t_tolerance < 1e-12);  // the budget at this scale is about 1e-14
 }
 
-TEST_CASE("expect_triangle: t and barycentrics are the exact values rounded, not double arithmetic's", "[oracle]") {
+TEST_CASE(
+    "expect_triangle: t and barycentrics are the exact values rounded, not double arithmetic's",
+    "[oracle]") {
     // Aimed at 0.3 p0 + 0.3 p1 + 0.4 p2 from 1 unit of t away. Exactly, t = 1; the double
     // expression (p0 - A) . N / (D . N) gives 0.9999999999999998.
     const Triangle tri{{0.492, 0.967, 1.181}, {1.77, 0.96, 1.689}, {-1.884, -0.138, 1.773}};
@@ -97,12 +102,14 @@ TEST_CASE("expect_triangle: t and barycentrics are the exact values rounded, not
 
     // And the other way: exactly 0.9999999999999999 where double arithmetic gives 1.
     const Triangle other{{0.47, -1.493, -1.993}, {1.486, -1.162, -1.138}, {1.93, 1.49, -0.843}};
-    const Ray other_ray{{0.923, 0.078, 5.356}, {0.43579999999999997, -0.27849999999999997, -6.6325}};
+    const Ray other_ray{{0.923, 0.078, 5.356},
+                        {0.43579999999999997, -0.27849999999999997, -6.6325}};
     CHECK(expect_triangle(other_ray, other).t == 0.9999999999999999);
 }
 
 TEST_CASE("expect_triangle: points on an edge or a vertex hit, near the boundary", "[oracle]") {
-    for (const Ray& ray : {down_at(0.5, 0.0), down_at(0.0, 0.5), down_at(0.5, 0.5), down_at(0, 0)}) {
+    for (const Ray& ray :
+         {down_at(0.5, 0.0), down_at(0.0, 0.5), down_at(0.5, 0.5), down_at(0, 0)}) {
         CAPTURE(ray.origin.x, ray.origin.y);
         const Expectation e = expect_triangle(ray, kUnitTriangle);
         CHECK(e.hit);
@@ -128,7 +135,8 @@ TEST_CASE("expect_triangle: a miss within rounding of an edge may go either way"
     CHECK(e.t == 2.0);  // where a nearby ray would hit
 }
 
-TEST_CASE("expect_triangle: degenerate triangles and zero directions miss, by the contract", "[oracle]") {
+TEST_CASE("expect_triangle: degenerate triangles and zero directions miss, by the contract",
+          "[oracle]") {
     const Expectation collinear = expect_triangle(down_at(1, 1), {{0, 0, 0}, {1, 1, 0}, {2, 2, 0}});
     CHECK_FALSE(collinear.hit);
     CHECK_FALSE(collinear.near_boundary);
@@ -146,7 +154,8 @@ TEST_CASE("expect_triangle: a ray in the triangle's plane misses, near the bound
 
 TEST_CASE("expect_triangle: t_min and t_max cut exactly, with rounding near them", "[oracle]") {
     CHECK(expect_triangle({{0.2, 0.2, 2}, {0, 0, -1}, 0.0, 2.0}, kUnitTriangle).hit);
-    const Expectation short_ray = expect_triangle({{0.2, 0.2, 2}, {0, 0, -1}, 0.0, 1.5}, kUnitTriangle);
+    const Expectation short_ray =
+        expect_triangle({{0.2, 0.2, 2}, {0, 0, -1}, 0.0, 1.5}, kUnitTriangle);
     CHECK_FALSE(short_ray.hit);
     CHECK_FALSE(short_ray.near_boundary);
     const Expectation just_short =
@@ -171,7 +180,8 @@ TEST_CASE("expect_sphere: from inside, the far side", "[oracle]") {
     CHECK_THAT(e.normal, IsNear(Vec3(1, 0, 0), 1e-15));
 }
 
-TEST_CASE("expect_sphere: a ray starting on the surface may see t = 0 or the far side", "[oracle]") {
+TEST_CASE("expect_sphere: a ray starting on the surface may see t = 0 or the far side",
+          "[oracle]") {
     // Roots 0 and 2: exactly, t = 0 is in [0, inf); after rounding a test may put it just below.
     const Expectation e = expect_sphere({{0, 0, 1}, {0, 0, -1}}, {{0, 0, 0}, 1.0});
     CHECK(e.hit);
@@ -226,7 +236,9 @@ TEST_CASE("expect_plane: hits ahead, misses behind, parallel is near the boundar
     CHECK(parallel.near_boundary);
 }
 
-TEST_CASE("exact_closest_primitive: the nearest exact hit, ties to the earlier in closest_hit's order", "[oracle]") {
+TEST_CASE(
+    "exact_closest_primitive: the nearest exact hit, ties to the earlier in closest_hit's order",
+    "[oracle]") {
     const Ray ray{{0, 0, 0}, {0, 0, -1}};
     const std::vector<CaseShape> shapes = {
         Plane{{0, 0, -20}, {0, 0, 1}},
@@ -246,6 +258,7 @@ TEST_CASE("exact_closest_primitive: the nearest exact hit, ties to the earlier i
 TEST_CASE("exact_closest_primitive: roots compared beyond double precision", "[oracle]") {
     // Radii 1 and 1 + 2^-52: near sides at t = 4 and 4 - 2^-52, which both round to 4.
     const Ray ray{{0, 0, 5}, {0, 0, -1}};
-    const std::vector<CaseShape> shapes = {Sphere{{0, 0, 0}, 1.0}, Sphere{{0, 0, 0}, 1.0 + 0x1p-52}};
+    const std::vector<CaseShape> shapes = {Sphere{{0, 0, 0}, 1.0},
+                                           Sphere{{0, 0, 0}, 1.0 + 0x1p-52}};
     CHECK(exact_closest_primitive(ray, shapes) == 1);
 }

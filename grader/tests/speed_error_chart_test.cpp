@@ -5,10 +5,10 @@
 #include <filesystem>
 #include <fstream>
 
-#include "studies/speed_error/pareto_json.h"
 #include "base/testing/catch.h"
 #include "base/testing/scratch_folder.h"
 #include "grader/grade/checks/stage_checks.h"
+#include "studies/speed_error/pareto_json.h"
 
 using namespace raystep;
 using namespace raystep::grade;

@@ -30,7 +30,6 @@ struct UniformGrid::Impl {
 
 namespace {
 
-
 // How far beyond its box a primitive is entered in cells. Two roundings must not lose a hit that
 // closest_hit finds:
 // - the point A + t D of a computed hit can lie a little outside its primitive's box: t is
@@ -154,7 +153,8 @@ glm::ivec3 grid_resolution(const Aabb& bounds, std::size_t n) {
     for (int axis = 0; axis < 3; ++axis) {
         if (!shares[axis]) continue;
         const double exact = std::exp(std::log(extent[axis]) + log_k);
-        cells[axis] = static_cast<int>(std::clamp(std::round(exact), 1.0, static_cast<double>(kMaxCellsPerAxis)));
+        cells[axis] = static_cast<int>(
+            std::clamp(std::round(exact), 1.0, static_cast<double>(kMaxCellsPerAxis)));
     }
     return cells;
 }

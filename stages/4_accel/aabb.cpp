@@ -1,7 +1,7 @@
 // Stage 4: the slab test. Handout: docs/stage4.md.
 
-#include "base/errors/not_implemented.h"
 #include "stages/4_accel/aabb.h"
+#include "base/errors/not_implemented.h"
 
 namespace raystep {
 

@@ -51,6 +51,8 @@ bool Bvh::occluded(const Ray& ray, TraversalStats* stats) const {
     RAYSTEP_TODO(4, "Bvh::occluded", "Shadow rays need any hit");
 }
 
-std::size_t Bvh::node_count() const { RAYSTEP_TODO(4, "Bvh::node_count", "Building a BVH"); }
+std::size_t Bvh::node_count() const {
+    RAYSTEP_TODO(4, "Bvh::node_count", "Building a BVH");
+}
 
 }  // namespace raystep

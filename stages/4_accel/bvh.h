@@ -19,7 +19,7 @@ enum class BvhSplit {
 /// unbounded and stay outside: test them separately). Its layout is the implementation's own
 /// (Bvh::Impl, in bvh.cpp).
 class Bvh {
-public:
+  public:
     /// Builds over a copy of the list's spheres and triangles.
     Bvh(const PrimitiveList& primitives, BvhSplit split);
     ~Bvh();
@@ -40,7 +40,7 @@ public:
 
     struct Impl;
 
-private:
+  private:
     std::unique_ptr<Impl> impl_;
 };
 

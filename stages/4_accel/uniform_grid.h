@@ -15,7 +15,7 @@ namespace raystep {
 /// cell by cell along the ray with the 3D-DDA of Amanatides and Woo (1987). Its layout is the
 /// implementation's own (UniformGrid::Impl, in uniform_grid.cpp).
 class UniformGrid {
-public:
+  public:
     /// Builds over a copy of the list's spheres and triangles, with the resolution of
     /// grid_resolution.
     explicit UniformGrid(const PrimitiveList& primitives);
@@ -36,7 +36,7 @@ public:
 
     struct Impl;
 
-private:
+  private:
     std::unique_ptr<Impl> impl_;
 };
 

@@ -4,12 +4,12 @@
 
 #include <glm/geometric.hpp>
 
-#include "studies/epsilon/exact_visibility.h"
-#include "base/errors/not_implemented.h"
 #include "app/render/render_scene.h"
 #include "app/render/surface_point.h"
+#include "base/errors/not_implemented.h"
 #include "base/scene/scene_features.h"
 #include "base/scene/scene_loader.h"
+#include "studies/epsilon/exact_visibility.h"
 
 namespace raystep {
 

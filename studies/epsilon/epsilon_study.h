@@ -7,9 +7,9 @@
 namespace raystep {
 
 // The epsilon study of docs/stage6.md, "Measuring acne": on each acne scene, every pixel's light
-// as the exact answer has it (studies/epsilon/exact_visibility.h) against what the renderer's shadow
-// ray says, for each ray offset rule and epsilon. The measuring is in epsilon_measure.h (it runs
-// the stages); this is the data and how it is printed.
+// as the exact answer has it (studies/epsilon/exact_visibility.h) against what the renderer's
+// shadow ray says, for each ray offset rule and epsilon. The measuring is in epsilon_measure.h (it
+// runs the stages); this is the data and how it is printed.
 
 /// Shadow rays that got it wrong, of the pixels where the exact answer is decided.
 struct OffsetErrors {

@@ -2,10 +2,10 @@
 
 #include <glm/geometric.hpp>
 
-#include "studies/common/bench_timing.h"
 #include "app/render/render_scene.h"
 #include "app/render/surface_point.h"
 #include "base/scene/scene_loader.h"
+#include "studies/common/bench_timing.h"
 
 namespace raystep {
 

@@ -8,17 +8,17 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "studies/epsilon/epsilon_measure.h"
+#include "app/check/case_file.h"
 #include "studies/common/machine_description.h"
 #include "studies/common/markdown_table.h"
 #include "studies/common/number_text.h"
+#include "studies/common/svg_chart.h"
+#include "studies/epsilon/epsilon_measure.h"
 #include "studies/epsilon/offset_cost.h"
 #include "studies/speed_error/pareto_chart.h"
 #include "studies/speed_error/pareto_json.h"
 #include "studies/speed_error/pareto_reference_methods.h"
 #include "studies/speed_error/pareto_registry.h"
-#include "studies/common/svg_chart.h"
-#include "app/check/case_file.h"
 
 namespace raystep {
 

@@ -6,11 +6,11 @@
 #include <stdexcept>
 #include <variant>
 
+#include "app/check/case_scoring.h"
+#include "app/check/check_report.h"
 #include "studies/common/bench_timing.h"
 #include "studies/common/markdown_table.h"
 #include "studies/common/number_text.h"
-#include "app/check/case_scoring.h"
-#include "app/check/check_report.h"
 
 namespace raystep {
 

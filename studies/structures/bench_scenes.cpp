@@ -4,9 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "studies/common/number_text.h"
 #include "studies/structures/bench_geometry.h"
 #include "studies/structures/bench_rays.h"
-#include "studies/common/number_text.h"
 
 namespace raystep {
 

@@ -2,8 +2,8 @@
 
 #include <numeric>
 
-#include "studies/common/number_text.h"
 #include "base/math/to_text.h"
+#include "studies/common/number_text.h"
 
 namespace raystep {
 

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <set>
 
-#include "studies/structures/bench_rays.h"
-#include "studies/structures/bumpy_torus.h"
 #include "studies/common/markdown_table.h"
 #include "studies/common/number_text.h"
+#include "studies/structures/bench_rays.h"
+#include "studies/structures/bumpy_torus.h"
 
 namespace raystep {
 

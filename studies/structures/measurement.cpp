@@ -7,10 +7,10 @@
 #include <memory>
 #include <optional>
 
+#include "base/errors/not_implemented.h"
 #include "studies/common/bench_timing.h"
 #include "studies/common/number_text.h"
 #include "studies/structures/ray_chunks.h"
-#include "base/errors/not_implemented.h"
 
 namespace raystep {
 

@@ -2,8 +2,8 @@
 
 #include <vector>
 
-#include "studies/structures/bench_structure.h"
 #include "stages/4_accel/bvh.h"
+#include "studies/structures/bench_structure.h"
 
 namespace raystep {
 

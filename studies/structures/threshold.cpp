@@ -6,12 +6,12 @@
 #include <limits>
 #include <memory>
 
-#include "studies/structures/bench_geometry.h"
-#include "studies/structures/bench_rays.h"
+#include "base/errors/not_implemented.h"
 #include "studies/common/bench_timing.h"
 #include "studies/common/markdown_table.h"
 #include "studies/common/number_text.h"
-#include "base/errors/not_implemented.h"
+#include "studies/structures/bench_geometry.h"
+#include "studies/structures/bench_rays.h"
 
 namespace raystep {
 

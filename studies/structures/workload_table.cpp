@@ -2,9 +2,9 @@
 
 #include <cstdint>
 
-#include "studies/structures/cross_check.h"
 #include "studies/common/markdown_table.h"
 #include "studies/common/number_text.h"
+#include "studies/structures/cross_check.h"
 
 namespace raystep {
 

@@ -2,8 +2,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "studies/structures/bumpy_torus.h"
 #include "base/testing/catch.h"
+#include "studies/structures/bumpy_torus.h"
 
 using namespace raystep;
 

@@ -5,9 +5,9 @@
 #include <set>
 #include <stdexcept>
 
-#include "studies/structures/ray_chunks.h"
 #include "base/errors/not_implemented.h"
 #include "base/testing/catch.h"
+#include "studies/structures/ray_chunks.h"
 #include "studies/tests/bench_fakes.h"
 
 using namespace raystep;

@@ -1,6 +1,6 @@
-#include "studies/structures/growth.h"
 #include "studies/common/markdown_table.h"
 #include "studies/common/number_text.h"
+#include "studies/structures/growth.h"
 #include "studies/structures/speed_bar.h"
 #include "studies/structures/threshold.h"
 #include "studies/structures/workload_table.h"

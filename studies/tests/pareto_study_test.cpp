@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
+#include "app/check/case_file.h"
+#include "base/testing/catch.h"
 #include "studies/speed_error/pareto_chart.h"
 #include "studies/speed_error/pareto_json.h"
 #include "studies/speed_error/pareto_reference_methods.h"
-#include "app/check/case_file.h"
-#include "base/testing/catch.h"
 
 using namespace raystep;
 

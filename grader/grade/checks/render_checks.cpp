@@ -6,8 +6,8 @@
 #include <cmath>
 #include <filesystem>
 
-#include "base/image/image_io.h"
 #include "app/render/tile_renderer.h"
+#include "base/image/image_io.h"
 #include "base/scene/scene_loader.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"

@@ -28,10 +28,10 @@ constexpr std::uint64_t kSeed = 0x5EED'5EED'2026;
 // Leaks are a few percent of these rays for the lecture methods: 2,000 cases resolve that to
 // half a percent.
 constexpr std::size_t kCases = 2000;
-// The timed pairs, the family's first as the bench takes them (studies/speed_error/pareto_study.cpp),
-// each tested kPasses times: 20 million tests, half a second or more of the reference's Cramer,
-// so that the sandbox's start-up time, which varies by tens of milliseconds from run to run and
-// is subtracted, stays small beside it.
+// The timed pairs, the family's first as the bench takes them
+// (studies/speed_error/pareto_study.cpp), each tested kPasses times: 20 million tests, half a
+// second or more of the reference's Cramer, so that the sandbox's start-up time, which varies by
+// tens of milliseconds from run to run and is subtracted, stays small beside it.
 constexpr std::size_t kTimedPairs = 2048;
 constexpr int kPasses = 10000;
 
