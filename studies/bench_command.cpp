@@ -205,7 +205,7 @@ CLI::App* add_bench_command(CLI::App& app, BenchArguments& arguments) {
     CLI::App* command = app.add_subcommand(
         "bench",
         "Measure the acceleration structures: build time, Mrays/s, nodes and tests per ray "
-        "(docs/stage4.md)");
+        "(docs/measurements/stage4-bench.md)");
     command
         ->add_option("--workload", arguments.workloads,
                      "Run only this scene (both its ray sets) or workload; may be repeated")

@@ -48,12 +48,14 @@ struct Pending {
     std::uint32_t count;  ///< 0: an inner node
     float enter;
 };
+static_assert(sizeof(Pending) * kBvhStackSize <= 8192,
+              "the walk's stack array takes at most 8 KiB of the thread's stack");
 
 // The lowest bit set in `bits` (at least one is). GCC and Clang count trailing zeros in one
 // instruction; elsewhere a loop, since C++17 has no portable count. The count sits on the walk's
-// critical path, between the node test and the next node's address: against a table load it took
-// the bunny's primary rays from 9.24-9.34 to 10.0 Mrays/s, two runs each of
-// `raystep-reference bench --workload bunny --threads 1`, with four children per node.
+// critical path, between the node test and the next node's address, which is why it is not a
+// table load: the count ran the bunny's primary rays faster (`raystep-reference bench --workload
+// bunny --threads 1`; docs/measurements/stage4-bench.md, "The walk").
 inline int lowest_bit(unsigned bits) {
 #if defined(__GNUC__)
     return __builtin_ctz(bits);
@@ -76,10 +78,10 @@ Pending lowest_child(const BvhNode& node, unsigned hits, const float entry[BvhNo
 // Asks the memory system for what a child holds (the first half of its node, or its leaf's first
 // triangles) when it goes on the stack, so the read overlaps the nearer subtree's work instead of
 // stalling when the child comes off. On incoherent rays most of the tree is out of the
-// first-level cache and this is a read the walk would otherwise wait for: it took the bunny's
-// incoherent rays from about 1.8 to 2.1-2.2 Mrays/s (`raystep-reference bench --workload bunny
-// --threads 1`, four children per node). Asking for all four lines of an eight-wide node was no
-// faster. A prefetch is only a hint: it cannot fault, and changes no result.
+// first-level cache, and this is a read the walk would otherwise wait for; two lines, because
+// asking for all four of an eight-wide node was no faster (`raystep-reference bench --workload
+// bunny --threads 1` re-measures both). A prefetch is only a hint: it cannot fault, and changes
+// no result.
 inline void prefetch(const Bvh::Impl& bvh, const Pending& child) {
 #ifdef RAYSTEP_BVH_SSE2
     const char* at = child.count == 0
@@ -96,10 +98,10 @@ inline void prefetch(const Bvh::Impl& bvh, const Pending& child) {
 // Of the children the ray enters (the set bits of `hits`, at least one), returns the nearest, to
 // visit next, and pushes the others onto the stack above `top`, farthest deepest. A ray mostly
 // enters one child or two, which take no loop and at most one comparison; only three or more
-// are sorted (insertion sort). Against pushing every child and popping the nearest this runs
-// 12% fewer instructions in the walk (callgrind, bunny primary rays); the time it saves is
-// within the bench's noise, since the branches that remain depend on the ray and are
-// mispredicted about as often as those they replace.
+// are sorted (insertion sort). It runs fewer instructions than pushing every child and popping
+// the nearest, though not measurably less time: the branches that remain depend on the ray and
+// are mispredicted about as often as those they replace (`valgrind --tool=callgrind
+// raystep-reference bench --quick --workload bunny-primary --threads 1` counts them).
 inline Pending nearest_child(const Bvh::Impl& bvh, const BvhNode& node, unsigned hits,
                              const float entry[BvhNode::kWidth], Pending* stack, int& top) {
     Pending near = lowest_child(node, hits, entry);
@@ -130,8 +132,8 @@ inline Pending nearest_child(const Bvh::Impl& bvh, const BvhNode& node, unsigned
 // the bound (after a nearer hit), and returns true to stop.
 //
 // The node test (node_test.h) takes all eight children at once, and the stack is a plain array,
-// never initialized: this loop is where the time goes (`raystep bench`, docs/stage4.md,
-// "Measured on the development machine").
+// never initialized: this loop is where a query's time goes (`raystep-reference bench --workload
+// bunny --threads 1` times it).
 template <class Visit>
 void walk(const Bvh::Impl& bvh, const Ray& ray, TraversalStats* stats, Visit visit) {
     if (bvh.slots.empty()) return;

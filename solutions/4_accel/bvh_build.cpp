@@ -14,27 +14,19 @@ namespace raystep {
 namespace {
 
 // The SAH's cost model: visiting a binary node costs 1, testing a triangle kTriangleTestCost, a
-// sphere kSphereTestCost. Measured, not guessed, with two runs each of
-// `raystep-reference bench --workload bunny --workload spheres --threads 1`, four children per
-// node:
-// - triangles: a double-precision test costs more instructions than the float box tests of
-//   a node, but the walk waits on memory and branches more than on arithmetic, and leaves of a
-//   few triangles save levels of nodes. 2.0 gave the bunny 0.58x Embree's throughput on primary
-//   rays and 0.39-0.40x on incoherent ones, 1.0 gave 0.61x and 0.43-0.44x (before lowest_bit,
-//   bvh.cpp); since then 1.0, 0.75 and 0.5 all give 0.65x and 0.43-0.46x.
-// - spheres: intersect_sphere has a square root and a division. 1.0 gave the 10,000 spheres
-//   0.76-0.79x Embree on primary rays, 2.0 gives 0.81x (incoherent rays: 0.56-0.57x both).
+// sphere kSphereTestCost. Measured, not guessed: the walk waits on memory and branches more than
+// on arithmetic, so a triangle test priced as one node (not the textbook's two) gives leaves of a
+// few triangles that save levels of nodes, and ran the bunny faster; intersect_sphere's square
+// root and division make a sphere worth two. `raystep-reference bench --workload bunny --workload
+// spheres --threads 1`, in builds with each price, re-measures it
+// (docs/measurements/stage4-bench.md has the runs).
 constexpr double kTriangleTestCost = 1.0;
 constexpr double kSphereTestCost = 2.0;
+// Wald 2007's bin count: a tree nearly as good as pricing every position, in O(N) per node.
 constexpr int kBins = 16;
 // The SAH may keep up to kMaxLeafSize (bvh_binary_tree.h) primitives in a leaf when splitting
 // costs more; the median split stops at kMedianLeafSize, having no cost to weigh.
 constexpr std::size_t kMedianLeafSize = 4;
-
-// Below this depth every split is at the median, which halves: with at most 2^32 primitives the
-// tree is then at most kSahDepth + 32 deep, and the traversal's fixed stack (bvh_layout.h) holds
-// one pending node per level.
-constexpr int kSahDepth = 64;
 
 struct BuildPrimitive {
     Aabb box;
@@ -148,7 +140,7 @@ class BvhBuilder {
         // All centroids at one point: no plane separates them, so split by order, and only when
         // the leaf would be too big.
         if (!(extent[axis] > 0.0)) return count > kMaxLeafSize ? median(begin, end, axis) : begin;
-        if (split_ == BvhSplit::median || depth >= kSahDepth) {
+        if (split_ == BvhSplit::median || depth >= kBvhSahDepth) {
             return count > kMedianLeafSize ? median(begin, end, axis) : begin;
         }
 

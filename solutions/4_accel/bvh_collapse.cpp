@@ -4,10 +4,10 @@
 // programming from the leaves up (Ylitie, Karras, Laine 2017, "Efficient Incoherent Ray Traversal
 // on GPUs Through Compressed Wide BVHs"). Within a wide node's eight slots a binary subtree either
 // takes one slot, as a wide node of its own or as one leaf of all its primitives, or shares its
-// slots between its two subtrees. Opening the largest child until there were eight, as this did
-// before, left the bunny 13,485 nodes, 5,178 of them with only two children; this leaves it
-// 7,224. Its primary rays went from 0.63-0.71x Embree (most
-// runs 0.70x) to 0.72-0.73x, its incoherent rays from 0.45-0.52x to 0.49-0.56x (the runs below).
+// slots between its two subtrees. The simpler greedy collapse, opening the largest child until
+// there are eight, leaves many nodes with only two or three children; priced by the SAH, the
+// wide tree has about half as many nodes and the walk runs faster (`raystep-reference bench
+// --workload bunny --threads 1`; docs/measurements/stage4-bench.md has the runs).
 
 #include <array>
 #include <cmath>
@@ -22,11 +22,9 @@ namespace raystep {
 namespace {
 
 // Visiting a wide node, in the SAH's units (testing a triangle costs 1, bvh_build.cpp): the price
-// at which merging a subtree into one leaf beats giving it a node. Measured with interleaved runs
-// of `raystep-reference bench --workload bunny --threads 1`: 1.5, 2.0 and 3.0 all gave the bunny
-// 0.72-0.73x Embree's speed on primary rays and 0.49-0.56x on incoherent ones; 1.0, the binary
-// build's price of a node, which merges no leaves on the bunny, 0.70-0.72x and 0.48-0.54x. 2.0
-// lies in the middle of the flat range.
+// at which merging a subtree into one leaf beats giving it a node. The speed is flat from 1.5 to
+// 3 and lower at 1, the binary build's price, which merges no leaves; 2 lies in the middle of the
+// flat range (`raystep-reference bench --workload bunny --threads 1` in a build of each).
 constexpr double kWideNodeCost = 2.0;
 
 constexpr int kWidth = BvhNode::kWidth;

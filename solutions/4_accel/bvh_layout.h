@@ -2,15 +2,13 @@
 
 // The reference BVH's memory layout. The tree is built binary, as the lecture builds it, then
 // collapsed to eight children per node: a full tree then has a third as many levels, and every
-// visit is a dependent memory read and a branch the processor cannot predict, which is what
-// single-ray traversal waits on (docs/stage4.md, "Measured on the development machine"). Eight
-// rather than four took the bunny's nodes per ray from 3.5 to 2.4 (primary rays) and from 9.1 to
-// 6.1 (incoherent), its primary rays from 0.65-0.66x Embree's speed to 0.63-0.71x (most runs
-// 0.70x), its incoherent rays from 0.40-0.46x to 0.45-0.52x
-// (`raystep-reference bench --workload bunny --threads 1`, three runs with four, seven with
-// eight).
+// level is a dependent memory read and a branch the processor cannot predict, which is what
+// single-ray traversal waits on. Eight children rather than four visit fewer nodes per ray and ran
+// faster on the bunny; `raystep-reference bench --workload bunny --threads 1`, in builds with each
+// width, re-measures it (docs/measurements/stage4-bench.md has the runs).
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "stages/4_accel/bvh.h"
@@ -52,10 +50,19 @@ struct Bvh::Impl {
     std::uint32_t sphere_count = 0;
 };
 
-/// The deepest binary tree build_bvh makes is 97 levels (bvh_build.cpp, kSahDepth); collapsing
-/// keeps depth no greater, and a traversal keeps at most seven pending nodes per level (the
-/// nearest of eight children is visited at once, never pushed).
-inline constexpr int kBvhStackSize = (BvhNode::kWidth - 1) * 97;
+/// Below this depth the builder splits by the SAH, from it on at the median (bvh_build.cpp), so
+/// that no input can make the tree deeper than kBvhMaxDepth.
+inline constexpr int kBvhSahDepth = 64;
+
+/// The deepest binary tree build_bvh makes: a median split halves its primitives, and primitive
+/// ids are 32 bits, so at most that many median levels follow the SAH's. Collapsing to wide nodes
+/// makes no tree deeper.
+inline constexpr int kBvhMaxDepth =
+    kBvhSahDepth + std::numeric_limits<decltype(BvhChild::index)>::digits;
+
+/// The traversal's fixed stack: at most seven pending nodes per level of the tree (the nearest
+/// of eight children is visited at once, never pushed), over the kBvhMaxDepth + 1 levels.
+inline constexpr int kBvhStackSize = (BvhNode::kWidth - 1) * (kBvhMaxDepth + 1);
 
 /// Builds the tree over the primitives with the given split rule.
 void build_bvh(Bvh::Impl& bvh, const PrimitiveList& primitives, BvhSplit split);

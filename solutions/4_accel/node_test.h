@@ -6,14 +6,12 @@
 //
 // Each slab time (plane - origin) / D is computed as plane * scale - offset: a multiply and a
 // subtract, with scale = 1 / D and offset = origin * scale prepared once per ray. The walk waits
-// on this arithmetic at every node. Against the subtract, multiply and correction it replaced, it
-// took the bunny's primary rays that hit from 299-303 to 285-288 ns each (a harness timing
-// Bvh::closest_hit alone), and `raystep-reference bench --workload bunny --threads 1` from
-// 0.717-0.724x Embree's speed to 0.735-0.746x (primary) and from 0.49-0.56x to 0.56-0.57x
-// (incoherent). Its rounding error does not shrink with t, as (plane - origin) * scale's does: it
-// grows with the size of the numbers, |plane| |scale| and |origin| |scale|. The sizes are known
-// before the walk starts: no plane is larger than the scene's box (the node ray's
-// `plane_magnitude`), so one slack per axis covers every node:
+// on this arithmetic at every node, so two dependent operations beat a subtract, a multiply and a
+// correction (`raystep-reference bench --workload bunny --threads 1`;
+// docs/measurements/stage4-bench.md has the runs). Its rounding error does not shrink with t, as
+// (plane - origin) * scale's does: it grows with the size of the numbers, |plane| |scale| and
+// |origin| |scale|. The sizes are known before the walk starts: no plane is larger than the
+// scene's box (the node ray's `plane_magnitude`), so one slack per axis covers every node:
 // - scale is 1 / D rounded twice (double, then float): within 1.01 u of it, u = 2^-24;
 // - plane * scale rounds once more, so it is within 2.02 u |plane| |1 / D| of plane / D;
 // - the offset, computed in double and rounded to float once, is off by at most u |offset|;
@@ -36,8 +34,8 @@
 //
 // Two implementations compute the same floats, operation for operation: SSE2, which every
 // x86-64 processor has and which tests one plane of four children in one instruction, and
-// plain C++ for other processors; ChildTest is the one this build uses. grader/tests checks that
-// they agree bit for bit.
+// plain C++ for other processors; ChildTest is the one this build uses.
+// grader/tests/accel_agreement_test.cpp checks that they agree bit for bit.
 
 #include <algorithm>
 #include <cmath>

@@ -2,8 +2,8 @@
 
 #include <cmath>
 #include <limits>
-#include <random>
 
+#include "base/math/portable_random.h"
 #include "base/testing/catch.h"
 #include "stages/4_accel/aabb.h"
 
@@ -123,12 +123,11 @@ TEST_CASE("intersect_aabb: rays that touch a box's edge or corner are never lost
     // Rays from random origins aimed exactly at a corner or at a point of an edge of a box whose
     // coordinates are not round in binary: rounding in (bound - A) / D must not make the exit come
     // out before the entry.
-    std::mt19937_64 rng(41);
-    std::uniform_real_distribution<double> u(-10.0, 10.0);
+    PortableRandom random(41);
     const Aabb box{{0.1, 0.2, 0.3}, {0.7, 1.3, 2.9}};
     for (int k = 0; k < 20000; ++k) {
-        const Vec3 origin{u(rng), u(rng), u(rng)};
-        const double s = std::uniform_real_distribution<double>(0.0, 1.0)(rng);
+        const Vec3 origin = random.point(10.0);
+        const double s = random.unit();
         const Vec3 target =
             k % 2 == 0 ? box.max
                        : Vec3(box.min.x, box.min.y, box.min.z + s * (box.max.z - box.min.z));

@@ -4,9 +4,9 @@
 // with ==. Both call the same stage-3 tests; only the order differs.
 
 #include <cmath>
-#include <random>
 #include <string>
 
+#include "base/math/portable_random.h"
 #include "base/testing/catch.h"
 #include "stages/4_accel/bvh.h"
 
@@ -14,29 +14,23 @@ using namespace raystep;
 
 namespace {
 
-Vec3 random_point(std::mt19937_64& rng, double extent) {
-    std::uniform_real_distribution<double> u(-extent, extent);
-    return {u(rng), u(rng), u(rng)};
-}
-
 // n small random triangles and n / 4 spheres in [-5, 5]^3.
-PrimitiveList random_scene(std::mt19937_64& rng, int n) {
+PrimitiveList random_scene(PortableRandom& random, int n) {
     PrimitiveList list;
-    std::uniform_real_distribution<double> size(0.05, 1.0);
     for (int k = 0; k < n; ++k) {
-        const Vec3 c = random_point(rng, 5.0);
-        const double s = size(rng);
-        list.triangles.push_back({c + s * random_point(rng, 1.0), c + s * random_point(rng, 1.0),
-                                  c + s * random_point(rng, 1.0)});
+        const Vec3 c = random.point(5.0);
+        const double s = random.uniform(0.05, 1.0);
+        list.triangles.push_back(
+            {c + s * random.point(1.0), c + s * random.point(1.0), c + s * random.point(1.0)});
     }
     for (int k = 0; k < n / 4; ++k)
-        list.spheres.push_back({random_point(rng, 5.0), 0.5 * size(rng)});
+        list.spheres.push_back({random.point(5.0), 0.5 * random.uniform(0.05, 1.0)});
     return list;
 }
 
-Ray random_ray(std::mt19937_64& rng) {
-    const Vec3 origin = random_point(rng, 8.0);
-    return {origin, random_point(rng, 5.0) - origin};
+Ray random_ray(PortableRandom& random) {
+    const Vec3 origin = random.point(8.0);
+    return {origin, random.point(5.0) - origin};
 }
 
 // The BVH's answer is closest_hit's, bit for bit.
@@ -60,11 +54,11 @@ std::string split_name(BvhSplit split) {
 TEST_CASE("Bvh::closest_hit: equals closest_hit on random scenes and rays", "[stage4]") {
     for (const BvhSplit split : kSplits) {
         for (const int seed : {1, 2, 3}) {
-            std::mt19937_64 rng(static_cast<std::uint64_t>(seed));
-            const PrimitiveList list = random_scene(rng, 400);
+            PortableRandom random(static_cast<std::uint64_t>(seed));
+            const PrimitiveList list = random_scene(random, 400);
             const Bvh bvh(list, split);
             for (int k = 0; k < 500; ++k) {
-                const Ray ray = random_ray(rng);
+                const Ray ray = random_ray(random);
                 CAPTURE(split_name(split), seed, k);
                 check_same(bvh.closest_hit(ray), closest_hit(ray, list));
             }
@@ -74,18 +68,18 @@ TEST_CASE("Bvh::closest_hit: equals closest_hit on random scenes and rays", "[st
 
 TEST_CASE("Bvh::closest_hit: rays from inside the scene, axis-parallel rays, short rays",
           "[stage4]") {
-    std::mt19937_64 rng(4);
-    const PrimitiveList list = random_scene(rng, 300);
+    PortableRandom random(4);
+    const PrimitiveList list = random_scene(random, 300);
     for (const BvhSplit split : kSplits) {
         const Bvh bvh(list, split);
         for (int k = 0; k < 300; ++k) {
             CAPTURE(split_name(split), k);
-            const Vec3 origin = random_point(rng, 4.0);
+            const Vec3 origin = random.point(4.0);
             Vec3 axis(0.0);
             axis[k % 3] = k % 2 == 0 ? 1.0 : -1.0;
             const Ray axis_ray{origin, axis};
             check_same(bvh.closest_hit(axis_ray), closest_hit(axis_ray, list));
-            const Ray short_ray{origin, random_point(rng, 1.0), 0.0, 2.0};
+            const Ray short_ray{origin, random.point(1.0), 0.0, 2.0};
             check_same(bvh.closest_hit(short_ray), closest_hit(short_ray, list));
         }
     }
@@ -187,12 +181,12 @@ TEST_CASE("Bvh::closest_hit: nothing before t_min, nothing after t_max", "[stage
 }
 
 TEST_CASE("Bvh::occluded: agrees with closest_hit, before and after the first hit", "[stage4]") {
-    std::mt19937_64 rng(5);
-    const PrimitiveList list = random_scene(rng, 300);
+    PortableRandom random(5);
+    const PrimitiveList list = random_scene(random, 300);
     for (const BvhSplit split : kSplits) {
         const Bvh bvh(list, split);
         for (int k = 0; k < 300; ++k) {
-            Ray ray = random_ray(rng);
+            Ray ray = random_ray(random);
             CAPTURE(split_name(split), k);
             const std::optional<PrimitiveHit> first = closest_hit(ray, list);
             CHECK(bvh.occluded(ray) == first.has_value());
@@ -205,14 +199,14 @@ TEST_CASE("Bvh::occluded: agrees with closest_hit, before and after the first hi
 }
 
 TEST_CASE("Bvh: a ray through empty space visits few nodes and tests nothing", "[stage4]") {
-    std::mt19937_64 rng(6);
-    const PrimitiveList list = random_scene(rng, 1000);
+    PortableRandom random(6);
+    const PrimitiveList list = random_scene(random, 1000);
     const Bvh bvh(list, BvhSplit::sah);
     TraversalStats stats;
     CHECK_FALSE(bvh.closest_hit({{0, 0, 100}, {0, 0, 1}}, &stats));  // pointing away
     CHECK(stats.primitive_tests == 0);
     TraversalStats through;
-    const Ray ray = random_ray(rng);
+    const Ray ray = random_ray(random);
     bvh.closest_hit(ray, &through);
     CHECK(through.nodes > 0);
     CHECK(through.primitive_tests < 1250 / 4);  // far fewer than brute force's 1250
@@ -221,10 +215,10 @@ TEST_CASE("Bvh: a ray through empty space visits few nodes and tests nothing", "
 TEST_CASE("Bvh: the SAH tree is no slower to walk than the median tree", "[stage4]") {
     // Counted in nodes and tests, not seconds: over the same rays the SAH's estimate of the cost
     // must not lose to the median split on a scene of clustered primitives.
-    std::mt19937_64 rng(7);
-    PrimitiveList list = random_scene(rng, 2000);
+    PortableRandom random(7);
+    PrimitiveList list = random_scene(random, 2000);
     for (int k = 0; k < 2000; ++k) {  // a dense cluster beside the rest
-        const Vec3 c = Vec3(20, 0, 0) + random_point(rng, 0.5);
+        const Vec3 c = Vec3(20, 0, 0) + random.point(0.5);
         list.triangles.push_back({c, c + Vec3(0.01, 0, 0), c + Vec3(0, 0.01, 0)});
     }
     const Bvh median(list, BvhSplit::median);
@@ -232,7 +226,7 @@ TEST_CASE("Bvh: the SAH tree is no slower to walk than the median tree", "[stage
     TraversalStats median_cost;
     TraversalStats sah_cost;
     for (int k = 0; k < 2000; ++k) {
-        const Ray ray = random_ray(rng);
+        const Ray ray = random_ray(random);
         median.closest_hit(ray, &median_cost);
         sah.closest_hit(ray, &sah_cost);
     }

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <random>
 
+#include "base/math/portable_random.h"
 #include "base/testing/catch.h"
 #include "stages/4_accel/uniform_grid.h"
 
@@ -15,41 +15,34 @@ using namespace raystep;
 
 namespace {
 
-Vec3 random_point(std::mt19937_64& rng, double extent) {
-    std::uniform_real_distribution<double> u(-extent, extent);
-    return {u(rng), u(rng), u(rng)};
-}
-
 // n small random triangles, n / 4 spheres and a few large triangles across the whole scene, all in
 // [-5, 5]^3. The large ones lie in many cells: a ray meets them in one cell and hits them in
 // another.
-PrimitiveList random_scene(std::mt19937_64& rng, int n) {
+PrimitiveList random_scene(PortableRandom& random, int n) {
     PrimitiveList list;
-    std::uniform_real_distribution<double> size(0.05, 1.0);
     for (int k = 0; k < n; ++k) {
-        const Vec3 c = random_point(rng, 4.0);
-        const double s = size(rng);
-        list.triangles.push_back({c + s * random_point(rng, 1.0), c + s * random_point(rng, 1.0),
-                                  c + s * random_point(rng, 1.0)});
+        const Vec3 c = random.point(4.0);
+        const double s = random.uniform(0.05, 1.0);
+        list.triangles.push_back(
+            {c + s * random.point(1.0), c + s * random.point(1.0), c + s * random.point(1.0)});
     }
     for (int k = 0; k < 5; ++k) {
-        list.triangles.push_back(
-            {random_point(rng, 5.0), random_point(rng, 5.0), random_point(rng, 5.0)});
+        list.triangles.push_back({random.point(5.0), random.point(5.0), random.point(5.0)});
     }
     for (int k = 0; k < n / 4; ++k)
-        list.spheres.push_back({random_point(rng, 4.0), 0.5 * size(rng)});
+        list.spheres.push_back({random.point(4.0), 0.5 * random.uniform(0.05, 1.0)});
     return list;
 }
 
 // From outside the scene, aimed at a point in it.
-Ray ray_from_outside(std::mt19937_64& rng) {
-    const Vec3 origin = random_point(rng, 9.0);
-    return {origin, random_point(rng, 5.0) - origin};
+Ray ray_from_outside(PortableRandom& random) {
+    const Vec3 origin = random.point(9.0);
+    return {origin, random.point(5.0) - origin};
 }
 
 // From inside the scene, in any direction.
-Ray ray_from_inside(std::mt19937_64& rng) {
-    return {random_point(rng, 4.5), random_point(rng, 1.0)};
+Ray ray_from_inside(PortableRandom& random) {
+    return {random.point(4.5), random.point(1.0)};
 }
 
 // The grid's answer is closest_hit's, bit for bit.
@@ -114,8 +107,8 @@ TEST_CASE("grid_resolution: at most 256 cells along an axis, however many primit
 }
 
 TEST_CASE("UniformGrid::resolution: grid_resolution of the primitives' bounds", "[stage4]") {
-    std::mt19937_64 rng(1);
-    const PrimitiveList list = random_scene(rng, 400);
+    PortableRandom random(1);
+    const PrimitiveList list = random_scene(random, 400);
     Aabb bounds;
     for (const Sphere& s : list.spheres)
         bounds.add(bounds_of(s));
@@ -130,11 +123,11 @@ TEST_CASE("UniformGrid::resolution: grid_resolution of the primitives' bounds", 
 TEST_CASE("UniformGrid::closest_hit: equals closest_hit on random scenes, from outside and inside",
           "[stage4]") {
     for (const int seed : {1, 2, 3}) {
-        std::mt19937_64 rng(static_cast<std::uint64_t>(seed));
-        const PrimitiveList list = random_scene(rng, 400);
+        PortableRandom random(static_cast<std::uint64_t>(seed));
+        const PrimitiveList list = random_scene(random, 400);
         const UniformGrid grid(list);
         for (int k = 0; k < 1000; ++k) {
-            const Ray ray = k % 2 == 0 ? ray_from_outside(rng) : ray_from_inside(rng);
+            const Ray ray = k % 2 == 0 ? ray_from_outside(random) : ray_from_inside(random);
             CAPTURE(seed, k);
             check_same(grid.closest_hit(ray), closest_hit(ray, list));
         }
@@ -147,8 +140,8 @@ TEST_CASE("UniformGrid::closest_hit: equals closest_hit on tiny, huge and far-of
     // rounding all scale with them, and nothing may be tuned to scenes of size 10 at the origin.
     for (const double scale : {1e-3, 1e3}) {
         for (const double offset : {0.0, 1e5}) {
-            std::mt19937_64 rng(10);
-            PrimitiveList list = random_scene(rng, 300);
+            PortableRandom random(10);
+            PrimitiveList list = random_scene(random, 300);
             const Vec3 shift(offset, -offset, 0.5 * offset);
             for (Sphere& s : list.spheres)
                 s = {shift + scale * s.center, scale * s.radius};
@@ -157,7 +150,7 @@ TEST_CASE("UniformGrid::closest_hit: equals closest_hit on tiny, huge and far-of
             }
             const UniformGrid grid(list);
             for (int k = 0; k < 500; ++k) {
-                Ray ray = k % 2 == 0 ? ray_from_outside(rng) : ray_from_inside(rng);
+                Ray ray = k % 2 == 0 ? ray_from_outside(random) : ray_from_inside(random);
                 ray.origin = shift + scale * ray.origin;
                 CAPTURE(scale, offset, k);
                 check_same(grid.closest_hit(ray), closest_hit(ray, list));
@@ -167,19 +160,19 @@ TEST_CASE("UniformGrid::closest_hit: equals closest_hit on tiny, huge and far-of
 }
 
 TEST_CASE("UniformGrid::closest_hit: axis-parallel rays and short rays", "[stage4]") {
-    std::mt19937_64 rng(4);
-    const PrimitiveList list = random_scene(rng, 300);
+    PortableRandom random(4);
+    const PrimitiveList list = random_scene(random, 300);
     const UniformGrid grid(list);
     for (int k = 0; k < 600; ++k) {
         CAPTURE(k);
-        const Vec3 origin = random_point(rng, 6.0);
+        const Vec3 origin = random.point(6.0);
         Vec3 axis(0.0);
         axis[k % 3] = k % 2 == 0 ? 1.0 : -1.0;
         const Ray axis_ray{origin, axis};
         check_same(grid.closest_hit(axis_ray), closest_hit(axis_ray, list));
-        const Ray short_ray{origin, random_point(rng, 1.0), 0.0, 2.0};
+        const Ray short_ray{origin, random.point(1.0), 0.0, 2.0};
         check_same(grid.closest_hit(short_ray), closest_hit(short_ray, list));
-        const Ray late_ray{origin, random_point(rng, 1.0), 3.0};  // t_min past the origin
+        const Ray late_ray{origin, random.point(1.0), 3.0};  // t_min past the origin
         check_same(grid.closest_hit(late_ray), closest_hit(late_ray, list));
     }
 }
@@ -216,10 +209,9 @@ TEST_CASE("UniformGrid::closest_hit: rays that start on, run along or hit the pl
     const Vec3 directions[] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},       {0, -1, 0},
                                {0, 0, 1},  {0, 0, -1}, {1, 1, 0},       {0, -1, 1},
                                {1, 0, -1}, {1, 1, 1},  {-1, 0.5, 0.25}, {0.3, -1, 0.7}};
-    std::mt19937_64 rng(5);
-    std::uniform_int_distribution<int> nudge(-1, 1);
+    PortableRandom random(5);
     const auto nudged = [&](double x) {
-        const int n = nudge(rng);
+        const int n = static_cast<int>(random.integer(-1, 1));
         return n == 0 ? x : std::nextafter(x, n * std::numeric_limits<double>::infinity());
     };
     int hits = 0;
@@ -329,10 +321,10 @@ TEST_CASE("UniformGrid: a large triangle across many cells is tested once per ra
         CHECK(stats.primitive_tests == 1);
     }
     SECTION("random rays: no primitive is tested twice") {
-        std::mt19937_64 rng(6);
+        PortableRandom random(6);
         for (int k = 0; k < 500; ++k) {
-            const Vec3 origin = Vec3(5.0) + random_point(rng, 8.0);
-            const Ray ray{origin, Vec3(5.0) + random_point(rng, 5.0) - origin};
+            const Vec3 origin = Vec3(5.0) + random.point(8.0);
+            const Ray ray{origin, Vec3(5.0) + random.point(5.0) - origin};
             TraversalStats stats;
             CAPTURE(k);
             check_same(grid.closest_hit(ray, &stats), closest_hit(ray, list));
@@ -343,11 +335,11 @@ TEST_CASE("UniformGrid: a large triangle across many cells is tested once per ra
 
 TEST_CASE("UniformGrid::closest_hit: empty, single, coincident, flat and lopsided scenes",
           "[stage4]") {
-    std::mt19937_64 rng(7);
+    PortableRandom random(7);
     const auto check_rays = [&](const PrimitiveList& list) {
         const UniformGrid grid(list);
         for (int k = 0; k < 300; ++k) {
-            const Ray ray = k % 2 == 0 ? ray_from_outside(rng) : ray_from_inside(rng);
+            const Ray ray = k % 2 == 0 ? ray_from_outside(random) : ray_from_inside(random);
             CAPTURE(k);
             check_same(grid.closest_hit(ray), closest_hit(ray, list));
         }
@@ -395,7 +387,7 @@ TEST_CASE("UniformGrid::closest_hit: empty, single, coincident, flat and lopside
         }
     }
     SECTION("a huge sphere beside small triangles") {
-        PrimitiveList lopsided = random_scene(rng, 200);
+        PrimitiveList lopsided = random_scene(random, 200);
         lopsided.spheres.push_back({{0, 0, -1e4 - 6}, 1e4});
         check_rays(lopsided);
     }
@@ -403,8 +395,8 @@ TEST_CASE("UniformGrid::closest_hit: empty, single, coincident, flat and lopside
 
 TEST_CASE("UniformGrid: a zero direction, or a ray that misses the grid's box, visits no cell",
           "[stage4]") {
-    std::mt19937_64 rng(8);
-    const PrimitiveList list = random_scene(rng, 100);
+    PortableRandom random(8);
+    const PrimitiveList list = random_scene(random, 100);
     const UniformGrid grid(list);
     TraversalStats stats;
     CHECK_FALSE(grid.closest_hit({{0, 0, 0}, {0, 0, 0}}, &stats));
@@ -417,12 +409,12 @@ TEST_CASE("UniformGrid: a zero direction, or a ray that misses the grid's box, v
 
 TEST_CASE("UniformGrid::occluded: agrees with closest_hit, before, at and after the first hit",
           "[stage4]") {
-    std::mt19937_64 rng(9);
-    const PrimitiveList list = random_scene(rng, 300);
+    PortableRandom random(9);
+    const PrimitiveList list = random_scene(random, 300);
     const UniformGrid grid(list);
     int hits = 0;
     for (int k = 0; k < 1000; ++k) {
-        Ray ray = k % 2 == 0 ? ray_from_outside(rng) : ray_from_inside(rng);
+        Ray ray = k % 2 == 0 ? ray_from_outside(random) : ray_from_inside(random);
         CAPTURE(k);
         const std::optional<PrimitiveHit> first = closest_hit(ray, list);
         CHECK(grid.occluded(ray) == first.has_value());
