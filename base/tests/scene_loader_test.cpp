@@ -192,8 +192,9 @@ TEST_CASE("parse_scene: transforms that change nothing need no matrix", "[core]"
 }
 
 TEST_CASE("parse_scene: a deep transform stack costs memory in proportion to the file", "[core]") {
-    // Each object's transform is a node in a tree, not a copy of every op above it: 20,000
-    // nested pushTransform/translate pairs with a sphere each once took 8 GB.
+    // Each object's transform is a node in a tree, not a copy of every op above it: copies would
+    // hold 20,000 x 20,001 / 2 = 2 x 10^8 ops for 20,000 nested pushTransform/translate pairs with
+    // a sphere each, a file under 1 MB.
     std::ostringstream text;
     text << kCamera;
     for (int k = 0; k < 20000; ++k)
