@@ -1,6 +1,8 @@
 # Every stub names a handout section: RAYSTEP_TODO(N, "function", "Section") sends the student to
-# docs/stageN.md, section "Section". This check fails when a stub, or any comment or handout that
-# writes docs/stageN.md, "Section", names a section that the handout does not have as a heading. Run by ctest: cmake -DROOT=<repo> -P CheckHandoutSections.cmake
+# docs/stage<N>.md, section "Section". This check fails when a stub, or any comment or page that
+# points at a page's section (docs/stage3.md, "Ray-sphere"; ARCHITECTURE.md, "Layers"; any page
+# under docs/) names a page that does not exist or a section it does not have as a heading.
+# Run by ctest: cmake -DROOT=<repo> -P CheckHandoutSections.cmake
 file(GLOB stubs ${ROOT}/stages/*/*.cpp)
 set(problems "")
 set(count 0)
@@ -33,21 +35,27 @@ if(count EQUAL 0)
     message(FATAL_ERROR "no RAYSTEP_TODO found under ${ROOT}/stages: the check would prove nothing")
 endif()
 
-# Code and handouts point at sections too, as docs/stageN.md, "Section": each must exist.
+# Code and pages point at sections too, of a handout or of any page under docs/ or of
+# ARCHITECTURE.md: each page and section must exist.
 file(GLOB_RECURSE sources ${ROOT}/base/*.h ${ROOT}/base/*.cpp ${ROOT}/stages/*.h ${ROOT}/stages/*.cpp
      ${ROOT}/solutions/*.h ${ROOT}/solutions/*.cpp ${ROOT}/app/*.h ${ROOT}/app/*.cpp
      ${ROOT}/studies/*.h ${ROOT}/studies/*.cpp ${ROOT}/grader/*.h ${ROOT}/grader/*.cpp
-     ${ROOT}/docs/*.md)
+     ${ROOT}/cmake/*.cmake ${ROOT}/docs/*.md ${ROOT}/ARCHITECTURE.md ${ROOT}/README.md)
+set(page_regex "(ARCHITECTURE\\.md|docs/[A-Za-z0-9_/-]+\\.md), \"([^\"]+)\"")
 set(references 0)
 foreach(source IN LISTS sources)
-    file(STRINGS ${source} lines REGEX "docs/stage[0-9]+\\.md, \"[^\"]+\"")
+    file(STRINGS ${source} lines REGEX "${page_regex}")
     foreach(line IN LISTS lines)
-        string(REGEX MATCHALL "docs/stage[0-9]+\\.md, \"[^\"]+\"" cited "${line}")
+        string(REGEX MATCHALL "${page_regex}" cited "${line}")
         foreach(citation IN LISTS cited)
             math(EXPR references "${references} + 1")
-            string(REGEX REPLACE "docs/stage([0-9]+)\\.md, \"([^\"]+)\"" "\\1" stage "${citation}")
-            string(REGEX REPLACE "docs/stage([0-9]+)\\.md, \"([^\"]+)\"" "\\2" section "${citation}")
-            file(STRINGS ${ROOT}/docs/stage${stage}.md headings REGEX "^#+ ")
+            string(REGEX REPLACE "${page_regex}" "\\1" page "${citation}")
+            string(REGEX REPLACE "${page_regex}" "\\2" section "${citation}")
+            if(NOT EXISTS ${ROOT}/${page})
+                string(APPEND problems "\n${source}: ${citation}: ${page} does not exist")
+                continue()
+            endif()
+            file(STRINGS ${ROOT}/${page} headings REGEX "^#+ ")
             set(found FALSE)
             foreach(heading IN LISTS headings)
                 string(REGEX REPLACE "^#+ " "" heading "${heading}")
@@ -62,6 +70,6 @@ foreach(source IN LISTS sources)
     endforeach()
 endforeach()
 if(problems)
-    message(FATAL_ERROR "references to handout sections that do not exist:${problems}")
+    message(FATAL_ERROR "references to sections that do not exist:${problems}")
 endif()
-message(STATUS "${count} stubs and ${references} other references, each naming a handout section that exists")
+message(STATUS "${count} stubs and ${references} other references, each naming a section that exists")

@@ -1,11 +1,11 @@
-# The student/solution switch of docs/design: every stage is a static library
-# `raystep_stageN`, compiled from stages/N_topic/ when N is listed in RAYSTEP_STUDENT_STAGES and
-# from solutions/N_topic/ otherwise, and always linked against the configured stages below it:
-# with RAYSTEP_STUDENT_STAGES=1, the reference stage 2 calls the student's stage 1, which is the
-# point. `raystep_stageN_reference` is the solution linked against the solutions below it, for
-# the reference build (`raystep-reference`, used by `raystep trace --compare`). Both take their
-# source list from the stage's manifest.txt, the files a student edits and the grader takes from
-# a submission.
+# The student/solution switch (ARCHITECTURE.md, "Student code or the reference"): every stage is
+# a static library `raystep_stageN`, compiled from stages/N_topic/ when N is listed in
+# RAYSTEP_STUDENT_STAGES and from solutions/N_topic/ otherwise, and always linked against the
+# configured stages below it: with RAYSTEP_STUDENT_STAGES=1, the reference stage 2 calls the
+# student's stage 1, which is the point. `raystep_stageN_reference` is the solution linked against
+# the solutions below it, for the reference build (`raystep-reference`, used by `raystep trace
+# --compare`). Both take their source list from the stage's manifest.txt, the files a student
+# edits and the grader takes from a submission.
 
 set(RAYSTEP_HAVE_SOLUTIONS FALSE)
 if(EXISTS ${PROJECT_SOURCE_DIR}/solutions)

@@ -9,8 +9,8 @@ import math
 # The mesh's centre: far enough that a double's spacing there (2^-6 = 0.0156 at 1e14) is a few
 # percent of a pixel's footprint on the mesh, so that the lecture's plane-based triangle tests
 # leak at hundreds of pixels of the demo's 320 x 424 panel (at 1e12 only a handful, at 1e15 the
-# vertices themselves snap to a visibly coarse grid). raystep demo watertight's comment has the
-# counts. The image size is the demo's panel, so that the demo frames the mesh as written.
+# vertices themselves snap to a visibly coarse grid). docs/measurements/watertight-demo.md has
+# the counts. The image size is the demo's panel, so that the demo frames the mesh as written.
 CENTRE = (1e14, 5e13, -7.5e13)
 RADIUS = 1.0
 SUBDIVISIONS = 2  # 320 triangles: few enough to test every one at every pixel

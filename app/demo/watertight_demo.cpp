@@ -75,12 +75,13 @@ std::string leak_caption(const std::string& method, std::size_t leaks) {
 
 DemoFigure watertight_demo(const DemoSize& size) {
     // scenes/demos/watertight.test: an icosphere of radius 1 around (1e14, 5e13, -7.5e13),
-    // where doubles are 1/64 apart. The distance was chosen by counting the half-space test's
-    // leaks on a 320 x 400 image of it at each power of ten: none from the origin up to 1e11, 8
-    // at 1e12, 86 at 1e13, 791 at 1e14; at 1e15 the vertices themselves snap to a grid an eighth
-    // of the radius wide. Both tests are stage 3's: intersect_triangle (the reference's is
-    // watertight; Woop, Benthin, Wald 2013) and the lecture's half-space method, which finds the
-    // point on the plane first and so rounds it to that 1/64.
+    // where doubles are 1/64 apart: the power of ten at which the half-space method leaks at
+    // hundreds of pixels, enough to see on a projector, while the vertices still sit on a sphere
+    // (ten times as far they snap to a grid an eighth of the radius wide). The counts at each
+    // power of ten, and how to rerun them: docs/measurements/watertight-demo.md. Both tests are
+    // stage 3's: intersect_triangle (the reference's is watertight; Woop, Benthin, Wald 2013) and
+    // the lecture's half-space method, which finds the point on the plane first and so rounds it
+    // to that 1/64.
     const PanelSize panel = panel_size(size, 2, false);
     const Scene scene = load_demo_scene("demos/watertight.test", panel);
     const SceneCamera camera = make_scene_camera(scene);

@@ -155,7 +155,7 @@ struct BadFile {
 
 }  // namespace
 
-TEST_CASE("read_case_file: reads the hand-computed file", "[core]") {
+TEST_CASE("read_case_file: reads the hand-computed file", "[app]") {
     const std::vector<CaseFamily> families = read_case_file(kCases / "axis-aligned.cases");
     REQUIRE(families.size() == 2);
 
@@ -212,7 +212,7 @@ TEST_CASE("read_case_file: reads the hand-computed file", "[core]") {
     CHECK(on_surface.normal_alternative == Vec3(0.0, 0.0, -1.0));
 }
 
-TEST_CASE("write_case_file: every double reads back with the same bits", "[core]") {
+TEST_CASE("write_case_file: every double reads back with the same bits", "[app]") {
     const std::vector<CaseFamily> families = tricky_families();
     const std::string text = written(families);
     CAPTURE(text);
@@ -221,7 +221,7 @@ TEST_CASE("write_case_file: every double reads back with the same bits", "[core]
     CHECK(text.find("ray 0.10000000000000001 -0 1.0000000000000001e+300") != std::string::npos);
 }
 
-TEST_CASE("write_case_file: a file read and written again gives the same text", "[core]") {
+TEST_CASE("write_case_file: a file read and written again gives the same text", "[app]") {
     const std::vector<CaseFamily> families = read_case_file(kCases / "axis-aligned.cases");
     const std::string text = written(families);
     CAPTURE(text);
@@ -229,7 +229,7 @@ TEST_CASE("write_case_file: a file read and written again gives the same text", 
     CHECK(written(parse(text)) == text);
 }
 
-TEST_CASE("case_text: shows one case from 'case' to 'end'", "[core]") {
+TEST_CASE("case_text: shows one case from 'case' to 'end'", "[app]") {
     RayCase ray_case;
     ray_case.index = 3;
     ray_case.watertight = true;
@@ -251,7 +251,7 @@ TEST_CASE("case_text: shows one case from 'case' to 'end'", "[core]") {
           "end\n");
 }
 
-TEST_CASE("parse_case_file: ignores comments, blank lines and Windows line ends", "[core]") {
+TEST_CASE("parse_case_file: ignores comments, blank lines and Windows line ends", "[app]") {
     const std::vector<CaseFamily> families = parse(
         "# a comment\r\n\r\nfamily f seed 3   # trailing comment\r\n"
         "description  two  spaces kept # not this\r\n"
@@ -264,7 +264,7 @@ TEST_CASE("parse_case_file: ignores comments, blank lines and Windows line ends"
     CHECK(families[0].cases[0].primitives[0].expected.t == 1.0);
 }
 
-TEST_CASE("parse_case_file: every malformed line is reported as file:line: problem", "[core]") {
+TEST_CASE("parse_case_file: every malformed line is reported as file:line: problem", "[app]") {
     const std::string family = "family f seed 1\n";
     const std::string ray = "case 0\nray 0 0 1 0 0 -1 0 inf\n";  // lines 2 and 3
     const std::string hit = " hit 1 tolerance 0 normal 0 0 1 tolerance 0";
@@ -357,7 +357,7 @@ TEST_CASE("parse_case_file: every malformed line is reported as file:line: probl
     }
 }
 
-TEST_CASE("parse_case_file: rejects what would be checked silently wrong, at its line", "[core]") {
+TEST_CASE("parse_case_file: rejects what would be checked silently wrong, at its line", "[app]") {
     const std::string family = "family f seed 1\n";
     const std::string ray = "case 0\nray 0 0 1 0 0 -1 0 inf\n";       // lines 2 and 3
     const std::string one_case = ray + "sphere 0 0 0 1 miss\nend\n";  // lines 2 to 5
@@ -401,7 +401,7 @@ TEST_CASE("parse_case_file: rejects what would be checked silently wrong, at its
 }
 
 TEST_CASE("parse_case_file: degenerate input is a case when it expects the contract's miss",
-          "[core]") {
+          "[app]") {
     const std::vector<CaseFamily> families = parse(
         "family f seed 1\n"
         "case 0\nray 0 0 1 0 0 -1 0 inf\nsphere 0 0 0 0 miss\nplane 0 0 0 0 0 0 miss\nend\n"
@@ -412,7 +412,7 @@ TEST_CASE("parse_case_file: degenerate input is a case when it expects the contr
     CHECK(families[0].cases[1].ray.direction == Vec3(0.0));
 }
 
-TEST_CASE("parse_case_file: one case number in two families is two cases", "[core]") {
+TEST_CASE("parse_case_file: one case number in two families is two cases", "[app]") {
     const std::string one_case = "case 0\nray 0 0 1 0 0 -1 0 inf\nsphere 0 0 0 1 miss\nend\n";
     const std::vector<CaseFamily> families =
         parse("family f seed 1\n" + one_case + "family g seed 1\n" + one_case);
@@ -420,13 +420,13 @@ TEST_CASE("parse_case_file: one case number in two families is two cases", "[cor
     CHECK(families[1].cases.at(0).index == 0);
 }
 
-TEST_CASE("read_case_file: a missing file is reported by its name", "[core]") {
+TEST_CASE("read_case_file: a missing file is reported by its name", "[app]") {
     const std::filesystem::path missing = kCases / "no-such-file.cases";
     CHECK_THROWS_WITH(read_case_file(missing), missing.string() + ": case file not found");
     CHECK_THROWS_WITH(read_case_file(kCases), kCases.string() + ": not a regular file");
 }
 
-TEST_CASE("read_case_file: a cut-off file names the case that has no end", "[core]") {
+TEST_CASE("read_case_file: a cut-off file names the case that has no end", "[app]") {
     const std::filesystem::path file = kCases / "bad" / "missing-end.cases";
     CHECK_THROWS_WITH(read_case_file(file), file.string() + ":3: case 0 has no 'end'");
 }

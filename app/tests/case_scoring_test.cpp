@@ -130,7 +130,7 @@ RayCase three_hits_case() {
 
 }  // namespace
 
-TEST_CASE("score_case: right hits and misses pass", "[core]") {
+TEST_CASE("score_case: right hits and misses pass", "[app]") {
     const RayCase ray_case =
         make_case({{kTriangle, expect_triangle_hit(5.0, 0.25, 0.5)}, {kTriangle, expect_miss()}});
     const Scored scored =
@@ -139,7 +139,7 @@ TEST_CASE("score_case: right hits and misses pass", "[core]") {
     CHECK(scored.detail.empty());
 }
 
-TEST_CASE("score_case: a miss where the exact answer is a clear hit is a false miss", "[core]") {
+TEST_CASE("score_case: a miss where the exact answer is a clear hit is a false miss", "[app]") {
     const RayCase ray_case =
         make_case({{kTriangle, expect_miss()}, {kTriangle, expect_triangle_hit(5.0, 0.25, 0.5)}});
     const Scored scored = score(kTriangleTest, ray_case, answer({std::nullopt, std::nullopt}));
@@ -147,7 +147,7 @@ TEST_CASE("score_case: a miss where the exact answer is a clear hit is a false m
     CHECK(scored.detail == "primitive 1 (triangle): expected a hit at t = 5, got a miss");
 }
 
-TEST_CASE("score_case: a hit where the exact answer is a clear miss is a false hit", "[core]") {
+TEST_CASE("score_case: a hit where the exact answer is a clear miss is a false hit", "[app]") {
     const RayCase ray_case = make_case({{kSphere, expect_miss()}});
     const Scored scored = score(kSphereTest, ray_case, answer({hit_at(2.5)}));
     CHECK(scored.verdict == Verdict::false_hit);
@@ -155,7 +155,7 @@ TEST_CASE("score_case: a hit where the exact answer is a clear miss is a false h
 }
 
 TEST_CASE("score_case: near a boundary either answer passes, and a hit is still measured",
-          "[core]") {
+          "[app]") {
     const RayCase ray_case = make_case({{kTriangle, near_boundary(expect_triangle_hit(5, 0, 1))},
                                         {kTriangle, near_miss_crossing(5.0)}});
     for (const bool first : {false, true}) {
@@ -174,7 +174,7 @@ TEST_CASE("score_case: near a boundary either answer passes, and a hit is still 
               .verdict == Verdict::wrong_t);
 }
 
-TEST_CASE("score_case: a reported hit with a NaN or infinite value is not finite", "[core]") {
+TEST_CASE("score_case: a reported hit with a NaN or infinite value is not finite", "[app]") {
     const RayCase ray_case = make_case({{kTriangle, expect_triangle_hit(5.0, 0.25, 0.5)}});
     const double inf = std::numeric_limits<double>::infinity();
     const std::vector<Hit> broken = {hit_at(kNaN, kUp, 0.25, 0.5),
@@ -193,7 +193,7 @@ TEST_CASE("score_case: a reported hit with a NaN or infinite value is not finite
           Verdict::pass);
 }
 
-TEST_CASE("score_case: t passes within its tolerance and fails beyond it", "[core]") {
+TEST_CASE("score_case: t passes within its tolerance and fails beyond it", "[app]") {
     const RayCase ray_case = make_case({{kSphere, expect_hit(5.0)}});
     CHECK(score(kSphereTest, ray_case, answer({hit_at(5.0 + kTTolerance)})).verdict ==
           Verdict::pass);
@@ -207,7 +207,7 @@ TEST_CASE("score_case: t passes within its tolerance and fails beyond it", "[cor
           "0.25000000000000089");
 }
 
-TEST_CASE("score_case: a normal must be unit length and near the expected one", "[core]") {
+TEST_CASE("score_case: a normal must be unit length and near the expected one", "[app]") {
     Expectation loose = expect_hit(5.0);
     loose.normal_tolerance = 0.5;
     const RayCase loose_case = make_case({{kSphere, loose}});
@@ -228,7 +228,7 @@ TEST_CASE("score_case: a normal must be unit length and near the expected one", 
 }
 
 TEST_CASE("score_case: a normal's length may be off 1 by its tolerance, as (P - C) / r is",
-          "[core]") {
+          "[app]") {
     // A small sphere far away: the hit point is known to 1e-6 of r, and so is |P - C| / r.
     Expectation far = expect_hit(5.0);
     far.normal_tolerance = 1e-6;
@@ -239,7 +239,7 @@ TEST_CASE("score_case: a normal's length may be off 1 by its tolerance, as (P - 
           Verdict::wrong_normal);
 }
 
-TEST_CASE("score_case: a triangle's beta and gamma must each be within tolerance", "[core]") {
+TEST_CASE("score_case: a triangle's beta and gamma must each be within tolerance", "[app]") {
     const RayCase ray_case = make_case({{kTriangle, expect_triangle_hit(5.0, 0.25, 0.5)}});
     CHECK(score(kTriangleTest, ray_case, answer({hit_at(5.0, kUp, 0.3125, 0.4375)})).verdict ==
           Verdict::pass);
@@ -252,7 +252,7 @@ TEST_CASE("score_case: a triangle's beta and gamma must each be within tolerance
           "(0.25, 0.5) within 0.0625, got (0.25, 0.625)");
 }
 
-TEST_CASE("score_case: a sphere's alternative hit passes with its own normal", "[core]") {
+TEST_CASE("score_case: a sphere's alternative hit passes with its own normal", "[app]") {
     Expectation on_surface = expect_hit(0.0);
     on_surface.t_alternative = 2.0;
     on_surface.normal_alternative = {0.0, 0.0, -1.0};
@@ -263,7 +263,7 @@ TEST_CASE("score_case: a sphere's alternative hit passes with its own normal", "
     CHECK(score(kSphereTest, ray_case, answer({hit_at(1.0)})).verdict == Verdict::wrong_t);
 }
 
-TEST_CASE("score_case: the earliest rule decides when several fail", "[core]") {
+TEST_CASE("score_case: the earliest rule decides when several fail", "[app]") {
     const RayCase ray_case =
         make_case({{kTriangle, expect_triangle_hit(5.0, 0.25, 0.5)}, {kTriangle, expect_miss()}});
     // A wrong t on the first primitive and a false hit on the second: false hit comes first.
@@ -278,7 +278,7 @@ TEST_CASE("score_case: the earliest rule decides when several fail", "[core]") {
               .verdict == Verdict::wrong_t);
 }
 
-TEST_CASE("score_case: an exception is 'threw', whatever else the answer holds", "[core]") {
+TEST_CASE("score_case: an exception is 'threw', whatever else the answer holds", "[app]") {
     const RayCase ray_case = make_case({{kTriangle, expect_miss()}});
     CaseAnswer threw = answer({hit_at(kNaN)});
     threw.error = "division by zero";
@@ -287,7 +287,7 @@ TEST_CASE("score_case: an exception is 'threw', whatever else the answer holds",
     CHECK(scored.detail == "intersect_triangle_cramer threw: division by zero");
 }
 
-TEST_CASE("score_case: only the primitives the method tests count", "[core]") {
+TEST_CASE("score_case: only the primitives the method tests count", "[app]") {
     const RayCase ray_case = make_case({{kSphere, expect_hit(7.0)},
                                         {kTriangle, expect_triangle_hit(5.0, 0.25, 0.5)},
                                         {kPlane, expect_hit(15.0)}});
@@ -297,7 +297,7 @@ TEST_CASE("score_case: only the primitives the method tests count", "[core]") {
     CHECK(score(kTriangleTest, ray_case, answer({})).verdict == Verdict::false_miss);
 }
 
-TEST_CASE("score_case: a watertight case leaks when no neighbour reports the hit", "[core]") {
+TEST_CASE("score_case: a watertight case leaks when no neighbour reports the hit", "[app]") {
     const RayCase watertight = shared_edge_case(true);
     const Scored leaked = score(kTriangleTest, watertight, answer({std::nullopt, std::nullopt}));
     CHECK(leaked.verdict == Verdict::leak);
@@ -314,8 +314,7 @@ TEST_CASE("score_case: a watertight case leaks when no neighbour reports the hit
     CHECK(score(kTriangleTest, clear, answer({std::nullopt})).verdict == Verdict::false_miss);
 }
 
-TEST_CASE("score_case: closest_hit must report the nearest hit, mapped to its primitive",
-          "[core]") {
+TEST_CASE("score_case: closest_hit must report the nearest hit, mapped to its primitive", "[app]") {
     const RayCase ray_case = three_hits_case();
     CHECK(score(kClosest, ray_case, closest_answer(1, hit_at(5.0, kUp, 0.25, 0.5))).verdict ==
           Verdict::pass);
@@ -339,7 +338,7 @@ TEST_CASE("score_case: closest_hit must report the nearest hit, mapped to its pr
           Verdict::not_finite);
 }
 
-TEST_CASE("score_case: closest_hit gives a tie between copies to the first", "[core]") {
+TEST_CASE("score_case: closest_hit gives a tie between copies to the first", "[app]") {
     const RayCase copies = make_case(
         {{kSphere, expect_hit(5.0)}, {kSphere, expect_hit(5.0)}, {kPlane, expect_hit(9.0)}});
     CHECK(score(kClosest, copies, closest_answer(0, hit_at(5.0))).verdict == Verdict::pass);
@@ -349,7 +348,7 @@ TEST_CASE("score_case: closest_hit gives a tie between copies to the first", "[c
 }
 
 TEST_CASE("score_case: closest_hit gives an exact tie across kinds to spheres, then triangles",
-          "[core]") {
+          "[app]") {
     // Hits at exactly t = 5 that no rounding moves (tolerance 0), listed plane first.
     Expectation exact_plane = expect_hit(5.0);
     exact_plane.t_tolerance = 0.0;
@@ -366,7 +365,7 @@ TEST_CASE("score_case: closest_hit gives an exact tie across kinds to spheres, t
     CHECK(score(kClosest, rounded, closest_answer(0, hit_at(5.0))).verdict == Verdict::pass);
 }
 
-TEST_CASE("score_case: closest_hit on a primitive the ray misses is a false hit", "[core]") {
+TEST_CASE("score_case: closest_hit on a primitive the ray misses is a false hit", "[app]") {
     const RayCase ray_case = make_case({{kSphere, expect_miss()}, {kPlane, expect_hit(15.0)}});
     const Scored scored = score(kClosest, ray_case, closest_answer(0, hit_at(3.0)));
     CHECK(scored.verdict == Verdict::false_hit);
@@ -377,7 +376,7 @@ TEST_CASE("score_case: closest_hit on a primitive the ray misses is a false hit"
           Verdict::false_hit);
 }
 
-TEST_CASE("score_case: closest_hit near a boundary may take either answer", "[core]") {
+TEST_CASE("score_case: closest_hit near a boundary may take either answer", "[app]") {
     // The nearer triangle is near a boundary: skipping it for the plane behind passes, and so
     // does reporting its crossing point, even though the exact answer there is a miss.
     const RayCase ray_case =
@@ -399,7 +398,7 @@ TEST_CASE("score_case: closest_hit near a boundary may take either answer", "[co
 }
 
 TEST_CASE("score_case: closest_hit may choose either of two hits within rounding of each other",
-          "[core]") {
+          "[app]") {
     const RayCase ray_case =
         make_case({{kSphere, expect_hit(5.0)}, {kPlane, expect_hit(5.0 + kTTolerance)}});
     CHECK(score(kClosest, ray_case, closest_answer(1, hit_at(5.0 + kTTolerance))).verdict ==
@@ -415,7 +414,7 @@ TEST_CASE("score_case: closest_hit may choose either of two hits within rounding
 }
 
 TEST_CASE("score_family: counts verdicts, keeps the first counterexamples, skips other kinds",
-          "[core]") {
+          "[app]") {
     CaseFamily family{"mixed", 7, "", {}};
     std::vector<CaseAnswer> answers;
     for (std::uint64_t k = 0; k < 6; ++k) {
@@ -446,7 +445,7 @@ TEST_CASE("score_family: counts verdicts, keeps the first counterexamples, skips
     CHECK(scored.t_ulps == std::vector<double>{0.0, 1.0, 0.0});
 }
 
-TEST_CASE("score_family: counts near-boundary answers of either kind", "[core]") {
+TEST_CASE("score_family: counts near-boundary answers of either kind", "[app]") {
     CaseFamily family{"edges", 1, "", {shared_edge_case(false)}};
     const MethodScore scored =
         score_family(kTriangleTest, family, {answer({hit_at(5.0, kUp, 0.5, 0.5), std::nullopt})});
@@ -456,7 +455,7 @@ TEST_CASE("score_family: counts near-boundary answers of either kind", "[core]")
     CHECK(scored.t_ulps == std::vector<double>{0.0});
 }
 
-TEST_CASE("score_family: exact false hits and misses count what near-boundary forgives", "[core]") {
+TEST_CASE("score_family: exact false hits and misses count what near-boundary forgives", "[app]") {
     // A near-boundary miss reported as a hit passes, and is an exact false hit; a near-boundary
     // hit reported as a miss passes, and is an exact false miss. Which neighbour of a shared edge
     // takes the ray is neither.
@@ -475,7 +474,7 @@ TEST_CASE("score_family: exact false hits and misses count what near-boundary fo
     CHECK(scored.exact_false_misses == 1);
 }
 
-TEST_CASE("score_family: a hit where the exact answer is a miss adds no t error", "[core]") {
+TEST_CASE("score_family: a hit where the exact answer is a miss adds no t error", "[app]") {
     // The crossing point of a near-boundary miss is checked, but it is not a hit to measure.
     CaseFamily family{"near-misses", 1, "", {make_case({{kTriangle, near_miss_crossing(5.0)}})}};
     const MethodScore scored = score_family(
@@ -485,7 +484,7 @@ TEST_CASE("score_family: a hit where the exact answer is a miss adds no t error"
     CHECK(scored.t_ulps.empty());
 }
 
-TEST_CASE("score_family: a stub makes the whole method not implemented", "[core]") {
+TEST_CASE("score_family: a stub makes the whole method not implemented", "[app]") {
     CaseFamily family{"stubs", 1, "", {}};
     for (std::uint64_t k = 0; k < 3; ++k) {
         family.cases.push_back(make_case({{kSphere, expect_hit(5.0)}}, false, k));
@@ -501,12 +500,12 @@ TEST_CASE("score_family: a stub makes the whole method not implemented", "[core]
     CHECK(scored.counterexamples.empty());
 }
 
-TEST_CASE("score_family: the answers must match the cases one to one", "[core]") {
+TEST_CASE("score_family: the answers must match the cases one to one", "[app]") {
     CaseFamily family{"one", 1, "", {make_case({{kSphere, expect_hit(5.0)}})}};
     CHECK_THROWS_AS(score_family(kSphereTest, family, {}), std::invalid_argument);
 }
 
-TEST_CASE("ulp_distance: counts the doubles between two values", "[core]") {
+TEST_CASE("ulp_distance: counts the doubles between two values", "[app]") {
     CHECK(ulp_distance(1.0, 1.0) == 0.0);
     CHECK(ulp_distance(1.0, std::nextafter(1.0, 2.0)) == 1.0);
     CHECK(ulp_distance(std::nextafter(1.0, 0.0), std::nextafter(1.0, 2.0)) == 2.0);
@@ -524,7 +523,7 @@ TEST_CASE("ulp_distance: counts the doubles between two values", "[core]") {
     CHECK(std::isinf(ulp_distance(1.0, kNaN)));
 }
 
-TEST_CASE("verdict_name: every verdict has its own name", "[core]") {
+TEST_CASE("verdict_name: every verdict has its own name", "[app]") {
     std::vector<std::string> names;
     for (int v = 0; v < kVerdictCount; ++v) {
         CAPTURE(v);

@@ -77,7 +77,7 @@ MethodScore stub_score(const std::string& family) {
 
 }  // namespace
 
-TEST_CASE("summarize_ulps: median, 99th percentile and maximum by nearest rank", "[core]") {
+TEST_CASE("summarize_ulps: median, 99th percentile and maximum by nearest rank", "[app]") {
     const UlpSummary none = summarize_ulps({});
     CHECK(none.median == 0.0);
     CHECK(none.p99 == 0.0);
@@ -98,7 +98,7 @@ TEST_CASE("summarize_ulps: median, 99th percentile and maximum by nearest rank",
     CHECK(outlier.max == 1000.0);
 }
 
-TEST_CASE("print_check_report: one row per method and family with its counts", "[core]") {
+TEST_CASE("print_check_report: one row per method and family with its counts", "[app]") {
     MethodScore clean;
     clean.method = "intersect_plane";
     clean.family = "planes";
@@ -116,7 +116,7 @@ TEST_CASE("print_check_report: one row per method and family with its counts", "
                                                                    "-", "-", "-"});
 }
 
-TEST_CASE("print_check_report: the pass rate rounds down, so 100% means all passed", "[core]") {
+TEST_CASE("print_check_report: the pass rate rounds down, so 100% means all passed", "[app]") {
     MethodScore almost = leaky_score();
     almost.passed = 999;
     almost.counts[static_cast<int>(Verdict::leak)] = 1;
@@ -128,7 +128,7 @@ TEST_CASE("print_check_report: the pass rate rounds down, so 100% means all pass
 }
 
 TEST_CASE("print_check_report: a failing row's counterexamples with the command that reruns them",
-          "[core]") {
+          "[app]") {
     const std::string text = report({leaky_score()});
     CAPTURE(text);
     CHECK(text.find("\nintersect_triangle_cramer on shared-edges: 3 of 1000 cases failed; the "
@@ -141,7 +141,7 @@ TEST_CASE("print_check_report: a failing row's counterexamples with the command 
                     "intersect_triangle_cramer --case 17\n") != std::string::npos);
 }
 
-TEST_CASE("print_check_report: a stub gets one line, however many families", "[core]") {
+TEST_CASE("print_check_report: a stub gets one line, however many families", "[app]") {
     const std::string text = report({stub_score("spheres"), stub_score("far-spheres")});
     CAPTURE(text);
     CHECK(occurrences(text, "not implemented:") == 1);
@@ -151,7 +151,7 @@ TEST_CASE("print_check_report: a stub gets one line, however many families", "[c
     CHECK(occurrences(text, "rerun") == 0);
 }
 
-TEST_CASE("print_check_report: a method with no case in a family gets no row there", "[core]") {
+TEST_CASE("print_check_report: a method with no case in a family gets no row there", "[app]") {
     MethodScore nothing;
     nothing.method = "intersect_plane";
     nothing.family = "shared-edges";

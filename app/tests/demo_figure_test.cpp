@@ -37,7 +37,7 @@ DemoFigure two_panel_figure(const DemoSize& size) {
 
 }  // namespace
 
-TEST_CASE("panel_size: one panel fills the width, two share it, four make two rows", "[core]") {
+TEST_CASE("panel_size: one panel fills the width, two share it, four make two rows", "[app]") {
     const DemoSize size{640, 480};
     // 480 = title 32 + panels + captions 24 each (+ the colour bar's 44)
     CHECK(panel_size(size, 1, false).width == 640);
@@ -48,13 +48,13 @@ TEST_CASE("panel_size: one panel fills the width, two share it, four make two ro
     CHECK(panel_size(size, 4, false).height == (480 - 32) / 2 - 24);
 }
 
-TEST_CASE("panel_size: no panels, five panels or no room for them are refused", "[core]") {
+TEST_CASE("panel_size: no panels, five panels or no room for them are refused", "[app]") {
     CHECK_THROWS_AS(panel_size({640, 480}, 0, false), std::invalid_argument);
     CHECK_THROWS_AS(panel_size({640, 480}, 5, false), std::invalid_argument);
     CHECK_THROWS_AS(panel_size({640, 60}, 2, true), std::invalid_argument);
 }
 
-TEST_CASE("draw_figure: the panels side by side under the title, at the stated size", "[core]") {
+TEST_CASE("draw_figure: the panels side by side under the title, at the stated size", "[app]") {
     const DemoSize size{320, 240};
     const Image image = draw_figure(two_panel_figure(size), size, find_label_font());
     REQUIRE(image.width() == 320);
@@ -67,7 +67,7 @@ TEST_CASE("draw_figure: the panels side by side under the title, at the stated s
 }
 
 TEST_CASE("draw_figure: with a font the title strip holds text, without one it stays blank",
-          "[core]") {
+          "[app]") {
     const DemoSize size{320, 240};
     const std::optional<LabelFont> font = find_label_font();
     if (!font) {
@@ -78,13 +78,13 @@ TEST_CASE("draw_figure: with a font the title strip holds text, without one it s
     CHECK(marked_pixels(draw_figure(two_panel_figure(size), size, std::nullopt), 0, 32) == 0);
 }
 
-TEST_CASE("draw_figure: a panel of the wrong size is a programming error", "[core]") {
+TEST_CASE("draw_figure: a panel of the wrong size is a programming error", "[app]") {
     DemoFigure figure = two_panel_figure({320, 240});
     figure.panels[1].image = Image(10, 10);
     CHECK_THROWS_AS(draw_figure(figure, {320, 240}, std::nullopt), std::logic_error);
 }
 
-TEST_CASE("draw_figure: a heat map's scale is drawn along the bottom, cold to hot", "[core]") {
+TEST_CASE("draw_figure: a heat map's scale is drawn along the bottom, cold to hot", "[app]") {
     const DemoSize size{320, 240};
     const PanelSize panel = panel_size(size, 1, true);
     DemoFigure figure;
@@ -98,7 +98,7 @@ TEST_CASE("draw_figure: a heat map's scale is drawn along the bottom, cold to ho
     CHECK(image.at(320 - 5 * 8 - 1, row) == Color(1.0));
 }
 
-TEST_CASE("log_heat_colour: black at 1 or less and for NaN, white at the top", "[core]") {
+TEST_CASE("log_heat_colour: black at 1 or less and for NaN, white at the top", "[app]") {
     const LogHeatScale scale{1e4, "steps"};
     CHECK(log_heat_colour(0.0, scale) == Color(0.0));
     CHECK(log_heat_colour(1.0, scale) == Color(0.0));
@@ -109,7 +109,7 @@ TEST_CASE("log_heat_colour: black at 1 or less and for NaN, white at the top", "
     CHECK(log_heat_colour(100.0, scale).r == Approx(0.9));
 }
 
-TEST_CASE("thousands: counts with a comma every three digits", "[core]") {
+TEST_CASE("thousands: counts with a comma every three digits", "[app]") {
     CHECK(thousands(0) == "0");
     CHECK(thousands(999) == "999");
     CHECK(thousands(1000) == "1,000");
@@ -117,7 +117,7 @@ TEST_CASE("thousands: counts with a comma every three digits", "[core]") {
     CHECK(thousands(1234567) == "1,234,567");
 }
 
-TEST_CASE("draw_text: text beyond ASCII is refused before OpenImageIO garbles it", "[core]") {
+TEST_CASE("draw_text: text beyond ASCII is refused before OpenImageIO garbles it", "[app]") {
     // Refused before the font is opened: no font needed
     Image image(100, 20);
     CHECK_THROWS_AS(draw_text(image, LabelFont{"no such font"}, "\xCE\xB5 = 0", 0, 10, 12, 100,
@@ -126,7 +126,7 @@ TEST_CASE("draw_text: text beyond ASCII is refused before OpenImageIO garbles it
 }
 
 TEST_CASE("load_demo_scene: a narrower panel keeps the view's width and shows more height",
-          "[core][meshes]") {
+          "[app][meshes]") {
     // stage4/bunny.test: 640 x 480, fovy 32
     const Scene scene = load_demo_scene("stage4/bunny.test", {320, 424});
     CHECK(scene.width == 320);
@@ -135,7 +135,7 @@ TEST_CASE("load_demo_scene: a narrower panel keeps the view's width and shows mo
     CHECK(half_width == Approx(std::tan(glm::radians(32.0) / 2) * 640 / 480));
 }
 
-TEST_CASE("load_demo_scene: an orthographic window keeps its sides and its middle", "[core]") {
+TEST_CASE("load_demo_scene: an orthographic window keeps its sides and its middle", "[app]") {
     // stage2/orthographic.test: 480 x 360, ortho -4 4 -3 3
     const Scene scene = load_demo_scene("stage2/orthographic.test", {320, 160});
     REQUIRE(scene.camera.ortho);

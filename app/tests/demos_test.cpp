@@ -80,7 +80,7 @@ int pixels_costing_at_least(const Image& image, double cost, const LogHeatScale&
 
 }  // namespace
 
-TEST_CASE("demo_list: the seven lecture demos, in lecture order, each described", "[core]") {
+TEST_CASE("demo_list: the seven lecture demos, in lecture order, each described", "[app]") {
     CHECK(demo_names() == std::vector<std::string>{"ray-directions", "barycentrics", "watertight",
                                                    "bvh-cost", "grid-cost", "normal-transform",
                                                    "shadow-acne"});
@@ -91,14 +91,14 @@ TEST_CASE("demo_list: the seven lecture demos, in lecture order, each described"
     }
 }
 
-TEST_CASE("find_demo: an unknown name is refused with the list of demos", "[core]") {
+TEST_CASE("find_demo: an unknown name is refused with the list of demos", "[app]") {
     CHECK_THROWS_WITH(find_demo("teapot"),
                       "no demo 'teapot'; the demos are ray-directions, barycentrics, watertight, "
                       "bvh-cost, grid-cost, normal-transform, shadow-acne");
 }
 
 TEST_CASE("ray_directions_demo: perspective rays fan out, orthographic rays are one colour",
-          "[core]") {
+          "[app]") {
     const DemoFigure figure = ray_directions_demo(kTestSize);
     check_panels(figure, 2);
     const Image& perspective = figure.panels[0].image;
@@ -113,7 +113,7 @@ TEST_CASE("ray_directions_demo: perspective rays fan out, orthographic rays are 
     CHECK(perspective.at(w / 2, 0).g > perspective.at(w / 2, h - 1).g + 0.3);
 }
 
-TEST_CASE("barycentrics_demo: red, green and blue corners on the triangles", "[core]") {
+TEST_CASE("barycentrics_demo: red, green and blue corners on the triangles", "[app]") {
     const DemoFigure figure = barycentrics_demo(kTestSize);
     check_panels(figure, 2);
     for (const DemoPanel& panel : figure.panels) {
@@ -135,7 +135,7 @@ TEST_CASE("barycentrics_demo: red, green and blue corners on the triangles", "[c
     }
 }
 
-TEST_CASE("watertight_demo: intersect_triangle never leaks, the half-space test does", "[core]") {
+TEST_CASE("watertight_demo: intersect_triangle never leaks, the half-space test does", "[app]") {
     const DemoFigure figure = watertight_demo(kTestSize);
     check_panels(figure, 2);
     CHECK(count_colour(figure.panels[0].image, kLeak) == 0);
@@ -147,7 +147,7 @@ TEST_CASE("watertight_demo: intersect_triangle never leaks, the half-space test 
 }
 
 TEST_CASE("bvh_cost_demo and grid_cost_demo: the grid pays far more in the stadium",
-          "[core][meshes]") {
+          "[app][meshes]") {
     const DemoFigure bvh = bvh_cost_demo(kTestSize);
     const DemoFigure grid = grid_cost_demo(kTestSize);
     check_panels(bvh, 2);
@@ -161,7 +161,7 @@ TEST_CASE("bvh_cost_demo and grid_cost_demo: the grid pays far more in the stadi
 }
 
 TEST_CASE("normal_transform_demo: normals by M and by M^-T differ on the ellipsoids only",
-          "[core]") {
+          "[app]") {
     const DemoFigure figure = normal_transform_demo(kTestSize);
     check_panels(figure, 2);
     const Image& by_m = figure.panels[0].image;
@@ -172,7 +172,7 @@ TEST_CASE("normal_transform_demo: normals by M and by M^-T differ on the ellipso
     CHECK(differing_pixels(by_m, by_inverse_transpose, 0.1) > pixels / 20);
 }
 
-TEST_CASE("shadow_acne_demo: acne falls as epsilon grows, none with the error bound", "[core]") {
+TEST_CASE("shadow_acne_demo: acne falls as epsilon grows, none with the error bound", "[app]") {
     const DemoFigure figure = shadow_acne_demo(kTestSize);
     check_panels(figure, 4);
     const Image& error_bound = figure.panels[3].image;

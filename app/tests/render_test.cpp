@@ -79,7 +79,7 @@ Image render_view(const Scene& scene, View view, int threads) {
 
 TEST_CASE(
     "render: a rectangle seen from several cameras covers the pixels OpenGL's matrices predict",
-    "[core]") {
+    "[app]") {
     const Camera cameras[] = {
         {"front", {1, 0.5, 5}, {1, 0.5, 0}, {0, 1, 0}, 40, 0, 64, 48},
         {"from behind (mirrored)", {1, 0.5, -5}, {1, 0.5, 0}, {0, 1, 0}, 40, 0, 64, 48},
@@ -126,7 +126,7 @@ TEST_CASE(
     }
 }
 
-TEST_CASE("render: the image is the same for any number of threads", "[core]") {
+TEST_CASE("render: the image is the same for any number of threads", "[app]") {
     const Scene scene = parse_scene(
         "size 97 61\ncamera 1 2 6 0 0 0 0 1 0 50\npoint 2 4 3 1 1 1\ndiffuse 0.3 0.5 0.2\n"
         "specular 0.4 0.4 0.4\nsphere 0 0 0 1\nsphere 1.5 0.5 -1 0.7\npushTransform\n"
@@ -145,7 +145,7 @@ TEST_CASE("render: the image is the same for any number of threads", "[core]") {
     }
 }
 
-TEST_CASE("render: an error in a worker thread stops the render and reaches the caller", "[core]") {
+TEST_CASE("render: an error in a worker thread stops the render and reaches the caller", "[app]") {
     // The point light sits exactly where the centre pixel's ray meets the sphere, (0, 0, 1):
     // sample_light has no direction to it and throws, and the error must come out of the worker
     // threads intact (as a stub's NotImplemented does in a student's build).
@@ -156,7 +156,7 @@ TEST_CASE("render: an error in a worker thread stops the render and reaches the 
                       Catch::Matchers::Contains("is at the light"));
 }
 
-TEST_CASE("render_pixel: the rays view shows the direction as 0.5 (d + 1)", "[core]") {
+TEST_CASE("render_pixel: the rays view shows the direction as 0.5 (d + 1)", "[app]") {
     const Scene scene = parse_scene("size 3 3\ncamera 0 0 5 0 0 0 0 1 0 45\n", "rays.test", ".");
     const RenderScene render_scene = prepare_render_scene(scene);
     const Color centre = render_pixel(render_scene, View::rays, 1, 1, nullptr);
@@ -165,7 +165,7 @@ TEST_CASE("render_pixel: the rays view shows the direction as 0.5 (d + 1)", "[co
     CHECK(centre.b == Approx(0.0));  // straight down -z
 }
 
-TEST_CASE("finish_view: depth becomes t_near / t, misses black", "[core]") {
+TEST_CASE("finish_view: depth becomes t_near / t, misses black", "[app]") {
     Image image(3, 1);
     image.set(0, 0, Color(2.0));
     image.set(1, 0, Color(8.0));
@@ -176,7 +176,7 @@ TEST_CASE("finish_view: depth becomes t_near / t, misses black", "[core]") {
     CHECK(image.at(2, 0) == Color(0.0));
 }
 
-TEST_CASE("render: the normal and barycentric views colour a triangle as expected", "[core]") {
+TEST_CASE("render: the normal and barycentric views colour a triangle as expected", "[app]") {
     // fovy 90 from z = 5: the 9 x 9 image spans [-5, 5]^2 at z = 0, 10/9 per pixel.
     const Scene scene = parse_scene(
         "size 9 9\ncamera 0 0 5 0 0 0 0 1 0 90\nvertex -4 -4 0\nvertex 4 -4 0\nvertex 0 4 0\n"
@@ -195,7 +195,7 @@ TEST_CASE("render: the normal and barycentric views colour a triangle as expecte
 }
 
 TEST_CASE("scene_closest_hit: through the BVH, the same hit as closest_hit at every pixel",
-          "[core]") {
+          "[app]") {
     // 200 triangles and 50 spheres: a BVH scene. Every camera ray must get closest_hit's answer.
     std::string text = "size 48 36\ncamera 0 1 12 0 0 0 0 1 0 50\nplane 0 -3 0 0 1 0\n";
     for (int k = 0; k < 200; ++k) {

@@ -16,7 +16,7 @@ Scene parse(const std::string& text) {
 
 }  // namespace
 
-TEST_CASE("scene_features: counts primitives by kind, mesh triangles among them", "[core]") {
+TEST_CASE("scene_features: counts primitives by kind, mesh triangles among them", "[app]") {
     const SceneFeatures f = scene_features(
         parse("sphere 0 0 0 1\nsphere 1 0 0 1\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
               "tri 0 1 2\nmesh meshes/square.off\nplane 0 0 0 0 1 0\n"));
@@ -31,7 +31,7 @@ TEST_CASE("scene_features: counts primitives by kind, mesh triangles among them"
     CHECK_FALSE(f.uses_reflection());
 }
 
-TEST_CASE("scene_features: transforms count only where an object uses one", "[core]") {
+TEST_CASE("scene_features: transforms count only where an object uses one", "[app]") {
     CHECK_FALSE(scene_features(parse("translate 1 0 0\n")).uses_transforms());
     const SceneFeatures f =
         scene_features(parse("sphere 0 0 0 1\ntranslate 1 0 0\nsphere 0 0 0 1\n"));
@@ -39,14 +39,14 @@ TEST_CASE("scene_features: transforms count only where an object uses one", "[co
     CHECK(f.transformed_objects == 1);
 }
 
-TEST_CASE("scene_features: reflection needs a specular material and maxdepth above 0", "[core]") {
+TEST_CASE("scene_features: reflection needs a specular material and maxdepth above 0", "[app]") {
     CHECK(scene_features(parse("specular 0.5 0.5 0.5\nsphere 0 0 0 1\n")).reflective_objects == 1);
     CHECK_FALSE(
         scene_features(parse("maxdepth 0\nspecular 1 1 1\nsphere 0 0 0 1\n")).uses_reflection());
     CHECK_FALSE(scene_features(parse("sphere 0 0 0 1\nspecular 1 1 1\n")).uses_reflection());
 }
 
-TEST_CASE("stages_for_view: each view runs its stages and only what the scene uses", "[core]") {
+TEST_CASE("stages_for_view: each view runs its stages and only what the scene uses", "[app]") {
     const SceneFeatures plain = scene_features(parse("sphere 0 0 0 1\n"));
     CHECK(stages_for_view(plain, View::rays) == std::vector<int>{1, 2});
     CHECK(stages_for_view(plain, View::normal) == std::vector<int>{1, 2, 3});
@@ -58,7 +58,7 @@ TEST_CASE("stages_for_view: each view runs its stages and only what the scene us
     CHECK(stages_for_view(rich, View::full) == std::vector<int>{1, 2, 3, 5, 6, 7});
 }
 
-TEST_CASE("uses_bvh: spheres under a transform stay out of the BVH", "[core]") {
+TEST_CASE("uses_bvh: spheres under a transform stay out of the BVH", "[app]") {
     std::string ellipsoids = "scale 1 2 1\n";
     std::string spheres;
     for (std::size_t k = 0; k < kBvhFromPrimitives; ++k) {

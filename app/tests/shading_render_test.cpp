@@ -32,7 +32,7 @@ bool has_line_starting(const TraceLog& trace, const std::string& start) {
 
 }  // namespace
 
-TEST_CASE("shaded view: ambient plus a head-on directional light's diffuse term", "[core]") {
+TEST_CASE("shaded view: ambient plus a head-on directional light's diffuse term", "[app]") {
     // The ray meets the unit sphere at (0, 0, 1), normal +z; the light comes from +z, so
     // N . L = 1: I = A + Kd = 0.1 + 0.5.
     const Color c = pixel(kCentreCamera +
@@ -42,7 +42,7 @@ TEST_CASE("shaded view: ambient plus a head-on directional light's diffuse term"
     CHECK_THAT(c, IsNear(Color(0.6), kTight));
 }
 
-TEST_CASE("shaded view: a point light is divided by its attenuation", "[core]") {
+TEST_CASE("shaded view: a point light is divided by its attenuation", "[app]") {
     // The plane z = 0 at the origin, the light 2 above it: att = 0 + 0 * 2 + 1 * 2^2 = 4, so
     // I = Kd / 4 = 0.8 / 4.
     const Color c = pixel(kCentreCamera +
@@ -52,7 +52,7 @@ TEST_CASE("shaded view: a point light is divided by its attenuation", "[core]") 
     CHECK_THAT(c, IsNear(Color(0.2), kTight));
 }
 
-TEST_CASE("shaded view: an object between the point and the light leaves only ambient", "[core]") {
+TEST_CASE("shaded view: an object between the point and the light leaves only ambient", "[app]") {
     // The camera looks at the origin from (3, 0, 3), past the sphere (its ray stays 1.06 from
     // the centre (0, 0, 1.5), beyond the radius 0.5), and sees the plane z = 0 there. The shadow
     // ray from the origin straight up to the light at z = 3 goes through the sphere.
@@ -65,7 +65,7 @@ TEST_CASE("shaded view: an object between the point and the light leaves only am
     CHECK_THAT(pixel(unblocked, View::shaded), IsNear(Color(0.6), kTight));
 }
 
-TEST_CASE("full view: a mirror adds its reflectance times what the reflected ray sees", "[core]") {
+TEST_CASE("full view: a mirror adds its reflectance times what the reflected ray sees", "[app]") {
     // The plane z = 0 reflects the eye ray back up +z, where a sphere behind the camera (the eye
     // ray starts at z = 5 and goes down) glows with ambient 0.8. I = 0.1 + 0.5 * 0.8.
     const std::string scene = kCentreCamera +
@@ -77,7 +77,7 @@ TEST_CASE("full view: a mirror adds its reflectance times what the reflected ray
     CHECK_THAT(pixel(scene + "maxdepth 1\n", View::shaded), IsNear(Color(0.1), kTight));
 }
 
-TEST_CASE("full view: an ellipsoid is shaded with its transformed normal", "[core]") {
+TEST_CASE("full view: an ellipsoid is shaded with its transformed normal", "[app]") {
     // The unit sphere squashed to (2, 1, 0.5) and lit from +z: the eye ray meets its top at
     // (0, 0, 0.5), where the normal is +z, so I = Kd exactly; with M n instead of M^-T n it
     // would still be +z here, so also check the depth: t = 5 - 0.5.
@@ -88,8 +88,7 @@ TEST_CASE("full view: an ellipsoid is shaded with its transformed normal", "[cor
     CHECK(pixel(scene, View::depth).r == Approx(4.5).epsilon(kTight));
 }
 
-TEST_CASE("trace: the full view prints every shadow ray, shading term and reflected ray",
-          "[core]") {
+TEST_CASE("trace: the full view prints every shadow ray, shading term and reflected ray", "[app]") {
     TraceLog trace;
     pixel(kCentreCamera +
               "point 0 0 3 1 1 1\nambient 0.1 0.1 0.1\ndiffuse 0.5 0.5 0.5\n"

@@ -59,7 +59,7 @@ std::optional<Hit> throws_an_int(const Ray&, const Triangle&) {
 
 }  // namespace
 
-TEST_CASE("stage3_methods: every function of intersect.h, in order, by kind", "[core]") {
+TEST_CASE("stage3_methods: every function of intersect.h, in order, by kind", "[app]") {
     const std::vector<Stage3Method> methods = stage3_methods();
     std::vector<std::string> names;
     for (const Stage3Method& method : methods)
@@ -80,7 +80,7 @@ TEST_CASE("stage3_methods: every function of intersect.h, in order, by kind", "[
     CHECK(methods[6].kind == Kind::closest);
 }
 
-TEST_CASE("applies_to: a test applies to its own kind, closest_hit to every kind", "[core]") {
+TEST_CASE("applies_to: a test applies to its own kind, closest_hit to every kind", "[app]") {
     const std::vector<Stage3Method> methods = stage3_methods();
     const CaseShape sphere = Sphere{{0, 0, 0}, 1};
     const CaseShape triangle = Triangle{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
@@ -101,7 +101,7 @@ TEST_CASE("applies_to: a test applies to its own kind, closest_hit to every kind
     CHECK(applies_to(closest, plane));
 }
 
-TEST_CASE("run_method: each test answers for its own kind of primitive only", "[core]") {
+TEST_CASE("run_method: each test answers for its own kind of primitive only", "[app]") {
     const RayCase ray_case = mixed_case();
     for (const Stage3Method& method : stage3_methods()) {
         if (method.kind == Kind::closest) continue;
@@ -135,7 +135,7 @@ TEST_CASE("run_method: each test answers for its own kind of primitive only", "[
     CHECK(std::abs(triangle.hits[3]->gamma - 0.5) <= kTolerance);
 }
 
-TEST_CASE("run_method: closest_hit's choice is numbered as in the case", "[core]") {
+TEST_CASE("run_method: closest_hit's choice is numbered as in the case", "[app]") {
     const std::vector<Stage3Method> methods = stage3_methods();
     const Stage3Method& closest = method_named(methods, "closest_hit");
     // The nearest hit is the second triangle of closest_hit's list, and primitive 3 of the case.
@@ -166,7 +166,7 @@ TEST_CASE("run_method: closest_hit's choice is numbered as in the case", "[core]
     CHECK_FALSE(miss.closest_hit);
 }
 
-TEST_CASE("run_method: what a method throws becomes its answer", "[core]") {
+TEST_CASE("run_method: what a method throws becomes its answer", "[app]") {
     const RayCase ray_case = mixed_case();
 
     const CaseAnswer domain_error =

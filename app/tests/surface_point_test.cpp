@@ -158,7 +158,7 @@ SelfHits leave_surfaces(const Placement& where, const RayOffset& offset, int ray
 
 }  // namespace
 
-TEST_CASE("surface_point: the surface passes within sum |n_i| error_i of the point", "[core]") {
+TEST_CASE("surface_point: the surface passes within sum |n_i| error_i of the point", "[app]") {
     for (const Placement& where : kPlacements) {
         if (where.ellipsoid) continue;  // no exact distance to an ellipsoid here; see below
         const Scene scene = parse_scene(test_scene(where), "placed.test", ".");
@@ -184,7 +184,7 @@ TEST_CASE("surface_point: the surface passes within sum |n_i| error_i of the poi
     }
 }
 
-TEST_CASE("surface_point: the normal faces the ray, the shading normal the same side", "[core]") {
+TEST_CASE("surface_point: the normal faces the ray, the shading normal the same side", "[app]") {
     const Scene scene = parse_scene(
         "camera 0 0 5 0 0 0 0 1 0 45\nvertexnormal -1 -1 0 0 0 -1\nvertexnormal 1 -1 0 0.2 0 -1\n"
         "vertexnormal 0 1 0 0 0.2 -1\ntrinormal 0 1 2\n",
@@ -200,7 +200,7 @@ TEST_CASE("surface_point: the normal faces the ray, the shading normal the same 
     CHECK(point.to_eye == Vec3(0, 0, 1));
 }
 
-TEST_CASE("error_bound offset: rays leaving a surface never hit it again, at any scale", "[core]") {
+TEST_CASE("error_bound offset: rays leaving a surface never hit it again, at any scale", "[app]") {
     // The claim of docs/stage6.md: no acne, with no epsilon to tune, from 1e-3 to 1e4, far from
     // the origin, and on ellipsoids under a transform.
     for (const Placement& where : kPlacements) {
@@ -211,7 +211,7 @@ TEST_CASE("error_bound offset: rays leaving a surface never hit it again, at any
     }
 }
 
-TEST_CASE("along_ray offset: an epsilon too small for the scene's scale gives acne", "[core]") {
+TEST_CASE("along_ray offset: an epsilon too small for the scene's scale gives acne", "[app]") {
     // The failure the error bound avoids, shown so that the test above is known to be able to
     // fail: at 1e4, 1e-13 is far below the rounding of the hit point.
     const SelfHits count = leave_surfaces(Placement{1e4, Vec3(0.0), false},

@@ -21,7 +21,7 @@ std::vector<std::string> trace(const std::string& text, View view, int x, int y)
 }  // namespace
 
 TEST_CASE("trace: lists the camera ray, every primitive with its result, and the closest hit",
-          "[core]") {
+          "[app]") {
     const std::vector<std::string> lines = trace(
         "size 3 3\ncamera 0 0 5 0 0 0 0 1 0 45\nsphere 0 0 0 1\nsphere 0 0 -3 1\n"
         "sphere 5 0 0 1\nplane 0 0 -10 0 0 1\n",
@@ -35,14 +35,14 @@ TEST_CASE("trace: lists the camera ray, every primitive with its result, and the
     CHECK(lines[5] == "closest_hit: sphere 0 at t=4 point (0, 0, 1) normal (0, 0, 1)");
 }
 
-TEST_CASE("trace: the rays view stops after the camera ray", "[core]") {
+TEST_CASE("trace: the rays view stops after the camera ray", "[app]") {
     const std::vector<std::string> lines =
         trace("size 3 3\ncamera 0 0 5 0 0 0 0 1 0 45\nsphere 0 0 0 1\n", View::rays, 1, 1);
     REQUIRE(lines.size() == 1);
     CHECK(lines[0].rfind("camera ray:", 0) == 0);
 }
 
-TEST_CASE("trace: a mesh's misses are counted, not listed one by one", "[core]") {
+TEST_CASE("trace: a mesh's misses are counted, not listed one by one", "[app]") {
     std::string text = "size 3 3\ncamera 0 0 5 0 0 0 0 1 0 45\n";
     for (int k = 0; k < 100; ++k)
         text += "sphere " + std::to_string(10 + k) + " 0 0 0.5\n";
@@ -56,7 +56,7 @@ TEST_CASE("trace: a mesh's misses are counted, not listed one by one", "[core]")
     CHECK(lines[4].rfind("closest_hit: sphere 100", 0) == 0);
 }
 
-TEST_CASE("trace: a miss says so", "[core]") {
+TEST_CASE("trace: a miss says so", "[app]") {
     const std::vector<std::string> lines =
         trace("size 3 3\ncamera 0 0 5 0 0 0 0 1 0 45\nsphere 9 9 9 1\n", View::depth, 0, 0);
     CHECK(lines.back() == "closest_hit: miss");

@@ -24,7 +24,7 @@ Image pattern() {
 
 }  // namespace
 
-TEST_CASE("write_image: PNG round trip keeps row 0 at the top and clamps to [0, 1]", "[core]") {
+TEST_CASE("write_image: PNG round trip keeps row 0 at the top and clamps to [0, 1]", "[base]") {
     const testing::ScratchFolder scratch("image-io-test");
     const std::filesystem::path file = scratch.path() / "pattern.png";
     write_image(pattern(), file);
@@ -39,7 +39,7 @@ TEST_CASE("write_image: PNG round trip keeps row 0 at the top and clamps to [0, 
     CHECK(back.at(1, 1).b == Approx(64.0 / 255.0));
 }
 
-TEST_CASE("write_image: EXR keeps the floats as they are", "[core]") {
+TEST_CASE("write_image: EXR keeps the floats as they are", "[base]") {
     const testing::ScratchFolder scratch("image-io-test");
     const std::filesystem::path file = scratch.path() / "pattern.exr";
     write_image(pattern(), file);
@@ -48,13 +48,13 @@ TEST_CASE("write_image: EXR keeps the floats as they are", "[core]") {
     CHECK(back.at(0, 1) == Color(0.5));
 }
 
-TEST_CASE("write_image: an unknown format is an error naming the file", "[core]") {
+TEST_CASE("write_image: an unknown format is an error naming the file", "[base]") {
     const testing::ScratchFolder scratch("image-io-test");
     CHECK_THROWS_WITH(write_image(pattern(), scratch.path() / "pattern.unknown-format"),
                       Catch::Matchers::Contains("pattern.unknown-format"));
 }
 
-TEST_CASE("read_image: a missing file is an error naming it", "[core]") {
+TEST_CASE("read_image: a missing file is an error naming it", "[base]") {
     const testing::ScratchFolder scratch("image-io-test");
     CHECK_THROWS_AS(read_image(scratch.path() / "missing.png"), std::runtime_error);
 }

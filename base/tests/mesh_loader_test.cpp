@@ -31,21 +31,21 @@ std::string error_of(const std::filesystem::path& path) {
 
 }  // namespace
 
-TEST_CASE("load_mesh: OFF with a comment, a quad face and a face colour", "[core]") {
+TEST_CASE("load_mesh: OFF with a comment, a quad face and a face colour", "[base]") {
     check_unit_square(load_mesh(kMeshes / "square.off"));
 }
 
-TEST_CASE("load_mesh: OBJ with a quad face, 1-based indices", "[core]") {
+TEST_CASE("load_mesh: OBJ with a quad face, 1-based indices", "[base]") {
     check_unit_square(load_mesh(kMeshes / "square.obj"));
 }
 
-TEST_CASE("load_mesh: OBJ negative indices count back from the last vertex", "[core]") {
+TEST_CASE("load_mesh: OBJ negative indices count back from the last vertex", "[base]") {
     const TriangleMesh mesh = load_mesh(kMeshes / "relative_indices.obj");
     REQUIRE(mesh.faces.size() == 1);
     CHECK(mesh.faces[0] == std::array<std::uint32_t, 3>{0, 1, 2});
 }
 
-TEST_CASE("load_mesh: OFF errors name the file and the line", "[core]") {
+TEST_CASE("load_mesh: OFF errors name the file and the line", "[base]") {
     const std::string bad_index = (kMeshes / "bad_index.off").string();
     CHECK(error_of(kMeshes / "bad_index.off") ==
           bad_index +
@@ -60,7 +60,7 @@ TEST_CASE("load_mesh: OFF errors name the file and the line", "[core]") {
         Catch::Matchers::Contains("non_finite.off:4: a vertex coordinate 'inf' is not finite"));
 }
 
-TEST_CASE("load_mesh: an OFF record is one line and never borrows from the next", "[core]") {
+TEST_CASE("load_mesh: an OFF record is one line and never borrows from the next", "[base]") {
     CHECK_THAT(error_of(kMeshes / "short_face.off"),
                Catch::Matchers::Contains("short_face.off:6: a face of 3 vertices lists only 2"));
     CHECK_THAT(
@@ -69,13 +69,13 @@ TEST_CASE("load_mesh: an OFF record is one line and never borrows from the next"
 }
 
 TEST_CASE("load_mesh: an OFF header promising more than the file holds allocates nothing",
-          "[core]") {
+          "[base]") {
     CHECK_THAT(
         error_of(kMeshes / "huge_header.off"),
         Catch::Matchers::Contains("huge_header.off:2: the header promises 999999999999 vertices"));
 }
 
-TEST_CASE("load_mesh: OBJ errors name the file and the line", "[core]") {
+TEST_CASE("load_mesh: OBJ errors name the file and the line", "[base]") {
     CHECK_THAT(error_of(kMeshes / "bad_index.obj"),
                Catch::Matchers::Contains(
                    "bad_index.obj:4: vertex index 4 is out of range: the file has 3 vertices"));
@@ -93,7 +93,7 @@ TEST_CASE("load_mesh: OBJ errors name the file and the line", "[core]") {
         Catch::Matchers::Contains("bad_relative_index.obj:4: vertex index -4 is out of range"));
 }
 
-TEST_CASE("load_mesh: an unknown extension, a missing file or a folder is an error", "[core]") {
+TEST_CASE("load_mesh: an unknown extension, a missing file or a folder is an error", "[base]") {
     CHECK_THAT(error_of(kMeshes / "cube.ply"),
                Catch::Matchers::Contains("unknown mesh format '.ply'"));
     CHECK_THAT(error_of(kMeshes / "missing.off"),

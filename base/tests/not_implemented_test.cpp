@@ -13,7 +13,7 @@ double stub() {
 
 }  // namespace
 
-TEST_CASE("RAYSTEP_TODO: names the stage, the function and the handout section", "[core]") {
+TEST_CASE("RAYSTEP_TODO: names the stage, the function and the handout section", "[base]") {
     try {
         stub();
         FAIL("the stub returned");
@@ -27,7 +27,7 @@ TEST_CASE("RAYSTEP_TODO: names the stage, the function and the handout section",
     }
 }
 
-TEST_CASE("InputError: reads file:line: problem, or file: problem without a line", "[core]") {
+TEST_CASE("InputError: reads file:line: problem, or file: problem without a line", "[base]") {
     CHECK(std::string(InputError("a.test", 12, "bad").what()) == "a.test:12: bad");
     CHECK(std::string(InputError("a.test", 0, "bad").what()) == "a.test: bad");
 }

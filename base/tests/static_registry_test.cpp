@@ -22,14 +22,14 @@ const StaticRegistry<Fruit>::Registration pear(Fruit{"pear"});
 
 }  // namespace
 
-TEST_CASE("StaticRegistry: entries registered by static objects, in their order", "[core]") {
+TEST_CASE("StaticRegistry: entries registered by static objects, in their order", "[base]") {
     const std::vector<Fruit>& fruits = StaticRegistry<Fruit>::entries();
     REQUIRE(fruits.size() == 2);
     CHECK(fruits[0].name == "apple");
     CHECK(fruits[1].name == "pear");
 }
 
-TEST_CASE("StaticRegistry: each kind of entry has a registry of its own", "[core]") {
+TEST_CASE("StaticRegistry: each kind of entry has a registry of its own", "[base]") {
     REQUIRE(StaticRegistry<Vegetable>::entries().size() == 1);
     CHECK(StaticRegistry<Vegetable>::entries()[0].name == "leek");
 }

@@ -22,7 +22,7 @@ long count(const std::string& token) {
 
 }  // namespace
 
-TEST_CASE("split_fields: splits on any white space and drops comments", "[core]") {
+TEST_CASE("split_fields: splits on any white space and drops comments", "[base]") {
     std::vector<std::string_view> fields;
     const std::string line = "  sphere\t1  2 3 # the rest is a comment\r";
     split_fields(line, fields);
@@ -35,7 +35,7 @@ TEST_CASE("split_fields: splits on any white space and drops comments", "[core]"
     CHECK(fields.empty());
 }
 
-TEST_CASE("parse_finite_number: reads decimal, exponent and signed forms", "[core]") {
+TEST_CASE("parse_finite_number: reads decimal, exponent and signed forms", "[base]") {
     CHECK(number("1.5") == 1.5);
     CHECK(number("-2e-3") == -2e-3);
     CHECK(number("+.25") == 0.25);
@@ -43,7 +43,7 @@ TEST_CASE("parse_finite_number: reads decimal, exponent and signed forms", "[cor
 }
 
 TEST_CASE("parse_finite_number: rejects text, trailing characters, inf, nan and overflow",
-          "[core]") {
+          "[base]") {
     CHECK_THROWS_WITH(number("abc"), "test.txt:7: the value 'abc' is not a number");
     CHECK_THROWS_WITH(number("1.5x"), "test.txt:7: the value '1.5x' is not a number");
     CHECK_THROWS_WITH(number("2,5"), "test.txt:7: the value '2,5' is not a number");
@@ -52,7 +52,7 @@ TEST_CASE("parse_finite_number: rejects text, trailing characters, inf, nan and 
     CHECK_THROWS_WITH(number("1e999"), "test.txt:7: the value '1e999' is too large for a double");
 }
 
-TEST_CASE("parse_count: reads whole non-negative numbers only", "[core]") {
+TEST_CASE("parse_count: reads whole non-negative numbers only", "[base]") {
     CHECK(count("0") == 0);
     CHECK(count("42") == 42);
     CHECK_THROWS_WITH(count("2.5"), "test.txt:7: the count '2.5' is not a whole number");

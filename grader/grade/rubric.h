@@ -8,7 +8,7 @@
 
 namespace raystep::grade {
 
-/// How one check is scored (grader/rubric/rubric.json; docs/instructor.md, "The rubric"). Every
+/// How one check is scored (grader/rubric/rubric.json; docs/instructor.md, "4. The rubric"). Every
 /// check measures a fraction in [0, 1]: of cases passed, of pixels that match, or the speed ratio
 /// to the reference. The score is `points` at or above `full_at`, 0 at or below `zero_at`, and in
 /// proportion between, so that a nearly right stage keeps most of its points and a broken one

@@ -7,7 +7,8 @@
 namespace raystep::grade {
 
 /// A stage as the grader takes it from a submission: its folder and the files its manifest.txt
-/// lists (docs/design: the grader takes those files and nothing else).
+/// lists, which are all the grader takes from a submission, and nothing else
+/// (ARCHITECTURE.md, "Student code or the reference").
 struct StageManifest {
     int number = 0;
     std::string folder;              ///< "3_intersect"

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Gradescope runs this once, as root, when it builds the autograder's image (docs/instructor.md,
-# "Gradescope"). The autograder zip (make-autograder-zip.sh) holds the instructor repository with
-# this file and run_autograder at its top; Gradescope unpacks it into $AUTOGRADER/source.
+# Gradescope runs this once, as root, when it builds the autograder's image
+# (docs/instructor.md, "6. Gradescope"). The autograder zip (make-autograder-zip.sh) holds the
+# instructor repository with this file and run_autograder at its top; Gradescope unpacks it into
+# $AUTOGRADER/source.
 #
 # It installs only what grading needs (the packages already there are taken as they are), builds
 # only raystep-grade, the reference probe and the unpacker, and then closes the repository to every

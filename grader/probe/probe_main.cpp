@@ -1,4 +1,4 @@
-// raystep-probe: the untrusted half of grading (DESIGN.md, "The grader: trust split"). Built
+// raystep-probe: the untrusted half of grading (ARCHITECTURE.md, "The grader"). Built
 // from a submission's files and the reference for the rest, it runs in a sandbox, reads one query
 // per line on stdin and writes one answer per line on its answer channel, in order, flushing each.
 // It holds no expected answer and judges nothing: raystep-grade does, from outside.

@@ -20,10 +20,9 @@ std::string stage_table(const GradeReport& report);
 /// (GradeReport::intake_problem), the total, the stage table, then per stage one line per check
 /// (outcome, score, id, summary) and, under each check that did not pass, its first
 /// counterexample with the audience's command that reproduces it (reproduce_command,
-/// audience.h), or the first lines of its details. For
-/// the student, the checks they are not shown (audience.h) are left out of every line and sum,
-/// and a closing line says how many there are; the instructor sees them all, marked with their
-/// visibility.
+/// audience.h), or the first lines of its details. For the student, the checks they are not
+/// shown (audience.h) are left out of every line and sum, and a closing line says how many there
+/// are; the instructor sees them all, marked with their visibility.
 std::string console_summary(const GradeReport& report, Audience audience);
 
 }  // namespace raystep::grade

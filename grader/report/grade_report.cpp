@@ -8,7 +8,7 @@ namespace raystep::grade {
 
 namespace {
 
-// Stage 0 is the whole pipeline; 1 to 7 are the lectures' stages (docs/design, "Stages").
+// Stage 0 is the whole pipeline, 1 to 7 the lectures' stages (ARCHITECTURE.md, "How a check ends").
 constexpr int kLastStage = 7;
 
 }  // namespace

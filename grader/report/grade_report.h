@@ -10,7 +10,7 @@ namespace raystep::grade {
 // JUnit, HTML) is written from. Nothing here is computed by student code: raystep-grade fills it
 // from the probes' raw answers and its own expected answers.
 
-/// How a check ended (docs/design: every check ends as one of these).
+/// How a check ended: every check ends as one of these (ARCHITECTURE.md, "How a check ends").
 enum class Outcome {
     passed,
     failed,           ///< answered, but wrong: see the counterexamples

@@ -18,8 +18,8 @@ namespace raystep::grade {
 ///   for the outcome passed, whatever the points), "name", "number" ("3.2": the stage, then the
 ///   check's place in it; 0 is the pipeline), "output" (outcome and summary, then
 ///   check_findings.h for the student, who reads it), "tags" (the stage and kind), "visibility"
-///   (the rubric's, kept, so that
-///   Gradescope withholds hidden checks itself) and "extra_data" (id, outcome and metrics).
+///   (the rubric's, kept, so that Gradescope withholds hidden checks itself) and "extra_data"
+///   (id, outcome and metrics).
 ///
 /// Every string is plain text ("output_format", "name_format" and the defaults for tests are all
 /// "text"): Gradescope renders "simple_format", its default for the top-level output, as HTML,

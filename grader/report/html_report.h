@@ -18,11 +18,11 @@ struct HtmlReportOptions {
     /// relative to the page, which must then sit in the images' folder (the instructor's page).
     bool self_contained = true;
 
-    /// The speed-versus-error chart (docs/design, "Reports") as one inline <svg> element, placed
-    /// after the stage table under "Speed versus error". Inserted as it is, so it must be made by
-    /// raystep's own code from the speed checks' metrics the page's audience is shown, with any
-    /// text from a submission escaped, and be well-formed XML like the rest of the page. Empty:
-    /// the page has no chart section.
+    /// The speed-versus-error chart (docs/measurements/pareto.md, "In the grader's report") as one
+    /// inline <svg> element, placed after the stage table under "Speed versus error". Inserted as
+    /// it is, so it must be made by raystep's own code from the speed checks' metrics the page's
+    /// audience is shown, with any text from a submission escaped, and be well-formed XML like the
+    /// rest of the page. Empty: the page has no chart section.
     std::string speed_error_chart_svg;
 };
 

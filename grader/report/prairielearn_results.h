@@ -29,7 +29,7 @@ namespace raystep::grade {
 /// student is not shown are summed into one test per stage, "stage N: hidden checks", with their
 /// points and nothing of their names, inputs, output or images. Their points still count, the
 /// tests' points add up to the score, and the student learns which stage lost them, as the
-/// per-stage partial credit intends (docs/design, "Student code versus reference code").
+/// per-stage partial credit intends (ARCHITECTURE.md, "Student code or the reference").
 ///
 /// The documentation limits the whole file to 1 MB: the tests' outputs share about 400 KB, each
 /// clipped to its share, and the images about 450 KB, given first to the checks that did not

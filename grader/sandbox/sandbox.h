@@ -9,7 +9,7 @@
 namespace raystep::grade {
 
 // Running untrusted programs (a submission's probe, or the compiler on a submission's files) so
-// that nothing they do reaches beyond their run: DESIGN.md, "The grader: trust split".
+// that nothing they do reaches beyond their run: ARCHITECTURE.md, "The grader".
 //
 // Always (Linux; the grader runs there): rlimits on CPU time, address space, processes and file
 // size, a wall-clock timeout after which the whole process group is killed, and a cap on the

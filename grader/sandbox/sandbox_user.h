@@ -47,8 +47,8 @@ void hand_over(const std::filesystem::path& folder, const Identity& identity);
 
 /// Those of `paths` that a sandboxed program could read or execute (or, for a folder, list or
 /// enter), were it to name them: asked of the kernel by a child process that becomes a user of
-/// program_identity's. Empty when the grader is
-/// not root (its programs then run as its own user, and only bubblewrap can hide anything).
+/// program_identity's. Empty when the grader is not root (its programs then run as its own user,
+/// and only bubblewrap can hide anything).
 std::vector<std::filesystem::path> open_to_sandbox_user(
     const std::vector<std::filesystem::path>& paths);
 

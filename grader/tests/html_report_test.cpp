@@ -154,7 +154,8 @@ TEST_CASE("html_report: the student's page has no withheld check", "[report]") {
     CHECK(page.values("//table[@class='scores']/tfoot/tr/td[1]") == Strings{"12.5 / 32"});
 }
 
-TEST_CASE("html_report: the speed-versus-error chart goes where issue 7 will put it", "[report]") {
+TEST_CASE("html_report: a chart gets its own section after the stage table, none without one",
+          "[report]") {
     const ScratchFolder scratch("html-report-test");
     CHECK_THAT(written(scratch.path(), Audience::student),
                !Catch::Matchers::Contains("speed-versus-error"));

@@ -1,4 +1,4 @@
-// raystep-grade: the trusted half of grading (docs/design, "The grader: trust split";
+// raystep-grade: the trusted half of grading (ARCHITECTURE.md, "The grader";
 // docs/instructor.md). Grades one submission or a whole class, and makes the student release.
 // Exit codes: 0 graded (whatever the score), 1 the grader itself failed, 2 a bad command line.
 
@@ -26,7 +26,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // Says which sandbox grades, before anything is graded: without bubblewrap the isolation is the
-// machine's or container's (docs/instructor.md, "The sandbox").
+// machine's or container's (docs/instructor.md, "3. The sandbox: what a submission cannot do").
 void print_sandbox() {
     std::printf("sandbox: %s\n",
                 bubblewrap_available()
