@@ -1,5 +1,6 @@
 #include <cstdio>
 #include <exception>
+#include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -37,6 +38,21 @@ int main(int argc, char** argv) {
     if (argc == 1) {
         std::fputs(app.help().c_str(), stderr);
         return 2;
+    }
+    // A word that names no command gets the list of those this build has: CLI11 alone would say
+    // only that a subcommand is required (a student release has no `bench`, for one).
+    if (argv[1][0] != '-') {
+        std::string names;
+        bool known = false;
+        for (const CLI::App* command : app.get_subcommands({})) {
+            known = known || command->get_name() == argv[1];
+            names += (names.empty() ? "" : ", ") + command->get_name();
+        }
+        if (!known) {
+            std::fprintf(stderr, "raystep: no command '%s' in this build; its commands are: %s\n",
+                         argv[1], names.c_str());
+            return 2;
+        }
     }
     try {
         app.parse(argc, argv);
