@@ -1,16 +1,20 @@
-// Public tests for stage 1. Run them with `ctest --test-dir build/release -L stage1`, or run
+// Public tests for stage 1. Run them with `ctest --preset release -L stage1`, or run
 // build/release/bin/raystep_stage1_tests directly to see every failure in full.
 //
+// One function's tests alone: `build/release/bin/raystep_stage1_tests "normalize:*"`.
+//
 // The loops call your function before the CHECK, not inside it: an exception outside a CHECK
-// ends the test at once, so a stub is reported once rather than a thousand times.
+// ends the test at once, so a stub is reported once rather than a thousand times. Where several
+// literal cases follow each other, each is a REQUIRE, which ends the test at the first failure,
+// and shows the inputs in its expression.
 
 #include <cmath>
 #include <limits>
-#include <random>
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
 
+#include "base/math/portable_random.h"
 #include "base/testing/catch.h"
 #include "base/testing/vec3_matchers.h"
 #include "stages/1_vectors/vectors.h"
@@ -20,26 +24,20 @@ using raystep::testing::IsNear;
 
 namespace {
 
-// Components in [-10, 10] from a seeded generator, so a failure can be replayed.
-Vec3 random_vec3(std::mt19937_64& rng) {
-    std::uniform_real_distribution<double> u(-10.0, 10.0);
-    return {u(rng), u(rng), u(rng)};
-}
-
 constexpr double kTight = 1e-14;  // a few ulps of the values these tests use
 
 }  // namespace
 
 TEST_CASE("dot: multiplies componentwise and adds", "[stage1]") {
-    CHECK(dot({1, 2, 3}, {4, -5, 6}) == 1 * 4 - 2 * 5 + 3 * 6);
-    CHECK(dot({1, 0, 0}, {0, 1, 0}) == 0.0);
+    REQUIRE(dot({1, 2, 3}, {4, -5, 6}) == 1 * 4 - 2 * 5 + 3 * 6);
+    REQUIRE(dot({1, 0, 0}, {0, 1, 0}) == 0.0);
 }
 
 TEST_CASE("dot: agrees with glm::dot on random vectors", "[stage1]") {
-    std::mt19937_64 rng(1);
+    PortableRandom random(1);  // components in [-10, 10], seeded so a failure replays
     for (int k = 0; k < 1000; ++k) {
-        const Vec3 a = random_vec3(rng);
-        const Vec3 b = random_vec3(rng);
+        const Vec3 a = random.point(10.0);
+        const Vec3 b = random.point(10.0);
         CAPTURE(k, a.x, a.y, a.z, b.x, b.y, b.z);
         const double got = dot(a, b);
         CHECK(got == Approx(glm::dot(a, b)).epsilon(kTight).margin(kTight));
@@ -47,17 +45,17 @@ TEST_CASE("dot: agrees with glm::dot on random vectors", "[stage1]") {
 }
 
 TEST_CASE("cross: x cross y is z (right-handed)", "[stage1]") {
-    CHECK(cross({1, 0, 0}, {0, 1, 0}) == Vec3(0, 0, 1));
-    CHECK(cross({0, 1, 0}, {0, 0, 1}) == Vec3(1, 0, 0));
-    CHECK(cross({0, 0, 1}, {1, 0, 0}) == Vec3(0, 1, 0));
-    CHECK(cross({0, 1, 0}, {1, 0, 0}) == Vec3(0, 0, -1));
+    REQUIRE(cross({1, 0, 0}, {0, 1, 0}) == Vec3(0, 0, 1));
+    REQUIRE(cross({0, 1, 0}, {0, 0, 1}) == Vec3(1, 0, 0));
+    REQUIRE(cross({0, 0, 1}, {1, 0, 0}) == Vec3(0, 1, 0));
+    REQUIRE(cross({0, 1, 0}, {1, 0, 0}) == Vec3(0, 0, -1));
 }
 
 TEST_CASE("cross: is perpendicular to both and agrees with glm::cross", "[stage1]") {
-    std::mt19937_64 rng(2);
+    PortableRandom random(2);  // components in [-10, 10], seeded so a failure replays
     for (int k = 0; k < 1000; ++k) {
-        const Vec3 a = random_vec3(rng);
-        const Vec3 b = random_vec3(rng);
+        const Vec3 a = random.point(10.0);
+        const Vec3 b = random.point(10.0);
         CAPTURE(k, a.x, a.y, a.z, b.x, b.y, b.z);
         const Vec3 c = cross(a, b);
         CHECK_THAT(c, IsNear(glm::cross(a, b), kTight));
@@ -67,15 +65,15 @@ TEST_CASE("cross: is perpendicular to both and agrees with glm::cross", "[stage1
 }
 
 TEST_CASE("length: of (3, 4, 12) is 13", "[stage1]") {
-    CHECK(length({3, 4, 12}) == 13.0);
-    CHECK(length({0, 0, 0}) == 0.0);
-    CHECK(length({0, -2, 0}) == 2.0);
+    REQUIRE(length({3, 4, 12}) == 13.0);
+    REQUIRE(length({0, 0, 0}) == 0.0);
+    REQUIRE(length({0, -2, 0}) == 2.0);
 }
 
 TEST_CASE("length: agrees with glm::length on random vectors", "[stage1]") {
-    std::mt19937_64 rng(3);
+    PortableRandom random(3);  // components in [-10, 10], seeded so a failure replays
     for (int k = 0; k < 1000; ++k) {
-        const Vec3 v = random_vec3(rng);
+        const Vec3 v = random.point(10.0);
         CAPTURE(k, v.x, v.y, v.z);
         const double got = length(v);
         CHECK(got == Approx(glm::length(v)).epsilon(kTight));
@@ -94,14 +92,14 @@ TEST_CASE("length: does not underflow for components near 1e-200", "[stage1]") {
 }
 
 TEST_CASE("normalize: gives a unit vector in the same direction", "[stage1]") {
-    CHECK_THAT(normalize({0, 0, -5}), IsNear(Vec3{0, 0, -1}, kTight));
-    CHECK_THAT(normalize({3, 4, 12}), IsNear(Vec3(3, 4, 12) / 13.0, kTight));
+    REQUIRE_THAT(normalize({0, 0, -5}), IsNear(Vec3{0, 0, -1}, kTight));
+    REQUIRE_THAT(normalize({3, 4, 12}), IsNear(Vec3(3, 4, 12) / 13.0, kTight));
 }
 
 TEST_CASE("normalize: agrees with glm::normalize on random vectors", "[stage1]") {
-    std::mt19937_64 rng(4);
+    PortableRandom random(4);  // components in [-10, 10], seeded so a failure replays
     for (int k = 0; k < 1000; ++k) {
-        const Vec3 v = random_vec3(rng);
+        const Vec3 v = random.point(10.0);
         CAPTURE(k, v.x, v.y, v.z);
         const Vec3 n = normalize(v);
         CHECK_THAT(n, IsNear(glm::normalize(v), kTight));
@@ -110,9 +108,9 @@ TEST_CASE("normalize: agrees with glm::normalize on random vectors", "[stage1]")
 }
 
 TEST_CASE("normalize: works for tiny and huge vectors", "[stage1]") {
-    CHECK_THAT(normalize({3e-200, 4e-200, 12e-200}), IsNear(Vec3(3, 4, 12) / 13.0, kTight));
-    CHECK_THAT(normalize({3e200, 4e200, 12e200}), IsNear(Vec3(3, 4, 12) / 13.0, kTight));
-    CHECK_THAT(normalize({5e-324, 0, 0}), IsNear(Vec3{1, 0, 0}, kTight));  // the smallest double
+    REQUIRE_THAT(normalize({3e-200, 4e-200, 12e-200}), IsNear(Vec3(3, 4, 12) / 13.0, kTight));
+    REQUIRE_THAT(normalize({3e200, 4e200, 12e200}), IsNear(Vec3(3, 4, 12) / 13.0, kTight));
+    REQUIRE_THAT(normalize({5e-324, 0, 0}), IsNear(Vec3{1, 0, 0}, kTight));  // the smallest double
 }
 
 TEST_CASE("normalize: the zero vector has no direction, so it throws", "[stage1]") {
@@ -128,16 +126,17 @@ TEST_CASE("normalize: a vector with an infinite or NaN component throws", "[stag
 }
 
 TEST_CASE("reflect: a ray hitting the floor bounces up", "[stage1]") {
-    CHECK_THAT(reflect({1, -1, 0}, {0, 1, 0}), IsNear(Vec3{1, 1, 0}, kTight));
-    CHECK_THAT(reflect({0, 0, -1}, {0, 0, 1}), IsNear(Vec3{0, 0, 1}, kTight));  // straight back
-    CHECK_THAT(reflect({1, 0, 0}, {0, 1, 0}), IsNear(Vec3{1, 0, 0}, kTight));  // grazing: unchanged
+    REQUIRE_THAT(reflect({1, -1, 0}, {0, 1, 0}), IsNear(Vec3{1, 1, 0}, kTight));
+    REQUIRE_THAT(reflect({0, 0, -1}, {0, 0, 1}), IsNear(Vec3{0, 0, 1}, kTight));  // straight back
+    REQUIRE_THAT(reflect({1, 0, 0}, {0, 1, 0}),
+                 IsNear(Vec3{1, 0, 0}, kTight));  // grazing: unchanged
 }
 
 TEST_CASE("reflect: keeps the length and agrees with glm::reflect", "[stage1]") {
-    std::mt19937_64 rng(5);
+    PortableRandom random(5);  // components in [-10, 10], seeded so a failure replays
     for (int k = 0; k < 1000; ++k) {
-        const Vec3 d = random_vec3(rng);
-        const Vec3 n = glm::normalize(random_vec3(rng));
+        const Vec3 d = random.point(10.0);
+        const Vec3 n = glm::normalize(random.point(10.0));
         CAPTURE(k, d.x, d.y, d.z, n.x, n.y, n.z);
         const Vec3 r = reflect(d, n);
         CHECK_THAT(r, IsNear(glm::reflect(d, n), 1e-13));
@@ -146,11 +145,11 @@ TEST_CASE("reflect: keeps the length and agrees with glm::reflect", "[stage1]") 
 }
 
 TEST_CASE("project_onto: keeps the part along the line", "[stage1]") {
-    CHECK_THAT(project_onto({3, 4, 5}, {0, 2, 0}), IsNear(Vec3{0, 4, 0}, kTight));
-    CHECK_THAT(project_onto({1, 1, 0}, {1, 0, 0}), IsNear(Vec3{1, 0, 0}, kTight));
-    CHECK_THAT(project_onto({0, 0, 7}, {1, 1, 0}), IsNear(Vec3{0, 0, 0}, kTight));
-    CHECK_THAT(project_onto({2, 0, 0}, {-1, 0, 0}),
-               IsNear(Vec3{2, 0, 0}, kTight));  // onto the line, either way
+    REQUIRE_THAT(project_onto({3, 4, 5}, {0, 2, 0}), IsNear(Vec3{0, 4, 0}, kTight));
+    REQUIRE_THAT(project_onto({1, 1, 0}, {1, 0, 0}), IsNear(Vec3{1, 0, 0}, kTight));
+    REQUIRE_THAT(project_onto({0, 0, 7}, {1, 1, 0}), IsNear(Vec3{0, 0, 0}, kTight));
+    REQUIRE_THAT(project_onto({2, 0, 0}, {-1, 0, 0}),
+                 IsNear(Vec3{2, 0, 0}, kTight));  // onto the line, either way
 }
 
 TEST_CASE("project_onto: onto the zero vector throws", "[stage1]") {
@@ -159,20 +158,21 @@ TEST_CASE("project_onto: onto the zero vector throws", "[stage1]") {
 
 TEST_CASE("project_onto: a tiny or huge onto is a line like any other", "[stage1]") {
     // onto . onto underflows to 0 for (0, 1e-200, 0) and overflows for (0, 1e200, 0).
-    CHECK_THAT(project_onto({2, 3, 4}, {0, 1e-200, 0}), IsNear(Vec3{0, 3, 0}, kTight));
-    CHECK_THAT(project_onto({2, 3, 4}, {0, 1e200, 0}), IsNear(Vec3{0, 3, 0}, kTight));
+    REQUIRE_THAT(project_onto({2, 3, 4}, {0, 1e-200, 0}), IsNear(Vec3{0, 3, 0}, kTight));
+    REQUIRE_THAT(project_onto({2, 3, 4}, {0, 1e200, 0}), IsNear(Vec3{0, 3, 0}, kTight));
 }
 
 TEST_CASE("perpendicular_to: is what projection leaves, at right angles to the edge", "[stage1]") {
-    CHECK_THAT(perpendicular_to({3, 4, 5}, {0, 2, 0}), IsNear(Vec3{3, 0, 5}, kTight));
-    std::mt19937_64 rng(6);
+    REQUIRE_THAT(perpendicular_to({3, 4, 5}, {0, 2, 0}), IsNear(Vec3{3, 0, 5}, kTight));
+    PortableRandom random(6);  // components in [-10, 10], seeded so a failure replays
     for (int k = 0; k < 1000; ++k) {
-        const Vec3 v = random_vec3(rng);
-        const Vec3 edge = random_vec3(rng);
+        const Vec3 v = random.point(10.0);
+        const Vec3 edge = random.point(10.0);
         CAPTURE(k, v.x, v.y, v.z, edge.x, edge.y, edge.z);
         const Vec3 p = perpendicular_to(v, edge);
         CHECK(std::abs(glm::dot(p, edge)) <= 1e-12 * glm::length(v) * glm::length(edge));
-        CHECK_THAT(p + project_onto(v, edge), IsNear(v, 1e-13));
+        const Vec3 along = glm::dot(v, edge) / glm::dot(edge, edge) * edge;  // v onto the edge
+        CHECK_THAT(p + along, IsNear(v, 1e-13));
     }
 }
 
@@ -188,10 +188,10 @@ TEST_CASE("orthonormal_frame: a camera on +z looking at the origin with up +y", 
 }
 
 TEST_CASE("orthonormal_frame: is orthonormal and right-handed for random input", "[stage1]") {
-    std::mt19937_64 rng(7);
+    PortableRandom random(7);  // components in [-10, 10], seeded so a failure replays
     for (int k = 0; k < 1000; ++k) {
-        const Vec3 a = random_vec3(rng);
-        const Vec3 b = random_vec3(rng);
+        const Vec3 a = random.point(10.0);
+        const Vec3 b = random.point(10.0);
         CAPTURE(k, a.x, a.y, a.z, b.x, b.y, b.z);
         const Frame f = orthonormal_frame(a, b);
         CHECK(glm::length(f.u) == Approx(1.0).epsilon(1e-14));

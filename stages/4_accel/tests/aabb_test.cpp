@@ -1,10 +1,16 @@
-// Public tests for stage 4, the slab test. Run them with `ctest --preset release -L stage4`.
+// Public tests for stage 4, the slab test. Run them with `ctest --preset release -L stage4`,
+// these alone with `build/release/bin/raystep_stage4_tests "intersect_aabb:*"`.
+//
+// Each test calls intersect_aabb before its CHECKs: a stub ends the test case at its first call
+// and is reported once. A failure prints the ray and the box.
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "base/math/portable_random.h"
 #include "base/testing/catch.h"
+#include "base/testing/vec3_matchers.h"
 #include "stages/4_accel/aabb.h"
 
 using namespace raystep;
@@ -16,14 +22,31 @@ const double kInf = std::numeric_limits<double>::infinity();
 // The unit cube [0, 1]^3.
 const Aabb kCube{{0, 0, 0}, {1, 1, 1}};
 
+std::string inputs(const Ray& ray, const Aabb& box) {
+    using Catch::Detail::stringify;
+    return "ray: origin " + stringify(ray.origin) + ", direction " + stringify(ray.direction) +
+           ", t in [" + stringify(ray.t_min) + ", " + stringify(ray.t_max) + "]\nbox: min " +
+           stringify(box.min) + ", max " + stringify(box.max);
+}
+
 std::optional<Interval> slab(const Ray& ray, const Aabb& box) {
     return intersect_aabb(ray, 1.0 / ray.direction, box);
+}
+
+// Whether the slab test reports a hit, with the inputs in the failure message.
+void check_hits(const Ray& ray, const Aabb& box, bool expected, const char* why) {
+    INFO(why);
+    INFO(inputs(ray, box));
+    const bool hit = slab(ray, box).has_value();
+    CHECK(hit == expected);
 }
 
 }  // namespace
 
 TEST_CASE("intersect_aabb: a ray through the cube enters and leaves where it should", "[stage4]") {
-    const std::optional<Interval> hit = slab({{0.5, 0.5, -1}, {0, 0, 1}}, kCube);
+    const Ray ray{{0.5, 0.5, -1}, {0, 0, 1}};
+    INFO(inputs(ray, kCube));
+    const std::optional<Interval> hit = slab(ray, kCube);
     REQUIRE(hit);
     CHECK(hit->enter == Approx(1.0));
     CHECK(hit->exit == Approx(2.0));
@@ -32,28 +55,34 @@ TEST_CASE("intersect_aabb: a ray through the cube enters and leaves where it sho
 TEST_CASE("intersect_aabb: a diagonal ray, entering through one face and leaving through another",
           "[stage4]") {
     // From (-1, 0.5, 0.5) along (1, 0.25, 0): enters at x = 0 (t = 1), leaves at x = 1 (t = 2).
-    const std::optional<Interval> hit = slab({{-1, 0.5, 0.5}, {1, 0.25, 0}}, kCube);
+    const Ray ray{{-1, 0.5, 0.5}, {1, 0.25, 0}};
+    INFO(inputs(ray, kCube));
+    const std::optional<Interval> hit = slab(ray, kCube);
     REQUIRE(hit);
     CHECK(hit->enter == Approx(1.0));
     CHECK(hit->exit == Approx(2.0));
 }
 
 TEST_CASE("intersect_aabb: misses beside, behind, and beyond t_max", "[stage4]") {
-    CHECK_FALSE(slab({{2, 0.5, -1}, {0, 0, 1}}, kCube));              // beside
-    CHECK_FALSE(slab({{0.5, 0.5, -1}, {0, 0, -1}}, kCube));           // pointing away
-    CHECK_FALSE(slab({{0.5, 0.5, -1}, {0, 0, 1}, 0.0, 0.5}, kCube));  // stops short
-    CHECK_FALSE(slab({{-1, -1, 0.5}, {1, 3, 0}}, kCube));             // passes the corner
+    check_hits({{2, 0.5, -1}, {0, 0, 1}}, kCube, false, "beside the cube");
+    check_hits({{0.5, 0.5, -1}, {0, 0, -1}}, kCube, false, "pointing away from the cube");
+    check_hits({{0.5, 0.5, -1}, {0, 0, 1}, 0.0, 0.5}, kCube, false, "stops short: enters at t = 1");
+    check_hits({{-1, -1, 0.5}, {1, 3, 0}}, kCube, false, "passes beside the corner (0, 1)");
 }
 
 TEST_CASE("intersect_aabb: the interval is clipped to [t_min, t_max]", "[stage4]") {
-    const std::optional<Interval> hit = slab({{0.5, 0.5, -1}, {0, 0, 1}, 1.5, 1.75}, kCube);
+    const Ray ray{{0.5, 0.5, -1}, {0, 0, 1}, 1.5, 1.75};
+    INFO(inputs(ray, kCube));
+    const std::optional<Interval> hit = slab(ray, kCube);
     REQUIRE(hit);
     CHECK(hit->enter == Approx(1.5));
     CHECK(hit->exit == Approx(1.75));
 }
 
 TEST_CASE("intersect_aabb: from inside, the interval starts at t_min", "[stage4]") {
-    const std::optional<Interval> hit = slab({{0.5, 0.5, 0.5}, {1, 0, 0}}, kCube);
+    const Ray ray{{0.5, 0.5, 0.5}, {1, 0, 0}};
+    INFO(inputs(ray, kCube));
+    const std::optional<Interval> hit = slab(ray, kCube);
     REQUIRE(hit);
     CHECK(hit->enter == 0.0);
     CHECK(hit->exit == Approx(0.5));
@@ -61,24 +90,30 @@ TEST_CASE("intersect_aabb: from inside, the interval starts at t_min", "[stage4]
 
 TEST_CASE("intersect_aabb: a zero direction component with the origin inside that slab",
           "[stage4]") {
-    // D.y = 0: 1 / D.y is infinite, and (0 - 0.5) * inf = -inf, (1 - 0.5) * inf = +inf.
-    CHECK(slab({{-1, 0.5, 0.5}, {1, 0, 0}}, kCube));
-    CHECK_FALSE(slab({{-1, 1.5, 0.5}, {1, 0, 0}}, kCube));  // outside that slab: never enters
+    check_hits({{-1, 0.5, 0.5}, {1, 0, 0}}, kCube, true,
+               "D.y = 0: 1 / D.y is infinite, and (0 - 0.5) * inf = -inf, (1 - 0.5) * inf = +inf");
+    check_hits({{-1, 1.5, 0.5}, {1, 0, 0}}, kCube, false,
+               "D.y = 0 with the origin outside the slab 0 <= y <= 1: it never enters");
 }
 
 TEST_CASE("intersect_aabb: a zero direction component with the origin exactly on a slab plane",
           "[stage4]") {
-    // The origin on the plane y = 1 moving along x: (1 - 1) * inf = 0 * inf = NaN. The ray
-    // runs along the box's top face, which the closed box contains: a hit, not a NaN that
-    // empties the interval.
-    const std::optional<Interval> on_top = slab({{-1, 1, 0.5}, {1, 0, 0}}, kCube);
-    REQUIRE(on_top);
-    CHECK(on_top->enter == Approx(1.0));
-    CHECK(on_top->exit == Approx(2.0));
-    // On the plane y = 0, with D.y = -0 (so 1 / D.y = -inf): the same.
-    CHECK(slab({{-1, 0, 0.5}, {1, -0.0, 0}}, kCube));
-    // Along the edge y = 1, z = 1: two NaN slabs at once.
-    CHECK(slab({{-1, 1, 1}, {1, 0, 0}}, kCube));
+    const Ray along_top{{-1, 1, 0.5}, {1, 0, 0}};
+    {
+        INFO(
+            "the origin on the plane y = 1 moving along x: (1 - 1) * inf = 0 * inf = NaN. The "
+            "ray runs along the box's top face, which the closed box contains: a hit from t = 1 "
+            "to t = 2, not a NaN that empties the interval");
+        INFO(inputs(along_top, kCube));
+        const std::optional<Interval> on_top = slab(along_top, kCube);
+        REQUIRE(on_top);
+        CHECK(on_top->enter == Approx(1.0));
+        CHECK(on_top->exit == Approx(2.0));
+    }
+    check_hits({{-1, 0, 0.5}, {1, -0.0, 0}}, kCube, true,
+               "on the plane y = 0, with D.y = -0 (so 1 / D.y = -inf): 0 * -inf = NaN");
+    check_hits({{-1, 1, 1}, {1, 0, 0}}, kCube, true,
+               "along the edge y = 1, z = 1: two NaN slabs at once");
 }
 
 TEST_CASE("intersect_aabb: a ray in any face's plane keeps its t_min and t_max", "[stage4]") {
@@ -96,8 +131,10 @@ TEST_CASE("intersect_aabb: a ray in any face's plane keeps its t_min and t_max",
                 Vec3 direction(0.0);
                 direction[axis] = zero;
                 direction[along] = 1;
+                const Ray ray{origin, direction, 1.25, 1.75};
                 INFO("axis " << axis << ", the plane " << plane << ", D = " << zero);
-                const std::optional<Interval> hit = slab({origin, direction, 1.25, 1.75}, kCube);
+                INFO(inputs(ray, kCube));
+                const std::optional<Interval> hit = slab(ray, kCube);
                 REQUIRE(hit);
                 CHECK(hit->enter == 1.25);
                 CHECK(hit->exit == Approx(1.75));
@@ -108,14 +145,17 @@ TEST_CASE("intersect_aabb: a ray in any face's plane keeps its t_min and t_max",
 
 TEST_CASE("intersect_aabb: a flat box (zero thickness) is still hit", "[stage4]") {
     const Aabb flat{{0, 0, 0}, {1, 1, 0}};  // a triangle's box in the plane z = 0
-    const std::optional<Interval> hit = slab({{0.5, 0.5, 1}, {0, 0, -1}}, flat);
+    const Ray ray{{0.5, 0.5, 1}, {0, 0, -1}};
+    INFO(inputs(ray, flat));
+    const std::optional<Interval> hit = slab(ray, flat);
     REQUIRE(hit);
     CHECK(hit->enter == Approx(1.0));
     CHECK(hit->exit == Approx(1.0));
 }
 
 TEST_CASE("intersect_aabb: an empty box is never hit", "[stage4]") {
-    CHECK_FALSE(slab({{0.5, 0.5, -1}, {0, 0, 1}}, Aabb{}));
+    check_hits({{0.5, 0.5, -1}, {0, 0, 1}}, Aabb{}, false,
+               "Aabb{} is empty: min = +inf, max = -inf, so no t is in every slab");
 }
 
 TEST_CASE("intersect_aabb: rays that touch a box's edge or corner are never lost to rounding",
@@ -132,7 +172,9 @@ TEST_CASE("intersect_aabb: rays that touch a box's edge or corner are never lost
             k % 2 == 0 ? box.max
                        : Vec3(box.min.x, box.min.y, box.min.z + s * (box.max.z - box.min.z));
         const Ray ray{origin, target - origin};
-        CAPTURE(k, origin.x, origin.y, origin.z);
-        CHECK(slab(ray, box).has_value());
+        CAPTURE(k);
+        INFO(inputs(ray, box));
+        const bool hit = slab(ray, box).has_value();
+        CHECK(hit);
     }
 }

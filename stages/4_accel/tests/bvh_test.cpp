@@ -1,4 +1,9 @@
-// Public tests for stage 4, the BVH. Run them with `ctest --preset release -L stage4`.
+// Public tests for stage 4, the BVH. Run them with `ctest --preset release -L stage4`, one
+// method's with `build/release/bin/raystep_stage4_tests "Bvh::occluded:*"`. Every test builds a
+// Bvh first, so the constructor comes before the rest.
+//
+// Each test calls your code before its CHECKs: a stub ends the test case at its first call and
+// is reported once. A failure prints the ray.
 //
 // A BVH must give exactly closest_hit's answer: the same primitive and the same t, compared
 // with ==. Both call the same stage-3 tests; only the order differs.
@@ -8,6 +13,7 @@
 
 #include "base/math/portable_random.h"
 #include "base/testing/catch.h"
+#include "base/testing/vec3_matchers.h"
 #include "stages/4_accel/bvh.h"
 
 using namespace raystep;
@@ -33,9 +39,16 @@ Ray random_ray(PortableRandom& random) {
     return {origin, random.point(5.0) - origin};
 }
 
+std::string text(const Ray& ray) {
+    using Catch::Detail::stringify;
+    return "ray: origin " + stringify(ray.origin) + ", direction " + stringify(ray.direction) +
+           ", t in [" + stringify(ray.t_min) + ", " + stringify(ray.t_max) + "]";
+}
+
 // The BVH's answer is closest_hit's, bit for bit.
-void check_same(const std::optional<PrimitiveHit>& got,
+void check_same(const Ray& ray, const std::optional<PrimitiveHit>& got,
                 const std::optional<PrimitiveHit>& expected) {
+    INFO(text(ray));
     REQUIRE(got.has_value() == expected.has_value());
     if (!got) return;
     CHECK(got->kind == expected->kind);
@@ -60,7 +73,7 @@ TEST_CASE("Bvh::closest_hit: equals closest_hit on random scenes and rays", "[st
             for (int k = 0; k < 500; ++k) {
                 const Ray ray = random_ray(random);
                 CAPTURE(split_name(split), seed, k);
-                check_same(bvh.closest_hit(ray), closest_hit(ray, list));
+                check_same(ray, bvh.closest_hit(ray), closest_hit(ray, list));
             }
         }
     }
@@ -78,9 +91,9 @@ TEST_CASE("Bvh::closest_hit: rays from inside the scene, axis-parallel rays, sho
             Vec3 axis(0.0);
             axis[k % 3] = k % 2 == 0 ? 1.0 : -1.0;
             const Ray axis_ray{origin, axis};
-            check_same(bvh.closest_hit(axis_ray), closest_hit(axis_ray, list));
+            check_same(axis_ray, bvh.closest_hit(axis_ray), closest_hit(axis_ray, list));
             const Ray short_ray{origin, random.point(1.0), 0.0, 2.0};
-            check_same(bvh.closest_hit(short_ray), closest_hit(short_ray, list));
+            check_same(short_ray, bvh.closest_hit(short_ray), closest_hit(short_ray, list));
         }
     }
 }
@@ -96,11 +109,13 @@ TEST_CASE("Bvh::closest_hit: ties go to the primitive closest_hit picks", "[stag
     for (const BvhSplit split : kSplits) {
         CAPTURE(split_name(split));
         const Bvh bvh(list, split);
-        check_same(bvh.closest_hit(ray), closest_hit(ray, list));
+        check_same(ray, bvh.closest_hit(ray), closest_hit(ray, list));
         list.spheres.clear();
         const Bvh no_sphere(list, split);
-        check_same(no_sphere.closest_hit(ray), closest_hit(ray, list));
-        CHECK(no_sphere.closest_hit(ray)->index == 0);
+        const std::optional<PrimitiveHit> first = no_sphere.closest_hit(ray);
+        check_same(ray, first, closest_hit(ray, list));
+        REQUIRE(first);
+        CHECK(first->index == 0);
         list.spheres = {{{0, 0, -1}, 1.0}};
     }
 }
@@ -123,7 +138,7 @@ TEST_CASE("Bvh::closest_hit: rays through edges shared by the triangles of a gri
             const double y = 0.5 * (k / 20);
             const Ray ray{{x, y, 3}, {0, 0, -1}};
             CAPTURE(split_name(split), x, y);
-            check_same(bvh.closest_hit(ray), closest_hit(ray, list));
+            check_same(ray, bvh.closest_hit(ray), closest_hit(ray, list));
         }
     }
 }
@@ -133,28 +148,45 @@ TEST_CASE("Bvh::closest_hit: an empty scene, one primitive, primitives all at on
     const Ray ray{{0, 0, 5}, {0, 0, -1}};
     for (const BvhSplit split : kSplits) {
         CAPTURE(split_name(split));
-        CHECK_FALSE(Bvh(PrimitiveList{}, split).closest_hit(ray));
+        const std::optional<PrimitiveHit> in_empty = Bvh(PrimitiveList{}, split).closest_hit(ray);
+        CHECK_FALSE(in_empty);
         PrimitiveList one;
         one.spheres = {{{0, 0, 0}, 1.0}};
-        check_same(Bvh(one, split).closest_hit(ray), closest_hit(ray, one));
+        check_same(ray, Bvh(one, split).closest_hit(ray), closest_hit(ray, one));
         PrimitiveList stacked;
         for (int k = 0; k < 50; ++k)
             stacked.spheres.push_back({{0, 0, 0}, 1.0 + 0.01 * k});
-        check_same(Bvh(stacked, split).closest_hit(ray), closest_hit(ray, stacked));
+        check_same(ray, Bvh(stacked, split).closest_hit(ray), closest_hit(ray, stacked));
     }
 }
 
-TEST_CASE("Bvh: a list of planes only holds nothing, and never crashes", "[stage4]") {
-    // Planes are unbounded: they stay outside the BVH (the renderer tests them beside it), so a
-    // list of planes alone gives a tree with no node at all.
+TEST_CASE("Bvh::closest_hit: a list of planes only holds nothing, and never crashes", "[stage4]") {
     PrimitiveList planes;
     planes.planes = {{{0, 0, 0}, {0, 0, 1}}, {{0, 0, 2}, {0, 1, 1}}};
     const Ray ray{{0, 0, 5}, {0, 0, -1}};
+    INFO(
+        "planes are unbounded: they stay outside the BVH (the renderer tests them beside it), so "
+        "a list of planes alone gives a tree with no node at all");
+    INFO(text(ray));
     for (const BvhSplit split : kSplits) {
         CAPTURE(split_name(split));
         const Bvh bvh(planes, split);
-        CHECK_FALSE(bvh.closest_hit(ray));
-        CHECK_FALSE(bvh.occluded(ray));
+        const std::optional<PrimitiveHit> hit = bvh.closest_hit(ray);
+        CHECK_FALSE(hit);
+    }
+}
+
+TEST_CASE("Bvh::occluded: a list of planes only holds nothing, and never crashes", "[stage4]") {
+    PrimitiveList planes;
+    planes.planes = {{{0, 0, 0}, {0, 0, 1}}, {{0, 0, 2}, {0, 1, 1}}};
+    const Ray ray{{0, 0, 5}, {0, 0, -1}};
+    INFO("planes stay outside the BVH: a list of planes alone gives a tree with no node");
+    INFO(text(ray));
+    for (const BvhSplit split : kSplits) {
+        CAPTURE(split_name(split));
+        const Bvh bvh(planes, split);
+        const bool occluded = bvh.occluded(ray);
+        CHECK_FALSE(occluded);
     }
 }
 
@@ -168,15 +200,31 @@ TEST_CASE("Bvh::closest_hit: nothing before t_min, nothing after t_max", "[stage
         CAPTURE(split_name(split));
         const Bvh bvh(list, split);
         const Ray late{{0, 0, 5}, {0, 0, -1}, 6.0, HUGE_VAL};
+        INFO(text(late));
         const std::optional<PrimitiveHit> hit = bvh.closest_hit(late);
         REQUIRE(hit);
         CHECK(hit->kind == PrimitiveKind::triangle);
         CHECK(hit->hit.t == 7.0);
         const Ray inside{{0, 0, 5}, {0, 0, -1}, 5.0, 6.0};  // starts inside the sphere
-        check_same(bvh.closest_hit(inside), closest_hit(inside, list));
+        check_same(inside, bvh.closest_hit(inside), closest_hit(inside, list));
         const Ray short_ray{{0, 0, 5}, {0, 0, -1}, 0.0, 5.0};
-        check_same(bvh.closest_hit(short_ray), closest_hit(short_ray, list));
-        CHECK_FALSE(bvh.occluded(Ray{{0, 0, 5}, {0, 0, -1}, 7.5, HUGE_VAL}));
+        check_same(short_ray, bvh.closest_hit(short_ray), closest_hit(short_ray, list));
+    }
+}
+
+TEST_CASE("Bvh::occluded: nothing after the last hit", "[stage4]") {
+    // From z = 5 down the z axis: the sphere from t = 4.5 to 5.5, the triangle at 7. From
+    // t_min = 7.5 nothing is left.
+    PrimitiveList list;
+    list.spheres = {{{0, 0, 0}, 0.5}};
+    list.triangles = {{{-1, -1, -2}, {1, -1, -2}, {0, 1, -2}}};
+    const Ray past{{0, 0, 5}, {0, 0, -1}, 7.5, HUGE_VAL};
+    INFO(text(past));
+    for (const BvhSplit split : kSplits) {
+        CAPTURE(split_name(split));
+        const Bvh bvh(list, split);
+        const bool occluded = bvh.occluded(past);
+        CHECK_FALSE(occluded);
     }
 }
 
@@ -188,17 +236,22 @@ TEST_CASE("Bvh::occluded: agrees with closest_hit, before and after the first hi
         for (int k = 0; k < 300; ++k) {
             Ray ray = random_ray(random);
             CAPTURE(split_name(split), k);
+            INFO(text(ray));
             const std::optional<PrimitiveHit> first = closest_hit(ray, list);
-            CHECK(bvh.occluded(ray) == first.has_value());
+            const bool occluded = bvh.occluded(ray);
+            CHECK(occluded == first.has_value());
             if (first) {
                 ray.t_max = 0.5 * first->hit.t;  // stop short of it
-                CHECK(bvh.occluded(ray) == closest_hit(ray, list).has_value());
+                INFO("t_max cut to " << ray.t_max << ", half the first hit's t");
+                const bool occluded_before = bvh.occluded(ray);
+                CHECK(occluded_before == closest_hit(ray, list).has_value());
             }
         }
     }
 }
 
-TEST_CASE("Bvh: a ray through empty space visits few nodes and tests nothing", "[stage4]") {
+TEST_CASE("Bvh::closest_hit: a ray through empty space visits few nodes and tests nothing",
+          "[stage4]") {
     PortableRandom random(6);
     const PrimitiveList list = random_scene(random, 1000);
     const Bvh bvh(list, BvhSplit::sah);
@@ -212,7 +265,7 @@ TEST_CASE("Bvh: a ray through empty space visits few nodes and tests nothing", "
     CHECK(through.primitive_tests < 1250 / 4);  // far fewer than brute force's 1250
 }
 
-TEST_CASE("Bvh: the SAH tree is no slower to walk than the median tree", "[stage4]") {
+TEST_CASE("Bvh::closest_hit: the SAH tree is no slower to walk than the median tree", "[stage4]") {
     // Counted in nodes and tests, not seconds: over the same rays the SAH's estimate of the cost
     // must not lose to the median split on a scene of clustered primitives.
     PortableRandom random(7);

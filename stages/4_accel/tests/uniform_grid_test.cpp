@@ -1,4 +1,10 @@
-// Public tests for stage 4, the uniform grid. Run them with `ctest --preset release -L stage4`.
+// Public tests for stage 4, the uniform grid. Run them with `ctest --preset release -L stage4`,
+// one function's with `build/release/bin/raystep_stage4_tests "grid_resolution:*"` (or
+// "UniformGrid::closest_hit:*", "UniformGrid::occluded:*"). Every UniformGrid test builds a grid
+// first, so the constructor comes before the rest.
+//
+// Each test calls your code before its CHECKs: a stub ends the test case at its first call and
+// is reported once. A failure prints the ray.
 //
 // A grid must give exactly closest_hit's answer: the same primitive and the same t, compared
 // with ==. Both call the same stage-3 tests; only the order differs.
@@ -6,9 +12,11 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <string>
 
 #include "base/math/portable_random.h"
 #include "base/testing/catch.h"
+#include "base/testing/vec3_matchers.h"
 #include "stages/4_accel/uniform_grid.h"
 
 using namespace raystep;
@@ -45,14 +53,31 @@ Ray ray_from_inside(PortableRandom& random) {
     return {random.point(4.5), random.point(1.0)};
 }
 
+std::string text(const Ray& ray) {
+    using Catch::Detail::stringify;
+    return "ray: origin " + stringify(ray.origin) + ", direction " + stringify(ray.direction) +
+           ", t in [" + stringify(ray.t_min) + ", " + stringify(ray.t_max) + "]";
+}
+
 // The grid's answer is closest_hit's, bit for bit.
-void check_same(const std::optional<PrimitiveHit>& got,
+void check_same(const Ray& ray, const std::optional<PrimitiveHit>& got,
                 const std::optional<PrimitiveHit>& expected) {
+    INFO(text(ray));
     REQUIRE(got.has_value() == expected.has_value());
     if (!got) return;
     CHECK(got->kind == expected->kind);
     CHECK(got->index == expected->index);
     CHECK(got->hit.t == expected->hit.t);
+}
+
+// grid_resolution(box, count) against `expected`, with the inputs in the failure message.
+void check_resolution(const Aabb& box, std::size_t count, const glm::ivec3& expected) {
+    INFO("box: min " << Catch::Detail::stringify(box.min) << ", max "
+                     << Catch::Detail::stringify(box.max) << ", " << count << " primitives");
+    const glm::ivec3 got = grid_resolution(box, count);
+    CHECK(got.x == expected.x);
+    CHECK(got.y == expected.y);
+    CHECK(got.z == expected.z);
 }
 
 int primitive_count(const PrimitiveList& list) {
@@ -63,47 +88,47 @@ int primitive_count(const PrimitiveList& list) {
 
 TEST_CASE("grid_resolution: a cube with 9 primitives gets 3 x 3 x 3 cells", "[stage4]") {
     // 3 cells per primitive, 27 in all: 3 per axis. Where the cube is and how big does not matter.
-    CHECK(grid_resolution({{0, 0, 0}, {1, 1, 1}}, 9) == glm::ivec3(3, 3, 3));
-    CHECK(grid_resolution({{2, 2, 2}, {4, 4, 4}}, 9) == glm::ivec3(3, 3, 3));
-    CHECK(grid_resolution({{-1e6, -1e6, -1e6}, {-0.5e6, -0.5e6, -0.5e6}}, 9) == glm::ivec3(3));
+    check_resolution({{0, 0, 0}, {1, 1, 1}}, 9, {3, 3, 3});
+    check_resolution({{2, 2, 2}, {4, 4, 4}}, 9, {3, 3, 3});
+    check_resolution({{-1e6, -1e6, -1e6}, {-0.5e6, -0.5e6, -0.5e6}}, 9, {3, 3, 3});
 }
 
 TEST_CASE(
     "grid_resolution: a long box gets cells in proportion, as near cubes as whole numbers allow",
     "[stage4]") {
     // 4 x 1 x 1, 12 primitives: k = cbrt(36 / 4) = 2.08 cells per unit, so 8.3 x 2.08 x 2.08.
-    CHECK(grid_resolution({{0, 0, 0}, {4, 1, 1}}, 12) == glm::ivec3(8, 2, 2));
+    check_resolution({{0, 0, 0}, {4, 1, 1}}, 12, {8, 2, 2});
     // 1 x 2 x 3, 16 primitives: k = cbrt(48 / 6) = 2 exactly.
-    CHECK(grid_resolution({{0, 0, 0}, {1, 2, 3}}, 16) == glm::ivec3(2, 4, 6));
+    check_resolution({{0, 0, 0}, {1, 2, 3}}, 16, {2, 4, 6});
 }
 
 TEST_CASE("grid_resolution: a flat box shares the cells among its long axes", "[stage4]") {
     // 4 x 4 x 0, 12 primitives: 36 cells over the area, k = sqrt(36 / 16) = 1.5: 6 x 6 x 1.
-    CHECK(grid_resolution({{0, 0, 0}, {4, 4, 0}}, 12) == glm::ivec3(6, 6, 1));
-    CHECK(grid_resolution({{0, 0, 0}, {4, 0, 4}}, 12) == glm::ivec3(6, 1, 6));
+    check_resolution({{0, 0, 0}, {4, 4, 0}}, 12, {6, 6, 1});
+    check_resolution({{0, 0, 0}, {4, 0, 4}}, 12, {6, 1, 6});
     // Nearly flat is flat: z is far too thin for a whole cell, so x and y share the 36. The cube
     // formula alone would give k = cbrt(36 / 16e-9) = 1.3e3 and 256 x 256 x 1 cells.
-    CHECK(grid_resolution({{0, 0, 0}, {4, 4, 1e-9}}, 12) == glm::ivec3(6, 6, 1));
+    check_resolution({{0, 0, 0}, {4, 4, 1e-9}}, 12, {6, 6, 1});
     // A line: all 9 cells along it.
-    CHECK(grid_resolution({{0, 0, 0}, {4, 0, 0}}, 3) == glm::ivec3(9, 1, 1));
+    check_resolution({{0, 0, 0}, {4, 0, 0}}, 3, {9, 1, 1});
     // 4 x 4 x 0.1 with 12: z would get 0.28 of a cell, so it is flat too.
-    CHECK(grid_resolution({{0, 0, 0}, {4, 4, 0.1}}, 12) == glm::ivec3(6, 6, 1));
+    check_resolution({{0, 0, 0}, {4, 4, 0.1}}, 12, {6, 6, 1});
 }
 
 TEST_CASE("grid_resolution: no primitives, one primitive, a point or an empty box get one cell",
           "[stage4]") {
-    CHECK(grid_resolution({{0, 0, 0}, {1, 1, 1}}, 0) == glm::ivec3(1, 1, 1));
-    CHECK(grid_resolution({{0, 0, 0}, {1, 1, 1}}, 1) == glm::ivec3(1, 1, 1));  // cbrt(3) = 1.44
-    CHECK(grid_resolution({{1, 2, 3}, {1, 2, 3}}, 5) == glm::ivec3(1, 1, 1));
-    CHECK(grid_resolution(Aabb{}, 5) == glm::ivec3(1, 1, 1));
+    check_resolution({{0, 0, 0}, {1, 1, 1}}, 0, {1, 1, 1});
+    check_resolution({{0, 0, 0}, {1, 1, 1}}, 1, {1, 1, 1});  // cbrt(3) = 1.44
+    check_resolution({{1, 2, 3}, {1, 2, 3}}, 5, {1, 1, 1});
+    check_resolution(Aabb{}, 5, {1, 1, 1});
 }
 
 TEST_CASE("grid_resolution: at most 256 cells along an axis, however many primitives", "[stage4]") {
-    CHECK(grid_resolution({{0, 0, 0}, {1, 1, 1}}, 10'000'000) == glm::ivec3(256, 256, 256));
-    CHECK(grid_resolution({{0, 0, 0}, {1, 1, 1}}, std::numeric_limits<std::size_t>::max()) ==
-          glm::ivec3(256, 256, 256));
+    check_resolution({{0, 0, 0}, {1, 1, 1}}, 10'000'000, {256, 256, 256});
+    check_resolution({{0, 0, 0}, {1, 1, 1}}, std::numeric_limits<std::size_t>::max(),
+                     {256, 256, 256});
     // 1000 x 1 x 1 with a million: k = cbrt(3e6 / 1000) = 14.4; x is capped, y and z are not.
-    CHECK(grid_resolution({{0, 0, 0}, {1000, 1, 1}}, 1'000'000) == glm::ivec3(256, 14, 14));
+    check_resolution({{0, 0, 0}, {1000, 1, 1}}, 1'000'000, {256, 14, 14});
 }
 
 TEST_CASE("UniformGrid::resolution: grid_resolution of the primitives' bounds", "[stage4]") {
@@ -129,7 +154,7 @@ TEST_CASE("UniformGrid::closest_hit: equals closest_hit on random scenes, from o
         for (int k = 0; k < 1000; ++k) {
             const Ray ray = k % 2 == 0 ? ray_from_outside(random) : ray_from_inside(random);
             CAPTURE(seed, k);
-            check_same(grid.closest_hit(ray), closest_hit(ray, list));
+            check_same(ray, grid.closest_hit(ray), closest_hit(ray, list));
         }
     }
 }
@@ -153,7 +178,7 @@ TEST_CASE("UniformGrid::closest_hit: equals closest_hit on tiny, huge and far-of
                 Ray ray = k % 2 == 0 ? ray_from_outside(random) : ray_from_inside(random);
                 ray.origin = shift + scale * ray.origin;
                 CAPTURE(scale, offset, k);
-                check_same(grid.closest_hit(ray), closest_hit(ray, list));
+                check_same(ray, grid.closest_hit(ray), closest_hit(ray, list));
             }
         }
     }
@@ -169,11 +194,11 @@ TEST_CASE("UniformGrid::closest_hit: axis-parallel rays and short rays", "[stage
         Vec3 axis(0.0);
         axis[k % 3] = k % 2 == 0 ? 1.0 : -1.0;
         const Ray axis_ray{origin, axis};
-        check_same(grid.closest_hit(axis_ray), closest_hit(axis_ray, list));
+        check_same(axis_ray, grid.closest_hit(axis_ray), closest_hit(axis_ray, list));
         const Ray short_ray{origin, random.point(1.0), 0.0, 2.0};
-        check_same(grid.closest_hit(short_ray), closest_hit(short_ray, list));
+        check_same(short_ray, grid.closest_hit(short_ray), closest_hit(short_ray, list));
         const Ray late_ray{origin, random.point(1.0), 3.0};  // t_min past the origin
-        check_same(grid.closest_hit(late_ray), closest_hit(late_ray, list));
+        check_same(late_ray, grid.closest_hit(late_ray), closest_hit(late_ray, list));
     }
 }
 
@@ -224,7 +249,7 @@ TEST_CASE("UniformGrid::closest_hit: rays that start on, run along or hit the pl
                     CAPTURE(direction.x, direction.y, direction.z);
                     const std::optional<PrimitiveHit> expected = closest_hit(ray, list);
                     hits += expected.has_value();
-                    check_same(grid.closest_hit(ray), expected);
+                    check_same(ray, grid.closest_hit(ray), expected);
                 }
             }
         }
@@ -246,7 +271,8 @@ TEST_CASE("UniformGrid::closest_hit: ties go to the primitive closest_hit picks"
     const Triangle t{{-2, -2, 0}, {2, -2, 0}, {0, 2, 0}};
     list.triangles = {t, t, t};
     const Ray down{{0, 0, 5}, {0, 0, -1}};
-    SECTION("three copies: the first") {
+    {
+        INFO("three copies: the first");
         const UniformGrid grid(list);
         REQUIRE(grid.resolution() == glm::ivec3(4, 4, 4));
         for (int k = 0; k < 25; ++k) {
@@ -256,17 +282,19 @@ TEST_CASE("UniformGrid::closest_hit: ties go to the primitive closest_hit picks"
             const double x = (2 - y) / 2 * (-0.8 + 0.4 * (k % 5));
             const Ray ray{{x, y, 5}, {0.01 * (k % 3), 0.01, -1}};
             CAPTURE(k);
-            check_same(grid.closest_hit(ray), closest_hit(ray, list));
-            REQUIRE(grid.closest_hit(ray));
-            CHECK(grid.closest_hit(ray)->index == 0);
+            const std::optional<PrimitiveHit> hit = grid.closest_hit(ray);
+            check_same(ray, hit, closest_hit(ray, list));
+            REQUIRE(hit);
+            CHECK(hit->index == 0);
         }
     }
-    SECTION("a sphere touching at the same t: the sphere") {
+    {
+        INFO("a sphere touching at the same t: the sphere");
         // The sphere's t is exactly 5 when intersect_sphere rounds well (the reference's does);
         // whatever it is, the grid must pick what closest_hit picks.
         list.spheres.push_back({{0, 0, -1}, 1.0});
         const UniformGrid grid(list);
-        check_same(grid.closest_hit(down), closest_hit(down, list));
+        check_same(down, grid.closest_hit(down), closest_hit(down, list));
     }
 }
 
@@ -290,11 +318,13 @@ TEST_CASE(
     const UniformGrid grid(list);
     REQUIRE(grid.resolution() == glm::ivec3(5, 5, 1));
     const Ray slant{{-1, 0, 4}, {0.75, 0, -1}};
-    check_same(grid.closest_hit(slant), closest_hit(slant, list));
+    check_same(slant, grid.closest_hit(slant), closest_hit(slant, list));
 }
 
-TEST_CASE("UniformGrid: a large triangle across many cells is tested once per ray (mailboxing)",
-          "[stage4]") {
+TEST_CASE(
+    "UniformGrid::closest_hit: a large triangle across many cells is tested once per ray "
+    "(mailboxing)",
+    "[stage4]") {
     // The triangle covers the bottom of the grid, z = 0, so it is in every cell of the bottom
     // layer; small spheres in the top corner give the grid 4 x 4 x 4 cells.
     PrimitiveList list;
@@ -304,30 +334,34 @@ TEST_CASE("UniformGrid: a large triangle across many cells is tested once per ra
             {{9 + 0.4 * (k % 3), 9 + 0.4 * (k / 3 % 3), 9 + 0.4 * (k / 9)}, 0.1});
     }
     const UniformGrid grid(list);
-    SECTION("a ray above it, parallel, through the whole bottom layer") {
+    {
+        INFO("a ray above it, parallel, through the whole bottom layer");
         const Ray ray{{-1, 1, 0.5}, {1, 0, 0}};
         TraversalStats stats;
         CHECK_FALSE(grid.closest_hit(ray, &stats));
         CHECK(stats.nodes >= 3);
         CHECK(stats.primitive_tests == 1);
     }
-    SECTION("a ray that meets it in the first cell and hits it in the last") {
+    {
+        INFO("a ray that meets it in the first cell and hits it in the last");
         // Into the bottom layer at x = 0, down to z = 0 at x = 9: the hit is 3 cells on.
         const Ray ray{{-1, 1, 0.5}, {1, 0, -0.05}};
         TraversalStats stats;
-        check_same(grid.closest_hit(ray, &stats), closest_hit(ray, list));
-        REQUIRE(grid.closest_hit(ray));
+        const std::optional<PrimitiveHit> hit = grid.closest_hit(ray, &stats);
+        check_same(ray, hit, closest_hit(ray, list));
+        REQUIRE(hit);
         CHECK(stats.nodes >= 3);
         CHECK(stats.primitive_tests == 1);
     }
-    SECTION("random rays: no primitive is tested twice") {
+    {
+        INFO("random rays: no primitive is tested twice");
         PortableRandom random(6);
         for (int k = 0; k < 500; ++k) {
             const Vec3 origin = Vec3(5.0) + random.point(8.0);
             const Ray ray{origin, Vec3(5.0) + random.point(5.0) - origin};
             TraversalStats stats;
             CAPTURE(k);
-            check_same(grid.closest_hit(ray, &stats), closest_hit(ray, list));
+            check_same(ray, grid.closest_hit(ray, &stats), closest_hit(ray, list));
             CHECK(stats.primitive_tests <= static_cast<std::uint64_t>(primitive_count(list)));
         }
     }
@@ -341,15 +375,17 @@ TEST_CASE("UniformGrid::closest_hit: empty, single, coincident, flat and lopside
         for (int k = 0; k < 300; ++k) {
             const Ray ray = k % 2 == 0 ? ray_from_outside(random) : ray_from_inside(random);
             CAPTURE(k);
-            check_same(grid.closest_hit(ray), closest_hit(ray, list));
+            check_same(ray, grid.closest_hit(ray), closest_hit(ray, list));
         }
     };
-    SECTION("no primitives") {
+    {
+        INFO("no primitives");
         const UniformGrid grid(PrimitiveList{});
         CHECK_FALSE(grid.closest_hit({{0, 0, 5}, {0, 0, -1}}));
         CHECK_FALSE(grid.occluded({{0, 0, 5}, {0, 0, -1}}));
     }
-    SECTION("one sphere, one triangle") {
+    {
+        INFO("one sphere, one triangle");
         PrimitiveList sphere;
         sphere.spheres = {{{0.5, -0.5, 1}, 2.0}};
         check_rays(sphere);
@@ -357,7 +393,8 @@ TEST_CASE("UniformGrid::closest_hit: empty, single, coincident, flat and lopside
         triangle.triangles = {{{-3, -3, 0}, {3, -3, 1}, {0, 3, -1}}};
         check_rays(triangle);
     }
-    SECTION("everything at one point") {
+    {
+        INFO("everything at one point");
         PrimitiveList stacked;
         for (int k = 0; k < 50; ++k)
             stacked.spheres.push_back({{1, 1, 1}, 0.5 + 0.05 * k});
@@ -367,7 +404,8 @@ TEST_CASE("UniformGrid::closest_hit: empty, single, coincident, flat and lopside
             points.triangles.push_back({{1, 1, 1}, {1, 1, 1}, {1, 1, 1}});
         check_rays(points);
     }
-    SECTION("a flat scene: a 20 x 20 floor of triangles in z = 0") {
+    {
+        INFO("a flat scene: a 20 x 20 floor of triangles in z = 0");
         PrimitiveList floor;
         for (int i = 0; i < 20; ++i) {
             for (int j = 0; j < 20; ++j) {
@@ -383,26 +421,38 @@ TEST_CASE("UniformGrid::closest_hit: empty, single, coincident, flat and lopside
         for (int k = 0; k < 400; ++k) {  // straight down through edges and vertices
             const Ray ray{{0.5 * (k % 40) - 10, 0.5 * (k / 20) - 10, 3}, {0, 0, -1}};
             CAPTURE(k);
-            check_same(grid.closest_hit(ray), closest_hit(ray, floor));
+            check_same(ray, grid.closest_hit(ray), closest_hit(ray, floor));
         }
     }
-    SECTION("a huge sphere beside small triangles") {
+    {
+        INFO("a huge sphere beside small triangles");
         PrimitiveList lopsided = random_scene(random, 200);
         lopsided.spheres.push_back({{0, 0, -1e4 - 6}, 1e4});
         check_rays(lopsided);
     }
 }
 
-TEST_CASE("UniformGrid: a zero direction, or a ray that misses the grid's box, visits no cell",
-          "[stage4]") {
+TEST_CASE(
+    "UniformGrid::closest_hit: a zero direction, or a ray that misses the grid's box, visits no "
+    "cell",
+    "[stage4]") {
     PortableRandom random(8);
     const PrimitiveList list = random_scene(random, 100);
     const UniformGrid grid(list);
     TraversalStats stats;
     CHECK_FALSE(grid.closest_hit({{0, 0, 0}, {0, 0, 0}}, &stats));
-    CHECK_FALSE(grid.occluded({{0, 0, 0}, {0, 0, 0}}, &stats));
     CHECK_FALSE(grid.closest_hit({{0, 0, 100}, {0, 0, 1}}, &stats));  // pointing away
     CHECK_FALSE(grid.closest_hit({{0, 100, 0}, {1, 0, 0}}, &stats));  // passing beside it
+    CHECK(stats.nodes == 0);
+    CHECK(stats.primitive_tests == 0);
+}
+
+TEST_CASE("UniformGrid::occluded: a zero direction visits no cell", "[stage4]") {
+    PortableRandom random(8);
+    const UniformGrid grid(random_scene(random, 100));
+    TraversalStats stats;
+    const bool occluded = grid.occluded({{0, 0, 0}, {0, 0, 0}}, &stats);
+    CHECK_FALSE(occluded);
     CHECK(stats.nodes == 0);
     CHECK(stats.primitive_tests == 0);
 }
@@ -416,21 +466,26 @@ TEST_CASE("UniformGrid::occluded: agrees with closest_hit, before, at and after 
     for (int k = 0; k < 1000; ++k) {
         Ray ray = k % 2 == 0 ? ray_from_outside(random) : ray_from_inside(random);
         CAPTURE(k);
+        INFO(text(ray));
         const std::optional<PrimitiveHit> first = closest_hit(ray, list);
-        CHECK(grid.occluded(ray) == first.has_value());
+        const bool occluded = grid.occluded(ray);
+        CHECK(occluded == first.has_value());
         if (!first) continue;
         ++hits;
         for (const double cut : {0.5, 1.0, 2.0}) {  // t_max = first t is still a hit: closed
-            CAPTURE(cut);
             ray.t_max = cut * first->hit.t;
-            CHECK(grid.occluded(ray) == closest_hit(ray, list).has_value());
+            INFO("t_max cut to " << ray.t_max << ", " << cut << " times the first hit's t");
+            const bool occluded_before = grid.occluded(ray);
+            CHECK(occluded_before == closest_hit(ray, list).has_value());
         }
     }
     CHECK(hits > 200);
 }
 
-TEST_CASE("UniformGrid: a ray that misses everything visits cells but tests few primitives",
-          "[stage4]") {
+TEST_CASE(
+    "UniformGrid::closest_hit: a ray that misses everything visits cells but tests few "
+    "primitives",
+    "[stage4]") {
     // 125 spheres of radius 0.2 on the integer points of [0, 4]^3: 7 x 7 x 7 cells. The ray runs
     // between the rows at y = z = 0.5, 0.7 from every centre, across the whole grid.
     PrimitiveList lattice;
@@ -447,7 +502,8 @@ TEST_CASE("UniformGrid: a ray that misses everything visits cells but tests few 
     CHECK(short_ray.nodes <= 3);
 }
 
-TEST_CASE("UniformGrid: a ray through an empty region tests no primitive", "[stage4]") {
+TEST_CASE("UniformGrid::closest_hit: a ray through an empty region tests no primitive",
+          "[stage4]") {
     // Two walls of spheres, at x = 0 and x = 10; the ray crosses the gap between them.
     PrimitiveList walls;
     for (int k = 0; k < 25; ++k) {
@@ -457,10 +513,26 @@ TEST_CASE("UniformGrid: a ray through an empty region tests no primitive", "[sta
     const UniformGrid grid(walls);
     TraversalStats stats;
     CHECK_FALSE(grid.closest_hit({{5, -2, 2}, {0, 1, 0}}, &stats));
-    CHECK_FALSE(grid.occluded({{5, 2, -2}, {0, 0, 1}}, &stats));
     // From below, above the left wall: it enters the grid at x = 2.9, in the gap, and leaves
     // through the top at x = 4.1. The walk starts where the ray enters, not above its origin.
     CHECK_FALSE(grid.closest_hit({{0, 2.5, -12}, {1, 0, 4}}, &stats));
+    CHECK(stats.nodes > 0);
+    CHECK(stats.primitive_tests == 0);
+}
+
+TEST_CASE("UniformGrid::occluded: a ray through an empty region tests no primitive", "[stage4]") {
+    // Two walls of spheres, at x = 0 and x = 10; the ray crosses the gap between them.
+    PrimitiveList walls;
+    for (int k = 0; k < 25; ++k) {
+        walls.spheres.push_back({{0, k % 5, k / 5}, 0.3});
+        walls.spheres.push_back({{10, k % 5, k / 5}, 0.3});
+    }
+    const UniformGrid grid(walls);
+    const Ray ray{{5, 2, -2}, {0, 0, 1}};
+    INFO(text(ray));
+    TraversalStats stats;
+    const bool occluded = grid.occluded(ray, &stats);
+    CHECK_FALSE(occluded);
     CHECK(stats.nodes > 0);
     CHECK(stats.primitive_tests == 0);
 }

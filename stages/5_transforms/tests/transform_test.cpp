@@ -63,8 +63,10 @@ TEST_CASE("rotation: a quarter turn about z takes x to y (right-hand rule)", "[s
 }
 
 TEST_CASE("rotation: about x and y, the right-hand rule too", "[stage5]") {
-    CHECK_THAT(apply_to_point(rotation({1, 0, 0}, 90.0), {0, 1, 0}), IsNear(Vec3(0, 0, 1), kTight));
-    CHECK_THAT(apply_to_point(rotation({0, 1, 0}, 90.0), {0, 0, 1}), IsNear(Vec3(1, 0, 0), kTight));
+    REQUIRE_THAT(apply_to_point(rotation({1, 0, 0}, 90.0), {0, 1, 0}),
+                 IsNear(Vec3(0, 0, 1), kTight));
+    REQUIRE_THAT(apply_to_point(rotation({0, 1, 0}, 90.0), {0, 0, 1}),
+                 IsNear(Vec3(1, 0, 0), kTight));
 }
 
 TEST_CASE("rotation: the axis need not be unit length", "[stage5]") {
