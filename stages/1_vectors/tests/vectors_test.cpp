@@ -81,13 +81,14 @@ TEST_CASE("length: agrees with glm::length on random vectors", "[stage1]") {
 }
 
 TEST_CASE("length: does not overflow for components near 1e200", "[stage1]") {
-    // (3, 4, 12) * 1e200: the squares are 1e400, beyond the largest double (1.8e308), yet the
-    // length 1.3e201 is an ordinary double. sqrt(v . v) gives infinity here.
+    INFO(
+        "(3, 4, 12) * 1e200: the squares are 1e400, beyond the largest double (1.8e308), yet the "
+        "length 1.3e201 is an ordinary double. sqrt(v . v) gives infinity here.");
     CHECK(length({3e200, 4e200, 12e200}) == Approx(13e200).epsilon(kTight));
 }
 
 TEST_CASE("length: does not underflow for components near 1e-200", "[stage1]") {
-    // The squares are 1e-400, below the smallest double (4.9e-324): sqrt(v . v) gives 0.
+    INFO("The squares are 1e-400, below the smallest double (4.9e-324): sqrt(v . v) gives 0.");
     CHECK(length({3e-200, 4e-200, 12e-200}) == Approx(13e-200).epsilon(kTight));
 }
 
@@ -157,7 +158,7 @@ TEST_CASE("project_onto: onto the zero vector throws", "[stage1]") {
 }
 
 TEST_CASE("project_onto: a tiny or huge onto is a line like any other", "[stage1]") {
-    // onto . onto underflows to 0 for (0, 1e-200, 0) and overflows for (0, 1e200, 0).
+    INFO("onto . onto underflows to 0 for (0, 1e-200, 0) and overflows for (0, 1e200, 0).");
     REQUIRE_THAT(project_onto({2, 3, 4}, {0, 1e-200, 0}), IsNear(Vec3{0, 3, 0}, kTight));
     REQUIRE_THAT(project_onto({2, 3, 4}, {0, 1e200, 0}), IsNear(Vec3{0, 3, 0}, kTight));
 }
@@ -207,28 +208,30 @@ TEST_CASE("orthonormal_frame: is orthonormal and right-handed for random input",
 }
 
 TEST_CASE("orthonormal_frame: b parallel to a throws instead of returning NaN", "[stage1]") {
-    // Looking straight down with "up" pointing up: up and view are parallel.
+    INFO("Looking straight down with \"up\" pointing up: up and view are parallel.");
     REQUIRE_THROWS_AS(orthonormal_frame({0, 10, 0}, {0, 1, 0}), std::domain_error);
     REQUIRE_THROWS_AS(orthonormal_frame({0, 10, 0}, {0, -1, 0}), std::domain_error);
 }
 
 TEST_CASE("orthonormal_frame: b parallel to a throws even when rounding hides it", "[stage1]") {
-    // b = 2a exactly, but w = a / |a| is rounded, so b x w is a few 1e-16, not 0: testing
-    // "== 0" lets this through and returns a u decided by rounding alone.
+    INFO(
+        "b = 2a exactly, but w = a / |a| is rounded, so b x w is a few 1e-16, not 0: testing \"== "
+        "0\" lets this through and returns a u decided by rounding alone.");
     REQUIRE_THROWS_AS(orthonormal_frame({1, 2, 3}, {2, 4, 6}), std::domain_error);
     REQUIRE_THROWS_AS(orthonormal_frame({0.1, 0.7, -0.3}, {-0.3, -2.1, 0.9}), std::domain_error);
 }
 
 TEST_CASE("orthonormal_frame: b at 1e-6 radians from a is still a frame", "[stage1]") {
-    // The sine 1e-6 is well above kParallelSine (1e-8): this frame is well defined.
-    // b x w = (0, -1e-6, 0), so u = (0, -1, 0) and v = w x u = (1, 0, 0), towards b.
+    INFO(
+        "The sine 1e-6 is well above kParallelSine (1e-8): this frame is well defined. b x w = (0, "
+        "-1e-6, 0), so u = (0, -1, 0) and v = w x u = (1, 0, 0), towards b.");
     const Frame f = orthonormal_frame({0, 0, 1}, {1e-6, 0, 1});
     CHECK_THAT(f.u, IsNear(Vec3{0, -1, 0}, 1e-9));
     CHECK_THAT(f.v, IsNear(Vec3{1, 0, 0}, 1e-9));
 }
 
 TEST_CASE("orthonormal_frame: parallel is decided relative to |b|", "[stage1]") {
-    // A short b at right angles to a: |b x w| = 1e-10, yet the angle is 90 degrees.
+    INFO("A short b at right angles to a: |b x w| = 1e-10, yet the angle is 90 degrees.");
     const Frame f = orthonormal_frame({0, 0, 1}, {0, 1e-10, 0});
     CHECK_THAT(f.u, IsNear(Vec3{1, 0, 0}, kTight));
     CHECK_THAT(f.v, IsNear(Vec3{0, 1, 0}, kTight));

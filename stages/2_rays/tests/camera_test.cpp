@@ -132,8 +132,9 @@ TEST_CASE("perspective_ray: the centre pixel of an odd-sized image looks at look
 }
 
 TEST_CASE("perspective_ray: goes through pixel centres, not corners", "[stage2]") {
-    // 2 x 2 pixels, fovy 90: the image plane at distance 1 spans [-1, 1] x [-1, 1], and pixel
-    // (0, 0) covers its top-left quarter, whose centre is (-0.5, 0.5).
+    INFO(
+        "2 x 2 pixels, fovy 90: the image plane at distance 1 spans [-1, 1] x [-1, 1], and pixel "
+        "(0, 0) covers its top-left quarter, whose centre is (-0.5, 0.5).");
     const PerspectiveCamera c = front_camera(90.0, 2, 2);
     INFO(text(c));
     const Ray top_left = perspective_ray(c, 0, 0);
@@ -154,7 +155,7 @@ TEST_CASE("perspective_ray: row 0 is the top of the image, column 0 the left", "
 }
 
 TEST_CASE("perspective_ray: a non-square image widens the horizontal field of view", "[stage2]") {
-    // 4 x 2 pixels, fovy 90: half_width = 2. Pixel column 0's centre is at x = -1.5.
+    INFO("4 x 2 pixels, fovy 90: half_width = 2. Pixel column 0's centre is at x = -1.5.");
     const PerspectiveCamera c = front_camera(90.0, 4, 2);
     INFO(text(c));
     const Ray top_left = perspective_ray(c, 0, 0);
@@ -164,8 +165,9 @@ TEST_CASE("perspective_ray: a non-square image widens the horizontal field of vi
 }
 
 TEST_CASE("perspective_ray: agrees with glm::lookAt and glm::perspective", "[stage2]") {
-    // A point on each ray, projected by OpenGL's matrices, must land on its pixel's centre in
-    // normalized device coordinates.
+    INFO(
+        "A point on each ray, projected by OpenGL's matrices, must land on its pixel's centre in "
+        "normalized device coordinates.");
     for (int k = 0; k < 300; ++k) {
         PortableRandom random(21, static_cast<std::uint64_t>(k));  // case k, on every platform
         const Vec3 from = random.point(10.0);
@@ -221,7 +223,7 @@ TEST_CASE("make_perspective_camera: fovy outside (0, 180) throws", "[stage2]") {
 
 TEST_CASE("make_perspective_camera: up parallel to the view direction throws, not NaN",
           "[stage2]") {
-    // Looking straight down at the floor with +y as "up".
+    INFO("Looking straight down at the floor with +y as \"up\".");
     REQUIRE_THROWS_AS(make_perspective_camera({0, 10, 0}, {0, 0, 0}, {0, 1, 0}, 45, 10, 10),
                       std::domain_error);
 }
@@ -239,7 +241,7 @@ TEST_CASE("make_perspective_camera: an image without pixels throws", "[stage2]")
 }
 
 TEST_CASE("orthographic_ray: parallel rays from pixel centres on the window", "[stage2]") {
-    // Window [-1, 1] x [-1, 1] over 2 x 2 pixels: pixel (0, 0) is centred at (-0.5, 0.5).
+    INFO("Window [-1, 1] x [-1, 1] over 2 x 2 pixels: pixel (0, 0) is centred at (-0.5, 0.5).");
     const OrthographicCamera c = front_window(-1, 1, -1, 1, 2, 2);
     INFO(text(c));
     const Ray top_left = orthographic_ray(c, 0, 0);
@@ -251,7 +253,9 @@ TEST_CASE("orthographic_ray: parallel rays from pixel centres on the window", "[
 }
 
 TEST_CASE("orthographic_ray: an off-centre, non-square window", "[stage2]") {
-    // Window [0, 4] x [-1, 1] over 4 x 2 pixels: column 3's centre is x = 3.5, row 1's y = -0.5.
+    INFO(
+        "Window [0, 4] x [-1, 1] over 4 x 2 pixels: column 3's centre is x = 3.5, row 1's y = "
+        "-0.5.");
     const OrthographicCamera c = front_window(0, 4, -1, 1, 4, 2);
     INFO(text(c));
     const Ray bottom_right = orthographic_ray(c, 3, 1);
@@ -261,7 +265,7 @@ TEST_CASE("orthographic_ray: an off-centre, non-square window", "[stage2]") {
 }
 
 TEST_CASE("orthographic_ray: the window follows the camera's frame", "[stage2]") {
-    // From +x looking at the origin with up +z: w = +x, u = up x w = +y, v = w x u = +z.
+    INFO("From +x looking at the origin with up +z: w = +x, u = up x w = +y, v = w x u = +z.");
     const OrthographicCamera c{{5, 0, 0}, {{0, 1, 0}, {0, 0, 1}, {1, 0, 0}}, -1, 1, -1, 1, 2, 2};
     INFO(text(c));
     const Ray ray = orthographic_ray(c, 1, 0);  // right of centre and above it
@@ -296,7 +300,7 @@ TEST_CASE("make_orthographic_camera: an empty window throws", "[stage2]") {
 }
 
 TEST_CASE("make_orthographic_camera: a NaN or infinite window edge throws", "[stage2]") {
-    // "left >= right" is false for a NaN left, so that test lets NaN through to every ray.
+    INFO("\"left >= right\" is false for a NaN left, so that test lets NaN through to every ray.");
     const double nan = std::nan("");
     const double inf = HUGE_VAL;
     REQUIRE_THROWS_AS(

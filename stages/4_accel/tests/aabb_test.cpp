@@ -54,7 +54,9 @@ TEST_CASE("intersect_aabb: a ray through the cube enters and leaves where it sho
 
 TEST_CASE("intersect_aabb: a diagonal ray, entering through one face and leaving through another",
           "[stage4]") {
-    // From (-1, 0.5, 0.5) along (1, 0.25, 0): enters at x = 0 (t = 1), leaves at x = 1 (t = 2).
+    INFO(
+        "From (-1, 0.5, 0.5) along (1, 0.25, 0): enters at x = 0 (t = 1), leaves at x = 1 (t = "
+        "2).");
     const Ray ray{{-1, 0.5, 0.5}, {1, 0.25, 0}};
     INFO(inputs(ray, kCube));
     const std::optional<Interval> hit = slab(ray, kCube);
@@ -117,10 +119,11 @@ TEST_CASE("intersect_aabb: a zero direction component with the origin exactly on
 }
 
 TEST_CASE("intersect_aabb: a ray in any face's plane keeps its t_min and t_max", "[stage4]") {
-    // The NaN of 0 * inf comes from whichever axis the ray lies across, on the min or the max
-    // plane, with D = +0 or -0. Taken as a bound (std::max(t_near, enter) returns its NaN first
-    // argument) it empties the interval when it comes last, from z, and otherwise lets the next
-    // axis overwrite t_min and t_max.
+    INFO(
+        "The NaN of 0 * inf comes from whichever axis the ray lies across, on the min or the max "
+        "plane, with D = +0 or -0. Taken as a bound (std::max(t_near, enter) returns its NaN first "
+        "argument) it empties the interval when it comes last, from z, and otherwise lets the next "
+        "axis overwrite t_min and t_max.");
     for (int axis = 0; axis < 3; ++axis) {
         for (const double plane : {0.0, 1.0}) {
             for (const double zero : {0.0, -0.0}) {
@@ -160,9 +163,10 @@ TEST_CASE("intersect_aabb: an empty box is never hit", "[stage4]") {
 
 TEST_CASE("intersect_aabb: rays that touch a box's edge or corner are never lost to rounding",
           "[stage4]") {
-    // Rays from random origins aimed exactly at a corner or at a point of an edge of a box whose
-    // coordinates are not round in binary: rounding in (bound - A) / D must not make the exit come
-    // out before the entry.
+    INFO(
+        "Rays from random origins aimed exactly at a corner or at a point of an edge of a box "
+        "whose coordinates are not round in binary: rounding in (bound - A) / D must not make the "
+        "exit come out before the entry.");
     PortableRandom random(41);
     const Aabb box{{0.1, 0.2, 0.3}, {0.7, 1.3, 2.9}};
     for (int k = 0; k < 20000; ++k) {

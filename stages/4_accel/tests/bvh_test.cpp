@@ -99,8 +99,9 @@ TEST_CASE("Bvh::closest_hit: rays from inside the scene, axis-parallel rays, sho
 }
 
 TEST_CASE("Bvh::closest_hit: ties go to the primitive closest_hit picks", "[stage4]") {
-    // Three copies of one triangle and a sphere touching its plane at the same t: closest_hit
-    // takes the sphere (spheres come first); among triangles, the lowest index.
+    INFO(
+        "Three copies of one triangle and a sphere touching its plane at the same t: closest_hit "
+        "takes the sphere (spheres come first); among triangles, the lowest index.");
     PrimitiveList list;
     const Triangle t{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
     list.triangles = {t, t, t};
@@ -121,8 +122,9 @@ TEST_CASE("Bvh::closest_hit: ties go to the primitive closest_hit picks", "[stag
 }
 
 TEST_CASE("Bvh::closest_hit: rays through edges shared by the triangles of a grid", "[stage4]") {
-    // A 20 x 20 grid of unit squares in z = 0, two triangles each; rays straight down through
-    // edge midpoints and vertices, where two to six triangles meet.
+    INFO(
+        "A 20 x 20 grid of unit squares in z = 0, two triangles each; rays straight down through "
+        "edge midpoints and vertices, where two to six triangles meet.");
     PrimitiveList list;
     for (int i = 0; i < 20; ++i) {
         for (int j = 0; j < 20; ++j) {
@@ -191,8 +193,9 @@ TEST_CASE("Bvh::occluded: a list of planes only holds nothing, and never crashes
 }
 
 TEST_CASE("Bvh::closest_hit: nothing before t_min, nothing after t_max", "[stage4]") {
-    // From z = 5 down the z axis: the sphere's front at t = 4.5 and its back at 5.5, the
-    // triangle at 7. From t_min = 6 only the triangle is left; up to t_max = 5 only the front.
+    INFO(
+        "From z = 5 down the z axis: the sphere's front at t = 4.5 and its back at 5.5, the "
+        "triangle at 7. From t_min = 6 only the triangle is left; up to t_max = 5 only the front.");
     PrimitiveList list;
     list.spheres = {{{0, 0, 0}, 0.5}};
     list.triangles = {{{-1, -1, -2}, {1, -1, -2}, {0, 1, -2}}};
@@ -213,8 +216,9 @@ TEST_CASE("Bvh::closest_hit: nothing before t_min, nothing after t_max", "[stage
 }
 
 TEST_CASE("Bvh::occluded: nothing after the last hit", "[stage4]") {
-    // From z = 5 down the z axis: the sphere from t = 4.5 to 5.5, the triangle at 7. From
-    // t_min = 7.5 nothing is left.
+    INFO(
+        "From z = 5 down the z axis: the sphere from t = 4.5 to 5.5, the triangle at 7. From t_min "
+        "= 7.5 nothing is left.");
     PrimitiveList list;
     list.spheres = {{{0, 0, 0}, 0.5}};
     list.triangles = {{{-1, -1, -2}, {1, -1, -2}, {0, 1, -2}}};
@@ -266,8 +270,9 @@ TEST_CASE("Bvh::closest_hit: a ray through empty space visits few nodes and test
 }
 
 TEST_CASE("Bvh::closest_hit: the SAH tree is no slower to walk than the median tree", "[stage4]") {
-    // Counted in nodes and tests, not seconds: over the same rays the SAH's estimate of the cost
-    // must not lose to the median split on a scene of clustered primitives.
+    INFO(
+        "Counted in nodes and tests, not seconds: over the same rays the SAH's estimate of the "
+        "cost must not lose to the median split on a scene of clustered primitives.");
     PortableRandom random(7);
     PrimitiveList list = random_scene(random, 2000);
     for (int k = 0; k < 2000; ++k) {  // a dense cluster beside the rest

@@ -87,7 +87,9 @@ int primitive_count(const PrimitiveList& list) {
 }  // namespace
 
 TEST_CASE("grid_resolution: a cube with 9 primitives gets 3 x 3 x 3 cells", "[stage4]") {
-    // 3 cells per primitive, 27 in all: 3 per axis. Where the cube is and how big does not matter.
+    INFO(
+        "3 cells per primitive, 27 in all: 3 per axis. Where the cube is and how big does not "
+        "matter.");
     check_resolution({{0, 0, 0}, {1, 1, 1}}, 9, {3, 3, 3});
     check_resolution({{2, 2, 2}, {4, 4, 4}}, 9, {3, 3, 3});
     check_resolution({{-1e6, -1e6, -1e6}, {-0.5e6, -0.5e6, -0.5e6}}, 9, {3, 3, 3});
@@ -96,14 +98,14 @@ TEST_CASE("grid_resolution: a cube with 9 primitives gets 3 x 3 x 3 cells", "[st
 TEST_CASE(
     "grid_resolution: a long box gets cells in proportion, as near cubes as whole numbers allow",
     "[stage4]") {
-    // 4 x 1 x 1, 12 primitives: k = cbrt(36 / 4) = 2.08 cells per unit, so 8.3 x 2.08 x 2.08.
+    INFO("4 x 1 x 1, 12 primitives: k = cbrt(36 / 4) = 2.08 cells per unit, so 8.3 x 2.08 x 2.08.");
     check_resolution({{0, 0, 0}, {4, 1, 1}}, 12, {8, 2, 2});
     // 1 x 2 x 3, 16 primitives: k = cbrt(48 / 6) = 2 exactly.
     check_resolution({{0, 0, 0}, {1, 2, 3}}, 16, {2, 4, 6});
 }
 
 TEST_CASE("grid_resolution: a flat box shares the cells among its long axes", "[stage4]") {
-    // 4 x 4 x 0, 12 primitives: 36 cells over the area, k = sqrt(36 / 16) = 1.5: 6 x 6 x 1.
+    INFO("4 x 4 x 0, 12 primitives: 36 cells over the area, k = sqrt(36 / 16) = 1.5: 6 x 6 x 1.");
     check_resolution({{0, 0, 0}, {4, 4, 0}}, 12, {6, 6, 1});
     check_resolution({{0, 0, 0}, {4, 0, 4}}, 12, {6, 1, 6});
     // Nearly flat is flat: z is far too thin for a whole cell, so x and y share the 36. The cube
@@ -161,8 +163,10 @@ TEST_CASE("UniformGrid::closest_hit: equals closest_hit on random scenes, from o
 
 TEST_CASE("UniformGrid::closest_hit: equals closest_hit on tiny, huge and far-off scenes",
           "[stage4]") {
-    // The same scenes scaled by 1e-3 and 1e3 and moved 1e5 away: cell sizes, crossings and
-    // rounding all scale with them, and nothing may be tuned to scenes of size 10 at the origin.
+    INFO(
+        "The same scenes scaled by 1e-3 and 1e3 and moved 1e5 away: cell sizes, crossings and "
+        "rounding all scale with them, and nothing may be tuned to scenes of size 10 at the "
+        "origin.");
     for (const double scale : {1e-3, 1e3}) {
         for (const double offset : {0.0, 1e5}) {
             PortableRandom random(10);
@@ -204,10 +208,12 @@ TEST_CASE("UniformGrid::closest_hit: axis-parallel rays and short rays", "[stage
 
 TEST_CASE("UniformGrid::closest_hit: rays that start on, run along or hit the planes between cells",
           "[stage4]") {
-    // 20 triangles in [0, 4]^3, so 4 x 4 x 4 cells whose planes are at (or, with the grid's small
-    // growth of its box, a hair from) x, y, z = 0, 1, 2, 3, 4. On each plane x, y or z = 1, 2, 3:
-    // the square [1, 3]^2 of the other two coordinates, as two triangles, whose edges lie on
-    // planes between cells. Two small triangles at the corners stretch the bounds to [0, 4]^3.
+    INFO(
+        "20 triangles in [0, 4]^3, so 4 x 4 x 4 cells whose planes are at (or, with the grid's "
+        "small growth of its box, a hair from) x, y, z = 0, 1, 2, 3, 4. On each plane x, y or z = "
+        "1, 2, 3: the square [1, 3]^2 of the other two coordinates, as two triangles, whose edges "
+        "lie on planes between cells. Two small triangles at the corners stretch the bounds to [0, "
+        "4]^3.");
     PrimitiveList list;
     for (int axis = 0; axis < 3; ++axis) {
         for (int plane = 1; plane <= 3; ++plane) {
@@ -258,9 +264,10 @@ TEST_CASE("UniformGrid::closest_hit: rays that start on, run along or hit the pl
 }
 
 TEST_CASE("UniformGrid::closest_hit: ties go to the primitive closest_hit picks", "[stage4]") {
-    // closest_hit keeps, of hits at the same t, the primitive listed first (spheres, then
-    // triangles, each in list order); the grid meets them in another order. Small spheres at the
-    // edges give the grid its cells.
+    INFO(
+        "closest_hit keeps, of hits at the same t, the primitive listed first (spheres, then "
+        "triangles, each in list order); the grid meets them in another order. Small spheres at "
+        "the edges give the grid its cells.");
     PrimitiveList list;
     for (const double z : {-3.0, -1.0, 1.0, 3.0}) {  // with the triangles: 4 x 4 x 4 cells
         for (const double x : {-3.0, 3.0}) {
@@ -301,11 +308,12 @@ TEST_CASE("UniformGrid::closest_hit: ties go to the primitive closest_hit picks"
 TEST_CASE(
     "UniformGrid::closest_hit: a tie met in a later cell still goes to the primitive listed first",
     "[stage4]") {
-    // Triangle 1, large, and triangle 0, small, both in z = 0; spheres at the corners give the
-    // grid 5 x 5 x 1 cells, 2.44 wide. The ray comes down at a slant into cell x = 2, which holds
-    // triangle 1 but not triangle 0, and hits both at x = 2, in cell x = 3. The grid meets
-    // triangle 1 first; with the reference's triangle test both hits are at t = 4 exactly (from
-    // this ray, every triangle in z = 0 gives t = 4), and closest_hit keeps triangle 0.
+    INFO(
+        "Triangle 1, large, and triangle 0, small, both in z = 0; spheres at the corners give the "
+        "grid 5 x 5 x 1 cells, 2.44 wide. The ray comes down at a slant into cell x = 2, which "
+        "holds triangle 1 but not triangle 0, and hits both at x = 2, in cell x = 3. The grid "
+        "meets triangle 1 first; with the reference's triangle test both hits are at t = 4 exactly "
+        "(from this ray, every triangle in z = 0 gives t = 4), and closest_hit keeps triangle 0.");
     PrimitiveList list;
     for (const double z : {-1.5, 1.5}) {
         for (const double x : {-6.0, 6.0}) {
@@ -325,8 +333,9 @@ TEST_CASE(
     "UniformGrid::closest_hit: a large triangle across many cells is tested once per ray "
     "(mailboxing)",
     "[stage4]") {
-    // The triangle covers the bottom of the grid, z = 0, so it is in every cell of the bottom
-    // layer; small spheres in the top corner give the grid 4 x 4 x 4 cells.
+    INFO(
+        "The triangle covers the bottom of the grid, z = 0, so it is in every cell of the bottom "
+        "layer; small spheres in the top corner give the grid 4 x 4 x 4 cells.");
     PrimitiveList list;
     list.triangles.push_back({{0, 0, 0}, {10, 0, 0}, {0, 10, 0}});
     for (int k = 0; k < 27; ++k) {
@@ -486,8 +495,9 @@ TEST_CASE(
     "UniformGrid::closest_hit: a ray that misses everything visits cells but tests few "
     "primitives",
     "[stage4]") {
-    // 125 spheres of radius 0.2 on the integer points of [0, 4]^3: 7 x 7 x 7 cells. The ray runs
-    // between the rows at y = z = 0.5, 0.7 from every centre, across the whole grid.
+    INFO(
+        "125 spheres of radius 0.2 on the integer points of [0, 4]^3: 7 x 7 x 7 cells. The ray "
+        "runs between the rows at y = z = 0.5, 0.7 from every centre, across the whole grid.");
     PrimitiveList lattice;
     for (int k = 0; k < 125; ++k)
         lattice.spheres.push_back({{k % 5, k / 5 % 5, k / 25}, 0.2});
@@ -504,7 +514,7 @@ TEST_CASE(
 
 TEST_CASE("UniformGrid::closest_hit: a ray through an empty region tests no primitive",
           "[stage4]") {
-    // Two walls of spheres, at x = 0 and x = 10; the ray crosses the gap between them.
+    INFO("Two walls of spheres, at x = 0 and x = 10; the ray crosses the gap between them.");
     PrimitiveList walls;
     for (int k = 0; k < 25; ++k) {
         walls.spheres.push_back({{0, k % 5, k / 5}, 0.3});
@@ -521,7 +531,7 @@ TEST_CASE("UniformGrid::closest_hit: a ray through an empty region tests no prim
 }
 
 TEST_CASE("UniformGrid::occluded: a ray through an empty region tests no primitive", "[stage4]") {
-    // Two walls of spheres, at x = 0 and x = 10; the ray crosses the gap between them.
+    INFO("Two walls of spheres, at x = 0 and x = 10; the ray crosses the gap between them.");
     PrimitiveList walls;
     for (int k = 0; k < 25; ++k) {
         walls.spheres.push_back({{0, k % 5, k / 5}, 0.3});

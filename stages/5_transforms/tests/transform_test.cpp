@@ -123,7 +123,7 @@ TEST_CASE("compose: no ops is the identity", "[stage5]") {
 }
 
 TEST_CASE("compose: right-multiplies, so the last op written acts first", "[stage5]") {
-    // translate 1 0 0, then scale 2 2 2: M = T S, the point is scaled, then moved.
+    INFO("translate 1 0 0, then scale 2 2 2: M = T S, the point is scaled, then moved.");
     const Transform translate_then_scale = compose({translate_op({1, 0, 0}), scale_op({2, 2, 2})});
     CHECK_THAT(apply_to_point(translate_then_scale.matrix, {1, 1, 1}), IsNear(Vec3(3, 2, 2), 0.0));
     // The other order, M = S T: moved, then scaled.
@@ -132,8 +132,9 @@ TEST_CASE("compose: right-multiplies, so the last op written acts first", "[stag
 }
 
 TEST_CASE("compose: translate then rotate turns the object in place, then moves it", "[stage5]") {
-    // The classic scene idiom: `translate 5 0 0` then `rotate 0 0 1 90` spins the object about
-    // its own centre and puts it at x = 5, not on a circle about the world's origin.
+    INFO(
+        "The classic scene idiom: `translate 5 0 0` then `rotate 0 0 1 90` spins the object about "
+        "its own centre and puts it at x = 5, not on a circle about the world's origin.");
     const Transform t = compose({translate_op({5, 0, 0}), rotate_op({0, 0, 1}, 90.0)});
     CHECK_THAT(apply_to_point(t.matrix, {1, 0, 0}), IsNear(Vec3(5, 1, 0), kTight));
 }
@@ -168,8 +169,10 @@ TEST_CASE("compose: the inverse undoes the matrix", "[stage5]") {
 }
 
 TEST_CASE("compose: the inverse comes from the ops, exact where they are", "[stage5]") {
-    // Scale by 1e-3 and translate by 1e4: inverting the product would divide by a determinant of
-    // 1e-9; the ops' own inverses (scale by 1000, translate by -1e4) need no division at all.
+    INFO(
+        "Scale by 1e-3 and translate by 1e4: inverting the product would divide by a determinant "
+        "of 1e-9; the ops' own inverses (scale by 1000, translate by -1e4) need no division at "
+        "all.");
     const Transform t = compose({translate_op({1e4, 0, 0}), scale_op({1e-3, 1e-3, 1e-3})});
     // scale(1 / 1e-3) * translate(-1e4, 0, 0), written out: the translation column is scaled too.
     const double s = 1.0 / 1e-3;
@@ -180,8 +183,9 @@ TEST_CASE("compose: the inverse comes from the ops, exact where they are", "[sta
 }
 
 TEST_CASE("compose: a zero scale factor has no inverse, and its 1 / 0 stays infinite", "[stage5]") {
-    // scale(2, 0, 0.5) flattens y: its inverse would scale y by 1 / 0. A finite stand-in such as
-    // 1 would make M^-1 look like an inverse when there is none.
+    INFO(
+        "scale(2, 0, 0.5) flattens y: its inverse would scale y by 1 / 0. A finite stand-in such "
+        "as 1 would make M^-1 look like an inverse when there is none.");
     const Transform t = compose({scale_op({2, 0, 0.5})});
     CHECK(t.matrix ==
           Mat4(Vec4(2, 0, 0, 0), Vec4(0, 0, 0, 0), Vec4(0, 0, 0.5, 0), Vec4(0, 0, 0, 1)));
@@ -219,8 +223,9 @@ TEST_CASE("point_to_world: applies the whole matrix, translation included", "[st
 
 TEST_CASE("normal_to_world: under a non-uniform scale M^-T n stays perpendicular, M n does not",
           "[stage5]") {
-    // The plane x + y = 0 has normal n = (1, 1, 0) and contains the tangent (1, -1, 0).
-    // Squash y by 4: the tangent becomes M t = (1, -4, 0).
+    INFO(
+        "The plane x + y = 0 has normal n = (1, 1, 0) and contains the tangent (1, -1, 0). Squash "
+        "y by 4: the tangent becomes M t = (1, -4, 0).");
     const Transform t = moved_and_scaled(Vec3(0.0), {1, 4, 1});
     const Vec3 n{1, 1, 0};
     const Vec3 tangent = apply_to_direction(t.matrix, {1, -1, 0});
@@ -245,7 +250,7 @@ TEST_CASE("normal_to_world: unit length, and a translation leaves normals alone"
 
 TEST_CASE("intersect_transformed_sphere: t along a unit world ray is the world distance",
           "[stage5]") {
-    // A unit sphere squashed to half its height in z: its top is at z = 0.5.
+    INFO("A unit sphere squashed to half its height in z: its top is at z = 0.5.");
     const Transform t = moved_and_scaled(Vec3(0.0), {2, 1, 0.5});
     const Sphere unit{{0, 0, 0}, 1.0};
     const std::optional<Hit> hit =
@@ -257,8 +262,9 @@ TEST_CASE("intersect_transformed_sphere: t along a unit world ray is the world d
 
 TEST_CASE("intersect_transformed_sphere: the normal is the ellipsoid's analytic normal",
           "[stage5]") {
-    // The unit sphere scaled by (a, b, c) is the ellipsoid x^2/a^2 + y^2/b^2 + z^2/c^2 = 1, moved
-    // by `centre`. Its normal at p is the gradient (x/a^2, y/b^2, z/c^2), normalized.
+    INFO(
+        "The unit sphere scaled by (a, b, c) is the ellipsoid x^2/a^2 + y^2/b^2 + z^2/c^2 = 1, "
+        "moved by `centre`. Its normal at p is the gradient (x/a^2, y/b^2, z/c^2), normalized.");
     const Vec3 radii{3, 1, 0.5};
     const Vec3 centre{1, -2, 0.5};
     const Transform t = moved_and_scaled(centre, radii);
@@ -285,9 +291,10 @@ TEST_CASE("intersect_transformed_sphere: the normal is the ellipsoid's analytic 
 
 TEST_CASE("intersect_transformed_sphere: hits only within [t_min, t_max] of the world ray",
           "[stage5]") {
-    // The unit sphere stretched to height 2 in z and moved to z = -5: down the z axis from the
-    // origin, the ray enters at t = 3 and leaves at t = 7. t counts along the world ray in
-    // both frames (ray_to_object keeps t_min and t_max), so the range is the world ray's.
+    INFO(
+        "The unit sphere stretched to height 2 in z and moved to z = -5: down the z axis from the "
+        "origin, the ray enters at t = 3 and leaves at t = 7. t counts along the world ray in both "
+        "frames (ray_to_object keeps t_min and t_max), so the range is the world ray's.");
     const Transform t = moved_and_scaled({0, 0, -5}, {1, 1, 2});
     const Sphere unit{{0, 0, 0}, 1.0};
     const std::optional<Hit> near =

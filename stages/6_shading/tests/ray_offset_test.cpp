@@ -50,7 +50,7 @@ TEST_CASE("spawn_ray: along_ray starts at the point and counts hits from t = eps
 }
 
 TEST_CASE("spawn_ray: along_normal starts epsilon along the normal, t from 0", "[stage6]") {
-    // (1, 2, 3) + 0.25 (0, 0, 1) = (1, 2, 3.25).
+    INFO("(1, 2, 3) + 0.25 (0, 0, 1) = (1, 2, 3.25).");
     const Ray ray = spawn_ray(on_plane_z3(), kUp, 7.0, rule(OffsetRule::along_normal, 0.25));
     CHECK(ray.origin == Vec3(1, 2, 3.25));
     CHECK(ray.t_min == 0.0);
@@ -60,8 +60,9 @@ TEST_CASE("spawn_ray: along_normal starts epsilon along the normal, t from 0", "
 
 TEST_CASE("spawn_ray: along_normal offsets to the back when the ray leaves by the back",
           "[stage6]") {
-    // n . direction = -0.8 < 0: the ray goes through the surface (a light behind it, refraction
-    // later), so the origin moves to that side: (1, 2, 3) - 0.25 (0, 0, 1) = (1, 2, 2.75).
+    INFO(
+        "n . direction = -0.8 < 0: the ray goes through the surface (a light behind it, refraction "
+        "later), so the origin moves to that side: (1, 2, 3) - 0.25 (0, 0, 1) = (1, 2, 2.75).");
     const Ray ray = spawn_ray(on_plane_z3(), kDown, 7.0, rule(OffsetRule::along_normal, 0.25));
     CHECK(ray.origin == Vec3(1, 2, 2.75));
     CHECK(ray.t_min == 0.0);
@@ -70,14 +71,15 @@ TEST_CASE("spawn_ray: along_normal offsets to the back when the ray leaves by th
 
 TEST_CASE("spawn_ray: along_normal with a ray in the tangent plane uses the normal as given",
           "[stage6]") {
-    // n . direction = 0: neither side is the leaving one; the normal as the renderer gave it.
+    INFO("n . direction = 0: neither side is the leaving one; the normal as the renderer gave it.");
     const Ray ray = spawn_ray(on_plane_z3(), {1, 0, 0}, 7.0, rule(OffsetRule::along_normal, 0.25));
     CHECK(ray.origin == Vec3(1, 2, 3.25));
 }
 
 TEST_CASE("spawn_ray: error_bound starts one ulp beyond the error along the normal", "[stage6]") {
-    // d = |0| 1e-12 + |0| 2e-12 + |1| 3e-12 = 3e-12. Only z moves: 3 + 3e-12, then one ulp up.
-    // epsilon is set to 0.5 to show that error_bound ignores it.
+    INFO(
+        "d = |0| 1e-12 + |0| 2e-12 + |1| 3e-12 = 3e-12. Only z moves: 3 + 3e-12, then one ulp up. "
+        "epsilon is set to 0.5 to show that error_bound ignores it.");
     const Ray ray = spawn_ray(on_plane_z3(), kUp, 7.0, rule(OffsetRule::error_bound, 0.5));
     CHECK(ray.origin == Vec3(1, 2, std::nextafter(3.0 + 3e-12, kInf)));
     CHECK(ray.t_min == 0.0);
@@ -87,7 +89,7 @@ TEST_CASE("spawn_ray: error_bound starts one ulp beyond the error along the norm
 
 TEST_CASE("spawn_ray: error_bound leaving by the back offsets down, and the ulp goes down too",
           "[stage6]") {
-    // The normal flipped to (0, 0, -1): 3 - 3e-12, then one ulp towards -infinity.
+    INFO("The normal flipped to (0, 0, -1): 3 - 3e-12, then one ulp towards -infinity.");
     const Ray ray = spawn_ray(on_plane_z3(), kDown, 7.0, rule(OffsetRule::error_bound, 0.5));
     CHECK(ray.origin == Vec3(1, 2, std::nextafter(3.0 - 3e-12, -kInf)));
     CHECK(ray.t_min == 0.0);
@@ -96,12 +98,13 @@ TEST_CASE("spawn_ray: error_bound leaving by the back offsets down, and the ulp 
 
 TEST_CASE("spawn_ray: error_bound starts strictly beyond the error box, moves ~1 ulp sideways",
           "[stage6]") {
-    // The exact hit point can be anywhere in the box position +- error, and over that box
-    // n . (p - position) reaches at most d = sum |n_i| error_i, n the normal on the side the ray
-    // leaves to. The origin must be strictly beyond: n . (origin - position) > d. Along n it goes
-    // no farther than d plus a few ulps of the point (no light leaks through thin walls), and
-    // sideways (perpendicular to n) it moves only by rounding, a few ulps.
-    // Errors here are 1 to 64 units of 2^-52 of the point's size, as a renderer's are.
+    INFO(
+        "The exact hit point can be anywhere in the box position +- error, and over that box n . "
+        "(p - position) reaches at most d = sum |n_i| error_i, n the normal on the side the ray "
+        "leaves to. The origin must be strictly beyond: n . (origin - position) > d. Along n it "
+        "goes no farther than d plus a few ulps of the point (no light leaks through thin walls), "
+        "and sideways (perpendicular to n) it moves only by rounding, a few ulps. Errors here are "
+        "1 to 64 units of 2^-52 of the point's size, as a renderer's are.");
     for (int k = 0; k < 1000; ++k) {
         PortableRandom random(6, k);  // case k, the same on every platform
         const double scale = std::pow(10.0, static_cast<double>(random.integer(-3, 6)));
@@ -137,10 +140,11 @@ TEST_CASE("spawn_ray: error_bound starts strictly beyond the error box, moves ~1
 
 TEST_CASE("spawn_ray: the error_bound offset scales with the error (x1000 error, x1000 offset)",
           "[stage6]") {
-    // This is what "no tuning" means: a scene 1000 times larger (or farther out) has points
-    // 1000 times less precise, and the offset follows. n = (0, 0.6, 0.8), error 1e-12 and 1e-9
-    // per coordinate: d = (0.6 + 0.8) 1e-12 = 1.4e-12, and 1.4e-9. along_normal's epsilon stays
-    // where it is, however large the error.
+    INFO(
+        "This is what \"no tuning\" means: a scene 1000 times larger (or farther out) has points "
+        "1000 times less precise, and the offset follows. n = (0, 0.6, 0.8), error 1e-12 and 1e-9 "
+        "per coordinate: d = (0.6 + 0.8) 1e-12 = 1.4e-12, and 1.4e-9. along_normal's epsilon stays "
+        "where it is, however large the error.");
     SurfacePoint precise = on_plane_z3();
     precise.normal = {0, 0.6, 0.8};
     precise.error = Vec3(1e-12);
@@ -163,9 +167,11 @@ TEST_CASE("spawn_ray: the error_bound offset scales with the error (x1000 error,
 }
 
 TEST_CASE("spawn_ray: error_bound leaves even a point with no rounding error", "[stage6]") {
-    // The point (1, 0, 3) exactly on the plane y = 0, error 0: d = 0, so the offset is 0, but the
-    // origin must still leave the plane (t_min is 0, and a ray starting on the plane hits it at
-    // t = 0). The ulp step along the normal's sign takes y from 0 to the smallest double above.
+    INFO(
+        "The point (1, 0, 3) exactly on the plane y = 0, error 0: d = 0, so the offset is 0, but "
+        "the origin must still leave the plane (t_min is 0, and a ray starting on the plane hits "
+        "it at t = 0). The ulp step along the normal's sign takes y from 0 to the smallest double "
+        "above.");
     const SurfacePoint point{{1, 0, 3}, {0, 0, 0}, {0, 1, 0}, {0, 1, 0}, {0, 1, 0}};
     const Ray ray = spawn_ray(point, {0.6, 0.8, 0}, 7.0, rule(OffsetRule::error_bound, 0.0));
     CHECK(ray.origin.x == 1.0);
@@ -174,8 +180,9 @@ TEST_CASE("spawn_ray: error_bound leaves even a point with no rounding error", "
 }
 
 TEST_CASE("shadow_ray: towards a point light, over exactly the light's distance", "[stage6]") {
-    // The light 5 away along (0, 0.6, 0.8): the ray ends at the light, so that an object beyond
-    // the light casts no shadow.
+    INFO(
+        "The light 5 away along (0, 0.6, 0.8): the ray ends at the light, so that an object beyond "
+        "the light casts no shadow.");
     const LightSample light{kUp, 5.0, Color(1.0)};
     const Ray along_ray = shadow_ray(on_plane_z3(), light, rule(OffsetRule::along_ray, 0.25));
     CHECK(along_ray.origin == Vec3(1, 2, 3));
@@ -200,8 +207,9 @@ TEST_CASE("shadow_ray: towards a directional light, t_max is infinite", "[stage6
 }
 
 TEST_CASE("shadow_ray: towards a light behind the surface, starts on the back side", "[stage6]") {
-    // A light below the plane z = 3 (N . L < 0): shading gives it no term anyway, but the shadow
-    // ray must still start on the side it leaves to, like any ray through the surface.
+    INFO(
+        "A light below the plane z = 3 (N . L < 0): shading gives it no term anyway, but the "
+        "shadow ray must still start on the side it leaves to, like any ray through the surface.");
     const LightSample below{kDown, 5.0, Color(1.0)};
     const Ray along_normal = shadow_ray(on_plane_z3(), below, rule(OffsetRule::along_normal, 0.25));
     const Ray error_bound = shadow_ray(on_plane_z3(), below, rule(OffsetRule::error_bound, 0.0));

@@ -71,7 +71,7 @@ TEST_CASE("radiance: a ray that misses everything is black", "[stage7]") {
 
 TEST_CASE("radiance: a surface that is no mirror shows its local colour, no mirror ray traced",
           "[stage7]") {
-    // Reflectance 0: the reflected ray would add 0 * whatever, so it must not cost a ray.
+    INFO("Reflectance 0: the reflected ray would add 0 * whatever, so it must not cost a ray.");
     std::vector<Ray> asked;
     const Color got = radiance(facing_mirrors(Color(0.0), asked), kUpward, 5, kErrorBound);
     CHECK(got == kLocal);
@@ -79,7 +79,7 @@ TEST_CASE("radiance: a surface that is no mirror shows its local colour, no mirr
 }
 
 TEST_CASE("radiance: with no bounce left, the mirror ray is not traced", "[stage7]") {
-    // bounces_left = 0 (maxdepth 0): the mirror shows its local colour only, one call.
+    INFO("bounces_left = 0 (maxdepth 0): the mirror shows its local colour only, one call.");
     std::vector<Ray> asked;
     const Color got = radiance(facing_mirrors(Color(0.5), asked), kUpward, 0, kErrorBound);
     CHECK(got == kLocal);
@@ -88,9 +88,10 @@ TEST_CASE("radiance: with no bounce left, the mirror ray is not traced", "[stage
 
 TEST_CASE("radiance: facing mirrors, reflectance 0.5, maxdepth 3: local (1 + 0.5 + 0.25 + 0.125)",
           "[stage7]") {
-    // The eye ray and 3 bounces: I = c + 0.5 (c + 0.5 (c + 0.5 c)) = 1.875 c, with
-    // c = (1, 0.5, 0.25): (1.875, 0.9375, 0.46875), exact in binary. 4 calls, the rays going
-    // up, down, up, down.
+    INFO(
+        "The eye ray and 3 bounces: I = c + 0.5 (c + 0.5 (c + 0.5 c)) = 1.875 c, with c = (1, 0.5, "
+        "0.25): (1.875, 0.9375, 0.46875), exact in binary. 4 calls, the rays going up, down, up, "
+        "down.");
     std::vector<Ray> asked;
     const Color got = radiance(facing_mirrors(Color(0.5), asked), kUpward, 3, kErrorBound);
     CHECK(got == Color(1.875, 0.9375, 0.46875));
@@ -102,8 +103,9 @@ TEST_CASE("radiance: facing mirrors, reflectance 0.5, maxdepth 3: local (1 + 0.5
 }
 
 TEST_CASE("radiance: the reflectance weighs each colour channel", "[stage7]") {
-    // One bounce with reflectance (1, 0.5, 0): I = c + (1, 0.5, 0) c
-    // = (1 + 1, 0.5 + 0.25, 0.25 + 0) = (2, 0.75, 0.25). Not clamped: the image does that.
+    INFO(
+        "One bounce with reflectance (1, 0.5, 0): I = c + (1, 0.5, 0) c = (1 + 1, 0.5 + 0.25, 0.25 "
+        "+ 0) = (2, 0.75, 0.25). Not clamped: the image does that.");
     std::vector<Ray> asked;
     const Color got = radiance(facing_mirrors({1, 0.5, 0}, asked), kUpward, 1, kErrorBound);
     CHECK(got == Color(2, 0.75, 0.25));
@@ -112,8 +114,9 @@ TEST_CASE("radiance: the reflectance weighs each colour channel", "[stage7]") {
 
 TEST_CASE("radiance: a faint mirror is still a mirror: only an exactly black Ks stops it",
           "[stage7]") {
-    // Reflectance 2^-8 = 0.00390625 is not black: one bounce adds c / 256, exact in binary.
-    // A cutoff "for speed" (say max(Ks) < 0.01) would drop the reflection and the second ray.
+    INFO(
+        "Reflectance 2^-8 = 0.00390625 is not black: one bounce adds c / 256, exact in binary. A "
+        "cutoff \"for speed\" (say max(Ks) < 0.01) would drop the reflection and the second ray.");
     std::vector<Ray> asked;
     const Color faint(0.00390625);
     const Color got = radiance(facing_mirrors(faint, asked), kUpward, 1, kErrorBound);
@@ -129,9 +132,10 @@ TEST_CASE("radiance: a mirror ray that leaves the scene adds black", "[stage7]")
 }
 
 TEST_CASE("radiance: mirror rays leave the surface by the offset rule it is given", "[stage7]") {
-    // The mirror at the origin, the eye ray coming straight down: with along_ray and
-    // epsilon 0.125, the mirror ray starts at the hit point, goes straight up, counts hits from
-    // t = 0.125 and is unbounded.
+    INFO(
+        "The mirror at the origin, the eye ray coming straight down: with along_ray and epsilon "
+        "0.125, the mirror ray starts at the hit point, goes straight up, counts hits from t = "
+        "0.125 and is unbounded.");
     std::vector<Ray> asked;
     const RayOffset along_ray{OffsetRule::along_ray, 0.125};
     radiance(mirror_then_sky(asked), {{0, 0, 1}, {0, 0, -1}}, 5, along_ray);
@@ -143,9 +147,10 @@ TEST_CASE("radiance: mirror rays leave the surface by the offset rule it is give
 }
 
 TEST_CASE("reflected_ray: 45-degree incidence leaves at 45 degrees on the other side", "[stage7]") {
-    // The floor y = 0 at (2, 0, 1), normal +y, the eye up and to the left: V = (-1, 1, 0)/sqrt 2.
-    // The ray came in along -V = (1, -1, 0)/sqrt 2, and d - 2 (d . n) n flips its y:
-    // R = (1, 1, 0)/sqrt 2. along_normal with epsilon 0.25: origin (2, 0.25, 1), t from 0 on.
+    INFO(
+        "The floor y = 0 at (2, 0, 1), normal +y, the eye up and to the left: V = (-1, 1, 0)/sqrt "
+        "2. The ray came in along -V = (1, -1, 0)/sqrt 2, and d - 2 (d . n) n flips its y: R = (1, "
+        "1, 0)/sqrt 2. along_normal with epsilon 0.25: origin (2, 0.25, 1), t from 0 on.");
     const double h = 1 / std::sqrt(2.0);
     const SurfacePoint point{{2, 0, 1}, Vec3(0.0), {0, 1, 0}, {0, 1, 0}, {-h, h, 0}};
     const Ray ray = reflected_ray(point, {OffsetRule::along_normal, 0.25});
@@ -156,9 +161,10 @@ TEST_CASE("reflected_ray: 45-degree incidence leaves at 45 degrees on the other 
 }
 
 TEST_CASE("reflected_ray: reflects about the shading normal, not the geometric one", "[stage7]") {
-    // Seen from straight above, V = (0, 1, 0), with an interpolated normal N = (0, 0.8, 0.6):
-    // -V = (0, -1, 0), -V . N = -0.8, R = (0, -1, 0) + 1.6 (0, 0.8, 0.6) = (0, 0.28, 0.96).
-    // About the geometric normal (0, 1, 0) it would go straight back up.
+    INFO(
+        "Seen from straight above, V = (0, 1, 0), with an interpolated normal N = (0, 0.8, 0.6): "
+        "-V = (0, -1, 0), -V . N = -0.8, R = (0, -1, 0) + 1.6 (0, 0.8, 0.6) = (0, 0.28, 0.96). "
+        "About the geometric normal (0, 1, 0) it would go straight back up.");
     const SurfacePoint point{{0, 0, 0}, Vec3(0.0), {0, 1, 0}, {0, 0.8, 0.6}, {0, 1, 0}};
     const Ray ray = reflected_ray(point, {OffsetRule::along_ray, 0.125});
     CHECK_THAT(ray.direction, IsNear(Vec3{0, 0.28, 0.96}, 1e-15));
@@ -166,8 +172,9 @@ TEST_CASE("reflected_ray: reflects about the shading normal, not the geometric o
 
 TEST_CASE("reflected_ray: with error_bound, starts beyond the point's error on the mirror's side",
           "[stage7]") {
-    // Error 1e-9 in y on the floor y = 0: the mirror ray must start above y = 1e-9, so that it
-    // cannot find the floor again at t ~ 0.
+    INFO(
+        "Error 1e-9 in y on the floor y = 0: the mirror ray must start above y = 1e-9, so that it "
+        "cannot find the floor again at t ~ 0.");
     const double h = 1 / std::sqrt(2.0);
     const SurfacePoint point{{2, 0, 1}, {0, 1e-9, 0}, {0, 1, 0}, {0, 1, 0}, {-h, h, 0}};
     const Ray ray = reflected_ray(point, kErrorBound);
