@@ -389,9 +389,9 @@ TEST_CASE("UniformGrid::closest_hit: empty, single, coincident, flat and lopside
     };
     {
         INFO("no primitives");
-        const UniformGrid grid(PrimitiveList{});
-        CHECK_FALSE(grid.closest_hit({{0, 0, 5}, {0, 0, -1}}));
-        CHECK_FALSE(grid.occluded({{0, 0, 5}, {0, 0, -1}}));
+        const std::optional<PrimitiveHit> hit =
+            UniformGrid(PrimitiveList{}).closest_hit({{0, 0, 5}, {0, 0, -1}});
+        CHECK_FALSE(hit);
     }
     {
         INFO("one sphere, one triangle");
@@ -454,6 +454,11 @@ TEST_CASE(
     CHECK_FALSE(grid.closest_hit({{0, 100, 0}, {1, 0, 0}}, &stats));  // passing beside it
     CHECK(stats.nodes == 0);
     CHECK(stats.primitive_tests == 0);
+}
+
+TEST_CASE("UniformGrid::occluded: a grid of no primitives occludes nothing", "[stage4]") {
+    const bool occluded = UniformGrid(PrimitiveList{}).occluded({{0, 0, 5}, {0, 0, -1}});
+    CHECK_FALSE(occluded);
 }
 
 TEST_CASE("UniformGrid::occluded: a zero direction visits no cell", "[stage4]") {
