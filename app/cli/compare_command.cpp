@@ -2,6 +2,9 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "app/cli/render_command.h"
 #include "app/compare/reference_image.h"
@@ -56,8 +59,10 @@ int compare_files(const fs::path& image_path, const fs::path& reference_path,
     for (const auto& [name, value] : render_metrics(verdict.diff))
         std::printf("  %-26s %.6g\n", name.c_str(), value);
     write_image(render_heat_map(reference, image), heat_map_path);
-    std::printf("heat map   %s (black: the same; red, yellow, white: differs by up to %.2f)\n",
-                heat_map_path.string().c_str(), static_cast<double>(kHeatMapFullScale));
+    std::printf(
+        "heat map   %s (black where they agree, through red and yellow to white at a "
+        "difference of %.2f)\n",
+        heat_map_path.string().c_str(), static_cast<double>(kHeatMapFullScale));
     std::printf("%s: %s; the grader passes at most %.2f%%\n", verdict.passed ? "pass" : "fail",
                 render_summary(verdict).c_str(), 100.0 * kDifferingShareAllowed);
     return verdict.passed ? 0 : 1;
