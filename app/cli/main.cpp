@@ -7,6 +7,7 @@
 
 #include "app/cli/check_command.h"
 #include "app/cli/command_registry.h"
+#include "app/cli/compare_command.h"
 #include "app/cli/demo_command.h"
 #include "app/cli/info_command.h"
 #include "app/cli/render_command.h"
@@ -16,6 +17,8 @@
 
 // The `raystep` command. Library code throws; only here do errors become a message on stderr and
 // an exit code: 0 success, 1 a failure (bad input, a stub, an error), 2 a bad command line.
+// `compare` answers with 1 for a render that fails, so that anything which stops it comparing
+// exits 2 instead, as diff(1) does.
 int main(int argc, char** argv) {
     using namespace raystep;
 
@@ -26,10 +29,12 @@ int main(int argc, char** argv) {
     TraceArguments trace;
     CheckArguments check;
     DemoArguments demo;
+    CompareArguments compare;
     CLI::App* render_command = add_render_command(app, render);
     CLI::App* info_command = add_info_command(app, info);
     CLI::App* trace_command = add_trace_command(app, trace);
     CLI::App* check_command = add_check_command(app, check);
+    CLI::App* compare_command = add_compare_command(app, compare);
     std::vector<AddedCommand> added;
     for (const AddCommand add : CommandRegistry::entries())
         added.push_back(add(app));
@@ -66,6 +71,7 @@ int main(int argc, char** argv) {
         if (info_command->parsed()) return run_info(info);
         if (trace_command->parsed()) return run_trace(trace);
         if (check_command->parsed()) return run_check(check);
+        if (compare_command->parsed()) return run_compare(compare);
         if (demo_command->parsed()) return run_demo(demo);
         for (const AddedCommand& command : added) {
             if (command.command->parsed()) return command.run();
@@ -77,5 +83,5 @@ int main(int argc, char** argv) {
     } catch (const std::exception& error) {
         std::fprintf(stderr, "raystep: %s\n", error.what());
     }
-    return 1;
+    return compare_command->parsed() ? 2 : 1;
 }

@@ -1,9 +1,8 @@
 #include "grader/grade/release.h"
 
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
+#include "app/compare/reference_image.h"
 #include "app/render/tile_renderer.h"
 #include "base/image/image_io.h"
 #include "base/scene/scene_loader.h"
@@ -44,19 +43,6 @@ std::size_t copy_tree(const fs::path& source, const fs::path& output) {
     return files;
 }
 
-std::vector<std::string> scene_views(const fs::path& scene) {
-    std::ifstream in(scene);
-    for (std::string line; std::getline(in, line);) {
-        if (line.rfind("# views:", 0) != 0) continue;
-        std::istringstream words(line.substr(8));
-        std::vector<std::string> views;
-        for (std::string view; words >> view;)
-            views.push_back(view);
-        return views;
-    }
-    return {"full"};
-}
-
 }  // namespace
 
 ReleaseSummary make_release(const fs::path& source, const fs::path& output) {
@@ -71,15 +57,14 @@ ReleaseSummary make_release(const fs::path& source, const fs::path& output) {
     for (const auto& entry : fs::recursive_directory_iterator(source / "scenes")) {
         if (entry.path().extension() != ".test") continue;
         const fs::path relative = fs::relative(entry.path(), source / "scenes");
-        const fs::path folder = output / "scenes" / relative.parent_path() / "reference";
         try {
             const Scene scene = load_scene(entry.path());
             const RenderScene render_scene = prepare_render_scene(scene);
-            for (const std::string& name : scene_views(entry.path())) {
+            for (const std::string& name : reference_views(entry.path())) {
                 RenderOptions options;
                 options.view = *parse_view(name);
                 write_image(render_image(render_scene, options),
-                            folder / (entry.path().stem().string() + "." + name + ".png"));
+                            reference_image_path(output / "scenes" / relative, name));
                 ++summary.reference_images;
             }
         } catch (const std::exception& error) {

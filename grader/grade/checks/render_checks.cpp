@@ -6,12 +6,12 @@
 #include <cmath>
 #include <filesystem>
 
+#include "app/compare/image_diff.h"
 #include "app/render/tile_renderer.h"
 #include "base/image/image_io.h"
 #include "base/scene/scene_loader.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
-#include "grader/grade/image_diff.h"
 #include "grader/protocol/image_json.h"
 
 namespace raystep::grade {

@@ -5,7 +5,7 @@
 
 #include "base/image/image.h"
 
-namespace raystep::grade {
+namespace raystep {
 
 /// How a student's render differs from the reference's, as idiff measures it, and as a viewer of
 /// the report's images would see it. The perceptual count is a per-pixel colour difference, not
@@ -37,4 +37,4 @@ ImageDiff compare_images(const Image& reference, const Image& student, float thr
 /// where a channel differs by `full_scale` or more.
 Image difference_heat_map(const Image& reference, const Image& student, float full_scale);
 
-}  // namespace raystep::grade
+}  // namespace raystep

@@ -1,4 +1,4 @@
-#include "grader/grade/image_diff.h"
+#include "app/compare/image_diff.h"
 
 #include <cmath>
 #include <limits>
@@ -10,8 +10,8 @@
 #include "base/testing/filled_image.h"
 
 using namespace raystep;
-using grade::compare_images;
-using grade::ImageDiff;
+using raystep::compare_images;
+using raystep::ImageDiff;
 using raystep::testing::filled_image;
 
 namespace {
@@ -38,7 +38,7 @@ double share(std::size_t count, const ImageDiff& diff) {
 TEST_CASE(
     "compare_images: an all-black render of the grey depth view differs visibly where "
     "the reference is lit",
-    "[grader]") {
+    "[app]") {
     // The depth view of spheres on a plane: grey, from white on the nearest sphere to almost
     // black at the horizon. A student's all-black render must count as different wherever a
     // viewer sees grey.
@@ -54,7 +54,7 @@ TEST_CASE(
     CHECK(share(diff.pixels_visibly_different, diff) >= 0.95 * share(diff.pixels_over, diff));
 }
 
-TEST_CASE("compare_images: a coloured render against black, and against itself", "[grader]") {
+TEST_CASE("compare_images: a coloured render against black, and against itself", "[app]") {
     const Image reference = reference_render("stage6/cornell-box.test", View::shaded);
     const ImageDiff same = compare_images(reference, reference, 0.02f);
     CHECK(same.pixels_over == 0);
@@ -65,7 +65,7 @@ TEST_CASE("compare_images: a coloured render against black, and against itself",
     CHECK(share(black.pixels_visibly_different, black) > 0.6);
 }
 
-TEST_CASE("compare_images: a just noticeable difference, and NaN", "[grader]") {
+TEST_CASE("compare_images: a just noticeable difference, and NaN", "[app]") {
     const Image grey = filled_image(4, 4, Color(0.5));
     Image changed = grey;
     // Mid grey in sRGB is L* 53.4; 0.5 to 0.51 moves L* by 1.0, below notice, to 0.55 by 5.0.
@@ -82,7 +82,7 @@ TEST_CASE("compare_images: a just noticeable difference, and NaN", "[grader]") {
     CHECK(clamped.pixels_over == 16);
 
     // The heat map shows a NaN in any channel at full scale.
-    CHECK(grade::difference_heat_map(grey, changed, 0.25f).at(2, 0) == Color(1.0));
+    CHECK(difference_heat_map(grey, changed, 0.25f).at(2, 0) == Color(1.0));
 
     const ImageDiff wrong_size = compare_images(grey, filled_image(4, 3, Color(0.5)), 0.02f);
     CHECK_FALSE(wrong_size.same_size);

@@ -1,4 +1,4 @@
-#include "grader/grade/image_diff.h"
+#include "app/compare/image_diff.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
-namespace raystep::grade {
+namespace raystep {
 
 namespace {
 
@@ -124,4 +124,4 @@ Image difference_heat_map(const Image& reference, const Image& student, float fu
     return heat;
 }
 
-}  // namespace raystep::grade
+}  // namespace raystep
