@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "base/math/portable_random.h"
+#include "base/math/unit_roundoff.h"
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
@@ -21,7 +22,6 @@ namespace {
 
 using probe::Json;
 
-constexpr double kUnit = 0x1p-53;
 // A camera ray's direction is unit length within 4 ulps of 1 (2^-52 each): every normalization
 // a student may write (stage 1's, glm's, v / |v|) lands within 3.
 constexpr double kUnitLength = 4 * 0x1p-52;
@@ -161,9 +161,11 @@ ExpectedRay expected_perspective(const CameraSpec& c, int i, int j) {
     // tan(atan(half_height width / height)) as often as directly, inherits atan's rounding
     // magnified the same way. The directions within those perturbations are all right.
     const Wide phi = std::atan(std::tan(half_angle) * c.width / c.height);
-    const Wide width_spread = 4 * kUnit * phi / (std::sin(phi) * std::cos(phi));
-    const Wide perturbations[4][2] = {
-        {1 - 4 * kUnit, 1}, {1 + 4 * kUnit, 1}, {1, 1 - width_spread}, {1, 1 + width_spread}};
+    const Wide width_spread = 4 * kUnitRoundoff * phi / (std::sin(phi) * std::cos(phi));
+    const Wide perturbations[4][2] = {{1 - 4 * kUnitRoundoff, 1},
+                                      {1 + 4 * kUnitRoundoff, 1},
+                                      {1, 1 - width_spread},
+                                      {1, 1 + width_spread}};
     Wide spread = 0;
     for (const auto& p : perturbations) {
         const WideVec other = image_plane_point(f, c, half_angle * p[0], p[1], i, j);
@@ -176,7 +178,8 @@ ExpectedRay expected_perspective(const CameraSpec& c, int i, int j) {
     const Wide half_height = std::tan(half_angle);
     const Wide size =
         (half_height * c.width / c.height + half_height + 1) / (glm::length(through) * f.up_sine);
-    return {c.lookfrom, 0.0, narrow(direction), static_cast<double>(8 * kUnit * size + spread)};
+    return {c.lookfrom, 0.0, narrow(direction),
+            static_cast<double>(8 * kUnitRoundoff * size + spread)};
 }
 
 ExpectedRay expected_orthographic(const CameraSpec& c, int i, int j) {
@@ -190,8 +193,8 @@ ExpectedRay expected_orthographic(const CameraSpec& c, int i, int j) {
                         std::abs(Wide(c.bottom)) + std::abs(Wide(c.top));
     const Wide eye = std::max(
         {std::abs(Wide(c.lookfrom.x)), std::abs(Wide(c.lookfrom.y)), std::abs(Wide(c.lookfrom.z))});
-    return {narrow(origin), static_cast<double>(8 * kUnit * (eye + window / f.up_sine)),
-            narrow(-f.w), 8 * kUnit};
+    return {narrow(origin), static_cast<double>(8 * kUnitRoundoff * (eye + window / f.up_sine)),
+            narrow(-f.w), 8 * kUnitRoundoff};
 }
 
 // The camera's maker called as a student would: make_perspective_camera(...) or
@@ -284,7 +287,7 @@ std::vector<ProbeCase> hidden_cases() {
         // A far point along a long ray: t D and the sum each round once, at ulps of 1e10.
         ray_at({{1e6, -3, 0.1}, {0.1, 0.7, -0.3}}, 1e10,
                narrow(widen({1e6, -3, 0.1}) + Wide(1e10) * widen({0.1, 0.7, -0.3})),
-               2 * kUnit * 1e10),
+               2 * kUnitRoundoff * 1e10),
         // fovy near 0: distinct, finite, nearly parallel rays, their sideways parts ~1e-9.
         camera_ray(front(1e-7, 64, 48), 0, 0),
         camera_ray(front(1e-7, 64, 48), 63, 47),
@@ -382,15 +385,10 @@ std::vector<ProbeCase> oracle_cases() {
 }  // namespace
 
 std::vector<CheckDefinition> stage2_checks() {
-    return {
-        case_check("stage2.unit", 2, "unit", "Ray::at and camera rays on hand-worked values",
-                   public_cases),
-        case_check("stage2.hidden", 2, "unit", "camera rays on the contract's edge cases",
-                   hidden_cases),
-        case_check("stage2.oracle", 2, "oracle",
-                   "perspective and orthographic rays of random cameras against long double",
-                   oracle_cases),
-    };
+    return stage_case_checks(
+        {2, "Ray::at and camera rays on hand-worked values", public_cases,
+         "camera rays on the contract's edge cases", hidden_cases,
+         "perspective and orthographic rays of random cameras against long double", oracle_cases});
 }
 
 }  // namespace raystep::grade
