@@ -1,11 +1,12 @@
-// Tests of the long-double oracles of stages 5 to 7 (grader/oracle/transform_oracle.h,
-// shading_oracle.h, recursion_oracle.h) on answers worked out by hand, the same ones the public
-// cases of grader/grade/checks/ state in their comments.
+// Tests of the long-double oracles of stages 2 and 5 to 7 (grader/oracle/camera_oracle.h,
+// transform_oracle.h, shading_oracle.h, recursion_oracle.h) on answers worked out by hand, the same
+// ones the public cases of grader/grade/checks/ state in their comments.
 
 #include <cmath>
 #include <limits>
 
 #include "base/testing/catch.h"
+#include "grader/oracle/camera_oracle.h"
 #include "grader/oracle/recursion_oracle.h"
 #include "grader/oracle/shading_oracle.h"
 #include "grader/oracle/transform_oracle.h"
@@ -24,6 +25,32 @@ bool close(const WideVec& got, const Vec3& expected, Wide tolerance = 1e-15L) {
 }
 
 }  // namespace
+
+TEST_CASE("expected_perspective: pixel (1, 2) of 4 x 4 at fovy 90 looks along (-0.25, -0.25, -1)",
+          "[grader]") {
+    CameraCase c{{0, 0, 0}, {0, 0, -3}, {0, 1, 0}, 4, 4};
+    c.fovy = 90;
+    const ExpectedCameraRay ray = expected_perspective(c, 1, 2);
+    const Vec3 through{-0.25, -0.25, -1};
+    CHECK(close(widen(ray.direction), through / std::sqrt(1.125)));
+    CHECK(ray.origin == Vec3(0, 0, 0));
+    CHECK(ray.direction_tolerance > 0);
+    CHECK(ray.direction_tolerance < 1e-14);
+}
+
+TEST_CASE(
+    "expected_orthographic: pixel (0, 0) of a 4 x 2 window [-2, 2] x [-1, 1] starts at "
+    "(-1.5, 0.5, 5)",
+    "[grader]") {
+    CameraCase c{{0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 4, 2, true};
+    c.left = -2;
+    c.right = 2;
+    c.bottom = -1;
+    c.top = 1;
+    const ExpectedCameraRay ray = expected_orthographic(c, 0, 0);
+    CHECK(close(widen(ray.origin), {-1.5, 0.5, 5}));
+    CHECK(close(widen(ray.direction), {0, 0, -1}));
+}
 
 TEST_CASE("wide_rotation: a quarter turn about +z takes x to y", "[grader]") {
     const WideMat m = wide_rotation({0, 0, 1}, 90);
