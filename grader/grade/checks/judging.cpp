@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include <glm/geometric.hpp>
+
 namespace raystep::grade {
 
 CheckDefinition case_check(std::string id, int stage, std::string kind, std::string name,
@@ -122,6 +124,12 @@ bool near(const Vec3& got, const WideVec& expected, const WideVec& tolerance) {
         if (!(std::abs(got[k] - expected[k]) <= tolerance[k])) return false;
     }
     return true;
+}
+
+bool unit_length(const Vec3& v) {
+    constexpr double kUnitLength = 4 * 0x1p-52;
+    const WideVec w = widen(v);
+    return std::abs(std::sqrt(glm::dot(w, w)) - 1) <= kUnitLength;
 }
 
 Judgement threw(const ProbeAnswer& answer, const std::string& type) {

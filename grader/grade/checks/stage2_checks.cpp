@@ -24,9 +24,6 @@ namespace {
 
 using probe::Json;
 
-// A camera ray's direction is unit length within 4 ulps of 1 (2^-52 each): every normalization
-// a student may write (stage 1's, glm's, v / |v|) lands within 3.
-constexpr double kUnitLength = 4 * 0x1p-52;
 const double kInf = std::numeric_limits<double>::infinity();
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -87,10 +84,8 @@ Judgement judge_camera_ray(const ProbeAnswer& answer, const ExpectedCameraRay& e
         return wrong(expected, "");
     }
     const Ray got = probe::ray_from(answer.value[0]);
-    const WideVec d = widen(got.direction);
     // Written so that a NaN anywhere fails
-    bool ok = got.t_min == 0.0 && got.t_max == kInf &&
-              std::abs(std::sqrt(glm::dot(d, d)) - 1) <= kUnitLength;
+    bool ok = got.t_min == 0.0 && got.t_max == kInf && unit_length(got.direction);
     for (int k = 0; k < 3; ++k) {
         ok = ok && std::abs(got.origin[k] - e.origin[k]) <= e.origin_tolerance &&
              std::abs(got.direction[k] - e.direction[k]) <= e.direction_tolerance;

@@ -29,8 +29,6 @@ namespace {
 
 using probe::Json;
 
-// A normal's length may be off by 4 ulps of 1 (2^-52 each): every normalization lands within 3.
-constexpr double kUnitLength = 4 * 0x1p-52;
 const double kInf = std::numeric_limits<double>::infinity();
 
 TransformOp translate_op(const Vec3& offset) {
@@ -210,11 +208,6 @@ ProbeCase point_to_world_case(const std::string& name, const Transform& t, const
                     vec3_text);
             },
             "point_to_world(" + cpp(t) + ", " + cpp(p) + ")"};
-}
-
-bool unit_length(const Vec3& v) {
-    const WideVec w = widen(v);
-    return std::abs(std::sqrt(glm::dot(w, w)) - 1) <= kUnitLength;
 }
 
 ProbeCase normal_to_world_case(const std::string& name, const Transform& t, const Vec3& n) {
