@@ -7,13 +7,14 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "base/math/unit_roundoff.h"
+
 namespace raystep {
 
 namespace {
 
 // Higham's gamma(n) = n u / (1 - n u): n roundings of relative size u = 2^-53 at most multiply a
 // value by (1 + theta) with |theta| <= gamma(n).
-constexpr double kUnitRoundoff = 0x1p-53;
 constexpr double rounding_gamma(int n) {
     return n * kUnitRoundoff / (1.0 - n * kUnitRoundoff);
 }

@@ -3,8 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
+
+#include <glm/geometric.hpp>
 
 namespace raystep::grade {
 
@@ -15,6 +16,15 @@ CheckDefinition case_check(std::string id, int stage, std::string kind, std::str
                                                      const BuiltProbe& probe) {
                 return run_cases(context, id, probe, make_cases());
             }};
+}
+
+std::vector<CheckDefinition> stage_case_checks(const StageCases& cases) {
+    const std::string stage = "stage" + std::to_string(cases.stage);
+    return {
+        case_check(stage + ".unit", cases.stage, "unit", cases.public_name, cases.public_cases),
+        case_check(stage + ".hidden", cases.stage, "unit", cases.hidden_name, cases.hidden_cases),
+        case_check(stage + ".oracle", cases.stage, "oracle", cases.oracle_name,
+                   cases.oracle_cases)};
 }
 
 std::vector<WorkloadTime> timed_workloads(const std::vector<WorkloadRun>& runs,
@@ -56,33 +66,28 @@ WorkloadTime timed_workload(const std::filesystem::path& program, const std::str
     return timed_workloads({{program, args}}, call, repeat).front();
 }
 
-WideVec widen(const Vec3& v) {
-    return {v.x, v.y, v.z};
+void add_seeded_cases(std::vector<ProbeCase>& cases, std::uint64_t seed, int count,
+                      const std::function<ProbeCase(PortableRandom&, int)>& make) {
+    for (int k = 0; k < count; ++k) {
+        PortableRandom random(seed, cases.size());
+        cases.push_back(make(random, k));
+    }
 }
 
-Vec3 narrow(const WideVec& v) {
-    return {static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)};
+void add_seeded_case_groups(
+    std::vector<ProbeCase>& cases, std::uint64_t seed, int count,
+    const std::function<std::vector<ProbeCase>(PortableRandom&, int)>& make) {
+    for (int k = 0; k < count; ++k) {
+        PortableRandom random(seed, cases.size());
+        for (ProbeCase& c : make(random, k))
+            cases.push_back(std::move(c));
+    }
 }
 
 Vec3 uniform(PortableRandom& random, double low, double high) {
     const double x = random.uniform(low, high);
     const double y = random.uniform(low, high);
     return {x, y, random.uniform(low, high)};
-}
-
-std::string full_text(double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", x);
-    return text;
-}
-
-std::string full_text(const Vec3& v) {
-    return "(" + full_text(v.x) + ", " + full_text(v.y) + ", " + full_text(v.z) + ")";
-}
-
-std::string ray_text(const Ray& r) {
-    return "origin " + full_text(r.origin) + ", direction " + full_text(r.direction) + ", t in [" +
-           full_text(r.t_min) + ", " + full_text(r.t_max) + "]";
 }
 
 double result_number(const ProbeAnswer& answer) {
@@ -114,16 +119,22 @@ Judgement near_vec3(const ProbeAnswer& answer, const Vec3& expected, double tole
     return right();
 }
 
+bool near(const Vec3& got, const WideVec& expected, const WideVec& tolerance) {
+    for (int k = 0; k < 3; ++k) {
+        if (!(std::abs(got[k] - expected[k]) <= tolerance[k])) return false;
+    }
+    return true;
+}
+
+bool unit_length(const Vec3& v) {
+    constexpr double kUnitLength = 4 * 0x1p-52;
+    const WideVec w = widen(v);
+    return std::abs(std::sqrt(glm::dot(w, w)) - 1) <= kUnitLength;
+}
+
 Judgement threw(const ProbeAnswer& answer, const std::string& type) {
     if (answer.kind == ProbeAnswer::Kind::threw && answer.exception_type == type) return right();
     return wrong("std::" + type + " thrown", "");
-}
-
-std::string vectors_text(std::initializer_list<Vec3> vectors) {
-    std::string text;
-    for (const Vec3& v : vectors)
-        text += (text.empty() ? "" : ", ") + full_text(v);
-    return text;
 }
 
 }  // namespace raystep::grade

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -8,6 +9,8 @@
 
 #include "base/math/portable_random.h"
 #include "grader/grade/check_definition.h"
+#include "grader/grade/checks/case_text.h"
+#include "grader/oracle/wide_vec.h"
 
 namespace raystep::grade {
 
@@ -22,13 +25,22 @@ inline constexpr const char* kStudentRaystep = "build/release/bin/raystep";
 CheckDefinition case_check(std::string id, int stage, std::string kind, std::string name,
                            std::function<std::vector<ProbeCase>()> make_cases);
 
-// Expectations are worked out in long double (64-bit mantissa on x86-64): 11 more bits than a
-// double, so that the expectation's own rounding is far below the tolerances a check allows.
-using Wide = long double;
-using WideVec = glm::vec<3, Wide>;
+/// A stage's cases as the three checks every case-checked stage has, and the names the report
+/// gives them: the public hand-worked cases, the hidden ones (the contract's edges) and the
+/// generated ones judged against an oracle.
+struct StageCases {
+    int stage = 0;
+    std::string public_name;
+    std::function<std::vector<ProbeCase>()> public_cases;
+    std::string hidden_name;
+    std::function<std::vector<ProbeCase>()> hidden_cases;
+    std::string oracle_name;
+    std::function<std::vector<ProbeCase>()> oracle_cases;
+};
 
-WideVec widen(const Vec3& v);
-Vec3 narrow(const WideVec& v);
+/// The three checks, "stageN.unit" and "stageN.hidden" of kind "unit" and "stageN.oracle" of
+/// kind "oracle", each a case_check.
+std::vector<CheckDefinition> stage_case_checks(const StageCases& cases);
 
 /// A workload timed from outside the probe: the best of three runs minus the same run with no
 /// passes (starting, reading the input, building), and the checksum the passes answered.
@@ -56,6 +68,18 @@ struct WorkloadRun {
 std::vector<WorkloadTime> timed_workloads(const std::vector<WorkloadRun>& runs,
                                           const std::string& call, int repeat);
 
+/// Appends `count` generated cases, the k-th (k from 0) made by `make(random, k)` from a
+/// generator of its own, PortableRandom(seed, i) with i the index the case gets in `cases`, so
+/// that `--case i` rebuilds that case alone on any platform.
+void add_seeded_cases(std::vector<ProbeCase>& cases, std::uint64_t seed, int count,
+                      const std::function<ProbeCase(PortableRandom&, int)>& make);
+
+/// The same for makers of several cases at a time (a ray, a point and a normal under one
+/// transform): each group is drawn from the generator of its first case's index.
+void add_seeded_case_groups(
+    std::vector<ProbeCase>& cases, std::uint64_t seed, int count,
+    const std::function<std::vector<ProbeCase>(PortableRandom&, int)>& make);
+
 /// A random point from a case's own generator, the same on every platform: each component
 /// uniform in [low, high), drawn x, y, z in that order.
 Vec3 uniform(PortableRandom& random, double low, double high);
@@ -67,19 +91,31 @@ Vec3 result_vec3(const ProbeAnswer& answer);
 /// Within `tolerance` of the expected number (absolute).
 Judgement near_number(const ProbeAnswer& answer, double expected, double tolerance);
 
-/// Every component within `tolerance` of the expected vector's (absolute).
+/// Every component within `tolerance` of the expected vector's (absolute); written so that a
+/// NaN fails.
 Judgement near_vec3(const ProbeAnswer& answer, const Vec3& expected, double tolerance);
+
+/// Each coordinate of `got` within its own tolerance of the long-double expectation's; written so
+/// that a NaN fails.
+bool near(const Vec3& got, const WideVec& expected, const WideVec& tolerance);
+
+/// A vector a student normalized (a camera ray's direction, a normal): its length, taken in long
+/// double, within 4 ulps of 1 (2^-52 each), since every normalization a student may write (stage
+/// 1's, glm's, v / |v|) lands within 3. Written so that a NaN fails.
+bool unit_length(const Vec3& v);
+
+/// The judge of a call whose answer is one value: wrong, with nothing got, when the call gave no
+/// result; else the result read by `read` (probe::vec3_from, probe::ray_from, ...), right when
+/// `accept` takes it, else wrong with it written by `describe`. `expected` says what was wanted.
+template <typename Read, typename Accept, typename Describe>
+Judgement judge_result(const ProbeAnswer& answer, const std::string& expected, Read read,
+                       Accept accept, Describe describe) {
+    if (answer.kind != ProbeAnswer::Kind::result) return wrong(expected, "");
+    const auto got = read(answer.value);
+    return accept(got) ? right() : wrong(expected, describe(got));
+}
 
 /// The call threw the named standard exception ("domain_error", ...), as the contract says.
 Judgement threw(const ProbeAnswer& answer, const std::string& type);
-
-/// A number or vector with every digit (17 significant), so that a counterexample shows the
-/// difference, however small, and can be typed back in.
-std::string full_text(double x);
-std::string full_text(const Vec3& v);
-std::string ray_text(const Ray& r);
-
-/// The case's vectors written out for a report.
-std::string vectors_text(std::initializer_list<Vec3> vectors);
 
 }  // namespace raystep::grade

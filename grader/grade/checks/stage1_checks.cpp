@@ -8,6 +8,7 @@
 
 #include "base/math/parallel_sine.h"
 #include "base/math/portable_random.h"
+#include "base/math/unit_roundoff.h"
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
@@ -17,8 +18,6 @@ namespace raystep::grade {
 namespace {
 
 using probe::Json;
-
-constexpr double kUnit = 0x1p-53;
 
 ProbeCase vector_case(const std::string& call, std::initializer_list<Vec3> args,
                       std::function<Judgement(const ProbeAnswer&)> judge) {
@@ -50,7 +49,7 @@ ProbeCase throws_domain_error(const std::string& call, std::initializer_list<Vec
 
 // orthonormal_frame(a, b) against the expected frame, each component within `tolerance`.
 ProbeCase frame_case(const Vec3& a, const Vec3& b, const Vec3& u, const Vec3& v, const Vec3& w,
-                     double tolerance = 4 * kUnit) {
+                     double tolerance = 4 * kUnitRoundoff) {
     return vector_case("orthonormal_frame", {a, b}, [=](const ProbeAnswer& answer) {
         if (answer.kind != ProbeAnswer::Kind::result) return wrong("a frame", "");
         const Vec3 got[3] = {probe::vec3_from(answer.value.at("u")),
@@ -79,10 +78,10 @@ std::vector<ProbeCase> public_cases() {
         exact_vector("cross", {{0, 1, 0}, {1, 0, 0}}, {0, 0, -1}),
         exact_number("length", {{3, 4, 0}}, 5.0),
         exact_number("length", {{0, 0, 0}}, 0.0),
-        exact_number("length", {{3e200, 4e200, 0}}, 5e200, 4 * kUnit * 5e200),
-        exact_number("length", {{3e-200, 4e-200, 0}}, 5e-200, 4 * kUnit * 5e-200),
-        exact_vector("normalize", {{0, 3, 4}}, {0, 0.6, 0.8}, 2 * kUnit),
-        exact_vector("normalize", {{1e-300, 0, 0}}, {1, 0, 0}, 2 * kUnit),
+        exact_number("length", {{3e200, 4e200, 0}}, 5e200, 4 * kUnitRoundoff * 5e200),
+        exact_number("length", {{3e-200, 4e-200, 0}}, 5e-200, 4 * kUnitRoundoff * 5e-200),
+        exact_vector("normalize", {{0, 3, 4}}, {0, 0.6, 0.8}, 2 * kUnitRoundoff),
+        exact_vector("normalize", {{1e-300, 0, 0}}, {1, 0, 0}, 2 * kUnitRoundoff),
         throws_domain_error("normalize", {{0, 0, 0}}),
         exact_vector("reflect", {{1, -1, 0}, {0, 1, 0}}, {1, 1, 0}),
         exact_vector("project_onto", {{2, 3, 4}, {0, 2, 0}}, {0, 3, 0}),
@@ -107,21 +106,22 @@ std::vector<ProbeCase> hidden_cases() {
     const double r2 = std::sqrt(0.5);
     return {
         exact_number("length", {{1e-320, 0, 0}}, 1e-320),
-        exact_number("length", {{1e300, 1e300, 1e300}}, std::sqrt(3.0) * 1e300, 4 * kUnit * 2e300),
+        exact_number("length", {{1e300, 1e300, 1e300}}, std::sqrt(3.0) * 1e300,
+                     4 * kUnitRoundoff * 2e300),
         throws_domain_error("normalize", {{inf, 0, 0}}),
         throws_domain_error("normalize", {{std::nan(""), 1, 0}}),
-        exact_vector("normalize", {{-2e250, 0, 0}}, {-1, 0, 0}, 2 * kUnit),
+        exact_vector("normalize", {{-2e250, 0, 0}}, {-1, 0, 0}, 2 * kUnitRoundoff),
         // Subnormal vectors are finite and nonzero: 1 / |v| overflows, v / |v| does not.
-        exact_vector("normalize", {{5e-324, 0, 0}}, {1, 0, 0}, 2 * kUnit),
+        exact_vector("normalize", {{5e-324, 0, 0}}, {1, 0, 0}, 2 * kUnitRoundoff),
         exact_vector("normalize", {{-3e-320, 4e-320, 1e-321}}, wide_unit({-3e-320, 4e-320, 1e-321}),
-                     2 * kUnit),
+                     2 * kUnitRoundoff),
         exact_vector("reflect", {{3, -4, 5}, {0, 0, 1}}, {3, -4, -5}),
         throws_domain_error("perpendicular_to", {{1, 2, 3}, {0, 0, 0}}),
         // A tiny or huge `onto` is not zero: onto . onto underflows to 0 or overflows to inf, its
         // unit vector does neither.
-        exact_vector("project_onto", {{2, 3, 4}, {0, 1e-200, 0}}, {0, 3, 0}, 2 * kUnit),
-        exact_vector("project_onto", {{2, 3, 4}, {0, -1e200, 0}}, {0, 3, 0}, 2 * kUnit),
-        exact_vector("perpendicular_to", {{2, 3, 4}, {0, 0, 3e-190}}, {2, 3, 0}, 8 * kUnit),
+        exact_vector("project_onto", {{2, 3, 4}, {0, 1e-200, 0}}, {0, 3, 0}, 2 * kUnitRoundoff),
+        exact_vector("project_onto", {{2, 3, 4}, {0, -1e200, 0}}, {0, 3, 0}, 2 * kUnitRoundoff),
+        exact_vector("perpendicular_to", {{2, 3, 4}, {0, 0, 3e-190}}, {2, 3, 0}, 8 * kUnitRoundoff),
         throws_domain_error("orthonormal_frame", {{0, 0, 0}, {0, 1, 0}}),
         throws_domain_error("orthonormal_frame", {{0, 0, 1}, {0, 0, 0}}),
         throws_domain_error("orthonormal_frame", {{std::nan(""), 0, 1}, {0, 1, 0}}),
@@ -173,12 +173,12 @@ void add_product_cases(std::vector<ProbeCase>& cases) {
         const Wide size =
             std::abs(Wide(a.x) * b.x) + std::abs(Wide(a.y) * b.y) + std::abs(Wide(a.z) * b.z);
         cases.push_back(exact_number("dot", {a, b}, static_cast<double>(exact),
-                                     static_cast<double>(4 * kUnit * size)));
+                                     static_cast<double>(4 * kUnitRoundoff * size)));
         const Vec3 c{static_cast<double>(Wide(a.y) * b.z - Wide(a.z) * b.y),
                      static_cast<double>(Wide(a.z) * b.x - Wide(a.x) * b.z),
                      static_cast<double>(Wide(a.x) * b.y - Wide(a.y) * b.x)};
         const double cross_size = static_cast<double>(
-            4 * kUnit * (std::abs(Wide(a.x)) + std::abs(Wide(a.y)) + std::abs(Wide(a.z))) *
+            4 * kUnitRoundoff * (std::abs(Wide(a.x)) + std::abs(Wide(a.y)) + std::abs(Wide(a.z))) *
             (std::abs(Wide(b.x)) + std::abs(Wide(b.y)) + std::abs(Wide(b.z))));
         cases.push_back(exact_vector("cross", {a, b}, c, cross_size));
     }
@@ -192,8 +192,8 @@ void add_length_cases(std::vector<ProbeCase>& cases) {
         const Vec3 v = random_vector(random) * (k % 2 ? 1e150 : 1e-150);
         const Wide exact = std::sqrt(Wide(v.x) * v.x + Wide(v.y) * v.y + Wide(v.z) * v.z);
         cases.push_back(exact_number("length", {v}, static_cast<double>(exact),
-                                     static_cast<double>(3 * kUnit * exact)));
-        cases.push_back(exact_vector("normalize", {v}, wide_unit(v), 4 * kUnit));
+                                     static_cast<double>(3 * kUnitRoundoff * exact)));
+        cases.push_back(exact_vector("normalize", {v}, wide_unit(v), 4 * kUnitRoundoff));
     }
 }
 
@@ -236,7 +236,7 @@ void add_frame_cases(std::vector<ProbeCase>& cases) {
         const Wide actual_sine = glm::length(b_cross_w) / glm::length(widen(b));
         const WideVec u = b_cross_w / glm::length(b_cross_w);
         cases.push_back(frame_case(a, b, narrow(u), narrow(glm::cross(w, u)), narrow(w),
-                                   static_cast<double>(8 * kUnit / actual_sine)));
+                                   static_cast<double>(8 * kUnitRoundoff / actual_sine)));
     }
 }
 
@@ -251,16 +251,12 @@ std::vector<ProbeCase> oracle_cases() {
 }  // namespace
 
 std::vector<CheckDefinition> stage1_checks() {
-    return {
-        case_check("stage1.unit", 1, "unit", "vector functions on hand-worked values",
-                   public_cases),
-        case_check("stage1.hidden", 1, "unit", "vector functions on the contract's edge cases",
-                   hidden_cases),
-        case_check("stage1.oracle", 1, "oracle",
-                   "dot, cross, length, normalize and orthonormal_frame against long double on "
-                   "random vectors of every magnitude",
-                   oracle_cases),
-    };
+    return stage_case_checks(
+        {1, "vector functions on hand-worked values", public_cases,
+         "vector functions on the contract's edge cases", hidden_cases,
+         "dot, cross, length, normalize and orthonormal_frame against long double on "
+         "random vectors of every magnitude",
+         oracle_cases});
 }
 
 }  // namespace raystep::grade

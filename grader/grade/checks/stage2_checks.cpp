@@ -1,5 +1,6 @@
 // Stage 2 checks: Ray::at and both cameras on hand-worked values (public and hidden), and the
-// rays of random cameras against the same rays computed in long double.
+// rays of random cameras against the same rays computed in long double
+// (grader/oracle/camera_oracle.h).
 
 #include <algorithm>
 #include <cmath>
@@ -11,9 +12,11 @@
 #include <glm/geometric.hpp>
 
 #include "base/math/portable_random.h"
+#include "base/math/unit_roundoff.h"
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
+#include "grader/oracle/camera_oracle.h"
 
 namespace raystep::grade {
 
@@ -21,40 +24,19 @@ namespace {
 
 using probe::Json;
 
-constexpr double kUnit = 0x1p-53;
-// A camera ray's direction is unit length within 4 ulps of 1 (2^-52 each): every normalization
-// a student may write (stage 1's, glm's, v / |v|) lands within 3.
-constexpr double kUnitLength = 4 * 0x1p-52;
-constexpr Wide kPi = 3.141592653589793238462643383279502884L;
 const double kInf = std::numeric_limits<double>::infinity();
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// A camera as the probe's camera calls take it: fovy for a perspective one, the window for an
-// orthographic one.
-struct CameraSpec {
-    Vec3 lookfrom;
-    Vec3 lookat;
-    Vec3 up;
-    int width = 1;
-    int height = 1;
-    bool orthographic = false;
-    double fovy = 0.0;
-    double left = 0.0;
-    double right = 0.0;
-    double bottom = 0.0;
-    double top = 0.0;
-};
-
-CameraSpec perspective(const Vec3& lookfrom, const Vec3& lookat, const Vec3& up, double fovy,
+CameraCase perspective(const Vec3& lookfrom, const Vec3& lookat, const Vec3& up, double fovy,
                        int width, int height) {
-    CameraSpec c{lookfrom, lookat, up, width, height};
+    CameraCase c{lookfrom, lookat, up, width, height};
     c.fovy = fovy;
     return c;
 }
 
-CameraSpec orthographic(const Vec3& lookfrom, const Vec3& lookat, const Vec3& up, double left,
+CameraCase orthographic(const Vec3& lookfrom, const Vec3& lookat, const Vec3& up, double left,
                         double right, double bottom, double top, int width, int height) {
-    CameraSpec c{lookfrom, lookat, up, width, height};
+    CameraCase c{lookfrom, lookat, up, width, height};
     c.orthographic = true;
     c.left = left;
     c.right = right;
@@ -63,7 +45,7 @@ CameraSpec orthographic(const Vec3& lookfrom, const Vec3& lookat, const Vec3& up
     return c;
 }
 
-std::string camera_text(const CameraSpec& c, int i, int j) {
+std::string camera_text(const CameraCase& c, int i, int j) {
     std::string text = c.orthographic ? "orthographic camera" : "perspective camera";
     text +=
         " from " + full_text(c.lookfrom) + " at " + full_text(c.lookat) + " up " + full_text(c.up);
@@ -74,7 +56,7 @@ std::string camera_text(const CameraSpec& c, int i, int j) {
            " pixels, pixel (" + std::to_string(i) + ", " + std::to_string(j) + ")";
 }
 
-ProbeQuery camera_query(const CameraSpec& c, int i, int j) {
+ProbeQuery camera_query(const CameraCase& c, int i, int j) {
     Json args = {{"lookfrom", probe::vec3(c.lookfrom)},
                  {"lookat", probe::vec3(c.lookat)},
                  {"up", probe::vec3(c.up)},
@@ -92,33 +74,7 @@ ProbeQuery camera_query(const CameraSpec& c, int i, int j) {
     return {"orthographic_rays", args};
 }
 
-// The camera's frame, exactly enough: w = a / |a|, u = (up x w) / |up x w|, v = w x u, and the
-// sine between up and the view direction, by which the frame's rounding in double is magnified.
-struct WideFrame {
-    WideVec u;
-    WideVec v;
-    WideVec w;
-    Wide up_sine;
-};
-
-WideFrame wide_frame(const CameraSpec& c) {
-    const WideVec a = widen(c.lookfrom) - widen(c.lookat);
-    const WideVec w = a / glm::length(a);
-    const WideVec up_cross_w = glm::cross(widen(c.up), w);
-    const Wide sine = glm::length(up_cross_w);
-    const WideVec u = up_cross_w / sine;
-    return {u, glm::cross(w, u), w, sine / glm::length(widen(c.up))};
-}
-
-// A camera ray as the judge expects it: t over [0, infinity), a unit direction.
-struct ExpectedRay {
-    Vec3 origin;
-    double origin_tolerance;  ///< per coordinate, absolute
-    Vec3 direction;
-    double direction_tolerance;
-};
-
-Judgement judge_camera_ray(const ProbeAnswer& answer, const ExpectedRay& e) {
+Judgement judge_camera_ray(const ProbeAnswer& answer, const ExpectedCameraRay& e) {
     const std::string expected = "origin " + full_text(e.origin) + " (within " +
                                  full_text(e.origin_tolerance) + "), unit direction " +
                                  full_text(e.direction) + " (within " +
@@ -128,10 +84,8 @@ Judgement judge_camera_ray(const ProbeAnswer& answer, const ExpectedRay& e) {
         return wrong(expected, "");
     }
     const Ray got = probe::ray_from(answer.value[0]);
-    const WideVec d = widen(got.direction);
     // Written so that a NaN anywhere fails
-    bool ok = got.t_min == 0.0 && got.t_max == kInf &&
-              std::abs(std::sqrt(glm::dot(d, d)) - 1) <= kUnitLength;
+    bool ok = got.t_min == 0.0 && got.t_max == kInf && unit_length(got.direction);
     for (int k = 0; k < 3; ++k) {
         ok = ok && std::abs(got.origin[k] - e.origin[k]) <= e.origin_tolerance &&
              std::abs(got.direction[k] - e.direction[k]) <= e.direction_tolerance;
@@ -139,64 +93,9 @@ Judgement judge_camera_ray(const ProbeAnswer& answer, const ExpectedRay& e) {
     return ok ? right() : wrong(expected, ray_text(got));
 }
 
-// The point of the image plane (at distance 1 from the eye) through pixel (i, j)'s centre, in
-// world directions; the half width scaled by `width_factor`.
-WideVec image_plane_point(const WideFrame& f, const CameraSpec& c, Wide half_angle,
-                          Wide width_factor, int i, int j) {
-    const Wide half_height = std::tan(half_angle);
-    const Wide half_width = half_height * c.width / c.height * width_factor;
-    const Wide alpha = 2 * (i + 0.5L) / c.width - 1;
-    const Wide beta = 1 - 2 * (j + 0.5L) / c.height;
-    return alpha * half_width * f.u + beta * half_height * f.v - f.w;
-}
-
-ExpectedRay expected_perspective(const CameraSpec& c, int i, int j) {
-    const WideFrame f = wide_frame(c);
-    const Wide half_angle = c.fovy * kPi / 360;
-    const WideVec through = image_plane_point(f, c, half_angle, 1, i, j);
-    const WideVec direction = through / glm::length(through);
-
-    // What a right implementation cannot help: its half angle is a few roundings off, which the
-    // tangent magnifies near 90 degrees; and the half width, taken by the CSE167 route
-    // tan(atan(half_height width / height)) as often as directly, inherits atan's rounding
-    // magnified the same way. The directions within those perturbations are all right.
-    const Wide phi = std::atan(std::tan(half_angle) * c.width / c.height);
-    const Wide width_spread = 4 * kUnit * phi / (std::sin(phi) * std::cos(phi));
-    const Wide perturbations[4][2] = {
-        {1 - 4 * kUnit, 1}, {1 + 4 * kUnit, 1}, {1, 1 - width_spread}, {1, 1 + width_spread}};
-    Wide spread = 0;
-    for (const auto& p : perturbations) {
-        const WideVec other = image_plane_point(f, c, half_angle * p[0], p[1], i, j);
-        const WideVec moved = other / glm::length(other) - direction;
-        spread = std::max({spread, std::abs(moved.x), std::abs(moved.y), std::abs(moved.z)});
-    }
-    // Each term of the image-plane point rounds at a few ulps of the half extents and of 1, the
-    // frame's vectors at a few ulps over the sine between up and the view; normalizing divides
-    // by the point's length.
-    const Wide half_height = std::tan(half_angle);
-    const Wide size =
-        (half_height * c.width / c.height + half_height + 1) / (glm::length(through) * f.up_sine);
-    return {c.lookfrom, 0.0, narrow(direction), static_cast<double>(8 * kUnit * size + spread)};
-}
-
-ExpectedRay expected_orthographic(const CameraSpec& c, int i, int j) {
-    const WideFrame f = wide_frame(c);
-    const Wide x = c.left + (Wide(c.right) - c.left) * (i + 0.5L) / c.width;
-    const Wide y = c.top - (Wide(c.top) - c.bottom) * (j + 0.5L) / c.height;
-    const WideVec origin = widen(c.lookfrom) + x * f.u + y * f.v;
-    // The window coordinates round at a few ulps of its edges, u and v carry the frame's
-    // rounding, and the sum rounds at the eye's ulps.
-    const Wide window = std::abs(Wide(c.left)) + std::abs(Wide(c.right)) +
-                        std::abs(Wide(c.bottom)) + std::abs(Wide(c.top));
-    const Wide eye = std::max(
-        {std::abs(Wide(c.lookfrom.x)), std::abs(Wide(c.lookfrom.y)), std::abs(Wide(c.lookfrom.z))});
-    return {narrow(origin), static_cast<double>(8 * kUnit * (eye + window / f.up_sine)),
-            narrow(-f.w), 8 * kUnit};
-}
-
 // The camera's maker called as a student would: make_perspective_camera(...) or
 // make_orthographic_camera(...).
-std::string camera_code(const CameraSpec& c) {
+std::string camera_code(const CameraCase& c) {
     const std::string frame = cpp(c.lookfrom) + ", " + cpp(c.lookat) + ", " + cpp(c.up) + ", ";
     const std::string size = std::to_string(c.width) + ", " + std::to_string(c.height) + ")";
     if (!c.orthographic) return "make_perspective_camera(" + frame + cpp(c.fovy) + ", " + size;
@@ -204,8 +103,8 @@ std::string camera_code(const CameraSpec& c) {
            cpp(c.bottom) + ", " + cpp(c.top) + ", " + size;
 }
 
-ProbeCase camera_ray(const CameraSpec& c, int i, int j) {
-    const ExpectedRay e =
+ProbeCase camera_ray(const CameraCase& c, int i, int j) {
+    const ExpectedCameraRay e =
         c.orthographic ? expected_orthographic(c, i, j) : expected_perspective(c, i, j);
     return {camera_text(c, i, j), camera_query(c, i, j),
             [e](const ProbeAnswer& a) { return judge_camera_ray(a, e); },
@@ -214,7 +113,7 @@ ProbeCase camera_ray(const CameraSpec& c, int i, int j) {
 }
 
 // No pixels asked: the camera's maker must throw, not the rays it would make later.
-ProbeCase no_camera(const CameraSpec& c) {
+ProbeCase no_camera(const CameraCase& c) {
     ProbeQuery query = camera_query(c, 0, 0);
     query.args["pixels"] = Json::array();
     const std::string text = camera_text(c, 0, 0);
@@ -237,7 +136,7 @@ std::vector<ProbeCase> public_cases() {
     };
     // From (2, 0, 0) looking down +x with +z up: w = (-1, 0, 0), u = up x w = (0, -1, 0),
     // v = w x u = (0, 0, 1).
-    const CameraSpec along_x = perspective({2, 0, 0}, {7, 0, 0}, {0, 0, 1}, 60, 3, 3);
+    const CameraCase along_x = perspective({2, 0, 0}, {7, 0, 0}, {0, 0, 1}, 60, 3, 3);
     return {
         // (1, -2, 0.5) + 1.5 (2, 0.25, -4) = (4, -1.625, -5.5); every step exact.
         ray_at({{1, -2, 0.5}, {2, 0.25, -4}}, 1.5, {4, -1.625, -5.5}),
@@ -284,7 +183,7 @@ std::vector<ProbeCase> hidden_cases() {
         // A far point along a long ray: t D and the sum each round once, at ulps of 1e10.
         ray_at({{1e6, -3, 0.1}, {0.1, 0.7, -0.3}}, 1e10,
                narrow(widen({1e6, -3, 0.1}) + Wide(1e10) * widen({0.1, 0.7, -0.3})),
-               2 * kUnit * 1e10),
+               2 * kUnitRoundoff * 1e10),
         // fovy near 0: distinct, finite, nearly parallel rays, their sideways parts ~1e-9.
         camera_ray(front(1e-7, 64, 48), 0, 0),
         camera_ray(front(1e-7, 64, 48), 63, 47),
@@ -336,7 +235,7 @@ std::vector<ProbeCase> hidden_cases() {
 
 // A random camera at a random scale: lookat 0.1 to 10 scales away, up at least 3 degrees off
 // the view direction.
-CameraSpec random_camera(PortableRandom& random, bool ortho) {
+CameraCase random_camera(PortableRandom& random, bool ortho) {
     const double scale = std::pow(10.0, static_cast<double>(random.integer(-3, 4)));
     for (;;) {
         // One draw per statement: the order of two draws in one expression is the compiler's.
@@ -371,7 +270,7 @@ std::vector<ProbeCase> oracle_cases() {
     std::vector<ProbeCase> cases;
     for (int k = 0; k < 400; ++k) {
         PortableRandom random(kCameraSeed, k);
-        const CameraSpec c = random_camera(random, k >= 300);
+        const CameraCase c = random_camera(random, k >= 300);
         const int i = static_cast<int>(random.integer(0, c.width - 1));
         const int j = static_cast<int>(random.integer(0, c.height - 1));
         cases.push_back(camera_ray(c, i, j));
@@ -382,15 +281,10 @@ std::vector<ProbeCase> oracle_cases() {
 }  // namespace
 
 std::vector<CheckDefinition> stage2_checks() {
-    return {
-        case_check("stage2.unit", 2, "unit", "Ray::at and camera rays on hand-worked values",
-                   public_cases),
-        case_check("stage2.hidden", 2, "unit", "camera rays on the contract's edge cases",
-                   hidden_cases),
-        case_check("stage2.oracle", 2, "oracle",
-                   "perspective and orthographic rays of random cameras against long double",
-                   oracle_cases),
-    };
+    return stage_case_checks(
+        {2, "Ray::at and camera rays on hand-worked values", public_cases,
+         "camera rays on the contract's edge cases", hidden_cases,
+         "perspective and orthographic rays of random cameras against long double", oracle_cases});
 }
 
 }  // namespace raystep::grade

@@ -274,12 +274,6 @@ std::string hit_text(const std::optional<PrimitiveHit>& h) {
            " " + std::to_string(h->index) + " at t = " + full_text(h->hit.t);
 }
 
-std::string ray_text(const std::string& scene, std::size_t k, const Ray& r) {
-    return scene + ", ray " + std::to_string(k) + ": origin " + full_text(r.origin) +
-           " direction " + full_text(r.direction) + " t in [" + full_text(r.t_min) + ", " +
-           full_text(r.t_max) + "]";
-}
-
 // How a student builds the scene in a test of their own, or what it is where it is not written
 // out.
 std::string scene_code(const AccelScene& scene) {
@@ -311,12 +305,12 @@ Judgement judge_ray(const ProbeAnswer& answer, const AccelScene& scene, std::siz
                    ? right()
                    : wrong(expected_text, got ? "occluded" : "not occluded");
     }
-    if (answer.kind != ProbeAnswer::Kind::result) return wrong(hit_text(expected), "");
-    const std::optional<PrimitiveHit> got = probe::primitive_hit_from(answer.value);
-    const bool ok = got.has_value() == expected.has_value() &&
-                    (!got || (got->kind == expected->kind && got->index == expected->index &&
-                              got->hit.t == expected->hit.t));
-    return ok ? right() : wrong(hit_text(expected), hit_text(got));
+    const auto same = [&](const std::optional<PrimitiveHit>& got) {
+        return got.has_value() == expected.has_value() &&
+               (!got || (got->kind == expected->kind && got->index == expected->index &&
+                         got->hit.t == expected->hit.t));
+    };
+    return judge_result(answer, hit_text(expected), probe::primitive_hit_from, same, hit_text);
 }
 
 // One structure over every scene: each ray's answer must be exactly the reference's. The
@@ -344,12 +338,13 @@ CheckMeasure measure_structure(const GradingContext& context, const BuiltProbe& 
                         {}};
         const std::string code = scene_code(scene);
         for (std::size_t k = 0; k < scene.rays.size(); ++k) {
-            batch.cases.push_back({ray_text(scene.name, k, scene.rays[k]),
-                                   {},
-                                   [&scene, k, occluded](const ProbeAnswer& answer) {
-                                       return judge_ray(answer, scene, k, occluded);
-                                   },
-                                   code + structure_code(call, split, occluded, scene.rays[k])});
+            batch.cases.push_back(
+                {scene.name + ", ray " + std::to_string(k) + ": " + ray_text(scene.rays[k]),
+                 {},
+                 [&scene, k, occluded](const ProbeAnswer& answer) {
+                     return judge_ray(answer, scene, k, occluded);
+                 },
+                 code + structure_code(call, split, occluded, scene.rays[k])});
         }
         batches.push_back(std::move(batch));
     }

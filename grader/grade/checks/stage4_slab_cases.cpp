@@ -30,8 +30,6 @@ namespace {
 
 using probe::Json;
 
-constexpr Wide kU = 0x1p-53L;
-
 struct SlabCase {
     Ray ray;
     Vec3 min;
@@ -90,10 +88,12 @@ ExactInterval exact_interval(const SlabCase& c) {
     exact.enter = enter;
     exact.exit = exit;
     // An infinite end (t_max = inf on a ray parallel to every slab) is compared exactly
-    exact.enter_tolerance =
-        std::isinf(enter) ? 0 : 16 * kU * std::fabs(enter) + 4 * kU * enter_magnitude;
-    exact.exit_tolerance =
-        std::isinf(exit) ? 0 : 16 * kU * std::fabs(exit) + 4 * kU * exit_magnitude;
+    exact.enter_tolerance = std::isinf(enter) ? 0
+                                              : 16 * kWideUnitRoundoff * std::fabs(enter) +
+                                                    4 * kWideUnitRoundoff * enter_magnitude;
+    exact.exit_tolerance = std::isinf(exit) ? 0
+                                            : 16 * kWideUnitRoundoff * std::fabs(exit) +
+                                                  4 * kWideUnitRoundoff * exit_magnitude;
     const Wide wide_rounding =
         0x1p-60L * (std::fabs(enter) + enter_magnitude +
                     (std::isinf(exit) ? 0 : std::fabs(exit) + exit_magnitude));

@@ -1,6 +1,6 @@
 // Stage 5 checks: the op matrices, compose and the moves between frames on hand-worked values
 // (public and hidden), and random op chains, rays, points, normals and ellipsoids against the
-// same products and roots computed in long double.
+// same products and roots computed in long double (grader/oracle/transform_oracle.h).
 //
 // Every call but compose gets its transform from here (matrix and inverse built from the ops in
 // long double), so that each function is judged on its own.
@@ -17,54 +17,19 @@
 #include <glm/matrix.hpp>
 
 #include "base/math/portable_random.h"
+#include "base/math/unit_roundoff.h"
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
+#include "grader/oracle/transform_oracle.h"
 
 namespace raystep::grade {
 
 namespace {
 
 using probe::Json;
-using WideVec4 = glm::vec<4, Wide>;
-using WideMat = glm::mat<4, 4, Wide>;
-// The vector forms (judging.h) beside the matrix forms below.
-using grade::narrow;
-using grade::widen;
 
-constexpr double kUnit = 0x1p-53;
-constexpr Wide kWideUnit = 0x1p-53L;
-// A normal's length may be off by 4 ulps of 1 (2^-52 each): every normalization lands within 3.
-constexpr double kUnitLength = 4 * 0x1p-52;
-constexpr Wide kPi = 3.141592653589793238462643383279502884L;
 const double kInf = std::numeric_limits<double>::infinity();
-
-WideMat widen(const Mat4& m) {
-    WideMat w;
-    for (int c = 0; c < 4; ++c) {
-        for (int r = 0; r < 4; ++r)
-            w[c][r] = m[c][r];
-    }
-    return w;
-}
-
-Mat4 narrow(const WideMat& w) {
-    Mat4 m;
-    for (int c = 0; c < 4; ++c) {
-        for (int r = 0; r < 4; ++r)
-            m[c][r] = static_cast<double>(w[c][r]);
-    }
-    return m;
-}
-
-WideMat absolute(const WideMat& m) {
-    WideMat a;
-    for (int c = 0; c < 4; ++c) {
-        for (int r = 0; r < 4; ++r)
-            a[c][r] = std::abs(m[c][r]);
-    }
-    return a;
-}
 
 TransformOp translate_op(const Vec3& offset) {
     return {TransformOp::Kind::translate, offset, 0.0};
@@ -76,137 +41,6 @@ TransformOp rotate_op(const Vec3& axis, double degrees) {
 
 TransformOp scale_op(const Vec3& factors) {
     return {TransformOp::Kind::scale, factors, 0.0};
-}
-
-// The op matrices in long double.
-WideMat wide_translation(const WideVec& offset) {
-    WideMat m(1.0L);
-    m[3] = WideVec4(offset, 1.0L);
-    return m;
-}
-
-WideMat wide_scaling(const WideVec& factors) {
-    WideMat m(1.0L);
-    for (int k = 0; k < 3; ++k)
-        m[k][k] = factors[k];
-    return m;
-}
-
-// Rodrigues: c I + (1 - c) a a^T + s [a]x, a the unit axis (a long double squares 1e-200).
-WideMat wide_rotation(const Vec3& axis, Wide degrees) {
-    const WideVec a = widen(axis) / glm::length(widen(axis));
-    const Wide theta = degrees * kPi / 180;
-    const Wide c = std::cos(theta);
-    const Wide s = std::sin(theta);
-    WideMat m(1.0L);
-    for (int column = 0; column < 3; ++column) {
-        for (int row = 0; row < 3; ++row) {
-            m[column][row] = (row == column ? c : 0) + (1 - c) * a[row] * a[column];
-        }
-    }
-    m[1][0] -= s * a.z;
-    m[2][0] += s * a.y;
-    m[0][1] += s * a.z;
-    m[2][1] -= s * a.x;
-    m[0][2] -= s * a.y;
-    m[1][2] += s * a.x;
-    return m;
-}
-
-// An op's matrix, its inverse in closed form, and the sizes its entries round at: a rotation's
-// entries are off by a few ulps of 1 and of the angle in radians, wherever they are near 0.
-struct WideOp {
-    WideMat matrix;
-    WideMat inverse;
-    WideMat size;
-    WideMat inverse_size;
-};
-
-WideOp wide_op(const TransformOp& op) {
-    switch (op.kind) {
-        case TransformOp::Kind::translate: {
-            const WideMat m = wide_translation(widen(op.vector));
-            const WideMat i = wide_translation(-widen(op.vector));
-            return {m, i, absolute(m), absolute(i)};
-        }
-        case TransformOp::Kind::rotate: {
-            const WideMat m = wide_rotation(op.vector, op.angle_degrees);
-            const WideMat i = wide_rotation(op.vector, -Wide(op.angle_degrees));
-            WideMat spread(0.0L);
-            const Wide angle = 1 + std::abs(op.angle_degrees * kPi / 180);
-            for (int c = 0; c < 3; ++c) {
-                for (int r = 0; r < 3; ++r)
-                    spread[c][r] = angle;
-            }
-            return {m, i, absolute(m) + spread, absolute(i) + spread};
-        }
-        case TransformOp::Kind::scale:
-            break;
-    }
-    const WideMat m = wide_scaling(widen(op.vector));
-    const WideMat i = wide_scaling(WideVec(1.0L) / widen(op.vector));
-    return {m, i, absolute(m), absolute(i)};
-}
-
-// M = M1 ... Mn and M^-1 = Mn^-1 ... M1^-1, and the tolerance of each entry: a product of n
-// matrices rounds each entry by about n ulps of the same product taken over the entries'
-// sizes, whatever the order of the multiplications.
-struct WideTransform {
-    WideMat matrix;
-    WideMat inverse;
-    WideMat matrix_tolerance;
-    WideMat inverse_tolerance;
-};
-
-WideTransform wide_compose(const std::vector<TransformOp>& ops) {
-    WideTransform t{WideMat(1.0L), WideMat(1.0L), WideMat(1.0L), WideMat(1.0L)};
-    for (const TransformOp& op : ops) {
-        const WideOp w = wide_op(op);
-        t.matrix = t.matrix * w.matrix;
-        t.inverse = w.inverse * t.inverse;
-        t.matrix_tolerance = t.matrix_tolerance * w.size;
-        t.inverse_tolerance = w.inverse_size * t.inverse_tolerance;
-    }
-    const Wide ulps = 8 * kWideUnit * (ops.size() + 1);
-    t.matrix_tolerance = ulps * t.matrix_tolerance;
-    t.inverse_tolerance = ulps * t.inverse_tolerance;
-    return t;
-}
-
-// The transform the probe gets: the long double products, each rounded once.
-Transform transform_of(const std::vector<TransformOp>& ops) {
-    const WideTransform w = wide_compose(ops);
-    return {narrow(w.matrix), narrow(w.inverse)};
-}
-
-std::string op_text(const TransformOp& op) {
-    switch (op.kind) {
-        case TransformOp::Kind::translate:
-            return "translate " + full_text(op.vector);
-        case TransformOp::Kind::rotate:
-            return "rotate " + full_text(op.vector) + " by " + full_text(op.angle_degrees);
-        case TransformOp::Kind::scale:
-            break;
-    }
-    return "scale " + full_text(op.vector);
-}
-
-std::string ops_text(const std::vector<TransformOp>& ops) {
-    std::string text;
-    for (const TransformOp& op : ops)
-        text += (text.empty() ? "" : ", ") + op_text(op);
-    return "[" + text + "]";
-}
-
-std::string matrix_text(const Mat4& m) {
-    std::string text;
-    for (int r = 0; r < 4; ++r) {
-        text += r == 0 ? "rows [" : "; [";
-        for (int c = 0; c < 4; ++c)
-            text += (c == 0 ? "" : ", ") + full_text(m[c][r]);
-        text += "]";
-    }
-    return text;
 }
 
 // Every entry within its tolerance; else the first that is not, and the whole matrix got.
@@ -235,7 +69,7 @@ Judgement near_matrix(const ProbeAnswer& answer, const WideMat& expected,
 // rotation(axis, degrees) against Rodrigues in long double.
 ProbeCase rotation_case(const Vec3& axis, double degrees) {
     const WideOp w = wide_op(rotate_op(axis, degrees));
-    const WideMat tolerance = 8 * kWideUnit * w.size;
+    const WideMat tolerance = 8 * kWideUnitRoundoff * w.size;
     return {"rotation(" + full_text(axis) + ", " + full_text(degrees) + ")",
             {"rotation", Json::array({probe::vec3(axis), probe::number(degrees)})},
             [=](const ProbeAnswer& a) { return near_matrix(a, w.matrix, tolerance); },
@@ -337,40 +171,6 @@ ProbeCase singular_scale_case(const Vec3& factors) {
             compose_code(ops)};
 }
 
-// M v in long double, v = (x, y, z, w), and the size of the terms each coordinate sums.
-struct WideProduct {
-    WideVec value;
-    WideVec size;
-};
-
-WideProduct wide_product(const Mat4& m, const Vec3& v, double w) {
-    const WideVec4 x(widen(v), w);
-    WideProduct p{WideVec(0.0L), WideVec(0.0L)};
-    for (int r = 0; r < 3; ++r) {
-        for (int c = 0; c < 4; ++c) {
-            p.value[r] += m[c][r] * x[c];
-            p.size[r] += std::abs(m[c][r] * x[c]);
-        }
-    }
-    return p;
-}
-
-bool near(const Vec3& got, const WideVec& expected, const WideVec& tolerance) {
-    for (int k = 0; k < 3; ++k) {
-        if (!(std::abs(got[k] - expected[k]) <= tolerance[k])) return false;
-    }
-    return true;
-}
-
-std::string transform_text(const Transform& t) {
-    return "M " + matrix_text(t.matrix);
-}
-
-std::string ray_text(const Ray& r) {
-    return "origin " + full_text(r.origin) + ", direction " + full_text(r.direction) + ", t in [" +
-           full_text(r.t_min) + ", " + full_text(r.t_max) + "]";
-}
-
 // The world ray in the object's frame: by M^-1, the direction not renormalized, t unchanged.
 ProbeCase ray_to_object_case(const std::string& name, const Transform& t, const Ray& ray) {
     const WideProduct origin = wide_product(t.inverse, ray.origin, 1.0);
@@ -379,59 +179,35 @@ ProbeCase ray_to_object_case(const std::string& name, const Transform& t, const 
     return {name + ": ray_to_object of " + ray_text(ray) + ", " + transform_text(t),
             {"ray_to_object", Json::array({probe::transform(t), probe::ray(ray)})},
             [=](const ProbeAnswer& a) {
-                const std::string text = ray_text(expected) + " (within " +
-                                         full_text(8 * kUnit * narrow(origin.size)) + " and " +
-                                         full_text(8 * kUnit * narrow(direction.size)) + ")";
-                if (a.kind != ProbeAnswer::Kind::result) return wrong(text, "");
-                const Ray got = probe::ray_from(a.value);
-                const bool ok =
-                    near(got.origin, origin.value, 8 * kWideUnit * origin.size) &&
-                    near(got.direction, direction.value, 8 * kWideUnit * direction.size) &&
-                    got.t_min == ray.t_min && got.t_max == ray.t_max;
-                return ok ? right() : wrong(text, ray_text(got));
+                const std::string text =
+                    ray_text(expected) + " (within " +
+                    full_text(8 * kUnitRoundoff * narrow(origin.size)) + " and " +
+                    full_text(8 * kUnitRoundoff * narrow(direction.size)) + ")";
+                const auto accept = [&](const Ray& got) {
+                    return near(got.origin, origin.value, 8 * kWideUnitRoundoff * origin.size) &&
+                           near(got.direction, direction.value,
+                                8 * kWideUnitRoundoff * direction.size) &&
+                           got.t_min == ray.t_min && got.t_max == ray.t_max;
+                };
+                return judge_result(a, text, probe::ray_from, accept, ray_text);
             },
             "ray_to_object(" + cpp(t) + ", " + cpp(ray) + ")"};
 }
 
 ProbeCase point_to_world_case(const std::string& name, const Transform& t, const Vec3& p) {
     const WideProduct expected = wide_product(t.matrix, p, 1.0);
-    const Vec3 tolerance = 8 * kUnit * narrow(expected.size);
+    const Vec3 tolerance = 8 * kUnitRoundoff * narrow(expected.size);
     return {name + ": point_to_world of " + full_text(p) + ", " + transform_text(t),
             {"point_to_world", Json::array({probe::transform(t), probe::vec3(p)})},
             [=](const ProbeAnswer& a) {
                 const std::string text =
                     full_text(narrow(expected.value)) + " (within " + full_text(tolerance) + ")";
-                if (a.kind != ProbeAnswer::Kind::result) return wrong(text, "");
-                const Vec3 got = probe::vec3_from(a.value);
-                return near(got, expected.value, widen(tolerance)) ? right()
-                                                                   : wrong(text, full_text(got));
+                return judge_result(
+                    a, text, probe::vec3_from,
+                    [&](const Vec3& got) { return near(got, expected.value, widen(tolerance)); },
+                    vec3_text);
             },
             "point_to_world(" + cpp(t) + ", " + cpp(p) + ")"};
-}
-
-// M^-T n normalized, and how far rounding may move it: each coordinate of M^-T n by a few ulps
-// of its terms, relative to the length it is divided by.
-struct WideNormal {
-    WideVec value;
-    WideVec tolerance;
-};
-
-WideNormal wide_normal(const Mat4& inverse, const WideVec& n) {
-    WideVec value(0.0L);
-    WideVec size(0.0L);
-    for (int r = 0; r < 3; ++r) {
-        for (int c = 0; c < 3; ++c) {
-            value[r] += inverse[r][c] * n[c];
-            size[r] += std::abs(inverse[r][c] * n[c]);
-        }
-    }
-    const Wide length = glm::length(value);
-    return {value / length, 8 * kWideUnit * (size / length + WideVec(1.0L))};
-}
-
-bool unit_length(const Vec3& v) {
-    const WideVec w = widen(v);
-    return std::abs(std::sqrt(glm::dot(w, w)) - 1) <= kUnitLength;
 }
 
 ProbeCase normal_to_world_case(const std::string& name, const Transform& t, const Vec3& n) {
@@ -441,67 +217,12 @@ ProbeCase normal_to_world_case(const std::string& name, const Transform& t, cons
             [=](const ProbeAnswer& a) {
                 const std::string text = "unit " + full_text(narrow(expected.value)) + " (within " +
                                          full_text(narrow(expected.tolerance)) + ")";
-                if (a.kind != ProbeAnswer::Kind::result) return wrong(text, "");
-                const Vec3 got = probe::vec3_from(a.value);
-                return near(got, expected.value, expected.tolerance) && unit_length(got)
-                           ? right()
-                           : wrong(text, full_text(got));
+                const auto accept = [&](const Vec3& got) {
+                    return near(got, expected.value, expected.tolerance) && unit_length(got);
+                };
+                return judge_result(a, text, probe::vec3_from, accept, vec3_text);
             },
             "normal_to_world(" + cpp(t) + ", " + cpp(n) + ")"};
-}
-
-// The world ray against the sphere under M, solved in long double in the object frame: t, and
-// the normal M^-T (p - C). The tolerances follow the rounding of the object-frame ray (a few
-// ulps of the terms of M^-1 A and M^-1 D), magnified along the ray by 1 / cos of the angle of
-// incidence, and for the normal by the condition of M's linear part.
-struct ExpectedHit {
-    bool hit = false;
-    double t = 0.0;
-    double t_tolerance = 0.0;
-    WideNormal normal;
-};
-
-Wide frobenius(const Mat4& m) {
-    Wide sum = 0;
-    for (int c = 0; c < 3; ++c) {
-        for (int r = 0; r < 3; ++r)
-            sum += Wide(m[c][r]) * m[c][r];
-    }
-    return std::sqrt(sum);
-}
-
-ExpectedHit wide_transformed_hit(const Ray& ray, const Sphere& sphere, const Transform& t) {
-    const WideProduct origin = wide_product(t.inverse, ray.origin, 1.0);
-    const WideProduct direction = wide_product(t.inverse, ray.direction, 0.0);
-    const WideVec f = origin.value - widen(sphere.center);
-    const WideVec d = direction.value;
-    const Wide a = glm::dot(d, d);
-    const Wide b = glm::dot(d, f);
-    const Wide c = glm::dot(f, f) - Wide(sphere.radius) * sphere.radius;
-    const Wide discriminant = b * b - a * c;
-    ExpectedHit e;
-    if (discriminant < 0) return e;
-    const Wide root = std::sqrt(discriminant);
-    const Wide near_t = (-b - root) / a;
-    const Wide far_t = (-b + root) / a;
-    const auto in_range = [&](Wide x) { return x >= ray.t_min && x <= ray.t_max; };
-    if (!in_range(near_t) && !in_range(far_t)) return e;
-    const Wide hit_t = in_range(near_t) ? near_t : far_t;
-
-    const Wide speed = std::sqrt(a);
-    const Wide half_chord = root / speed;
-    const Wide size =
-        std::max({origin.size.x, origin.size.y, origin.size.z}) +
-        glm::length(widen(sphere.center)) + sphere.radius +
-        std::abs(hit_t) * std::max({direction.size.x, direction.size.y, direction.size.z});
-    const Wide slant = sphere.radius / half_chord;
-    e.hit = true;
-    e.t = static_cast<double>(hit_t);
-    e.t_tolerance = static_cast<double>(16 * kUnit * size * slant / speed + 8 * kUnit * hit_t);
-    e.normal = wide_normal(t.inverse, f + hit_t * d);
-    const Wide condition = frobenius(t.matrix) * frobenius(t.inverse);
-    e.normal.tolerance += WideVec(16 * kUnit * size * slant / sphere.radius * condition);
-    return e;
 }
 
 std::string hit_text(const std::optional<Hit>& h) {
@@ -511,7 +232,7 @@ std::string hit_text(const std::optional<Hit>& h) {
 
 ProbeCase transformed_sphere_case(const std::string& name, const Ray& ray, const Sphere& sphere,
                                   const Transform& t) {
-    const ExpectedHit e = wide_transformed_hit(ray, sphere, t);
+    const TransformedSphereHit e = wide_transformed_hit(ray, sphere, t);
     const std::string text = e.hit ? "t = " + full_text(e.t) + " (within " +
                                          full_text(e.t_tolerance) + "), unit normal " +
                                          full_text(narrow(e.normal.value)) + " (within " +
@@ -522,14 +243,13 @@ ProbeCase transformed_sphere_case(const std::string& name, const Ray& ray, const
             {"intersect_transformed_sphere",
              Json::array({probe::ray(ray), probe::sphere(sphere), probe::transform(t)})},
             [=](const ProbeAnswer& a) {
-                if (a.kind != ProbeAnswer::Kind::result) return wrong(text, "");
-                const std::optional<Hit> got = probe::hit_from(a.value);
-                if (!got || !e.hit)
-                    return got.has_value() == e.hit ? right() : wrong(text, hit_text(got));
-                const bool ok = std::abs(got->t - e.t) <= e.t_tolerance &&
-                                near(got->normal, e.normal.value, e.normal.tolerance) &&
-                                unit_length(got->normal);
-                return ok ? right() : wrong(text, hit_text(got));
+                const auto accept = [&](const std::optional<Hit>& got) {
+                    if (!got || !e.hit) return got.has_value() == e.hit;
+                    return std::abs(got->t - e.t) <= e.t_tolerance &&
+                           near(got->normal, e.normal.value, e.normal.tolerance) &&
+                           unit_length(got->normal);
+                };
+                return judge_result(a, text, probe::hit_from, accept, hit_text);
             },
             "intersect_transformed_sphere(" + cpp(ray) + ", " + cpp(sphere) + ", " + cpp(t) + ")"};
 }
@@ -644,9 +364,8 @@ std::vector<ProbeCase> hidden_cases() {
     };
 }
 
-// The oracle's cases, each drawn from its own generator, PortableRandom(kOracleSeed, k) for the
-// case at index k, so that `--case k` rebuilds that case alone on any platform; the cases that
-// share an op chain (a ray, a point and a normal under it) are drawn from their first one's.
+// The oracle's cases, each drawn from its own generator (add_seeded_cases); the cases that share
+// an op chain (a ray, a point and a normal under it) from their first one's.
 constexpr std::uint64_t kOracleSeed = 0x5EED'0005;
 
 // A chain of 1 to 6 random ops: offsets up to 1e3, any axis and angle, scale factors from 1e-2
@@ -729,39 +448,24 @@ ProbeCase random_transformed_sphere_case(PortableRandom& random, int k) {
 
 std::vector<ProbeCase> oracle_cases() {
     std::vector<ProbeCase> cases;
-    for (int k = 0; k < 100; ++k) {
-        PortableRandom random(kOracleSeed, cases.size());
-        cases.push_back(random_rotation_case(random));
-    }
-    for (int k = 0; k < 200; ++k) {
-        PortableRandom random(kOracleSeed, cases.size());
-        cases.push_back(compose_case(random_ops(random)));
-    }
-    for (int k = 0; k < 100; ++k) {
-        PortableRandom random(kOracleSeed, cases.size());
-        for (ProbeCase& c : random_frame_cases(random))
-            cases.push_back(std::move(c));
-    }
-    for (int k = 0; k < 200; ++k) {
-        PortableRandom random(kOracleSeed, cases.size());
-        cases.push_back(random_transformed_sphere_case(random, k));
-    }
+    add_seeded_cases(cases, kOracleSeed, 100,
+                     [](PortableRandom& r, int) { return random_rotation_case(r); });
+    add_seeded_cases(cases, kOracleSeed, 200,
+                     [](PortableRandom& r, int) { return compose_case(random_ops(r)); });
+    add_seeded_case_groups(cases, kOracleSeed, 100,
+                           [](PortableRandom& r, int) { return random_frame_cases(r); });
+    add_seeded_cases(cases, kOracleSeed, 200, random_transformed_sphere_case);
     return cases;
 }
 
 }  // namespace
 
 std::vector<CheckDefinition> stage5_checks() {
-    return {
-        case_check("stage5.unit", 5, "unit",
-                   "transform matrices, compose and frames on hand-worked values", public_cases),
-        case_check("stage5.hidden", 5, "unit", "transforms on the contract's edge cases",
-                   hidden_cases),
-        case_check(
-            "stage5.oracle", 5, "oracle",
-            "rotations, random op chains, rays, points, normals and ellipsoids against long double",
-            oracle_cases),
-    };
+    return stage_case_checks(
+        {5, "transform matrices, compose and frames on hand-worked values", public_cases,
+         "transforms on the contract's edge cases", hidden_cases,
+         "rotations, random op chains, rays, points, normals and ellipsoids against long double",
+         oracle_cases});
 }
 
 }  // namespace raystep::grade

@@ -1,23 +1,25 @@
 // Stage 6 checks: lights, the local model and rays that leave a surface, on hand-worked values
-// (public and hidden), and on random inputs against the same sums computed in long double; for
-// the error-bound rule, what the contract promises (an origin strictly beyond the error box
-// along the leaving side's normal, within a few ulps of it), decided in long double.
+// (public and hidden), and on random inputs against the same sums computed in long double
+// (grader/oracle/shading_oracle.h); for the error-bound rule, what the contract promises (an
+// origin strictly beyond the error box along the leaving side's normal, within a few ulps of it),
+// decided in long double (grader/oracle/error_bound_origin.h).
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <functional>
 #include <limits>
 #include <string>
 
 #include <glm/geometric.hpp>
 
 #include "base/math/portable_random.h"
+#include "base/math/unit_roundoff.h"
 #include "grader/grade/checks/cpp_literal.h"
-#include "grader/grade/checks/error_bound_origin.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
+#include "grader/oracle/error_bound_origin.h"
+#include "grader/oracle/shading_oracle.h"
 
 namespace raystep::grade {
 
@@ -25,25 +27,15 @@ namespace {
 
 using probe::Json;
 
-constexpr double kUnit = 0x1p-53;
-constexpr Wide kWideUnit = 0x1p-53L;
 const double kInf = std::numeric_limits<double>::infinity();
 
-bool near(const Vec3& got, const WideVec& expected, const WideVec& tolerance) {
-    for (int k = 0; k < 3; ++k) {
-        if (!(std::abs(got[k] - expected[k]) <= tolerance[k])) return false;
-    }
-    return true;
-}
-
-// A colour or vector within a tolerance per channel.
-Judgement near_channels(const ProbeAnswer& answer, const WideVec& expected,
-                        const WideVec& tolerance) {
-    const std::string text =
-        full_text(narrow(expected)) + " (within " + full_text(narrow(tolerance)) + ")";
-    if (answer.kind != ProbeAnswer::Kind::result) return wrong(text, "");
-    const Vec3 got = probe::vec3_from(answer.value);
-    return near(got, expected, tolerance) ? right() : wrong(text, full_text(got));
+// A colour within its tolerance per channel.
+Judgement near_channels(const ProbeAnswer& answer, const WideColor& expected) {
+    const std::string text = full_text(narrow(expected.value)) + " (within " +
+                             full_text(narrow(expected.tolerance)) + ")";
+    return judge_result(
+        answer, text, probe::vec3_from,
+        [&](const Vec3& got) { return near(got, expected.value, expected.tolerance); }, vec3_text);
 }
 
 Material material(const Color& ambient, const Color& diffuse, const Color& specular,
@@ -68,12 +60,6 @@ std::string material_text(const Material& m) {
            full_text(m.shininess);
 }
 
-std::string point_text(const SurfacePoint& p) {
-    return "point " + full_text(p.position) + " error " + full_text(p.error) + " normal " +
-           full_text(p.normal) + " shading normal " + full_text(p.shading_normal) + " to eye " +
-           full_text(p.to_eye);
-}
-
 std::string light_text(const LightSample& l) {
     return "light from " + full_text(l.direction) + " at " + full_text(l.distance) +
            ", intensity " + full_text(l.intensity);
@@ -83,9 +69,8 @@ std::string light_text(const LightSample& l) {
 
 ProbeCase attenuation_case(const Attenuation& a, double distance) {
     // Every term is non-negative: the sum of three roundings or so of each.
-    const Wide d = distance;
-    const Wide expected = a.constant + a.linear * d + a.quadratic * d * d;
-    const double tolerance = static_cast<double>(6 * kUnit * expected);
+    const Wide expected = wide_attenuation(a, distance);
+    const double tolerance = static_cast<double>(6 * kUnitRoundoff * expected);
     return {"attenuation(" + full_text(Vec3(a.constant, a.linear, a.quadratic)) + ", " +
                 full_text(distance) + ")",
             {"attenuation", Json::array({probe::attenuation(a), probe::number(distance)})},
@@ -97,41 +82,35 @@ ProbeCase attenuation_case(const Attenuation& a, double distance) {
 
 // The light sample's direction, distance and intensity, each within its tolerance, and an
 // exact distance where one is asked (infinity for a directional light).
-Judgement judge_sample(const ProbeAnswer& answer, const WideVec& direction, Wide distance,
-                       const WideVec& intensity, const WideVec& intensity_tolerance) {
-    const WideVec direction_tolerance(8 * kUnit);
-    const Wide distance_tolerance = std::isinf(distance) ? 0 : 8 * kUnit * distance;
-    const std::string text =
-        "direction " + full_text(narrow(direction)) + " (within " + full_text(8 * kUnit) +
-        "), distance " + full_text(static_cast<double>(distance)) + " (within " +
-        full_text(static_cast<double>(distance_tolerance)) + "), intensity " +
-        full_text(narrow(intensity)) + " (within " + full_text(narrow(intensity_tolerance)) + ")";
-    if (answer.kind != ProbeAnswer::Kind::result) return wrong(text, "");
-    const LightSample got = probe::light_sample_from(answer.value);
-    const bool distance_ok = std::isinf(distance)
-                                 ? got.distance == kInf
-                                 : std::abs(got.distance - distance) <= distance_tolerance;
-    return distance_ok && near(got.direction, direction, direction_tolerance) &&
-                   near(got.intensity, intensity, intensity_tolerance)
-               ? right()
-               : wrong(text, light_text(got));
+Judgement judge_sample(const ProbeAnswer& answer, const WideLightSample& expected) {
+    const WideVec& direction = expected.direction;
+    const Wide distance = expected.distance;
+    const WideVec direction_tolerance(8 * kUnitRoundoff);
+    const Wide distance_tolerance = std::isinf(distance) ? 0 : 8 * kUnitRoundoff * distance;
+    const std::string text = "direction " + full_text(narrow(direction)) + " (within " +
+                             full_text(8 * kUnitRoundoff) + "), distance " +
+                             full_text(static_cast<double>(distance)) + " (within " +
+                             full_text(static_cast<double>(distance_tolerance)) + "), intensity " +
+                             full_text(narrow(expected.intensity)) + " (within " +
+                             full_text(narrow(expected.intensity_tolerance)) + ")";
+    const auto accept = [&](const LightSample& got) {
+        const bool distance_ok = std::isinf(distance)
+                                     ? got.distance == kInf
+                                     : std::abs(got.distance - distance) <= distance_tolerance;
+        return distance_ok && near(got.direction, direction, direction_tolerance) &&
+               near(got.intensity, expected.intensity, expected.intensity_tolerance);
+    };
+    return judge_result(answer, text, probe::light_sample_from, accept, light_text);
 }
 
 ProbeCase point_light_case(const PointLight& light, const Vec3& point) {
-    const WideVec to_light = widen(light.position) - widen(point);
-    const Wide distance = glm::length(to_light);
+    const WideLightSample expected = wide_point_light(light, point);
     const Attenuation& a = light.attenuation;
-    const Wide attenuation = a.constant + a.linear * distance + a.quadratic * distance * distance;
-    const WideVec intensity = widen(light.color) / attenuation;
-    // The distance is a few ulps off, its square twice that; the division rounds once more.
-    const WideVec tolerance = 24 * kWideUnit * glm::abs(intensity);
     return {"sample_light(point light at " + full_text(light.position) + ", colour " +
                 full_text(light.color) + ", attenuation " +
                 full_text(Vec3(a.constant, a.linear, a.quadratic)) + ") from " + full_text(point),
             {"sample_point_light", Json::array({probe::point_light(light), probe::vec3(point)})},
-            [=](const ProbeAnswer& answer) {
-                return judge_sample(answer, to_light / distance, distance, intensity, tolerance);
-            },
+            [=](const ProbeAnswer& answer) { return judge_sample(answer, expected); },
             "sample_light(" + cpp(light) + ", " + cpp(point) + ")"};
 }
 
@@ -145,95 +124,43 @@ ProbeCase at_the_light_case(const PointLight& light) {
 
 // Never attenuated: the intensity is the colour itself, the distance infinite.
 ProbeCase directional_light_case(const DirectionalLight& light) {
-    const WideVec direction = widen(light.direction) / glm::length(widen(light.direction));
+    const WideLightSample expected = wide_directional_light(light);
     return {"sample_light(directional light towards " + full_text(light.direction) + ", colour " +
                 full_text(light.color) + ")",
             {"sample_directional_light", Json::array({probe::directional_light(light)})},
-            [=](const ProbeAnswer& answer) {
-                return judge_sample(answer, direction, kInf, widen(light.color), WideVec(0.0L));
-            },
+            [=](const ProbeAnswer& answer) { return judge_sample(answer, expected); },
             "sample_light(" + cpp(light) + ")"};
 }
 
 // --- Blinn-Phong
 
-// One light's term in long double, and how far a right implementation may round it: the cosines
-// by a few ulps, which (N . H)^s multiplies by s / (N . H); each product and sum once more.
-struct WideTerm {
-    WideVec value;
-    WideVec tolerance;
-};
-
-WideTerm wide_blinn_phong(const Material& m, const SurfacePoint& p, const LightSample& l) {
-    const WideVec n = widen(p.shading_normal);
-    const WideVec light = widen(l.direction);
-    const Wide n_dot_l = glm::dot(n, light);
-    if (!(n_dot_l > 0)) return {WideVec(0.0L), WideVec(0.0L)};
-    // L + V = 0, the eye exactly opposite the light: no half vector, N . H counts as 0.
-    const WideVec sum = light + widen(p.to_eye);
-    const Wide n_dot_h =
-        sum == WideVec(0.0L) ? Wide(0) : std::max(glm::dot(n, glm::normalize(sum)), Wide(0));
-    const Wide highlight = std::pow(n_dot_h, Wide(m.shininess));
-    // Where N . H is 0 or below (the eye behind the shading normal), the highlight is 0^s, exact.
-    const Wide highlight_error =
-        n_dot_h > 0
-            ? highlight * (4 * kUnit + (m.shininess == 0 ? 0 : 8 * kUnit * m.shininess / n_dot_h))
-            : 0;
-    const WideVec intensity = widen(l.intensity);
-    const WideVec diffuse = widen(m.diffuse);
-    const WideVec specular = widen(m.specular);
-    const WideVec value = intensity * (diffuse * n_dot_l + specular * highlight);
-    const WideVec tolerance = glm::abs(intensity) * (glm::abs(diffuse) * Wide(8 * kUnit) +
-                                                     glm::abs(specular) * highlight_error) +
-                              Wide(4 * kUnit) * glm::abs(value);
-    return {value, tolerance};
-}
-
 ProbeCase blinn_phong_case(const Material& m, const SurfacePoint& p, const LightSample& l) {
-    const WideTerm e = wide_blinn_phong(m, p, l);
+    const WideColor expected = wide_blinn_phong(m, p, l);
     return {"blinn_phong(" + material_text(m) + "; " + point_text(p) + "; " + light_text(l) + ")",
             {"blinn_phong",
              Json::array({probe::material(m), probe::surface_point(p), probe::light_sample(l)})},
-            [=](const ProbeAnswer& answer) { return near_channels(answer, e.value, e.tolerance); },
+            [=](const ProbeAnswer& answer) { return near_channels(answer, expected); },
             "blinn_phong(" + cpp(m) + ", " + cpp(p) + ", " + cpp(l) + ")"};
 }
 
 ProbeCase local_shading_case(const Material& m, const SurfacePoint& p,
                              const std::vector<LightSample>& lights) {
-    WideVec value = widen(m.ambient) + widen(m.emission);
-    WideVec size = glm::abs(widen(m.ambient)) + glm::abs(widen(m.emission));
-    WideVec tolerance(0.0L);
+    const WideColor expected = wide_local_shading(m, p, lights);
     Json samples = Json::array();
     std::string text;
     std::string code;
     for (const LightSample& l : lights) {
-        const WideTerm term = wide_blinn_phong(m, p, l);
-        value += term.value;
-        size += glm::abs(term.value);
-        tolerance += term.tolerance;
         samples.push_back(probe::light_sample(l));
         text += "; " + light_text(l);
         code += (code.empty() ? "" : ", ") + cpp(l);
     }
-    // The sum of the terms rounds once per term, in whatever order.
-    tolerance += Wide(4 * kUnit * (lights.size() + 2)) * size;
     return {"local_shading(" + material_text(m) + "; " + point_text(p) + text + ")",
             {"local_shading", Json::array({probe::material(m), probe::surface_point(p), samples})},
-            [=](const ProbeAnswer& answer) { return near_channels(answer, value, tolerance); },
+            [=](const ProbeAnswer& answer) { return near_channels(answer, expected); },
             "local_shading(" + cpp(m) + ", " + cpp(p) + ", {" + code + "})"};
 }
 
 // --- Rays that leave a surface
-
-std::string ray_text(const Ray& r) {
-    return "origin " + full_text(r.origin) + ", direction " + full_text(r.direction) + ", t in [" +
-           full_text(r.t_min) + ", " + full_text(r.t_max) + "]";
-}
-
-std::string offset_text(const RayOffset& o) {
-    return std::string(offset_rule_name(o.rule)) +
-           (o.rule == OffsetRule::error_bound ? "" : " epsilon " + full_text(o.epsilon));
-}
 
 // The ray spawn_ray must give, judged by its rule:
 // - along_ray: origin the point itself, t over [epsilon, distance];
@@ -247,7 +174,8 @@ Judgement judge_spawned(const ProbeAnswer& answer, const SurfacePoint& p, const 
     const ErrorBoundOrigin region = error_bound_origin(p, direction);
     const WideVec along_normal = widen(p.position) + Wide(offset.epsilon) * n;
     const WideVec along_normal_tolerance =
-        Wide(4 * kUnit) * (glm::abs(widen(p.position)) + glm::abs(Wide(offset.epsilon) * n));
+        Wide(4 * kUnitRoundoff) *
+        (glm::abs(widen(p.position)) + glm::abs(Wide(offset.epsilon) * n));
     std::string text;
     switch (offset.rule) {
         case OffsetRule::along_ray:
@@ -262,22 +190,21 @@ Judgement judge_spawned(const ProbeAnswer& answer, const SurfacePoint& p, const 
             break;
     }
     text += ", " + full_text(distance) + "], direction " + full_text(direction);
-    if (answer.kind != ProbeAnswer::Kind::result) return wrong(text, "");
-    const Ray got = probe::ray_from(answer.value);
-
-    bool ok = got.t_max == distance && near(got.direction, widen(direction), WideVec(8 * kUnit));
-    switch (offset.rule) {
-        case OffsetRule::along_ray:
-            ok = ok && got.origin == p.position && got.t_min == offset.epsilon;
-            break;
-        case OffsetRule::along_normal:
-            ok = ok && near(got.origin, along_normal, along_normal_tolerance) && got.t_min == 0.0;
-            break;
-        case OffsetRule::error_bound:
-            ok = ok && within(region, got.origin) && got.t_min == 0.0;
-            break;
-    }
-    return ok ? right() : wrong(text, ray_text(got));
+    const auto accept = [&](const Ray& got) {
+        const bool kept = got.t_max == distance &&
+                          near(got.direction, widen(direction), WideVec(8 * kUnitRoundoff));
+        switch (offset.rule) {
+            case OffsetRule::along_ray:
+                return kept && got.origin == p.position && got.t_min == offset.epsilon;
+            case OffsetRule::along_normal:
+                return kept && near(got.origin, along_normal, along_normal_tolerance) &&
+                       got.t_min == 0.0;
+            case OffsetRule::error_bound:
+                break;
+        }
+        return kept && within(region, got.origin) && got.t_min == 0.0;
+    };
+    return judge_result(answer, text, probe::ray_from, accept, ray_text);
 }
 
 ProbeCase spawn_case(const SurfacePoint& p, const Vec3& direction, double distance,
@@ -477,8 +404,7 @@ std::vector<ProbeCase> hidden_cases() {
     };
 }
 
-// The oracle's cases, each drawn from its own generator, PortableRandom(kOracleSeed, k) for the
-// case at index k, so that `--case k` rebuilds that case alone on any platform.
+// The oracle's cases, each drawn from its own generator (add_seeded_cases).
 constexpr std::uint64_t kOracleSeed = 0x5EED'0006;
 
 // Each channel uniform in [0, high).
@@ -581,33 +507,25 @@ ProbeCase random_leaving_case(PortableRandom& random, int k) {
 
 std::vector<ProbeCase> oracle_cases() {
     std::vector<ProbeCase> cases;
-    const auto add = [&](int count, const std::function<ProbeCase(PortableRandom&, int)>& make) {
-        for (int k = 0; k < count; ++k) {
-            PortableRandom random(kOracleSeed, cases.size());
-            cases.push_back(make(random, k));
-        }
-    };
-    add(50, [](PortableRandom& r, int) { return random_attenuation_case(r); });
-    add(100, [](PortableRandom& r, int) { return random_point_light_case(r); });
-    add(150, [](PortableRandom& r, int) { return random_blinn_phong_case(r); });
-    add(100, [](PortableRandom& r, int) { return random_local_shading_case(r); });
-    add(300, random_leaving_case);
+    add_seeded_cases(cases, kOracleSeed, 50,
+                     [](PortableRandom& r, int) { return random_attenuation_case(r); });
+    add_seeded_cases(cases, kOracleSeed, 100,
+                     [](PortableRandom& r, int) { return random_point_light_case(r); });
+    add_seeded_cases(cases, kOracleSeed, 150,
+                     [](PortableRandom& r, int) { return random_blinn_phong_case(r); });
+    add_seeded_cases(cases, kOracleSeed, 100,
+                     [](PortableRandom& r, int) { return random_local_shading_case(r); });
+    add_seeded_cases(cases, kOracleSeed, 300, random_leaving_case);
     return cases;
 }
 
 }  // namespace
 
 std::vector<CheckDefinition> stage6_checks() {
-    return {
-        case_check("stage6.unit", 6, "unit",
-                   "lights, Blinn-Phong, the local model and ray offsets on hand-worked values",
-                   public_cases),
-        case_check("stage6.hidden", 6, "unit",
-                   "shading and ray offsets on the contract's edge cases", hidden_cases),
-        case_check("stage6.oracle", 6, "oracle",
-                   "lights, shading and spawned rays on random inputs against long double",
-                   oracle_cases),
-    };
+    return stage_case_checks(
+        {6, "lights, Blinn-Phong, the local model and ray offsets on hand-worked values",
+         public_cases, "shading and ray offsets on the contract's edge cases", hidden_cases,
+         "lights, shading and spawned rays on random inputs against long double", oracle_cases});
 }
 
 }  // namespace raystep::grade

@@ -1,7 +1,8 @@
 // Stage 7 checks: the mirror ray and the recursion. radiance is asked over a scripted scene (the
 // probe's shade returns the script's hits in turn, then misses), so the grader knows every ray
 // the recursion should ask about, in order, and the colour it should add up: hand-worked chains
-// (public and hidden) and random ones, the sums and the reflections computed in long double.
+// (public and hidden) and random ones, the sums and the reflections computed in long double
+// (grader/oracle/recursion_oracle.h).
 
 #include <algorithm>
 #include <cmath>
@@ -15,10 +16,9 @@
 
 #include "base/math/portable_random.h"
 #include "grader/grade/checks/cpp_literal.h"
-#include "grader/grade/checks/error_bound_origin.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
-#include "stages/7_recursion/recursion.h"
+#include "grader/oracle/recursion_oracle.h"
 
 namespace raystep::grade {
 
@@ -26,20 +26,7 @@ namespace {
 
 using probe::Json;
 
-constexpr double kUnit = 0x1p-53;
 const double kInf = std::numeric_limits<double>::infinity();
-
-// A ray as the judge expects it: each coordinate within its tolerance, the t range exact. Under
-// the error-bound rule the origin is judged by its region instead (error_bound_origin.h).
-struct ExpectedRay {
-    WideVec origin;
-    Wide origin_tolerance;
-    WideVec direction;
-    Wide direction_tolerance;
-    double t_min;
-    double t_max;
-    std::optional<ErrorBoundOrigin> region;
-};
 
 std::string expected_text(const ExpectedRay& e) {
     const std::string origin = e.region
@@ -70,52 +57,14 @@ bool matches(const Ray& got, const ExpectedRay& e) {
     return ok && (!e.region || within(*e.region, got.origin));
 }
 
-// The mirror ray at `p`, worked out in long double: -V reflected about the shading normal,
-// normalized, leaving by the offset's rule (stage 6's spawn_ray) with no upper bound: from the
-// point itself, epsilon along the leaving side's normal, or from the error-bound region. The
-// leaving side is that of the direction in long double; the cases keep the mirror ray well off
-// the geometric tangent plane, where no rounding can change it.
-ExpectedRay expected_reflection(const SurfacePoint& p, const RayOffset& offset) {
-    const WideVec v = widen(p.to_eye);
-    const WideVec n = widen(p.shading_normal);
-    const WideVec d = glm::normalize(-v + 2 * glm::dot(v, n) * n);
-    const Wide size = std::max({std::abs(Wide(p.position.x)), std::abs(Wide(p.position.y)),
-                                std::abs(Wide(p.position.z)), Wide(offset.epsilon)});
-    ExpectedRay e{widen(p.position), 4 * kUnit * size, d, 8 * kUnit, offset.epsilon, kInf, {}};
-    switch (offset.rule) {
-        case OffsetRule::along_ray:
-            break;
-        case OffsetRule::along_normal:
-            e.origin += Wide(offset.epsilon) * leaving_normal(p, narrow(d));
-            e.t_min = 0.0;
-            break;
-        case OffsetRule::error_bound:
-            e.region = error_bound_origin(p, narrow(d));
-            e.t_min = 0.0;
-            break;
-    }
-    return e;
-}
-
-std::string point_text(const SurfacePoint& p) {
-    return "point " + full_text(p.position) + " error " + full_text(p.error) + " normal " +
-           full_text(p.normal) + " shading normal " + full_text(p.shading_normal) + " to eye " +
-           full_text(p.to_eye);
-}
-
-std::string offset_text(const RayOffset& o) {
-    return std::string(offset_rule_name(o.rule)) +
-           (o.rule == OffsetRule::error_bound ? "" : " " + full_text(o.epsilon));
-}
-
 ProbeCase reflected_ray_case(const SurfacePoint& p, const RayOffset& offset) {
     const ExpectedRay e = expected_reflection(p, offset);
     return {"reflected_ray(" + point_text(p) + ", " + offset_text(offset) + ")",
             {"reflected_ray", Json::array({probe::surface_point(p), probe::ray_offset(offset)})},
             [=](const ProbeAnswer& answer) {
-                if (answer.kind != ProbeAnswer::Kind::result) return wrong(expected_text(e), "");
-                const Ray got = probe::ray_from(answer.value);
-                return matches(got, e) ? right() : wrong(expected_text(e), ray_text(got));
+                return judge_result(
+                    answer, expected_text(e), probe::ray_from,
+                    [&](const Ray& got) { return matches(got, e); }, ray_text);
             },
             "reflected_ray(" + cpp(p) + ", " + cpp(offset) + ")"};
 }
@@ -142,43 +91,8 @@ ProbeCase unbounded_case(const SurfacePoint& p, const RayOffset& offset) {
 
 // --- radiance over a script
 
-/// What shade returns on each call in turn: a shaded hit, or nullopt for a miss (and past the
-/// end, misses).
-using Script = std::vector<std::optional<ShadedHit>>;
-
 ShadedHit mirror(const SurfacePoint& p, const Color& local, const Color& reflectance) {
     return {p, local, reflectance};
-}
-
-// The colour and the rays that radiance should ask shade about, in order: the eye ray, then one
-// mirror ray per hit while bounces remain and the reflectance is not black.
-struct ExpectedRadiance {
-    WideVec colour{0};
-    WideVec colour_tolerance{0};
-    std::vector<ExpectedRay> rays;
-};
-
-ExpectedRadiance expected_radiance(const Script& script, const Ray& eye, int bounces,
-                                   const RayOffset& offset) {
-    ExpectedRadiance e;
-    e.rays.push_back(
-        {widen(eye.origin), 0, widen(eye.direction), 0, eye.t_min, eye.t_max, std::nullopt});
-    WideVec weight(1);
-    // Each term is the local colour times a product of reflectances, all non-negative: a few
-    // roundings per product and one per sum, relative to the terms' sum.
-    WideVec terms(0);
-    int depth = 0;
-    for (std::size_t i = 0; i < script.size() && script[i]; ++i) {
-        const ShadedHit& hit = *script[i];
-        e.colour += weight * widen(hit.local);
-        terms += weight * glm::abs(widen(hit.local));
-        if (bounces - depth <= 0 || hit.reflectance == Color(0.0)) break;
-        weight *= widen(hit.reflectance);
-        e.rays.push_back(expected_reflection(hit.point, offset));
-        ++depth;
-    }
-    e.colour_tolerance = Wide(4 * (depth + 2) * kUnit) * terms;
-    return e;
 }
 
 std::string script_text(const Script& script) {
@@ -343,8 +257,7 @@ std::vector<ProbeCase> hidden_cases() {
     };
 }
 
-// The oracle's cases, each drawn from its own generator, PortableRandom(kOracleSeed, k) for the
-// case at index k, so that `--case k` rebuilds that case alone on any platform.
+// The oracle's cases, each drawn from its own generator (add_seeded_cases).
 constexpr std::uint64_t kOracleSeed = 7177;
 
 // A mirror anywhere from the origin to 1e4 away, its rounding error from none to 1e3 ulps of its
@@ -391,25 +304,18 @@ ProbeCase random_radiance_case(PortableRandom& random, int k) {
 
 std::vector<ProbeCase> oracle_cases() {
     std::vector<ProbeCase> cases;
-    for (int k = 0; k < 300; ++k) {
-        PortableRandom random(kOracleSeed, cases.size());
-        cases.push_back(random_radiance_case(random, k));
-    }
+    add_seeded_cases(cases, kOracleSeed, 300, random_radiance_case);
     return cases;
 }
 
 }  // namespace
 
 std::vector<CheckDefinition> stage7_checks() {
-    return {
-        case_check("stage7.unit", 7, "unit",
-                   "the mirror ray and the recursion over hand-worked chains", public_cases),
-        case_check("stage7.hidden", 7, "unit",
-                   "black mirrors, no bounces, bent shading normals and deep chains", hidden_cases),
-        case_check("stage7.oracle", 7, "oracle",
-                   "random mirror chains: every ray asked and the colour, against long double",
-                   oracle_cases),
-    };
+    return stage_case_checks(
+        {7, "the mirror ray and the recursion over hand-worked chains", public_cases,
+         "black mirrors, no bounces, bent shading normals and deep chains", hidden_cases,
+         "random mirror chains: every ray asked and the colour, against long double",
+         oracle_cases});
 }
 
 }  // namespace raystep::grade

@@ -1,11 +1,9 @@
 #pragma once
 
-#include <string>
-
-#include "grader/grade/checks/judging.h"
+#include "grader/oracle/wide_vec.h"
 #include "stages/6_shading/shading.h"
 
-namespace raystep::grade {
+namespace raystep {
 
 // What the error-bound rule of spawn_ray (stages/6_shading/shading.h) promises about the origin
 // of a ray that leaves a surface, decided in long double. Stage 6 judges spawn_ray and
@@ -36,7 +34,4 @@ ErrorBoundOrigin error_bound_origin(const SurfacePoint& point, const Vec3& direc
 /// far below the half ulp the rule's step adds. Written so that a NaN fails.
 bool within(const ErrorBoundOrigin& region, const Vec3& origin);
 
-/// The region in words, for a report: "origin more than d and at most ... along n ...".
-std::string region_text(const ErrorBoundOrigin& region);
-
-}  // namespace raystep::grade
+}  // namespace raystep

@@ -1,4 +1,4 @@
-#include "grader/grade/checks/error_bound_origin.h"
+#include "grader/oracle/error_bound_origin.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
-namespace raystep::grade {
+namespace raystep {
 
 WideVec leaving_normal(const SurfacePoint& point, const Vec3& direction) {
     const WideVec n = widen(point.normal);
@@ -31,11 +31,4 @@ bool within(const ErrorBoundOrigin& region, const Vec3& origin) {
     return along > region.offset && along <= region.offset + region.ulps && sideways <= region.ulps;
 }
 
-std::string region_text(const ErrorBoundOrigin& region) {
-    const double d = static_cast<double>(region.offset);
-    return "origin more than " + full_text(d) + " and at most " + full_text(d + region.ulps) +
-           " along " + full_text(narrow(region.normal)) + " from the point " +
-           full_text(narrow(region.point)) + ", within " + full_text(region.ulps) + " of that line";
-}
-
-}  // namespace raystep::grade
+}  // namespace raystep

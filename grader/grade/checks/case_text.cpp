@@ -1,0 +1,89 @@
+#include "grader/grade/checks/case_text.h"
+
+#include <cstdio>
+
+namespace raystep::grade {
+
+namespace {
+
+std::string op_text(const TransformOp& op) {
+    switch (op.kind) {
+        case TransformOp::Kind::translate:
+            return "translate " + full_text(op.vector);
+        case TransformOp::Kind::rotate:
+            return "rotate " + full_text(op.vector) + " by " + full_text(op.angle_degrees);
+        case TransformOp::Kind::scale:
+            break;
+    }
+    return "scale " + full_text(op.vector);
+}
+
+}  // namespace
+
+std::string full_text(double x) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", x);
+    return text;
+}
+
+std::string full_text(const Vec3& v) {
+    return "(" + full_text(v.x) + ", " + full_text(v.y) + ", " + full_text(v.z) + ")";
+}
+
+std::string vec3_text(const Vec3& v) {
+    return full_text(v);
+}
+
+std::string ray_text(const Ray& r) {
+    return "origin " + full_text(r.origin) + ", direction " + full_text(r.direction) + ", t in [" +
+           full_text(r.t_min) + ", " + full_text(r.t_max) + "]";
+}
+
+std::string vectors_text(std::initializer_list<Vec3> vectors) {
+    std::string text;
+    for (const Vec3& v : vectors)
+        text += (text.empty() ? "" : ", ") + full_text(v);
+    return text;
+}
+
+std::string point_text(const SurfacePoint& p) {
+    return "point " + full_text(p.position) + " error " + full_text(p.error) + " normal " +
+           full_text(p.normal) + " shading normal " + full_text(p.shading_normal) + " to eye " +
+           full_text(p.to_eye);
+}
+
+std::string offset_text(const RayOffset& o) {
+    return std::string(offset_rule_name(o.rule)) +
+           (o.rule == OffsetRule::error_bound ? "" : " epsilon " + full_text(o.epsilon));
+}
+
+std::string region_text(const ErrorBoundOrigin& region) {
+    const double d = static_cast<double>(region.offset);
+    return "origin more than " + full_text(d) + " and at most " + full_text(d + region.ulps) +
+           " along " + full_text(narrow(region.normal)) + " from the point " +
+           full_text(narrow(region.point)) + ", within " + full_text(region.ulps) + " of that line";
+}
+
+std::string ops_text(const std::vector<TransformOp>& ops) {
+    std::string text;
+    for (const TransformOp& op : ops)
+        text += (text.empty() ? "" : ", ") + op_text(op);
+    return "[" + text + "]";
+}
+
+std::string matrix_text(const Mat4& m) {
+    std::string text;
+    for (int r = 0; r < 4; ++r) {
+        text += r == 0 ? "rows [" : "; [";
+        for (int c = 0; c < 4; ++c)
+            text += (c == 0 ? "" : ", ") + full_text(m[c][r]);
+        text += "]";
+    }
+    return text;
+}
+
+std::string transform_text(const Transform& t) {
+    return "M " + matrix_text(t.matrix);
+}
+
+}  // namespace raystep::grade

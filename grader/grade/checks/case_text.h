@@ -1,0 +1,55 @@
+#pragma once
+
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+#include "base/math/types.h"
+#include "base/scene/ray_offset.h"
+#include "base/scene/scene.h"
+#include "grader/oracle/error_bound_origin.h"
+#include "stages/2_rays/ray.h"
+#include "stages/5_transforms/transform.h"
+#include "stages/6_shading/shading.h"
+
+namespace raystep::grade {
+
+// How a case's values are written in a report, the same way for every stage's checks: every
+// digit (17 significant), so that a counterexample shows the difference, however small, and can
+// be typed back in.
+
+/// `1.0000000000000002`, `inf`.
+std::string full_text(double x);
+
+/// `(1, 2.5, -3)`, each coordinate as full_text writes it.
+std::string full_text(const Vec3& v);
+
+/// full_text of a vector, as one function (not an overload set) to pass to a judge.
+std::string vec3_text(const Vec3& v);
+
+/// `origin (...), direction (...), t in [t_min, t_max]`.
+std::string ray_text(const Ray& r);
+
+/// The case's vectors, separated by commas.
+std::string vectors_text(std::initializer_list<Vec3> vectors);
+
+/// A surface point: its position, error bound, both normals and the direction to the eye.
+std::string point_text(const SurfacePoint& p);
+
+/// A ray offset: the rule's name, and its epsilon unless the rule is the error bound.
+std::string offset_text(const RayOffset& o);
+
+/// The region an error-bound origin may lie in: "origin more than d and at most ... along n
+/// from the point ..., within ... of that line".
+std::string region_text(const ErrorBoundOrigin& region);
+
+/// A transform's ops in file order: `[translate (...), rotate (...) by 30, scale (...)]`.
+std::string ops_text(const std::vector<TransformOp>& ops);
+
+/// A 4x4 matrix row by row: `rows [a, b, c, d]; [...]; [...]; [...]`.
+std::string matrix_text(const Mat4& m);
+
+/// A transform by its matrix: `M rows [...]`.
+std::string transform_text(const Transform& t);
+
+}  // namespace raystep::grade
