@@ -6,7 +6,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "app/compare/image_diff.h"
+#include "app/compare/render_rule.h"
 #include "app/render/tile_renderer.h"
 #include "base/image/image_io.h"
 #include "base/scene/scene_loader.h"
@@ -23,11 +23,6 @@ namespace fs = std::filesystem;
 // Renders at most this wide: enough to see a stage's mistakes, small enough that a slow
 // submission still renders every check within its time.
 constexpr int kWidth = 160;
-// A channel differing by more than this is a differing pixel (8-bit output rounds at 1/255).
-constexpr float kThreshold = 0.02f;
-// A render passes with at most this share of its pixels differing: an alternative method that is
-// right may decide pixels exactly on an edge or a shadow boundary the other way.
-constexpr double kEdgePixels = 0.005;
 
 Scene scaled_scene(const fs::path& path) {
     Scene scene = load_scene(path);
@@ -142,41 +137,31 @@ CheckMeasure measure_render(const GradingContext& context, const BuiltProbe& pro
     if (!student) return measure;
 
     const Image reference = reference_render(path, view, clip);
-    const ImageDiff diff = compare_images(reference, *student, kThreshold);
+    // The rule `raystep compare` gives students (app/compare/render_rule.h).
+    const RenderVerdict verdict = judge_render(reference, *student);
     const fs::path folder = context.report_folder / "renders" / id;
     write_image(reference, folder / "reference.png");
     write_image(*student, folder / "student.png");
-    write_image(difference_heat_map(reference, *student, 0.25f), folder / "difference.png");
+    write_image(render_heat_map(reference, *student), folder / "difference.png");
     measure.images = {"renders/" + id + "/reference.png", "renders/" + id + "/student.png",
                       "renders/" + id + "/difference.png"};
-    const double share =
-        diff.pixels == 0 ? 1.0 : static_cast<double>(diff.pixels_over) / diff.pixels;
-    measure.fraction = 1.0 - share;
-    measure.metrics = {
-        {"mean absolute error", diff.mean_error},
-        {"rmse", diff.rms_error},
-        {"psnr", diff.psnr},
-        {"pixels over threshold", static_cast<double>(diff.pixels_over)},
-        {"visibly different pixels", static_cast<double>(diff.pixels_visibly_different)},
-        {"pixels", static_cast<double>(diff.pixels)}};
-    measure.outcome = share <= kEdgePixels ? Outcome::passed : Outcome::failed;
+    measure.fraction = 1.0 - verdict.share_over;
+    const auto metrics = render_metrics(verdict.diff);
+    measure.metrics = {metrics.begin(), metrics.end()};
+    measure.outcome = verdict.passed ? Outcome::passed : Outcome::failed;
     if (measure.outcome == Outcome::failed) {
         measure.counterexamples = {
-            diff.same_size ? pixel_counterexample(context, id, scene, view, reference, *student)
-                           : Counterexample{render_case.input,
-                                            std::to_string(reference.width()) + " x " +
-                                                std::to_string(reference.height()) + " pixels",
-                                            std::to_string(student->width()) + " x " +
-                                                std::to_string(student->height()) + " pixels",
-                                            context.reproduce + " --check " + id + " --case 0",
-                                            render_case.student_reproduce}};
+            verdict.diff.same_size
+                ? pixel_counterexample(context, id, scene, view, reference, *student)
+                : Counterexample{render_case.input,
+                                 std::to_string(reference.width()) + " x " +
+                                     std::to_string(reference.height()) + " pixels",
+                                 std::to_string(student->width()) + " x " +
+                                     std::to_string(student->height()) + " pixels",
+                                 context.reproduce + " --check " + id + " --case 0",
+                                 render_case.student_reproduce}};
     }
-    char text[160];
-    std::snprintf(text, sizeof text,
-                  "%zu of %zu pixels differ by more than %.2f (%.2f%%); RMSE %.4f",
-                  diff.pixels_over, diff.pixels, static_cast<double>(kThreshold), 100.0 * share,
-                  diff.rms_error);
-    measure.summary = diff.same_size ? text : "the image has the wrong size";
+    measure.summary = render_summary(verdict);
     return measure;
 }
 
