@@ -1,6 +1,6 @@
 // Render checks: a scene's view as the submission renders it, diffed with the same view from the
 // reference, rendered here in the grader. Each stage is graded on the view that shows its work
-// (docs/design, "Checks per stage"), with every other stage from the reference; the pipeline
+// (ARCHITECTURE.md, "Checks per stage"), with every other stage from the reference; the pipeline
 // checks render with every stage from the submission.
 
 #include <cmath>
