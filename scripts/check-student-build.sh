@@ -87,7 +87,7 @@ for demo in $("$bin/raystep" demo --list | awk 'NR > 1 {print $1}'); do
         "$bin/raystep" demo "$demo" -o "$release/demo-$demo.png"
 done
 check_command "raystep in a release has no bench: the studies are the instructor's" 2 \
-    "no command 'bench' in this build; its commands are: render, info, trace, check, demo" \
+    "no command 'bench' in this build; its commands are: render, [a-z, ]+" \
     "$bin/raystep" bench
 
 cmake -S "$root" -B "$root/build/student-stage1" -G Ninja -DCMAKE_BUILD_TYPE=Release \
