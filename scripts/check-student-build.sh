@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # What students meet, checked.
 #   1. A student release, as `raystep-grade release` writes it (no solutions/, studies/ or
-#      grader/, the reference images in scenes/), built as a student would.
+#      grader/, the student's README, the reference images in scenes/), built as its README says
+#      (scripts/setup.sh), and scripts/test.sh run as it says.
 #      Every public test must fail with a NotImplemented message and no test binary may crash;
 #      `raystep render` and `raystep trace` must stop with the message of the stub that stopped
 #      them; `raystep check` must report every stage-3 function as not implemented; every
@@ -25,10 +26,20 @@ for folder in solutions studies grader; do
         exit 1
     fi
 done
-cmake -S "$release" -B "$release/build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-    -DRAYSTEP_WARNINGS_AS_ERRORS=ON >/dev/null
-cmake --build "$release/build"
-bin=$release/build/bin
+for instructors in scripts/test-all.sh scripts/render-all.sh docs/instructor.md; do
+    if [ -e "$release/$instructors" ]; then
+        echo "FAIL the release holds the instructor's $instructors"
+        exit 1
+    fi
+done
+if ! grep -q "^scripts/setup.sh$" "$release/README.md"; then
+    echo "FAIL the release's README.md is not the student's (docs/student-README.md)"
+    exit 1
+fi
+# Built as its README says, with warnings as errors on top (setup.sh keeps the cached option).
+(cd "$release" && cmake --preset student -DRAYSTEP_WARNINGS_AS_ERRORS=ON >/dev/null &&
+    scripts/setup.sh)
+bin=$release/build/student/bin
 problems=0
 
 for tests in "$bin"/raystep_stage*_tests; do
@@ -73,6 +84,10 @@ check_command() {
         echo "ok   $what: $(grep -Eo "$pattern" <<<"$output" | head -n 1)"
     fi
 }
+check_command "scripts/test.sh 1 runs stage 1's public tests, every one failing at a stub" 8 \
+    "0% tests passed, [0-9]+ tests failed out of [0-9]+" "$release/scripts/test.sh" 1
+check_command "scripts/test.sh of a stage that does not exist exits 2" 2 "no stage '9'" \
+    "$release/scripts/test.sh" 9
 check_command "raystep render names the stub" 1 "^raystep: $stub_message" \
     "$bin/raystep" render "$scene" --view normal -o "$release/normal.png"
 check_command "raystep trace stops at the stub" 1 "^stopped: $stub_message" \

@@ -4,6 +4,7 @@
 #
 #   scripts/install-deps.sh             everything: building, the tests, the demos, the bench
 #   scripts/install-deps.sh --grading   only what grading needs (Gradescope's setup.sh)
+#   scripts/install-deps.sh --student   only what a student release builds with (scripts/setup.sh)
 #
 # Every name below is a package of both Debian 12 and Ubuntu 22.04 (Gradescope's image), so that
 # one list serves both; docs/instructor.md, "Gradescope", has the versions each one ships.
@@ -15,6 +16,11 @@ set -euo pipefail
 # MPFR), the probe protocol and reports (nlohmann-json), the sandbox (bubblewrap), submissions'
 # archives of every kind (libarchive), and Python for run_autograder's JSON when the grader itself
 # cannot run.
+# What a student release builds with: the stages and their tests, the raystep command.
+student_packages=(
+    cmake ninja-build g++ pkg-config
+    libglm-dev catch2 libopenimageio-dev libcli11-dev libtinyobjloader-dev
+)
 grading_packages=(
     cmake ninja-build g++ pkg-config
     libglm-dev catch2 libopenimageio-dev libcli11-dev libtinyobjloader-dev
@@ -34,8 +40,9 @@ other_packages=(
 case "${1:-}" in
     "") packages=("${grading_packages[@]}" "${other_packages[@]}") ;;
     --grading) packages=("${grading_packages[@]}") ;;
+    --student) packages=("${student_packages[@]}") ;;
     *)
-        echo "usage: $0 [--grading]" >&2
+        echo "usage: $0 [--grading | --student]" >&2
         exit 2
         ;;
 esac

@@ -13,14 +13,25 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// What a student's repository leaves out, relative to the repository's root.
+// The student's README, written as the release's README.md in place of the instructor's.
+const fs::path kStudentReadme = "docs/student-README.md";
+
+// What a student's repository leaves out, relative to the repository's root: the instructor's
+// folders, guide, README and scripts (the student's are scripts/setup.sh and scripts/test.sh).
 bool withheld(const fs::path& relative) {
     const std::string first = relative.begin()->string();
     if (first == "solutions" || first == "studies" || first == "grader" || first == ".git" ||
         first == ".ci" || first == "build" || first == "out") {
         return true;
     }
-    return relative == fs::path("docs/instructor.md") || relative == fs::path("scenes/meshes");
+    for (const char* instructors :
+         {"README.md", "docs/instructor.md", "scenes/meshes", "scripts/render-all.sh",
+          "scripts/test-all.sh", "scripts/check-student-build.sh", "scripts/check-format.py",
+          "scripts/check-layers.py", "scripts/check-doc-paths.py",
+          "scripts/make-watertight-scene.py"}) {
+        if (relative == fs::path(instructors)) return true;
+    }
+    return relative == kStudentReadme;
 }
 
 std::size_t copy_tree(const fs::path& source, const fs::path& output) {
@@ -53,6 +64,8 @@ ReleaseSummary make_release(const fs::path& source, const fs::path& output) {
     fs::create_directories(output);
     ReleaseSummary summary;
     summary.files = copy_tree(source, output);
+    fs::copy_file(source / kStudentReadme, output / "README.md");
+    ++summary.files;
 
     for (const auto& entry : fs::recursive_directory_iterator(source / "scenes")) {
         if (entry.path().extension() != ".test") continue;
