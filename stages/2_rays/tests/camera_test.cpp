@@ -68,6 +68,26 @@ OrthographicCamera front_window(double left, double right, double bottom, double
     return {{0, 0, 5}, {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, left, right, bottom, top, width, height};
 }
 
+// What make_perspective_camera is given: the scene file's camera line and the image size.
+struct CameraInput {
+    Vec3 from, at, up;
+    double fovy;
+    int width, height;
+};
+
+// A camera anywhere in a 20-wide cube, looking anywhere, with any fovy from 5 to 150 degrees and
+// an image of 1 to 300 pixels a side.
+CameraInput random_camera_input(PortableRandom& random) {
+    CameraInput input;
+    input.from = random.point(10.0);
+    input.at = random.point(10.0);
+    input.up = random.point(10.0);
+    input.fovy = random.uniform(5.0, 150.0);
+    input.width = static_cast<int>(random.integer(1, 300));
+    input.height = static_cast<int>(random.integer(1, 300));
+    return input;
+}
+
 bool is_finite(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
@@ -94,12 +114,7 @@ TEST_CASE("make_perspective_camera: agrees with the camera built by hand on rand
           "[stage2]") {
     for (int k = 0; k < 300; ++k) {
         PortableRandom random(22, static_cast<std::uint64_t>(k));  // case k, on every platform
-        const Vec3 from = random.point(10.0);
-        const Vec3 at = random.point(10.0);
-        const Vec3 up = random.point(10.0);
-        const double fovy = random.uniform(5.0, 150.0);
-        const int width = static_cast<int>(random.integer(1, 300));
-        const int height = static_cast<int>(random.integer(1, 300));
+        const auto [from, at, up, fovy, width, height] = random_camera_input(random);
         CAPTURE(k, from, at, up, fovy, width, height);
         const PerspectiveCamera c = make_perspective_camera(from, at, up, fovy, width, height);
         const PerspectiveCamera expected = camera_looking(from, at, up, fovy, width, height);
@@ -170,12 +185,7 @@ TEST_CASE("perspective_ray: agrees with glm::lookAt and glm::perspective", "[sta
         "normalized device coordinates.");
     for (int k = 0; k < 300; ++k) {
         PortableRandom random(21, static_cast<std::uint64_t>(k));  // case k, on every platform
-        const Vec3 from = random.point(10.0);
-        const Vec3 at = random.point(10.0);
-        const Vec3 up = random.point(10.0);
-        const double fovy = random.uniform(5.0, 150.0);
-        const int width = static_cast<int>(random.integer(1, 300));
-        const int height = static_cast<int>(random.integer(1, 300));
+        const auto [from, at, up, fovy, width, height] = random_camera_input(random);
         const int i = static_cast<int>(random.integer(0, width - 1));
         const int j = static_cast<int>(random.integer(0, height - 1));
         const PerspectiveCamera c = camera_looking(from, at, up, fovy, width, height);

@@ -69,6 +69,17 @@ void check_same(const Ray& ray, const std::optional<PrimitiveHit>& got,
     CHECK(got->hit.t == expected->hit.t);
 }
 
+// Two walls of 5 x 5 spheres of radius 0.3, in the planes x = 0 and x = 10, with empty cells
+// between them.
+PrimitiveList two_walls_of_spheres() {
+    PrimitiveList walls;
+    for (int k = 0; k < 25; ++k) {
+        walls.spheres.push_back({{0, k % 5, k / 5}, 0.3});
+        walls.spheres.push_back({{10, k % 5, k / 5}, 0.3});
+    }
+    return walls;
+}
+
 int primitive_count(const PrimitiveList& list) {
     return static_cast<int>(list.spheres.size() + list.triangles.size());
 }
@@ -462,12 +473,7 @@ TEST_CASE(
 TEST_CASE("UniformGrid::closest_hit: a ray through an empty region tests no primitive",
           "[stage4]") {
     INFO("Two walls of spheres, at x = 0 and x = 10; the ray crosses the gap between them.");
-    PrimitiveList walls;
-    for (int k = 0; k < 25; ++k) {
-        walls.spheres.push_back({{0, k % 5, k / 5}, 0.3});
-        walls.spheres.push_back({{10, k % 5, k / 5}, 0.3});
-    }
-    const UniformGrid grid(walls);
+    const UniformGrid grid(two_walls_of_spheres());
     TraversalStats stats;
     CHECK_FALSE(grid.closest_hit({{5, -2, 2}, {0, 1, 0}}, &stats));
     // From below, above the left wall: it enters the grid at x = 2.9, in the gap, and leaves
@@ -479,12 +485,7 @@ TEST_CASE("UniformGrid::closest_hit: a ray through an empty region tests no prim
 
 TEST_CASE("UniformGrid::occluded: a ray through an empty region tests no primitive", "[stage4]") {
     INFO("Two walls of spheres, at x = 0 and x = 10; the ray crosses the gap between them.");
-    PrimitiveList walls;
-    for (int k = 0; k < 25; ++k) {
-        walls.spheres.push_back({{0, k % 5, k / 5}, 0.3});
-        walls.spheres.push_back({{10, k % 5, k / 5}, 0.3});
-    }
-    const UniformGrid grid(walls);
+    const UniformGrid grid(two_walls_of_spheres());
     const Ray ray{{5, 2, -2}, {0, 0, 1}};
     INFO(text(ray));
     TraversalStats stats;
