@@ -7,17 +7,12 @@
 
 #include "base/testing/catch.h"
 #include "grader/grade/check_definition.h"
+#include "probe_answers.h"
 
 using namespace raystep::grade;
+using raystep::testing::result_answer;
 
 namespace {
-
-ProbeAnswer result(double x) {
-    ProbeAnswer answer;
-    answer.kind = ProbeAnswer::Kind::result;
-    answer.value = x;
-    return answer;
-}
 
 ProbeAnswer stub_answer(const std::string& function) {
     ProbeAnswer answer;
@@ -66,8 +61,9 @@ GradingContext context() {
 }  // namespace
 
 TEST_CASE("judge_answers: every case right passes with the whole fraction", "[grader]") {
-    const CheckMeasure m = judge_answers(context(), "stage1.unit", cases(3), every(3),
-                                         session({result(1), result(1), result(1)}));
+    const CheckMeasure m =
+        judge_answers(context(), "stage1.unit", cases(3), every(3),
+                      session({result_answer(1), result_answer(1), result_answer(1)}));
     CHECK(m.outcome == Outcome::passed);
     CHECK(m.fraction == 1.0);
     CHECK(m.summary == "3 of 3 cases right");
@@ -76,9 +72,9 @@ TEST_CASE("judge_answers: every case right passes with the whole fraction", "[gr
 
 TEST_CASE("judge_answers: a stub's cases count as wrong, and the summary names the function",
           "[grader]") {
-    const CheckMeasure m =
-        judge_answers(context(), "stage1.unit", cases(4), every(4),
-                      session({stub_answer("cross"), result(1), result(2), stub_answer("cross")}));
+    const CheckMeasure m = judge_answers(
+        context(), "stage1.unit", cases(4), every(4),
+        session({stub_answer("cross"), result_answer(1), result_answer(2), stub_answer("cross")}));
     CHECK(m.outcome == Outcome::failed);
     CHECK(m.fraction == 0.25);
     CHECK(m.metrics.at("cases") == 4.0);
@@ -105,8 +101,8 @@ TEST_CASE("judge_answers: a judge that reports a stub inside a result is never a
         j.passed = true;  // a careless judge: the stub still wins
         return j;
     };
-    const CheckMeasure m =
-        judge_answers(context(), "stage3.hidden", made, every(2), session({result(1), result(1)}));
+    const CheckMeasure m = judge_answers(context(), "stage3.hidden", made, every(2),
+                                         session({result_answer(1), result_answer(1)}));
     CHECK(m.outcome == Outcome::failed);
     CHECK(m.fraction == 0.5);
     CHECK(m.summary == "1 of 2 cases right; not implemented: intersect_sphere");
@@ -138,7 +134,7 @@ TEST_CASE("judge_answers: a check that asked nothing is a grader error, never a 
 }
 
 TEST_CASE("judge_answers: unanswered cases stay in the denominator", "[grader]") {
-    ProbeSession ended = session({result(1), ProbeAnswer{}, ProbeAnswer{}, ProbeAnswer{}});
+    ProbeSession ended = session({result_answer(1), ProbeAnswer{}, ProbeAnswer{}, ProbeAnswer{}});
     SECTION("a crash") {
         ended.run.signal = 11;
         const CheckMeasure m = judge_answers(context(), "stage1.unit", cases(4), every(4), ended);
@@ -160,8 +156,8 @@ TEST_CASE("judge_answers: a judge that cannot read an answer fails that case", "
     made[0].judge = [](const ProbeAnswer&) -> Judgement {
         throw std::invalid_argument("not a vector");
     };
-    const CheckMeasure m =
-        judge_answers(context(), "stage1.unit", made, every(2), session({result(1), result(1)}));
+    const CheckMeasure m = judge_answers(context(), "stage1.unit", made, every(2),
+                                         session({result_answer(1), result_answer(1)}));
     CHECK(m.outcome == Outcome::failed);
     CHECK(m.fraction == 0.5);
     REQUIRE(m.counterexamples.size() == 1);
@@ -171,7 +167,7 @@ TEST_CASE("judge_answers: a judge that cannot read an answer fails that case", "
 TEST_CASE("judge_answers: only the cases asked are judged and counted", "[grader]") {
     // --case 2: the probe was asked case 2 alone.
     const CheckMeasure m =
-        judge_answers(context(), "stage1.unit", cases(5), {2}, session({result(0)}));
+        judge_answers(context(), "stage1.unit", cases(5), {2}, session({result_answer(0)}));
     CHECK(m.metrics.at("cases") == 1.0);
     REQUIRE(m.counterexamples.size() == 1);
     CHECK(m.counterexamples[0].input == "case 2");

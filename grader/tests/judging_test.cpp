@@ -8,18 +8,13 @@
 #include "base/math/portable_random.h"
 #include "base/testing/catch.h"
 #include "grader/grade/checks/judging.h"
+#include "probe_answers.h"
 
 using namespace raystep;
 using namespace raystep::grade;
+using raystep::testing::result_answer;
 
 namespace {
-
-ProbeAnswer result(double x) {
-    ProbeAnswer answer;
-    answer.kind = ProbeAnswer::Kind::result;
-    answer.value = x;
-    return answer;
-}
 
 Judgement judge_positive(const ProbeAnswer& answer) {
     return judge_result(
@@ -36,8 +31,8 @@ ProbeCase drawn_case(PortableRandom& random, int) {
 
 TEST_CASE("judge_result: an accepted result is right, a rejected one wrong as describe writes it",
           "[grader]") {
-    CHECK(judge_positive(result(2.5)).passed);
-    const Judgement rejected = judge_positive(result(-1.5));
+    CHECK(judge_positive(result_answer(2.5)).passed);
+    const Judgement rejected = judge_positive(result_answer(-1.5));
     CHECK_FALSE(rejected.passed);
     CHECK(rejected.expected == "a positive number");
     CHECK(rejected.got == "-1.5");
