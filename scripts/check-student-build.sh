@@ -7,7 +7,8 @@
 #      `raystep render` and `raystep trace` must stop with the message of the stub that stopped
 #      them; `raystep check` must report every stage-3 function as not implemented; every
 #      `raystep demo` must stop at a stub; `raystep info`, which runs no stage code, must work;
-#      `raystep bench`, the studies' command, is not there.
+#      `raystep bench`, the studies' command, is not there; `raystep grade` must run the public
+#      checks of grading/ (every one not implemented) and say that hidden checks exist.
 #   2. A mixed build, RAYSTEP_STUDENT_STAGES=1: the reference stage 2 must call the student's
 #      stage 1, so a render stops at a stage-1 stub.
 set -euo pipefail
@@ -101,6 +102,12 @@ for demo in $("$bin/raystep" demo --list | awk 'NR > 1 {print $1}'); do
     check_command "raystep demo $demo stops at a stub" 1 "$stub_message" \
         "$bin/raystep" demo "$demo" -o "$release/demo-$demo.png"
 done
+check_command "raystep grade runs the public checks, each not implemented, and names the hidden" 1 \
+    "^Hidden checks exist and are not run here" "$bin/raystep" grade
+check_command "raystep grade reports every public check of stage 1 as not implemented" 1 \
+    "not implemented +0 / [0-9]+ +stage1\.unit" "$bin/raystep" grade --stage 1
+check_command "raystep grade leaves no public check implemented" 1 \
+    "^  stage 1 +0 / [0-9]+ +0 of [0-9]+" "$bin/raystep" grade
 check_command "raystep in a release has no bench: the studies are the instructor's" 2 \
     "no command 'bench' in this build; its commands are: render, [a-z, ]+" \
     "$bin/raystep" bench

@@ -16,10 +16,11 @@ set -euo pipefail
 # MPFR), the probe protocol and reports (nlohmann-json), the sandbox (bubblewrap), submissions'
 # archives of every kind (libarchive), and Python for run_autograder's JSON when the grader itself
 # cannot run.
-# What a student release builds with: the stages and their tests, the raystep command.
+# What a student release builds with: the stages and their tests, the raystep command (whose
+# `grade` reads the public checks' JSON: nlohmann-json).
 student_packages=(
     cmake ninja-build g++ pkg-config
-    libglm-dev catch2 libopenimageio-dev libcli11-dev libtinyobjloader-dev
+    libglm-dev catch2 libopenimageio-dev libcli11-dev libtinyobjloader-dev nlohmann-json3-dev
 )
 grading_packages=(
     cmake ninja-build g++ pkg-config

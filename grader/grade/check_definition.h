@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "app/report/grade_report.h"
 #include "grader/grade/probe_builder.h"
 #include "grader/grade/probe_client.h"
-#include "grader/report/grade_report.h"
 
 namespace raystep::grade {
 

@@ -1,8 +1,8 @@
 #pragma once
 
+#include "app/grade/rubric.h"
+#include "app/report/grade_report.h"
 #include "grader/grade/check_definition.h"
-#include "grader/grade/rubric.h"
-#include "grader/report/grade_report.h"
 
 namespace raystep::grade {
 

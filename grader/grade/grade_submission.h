@@ -4,9 +4,9 @@
 #include <optional>
 #include <string>
 
+#include "app/grade/rubric.h"
+#include "app/report/grade_report.h"
 #include "grader/grade/probe_toolchain.h"
-#include "grader/grade/rubric.h"
-#include "grader/report/grade_report.h"
 
 namespace raystep::grade {
 

@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include "app/probe/call_reply.h"
+
 namespace raystep::grade {
 
 namespace {
@@ -9,39 +11,6 @@ namespace {
 // What the submission prints on stdout is kept to this: it is shown to the student, never read
 // as an answer.
 constexpr std::size_t kPrintedBytes = 1u << 20;
-
-constexpr std::size_t kShownBytes = 200;
-
-// What a report says of a line that is not an answer: the line itself, clipped, and the likely
-// cause. Only the probe writes on the answer channel, so a line that is not its answer means the
-// submission wrote there (descriptor 3) or broke the probe's own state.
-ProbeAnswer malformed(const std::string& line, const std::string& cause) {
-    ProbeAnswer answer;
-    answer.kind = ProbeAnswer::Kind::malformed;
-    const std::string shown =
-        line.size() > kShownBytes ? line.substr(0, kShownBytes) + "..." : line;
-    answer.message = "received \"" + shown + "\": " + cause;
-    return answer;
-}
-
-ProbeAnswer read_answer(const probe::Json& line, const std::string& text) {
-    ProbeAnswer answer;
-    if (line.contains("result")) {
-        answer.kind = ProbeAnswer::Kind::result;
-        answer.value = line["result"];
-    } else if (line.contains("not_implemented") && line["not_implemented"].is_string()) {
-        answer.kind = ProbeAnswer::Kind::not_implemented;
-        answer.message = line["not_implemented"].get<std::string>();
-    } else if (line.contains("threw") && line["threw"].is_object()) {
-        const probe::Json& threw = line["threw"];
-        answer.kind = ProbeAnswer::Kind::threw;
-        answer.exception_type = threw.value("type", "other");
-        answer.message = threw.value("message", "");
-    } else {
-        answer = malformed(text, "an answer with neither result, not_implemented nor threw");
-    }
-    return answer;
-}
 
 }  // namespace
 
@@ -79,16 +48,17 @@ ProbeSession ask_probe(const std::filesystem::path& program, const std::vector<P
         try {
             const probe::Json parsed = probe::Json::parse(line);
             if (!parsed.is_object() || parsed.value("id", probe::Json()) != probe::Json(next)) {
-                answer = malformed(line, "not the answer to query " + std::to_string(next) +
-                                             ": something other than the probe wrote on its "
-                                             "answer channel (descriptor 3)");
+                answer = probe::malformed_reply(line,
+                                                "not the answer to query " + std::to_string(next) +
+                                                    ": something other than the probe wrote on its "
+                                                    "answer channel (descriptor 3)");
             } else {
-                answer = read_answer(parsed, line);
+                answer = probe::read_reply(parsed, line);
             }
         } catch (const std::exception&) {
-            answer = malformed(line,
-                               "not JSON: something other than the probe wrote on its "
-                               "answer channel (descriptor 3)");
+            answer = probe::malformed_reply(line,
+                                            "not JSON: something other than the probe wrote on its "
+                                            "answer channel (descriptor 3)");
         }
         ++next;
     }

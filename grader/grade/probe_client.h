@@ -4,30 +4,10 @@
 #include <string>
 #include <vector>
 
-#include "grader/protocol/probe_json.h"
+#include "app/probe/probe_answer.h"
 #include "grader/sandbox/sandbox.h"
 
 namespace raystep::grade {
-
-/// One query for a probe: a call and its arguments (grader/probe/README.md).
-struct ProbeQuery {
-    std::string call;
-    probe::Json args;
-};
-
-/// What the probe said to one query.
-struct ProbeAnswer {
-    enum class Kind {
-        result,           ///< `value` holds it
-        not_implemented,  ///< a stub; `message` is its text
-        threw,            ///< `exception_type` and `message`
-        unanswered,       ///< the probe ended (crash, timeout, flood) before answering
-        malformed,  ///< not what the protocol says; `message` has the line and its likely cause
-    } kind = Kind::unanswered;
-    probe::Json value;
-    std::string exception_type;
-    std::string message;
-};
 
 /// A probe run: the answers in query order, and how the run ended.
 struct ProbeSession {

@@ -6,6 +6,7 @@
 #include "app/render/tile_renderer.h"
 #include "base/image/image_io.h"
 #include "base/scene/scene_loader.h"
+#include "grader/grade/release_grading.h"
 
 namespace raystep::grade {
 
@@ -84,6 +85,8 @@ ReleaseSummary make_release(const fs::path& source, const fs::path& output) {
             summary.skipped.push_back(relative.string() + ": " + error.what());
         }
     }
+    summary.public_checks =
+        write_release_grading(source / "grader" / "rubric" / "rubric.json", output / "grading");
     return summary;
 }
 

@@ -11,6 +11,7 @@ struct ReleaseSummary {
     std::size_t files = 0;             ///< copied from the repository
     std::size_t reference_images = 0;  ///< rendered into scenes/
     std::vector<std::string> skipped;  ///< scenes that could not be rendered, and why
+    std::size_t public_checks = 0;     ///< case files written into grading/public/
 };
 
 /// Writes the student starter repository into `output` (which must not exist, or be empty):
@@ -18,7 +19,8 @@ struct ReleaseSummary {
 /// corpus), docs/instructor.md, .git, .ci, builds and the libcgal-demo meshes copied into scenes/
 /// (Debian's package, not ours to hand out); and every scene's views, as its `# views:` line names
 /// them, rendered with the reference into scenes/<stage>/reference/<scene>.<view>.png, so that
-/// students compare their renders with the reference's without having its code. Throws
+/// students compare their renders with the reference's without having its code; and grading/,
+/// the public checks as data with the rubric (release_grading.h), for `raystep grade`. Throws
 /// std::runtime_error when `output` is not empty or cannot be written.
 ReleaseSummary make_release(const std::filesystem::path& source,
                             const std::filesystem::path& output);

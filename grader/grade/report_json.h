@@ -2,7 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "grader/report/grade_report.h"
+#include "app/report/grade_report.h"
 
 namespace raystep::grade {
 

@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <string>
 
-#include "grader/report/grade_report.h"
+#include "app/report/grade_report.h"
 
 namespace raystep::grade {
 

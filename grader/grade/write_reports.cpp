@@ -3,9 +3,9 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "app/report/audience.h"
 #include "grader/grade/report_json.h"
 #include "grader/grade/speed_error_chart.h"
-#include "grader/report/audience.h"
 #include "grader/report/gradescope_results.h"
 #include "grader/report/html_report.h"
 #include "grader/report/junit_xml.h"

@@ -2,8 +2,8 @@
 
 #include <filesystem>
 
+#include "app/report/grade_report.h"
 #include "grader/grade/report_folders.h"
-#include "grader/report/grade_report.h"
 
 namespace raystep::grade {
 

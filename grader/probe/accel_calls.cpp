@@ -6,7 +6,7 @@
 
 #include <stdexcept>
 
-#include "grader/probe/call_table.h"
+#include "grader/probe/accel_calls.h"
 #include "grader/probe/stage3_test_count.h"
 #include "stages/4_accel/aabb.h"
 #include "stages/4_accel/bvh.h"

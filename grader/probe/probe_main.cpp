@@ -6,15 +6,13 @@
 
 #include <cstdio>
 #include <iostream>
-#include <stdexcept>
 #include <string>
-#include <typeinfo>
 
 #include <fcntl.h>
 #include <unistd.h>
 
-#include "base/errors/not_implemented.h"
-#include "grader/probe/call_table.h"
+#include "app/probe/call_reply.h"
+#include "grader/probe/accel_calls.h"
 
 using namespace raystep;
 using namespace raystep::probe;
@@ -22,44 +20,9 @@ using namespace raystep::probe;
 namespace {
 
 CallTable all_calls() {
-    CallTable table;
-    add_vector_calls(table);
-    add_ray_calls(table);
-    add_intersect_calls(table);
+    CallTable table = stage_calls();
     add_accel_calls(table);
-    add_transform_calls(table);
-    add_shading_calls(table);
-    add_recursion_calls(table);
-    add_render_calls(table);
     return table;
-}
-
-// The standard exceptions the contracts name, by name; anything else is "other".
-std::string exception_type(const std::exception& error) {
-    if (dynamic_cast<const std::domain_error*>(&error)) return "domain_error";
-    if (dynamic_cast<const std::invalid_argument*>(&error)) return "invalid_argument";
-    if (dynamic_cast<const std::out_of_range*>(&error)) return "out_of_range";
-    if (dynamic_cast<const std::logic_error*>(&error)) return "logic_error";
-    if (dynamic_cast<const std::runtime_error*>(&error)) return "runtime_error";
-    return "other";
-}
-
-Json answer(const CallTable& table, const Json& query) {
-    Json reply = {{"id", query.value("id", Json(nullptr))}};
-    try {
-        const std::string name = query.at("call").get<std::string>();
-        const auto call = table.find(name);
-        if (call == table.end()) throw std::invalid_argument("the probe has no call " + name);
-        reply["result"] = call->second(query.at("args"));
-    } catch (const NotImplemented& stub) {
-        reply["not_implemented"] = stub.what();
-    } catch (const std::exception& error) {
-        reply["threw"] = {{"type", exception_type(error)}, {"message", error.what()}};
-    } catch (...) {
-        reply["threw"] = {{"type", "other"},
-                          {"message", "a thrown value that is not a std::exception"}};
-    }
-    return reply;
 }
 
 // Where the answers go. Under raystep-grade, the answer channel: descriptor 3, a pipe the grader
@@ -100,7 +63,7 @@ int main() {
         }
         // Invalid UTF-8 in a message a submission threw must not stop the answer: replace it.
         const std::string text =
-            answer(table, query).dump(-1, ' ', false, Json::error_handler_t::replace);
+            reply_to(table, query).dump(-1, ' ', false, Json::error_handler_t::replace);
         std::fwrite(text.data(), 1, text.size(), answers);
         std::fputc('\n', answers);
         std::fflush(answers);

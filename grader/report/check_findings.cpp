@@ -2,7 +2,7 @@
 
 #include <string_view>
 
-#include "grader/report/report_text.h"
+#include "app/report/report_text.h"
 
 namespace raystep::grade {
 

@@ -3,8 +3,8 @@
 #include <cstddef>
 #include <string>
 
-#include "grader/report/audience.h"
-#include "grader/report/grade_report.h"
+#include "app/report/audience.h"
+#include "app/report/grade_report.h"
 
 namespace raystep::grade {
 

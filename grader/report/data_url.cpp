@@ -4,7 +4,7 @@
 #include <cctype>
 #include <fstream>
 
-#include "grader/protocol/base64.h"
+#include "app/protocol/base64.h"
 
 namespace raystep::grade {
 

@@ -3,10 +3,10 @@
 #include <cmath>
 #include <map>
 
-#include "grader/report/audience.h"
+#include "app/report/audience.h"
+#include "app/report/console_summary.h"
+#include "app/report/report_text.h"
 #include "grader/report/check_findings.h"
-#include "grader/report/console_summary.h"
-#include "grader/report/report_text.h"
 
 namespace raystep::grade {
 

@@ -5,10 +5,10 @@
 #include <optional>
 #include <string_view>
 
+#include "app/report/report_text.h"
 #include "grader/report/data_url.h"
 #include "grader/report/html_style.h"
 #include "grader/report/markup_escape.h"
-#include "grader/report/report_text.h"
 
 namespace raystep::grade {
 

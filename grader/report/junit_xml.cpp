@@ -3,9 +3,9 @@
 #include <cstdio>
 #include <string_view>
 
+#include "app/report/report_text.h"
 #include "grader/report/check_findings.h"
 #include "grader/report/markup_escape.h"
-#include "grader/report/report_text.h"
 
 namespace raystep::grade {
 

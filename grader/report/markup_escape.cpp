@@ -1,6 +1,6 @@
 #include "grader/report/markup_escape.h"
 
-#include "grader/report/report_text.h"
+#include "app/report/report_text.h"
 
 namespace raystep::grade {
 

@@ -6,11 +6,11 @@
 #include <set>
 #include <string_view>
 
-#include "grader/report/audience.h"
+#include "app/report/audience.h"
+#include "app/report/console_summary.h"
+#include "app/report/report_text.h"
 #include "grader/report/check_findings.h"
-#include "grader/report/console_summary.h"
 #include "grader/report/data_url.h"
-#include "grader/report/report_text.h"
 
 namespace raystep::grade {
 

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "grader/report/audience.h"
-#include "grader/report/report_text.h"
+#include "app/report/audience.h"
+#include "app/report/report_text.h"
 
 namespace raystep::grade {
 

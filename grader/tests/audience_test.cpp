@@ -1,4 +1,4 @@
-#include "grader/report/audience.h"
+#include "app/report/audience.h"
 
 #include "base/testing/catch.h"
 #include "report_example.h"

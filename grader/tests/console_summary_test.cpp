@@ -1,9 +1,9 @@
-#include "grader/report/console_summary.h"
+#include "app/report/console_summary.h"
 
 #include <sstream>
 
+#include "app/report/report_text.h"
 #include "base/testing/catch.h"
-#include "grader/report/report_text.h"
 #include "report_example.h"
 
 using namespace raystep::grade;

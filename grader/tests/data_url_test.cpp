@@ -2,9 +2,9 @@
 
 #include <fstream>
 
+#include "app/protocol/base64.h"
 #include "base/testing/catch.h"
 #include "base/testing/scratch_folder.h"
-#include "grader/protocol/base64.h"
 
 using namespace raystep::grade;
 using raystep::base64;

@@ -2,8 +2,8 @@
 
 #include <set>
 
+#include "app/report/report_text.h"
 #include "base/testing/catch.h"
-#include "grader/report/report_text.h"
 #include "report_example.h"
 
 using namespace raystep::grade;

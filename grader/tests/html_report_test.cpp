@@ -5,10 +5,10 @@
 #include <fstream>
 #include <sstream>
 
+#include "app/protocol/base64.h"
+#include "app/report/report_text.h"
 #include "base/testing/catch.h"
 #include "base/testing/scratch_folder.h"
-#include "grader/protocol/base64.h"
-#include "grader/report/report_text.h"
 #include "report_example.h"
 #include "xml_document.h"
 

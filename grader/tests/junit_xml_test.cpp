@@ -1,7 +1,7 @@
 #include "grader/report/junit_xml.h"
 
+#include "app/report/report_text.h"
 #include "base/testing/catch.h"
-#include "grader/report/report_text.h"
 #include "report_example.h"
 #include "xml_document.h"
 

@@ -3,9 +3,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include "app/report/report_text.h"
 #include "base/testing/catch.h"
 #include "base/testing/scratch_folder.h"
-#include "grader/report/report_text.h"
 #include "report_example.h"
 
 using namespace raystep;

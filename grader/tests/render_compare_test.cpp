@@ -7,10 +7,10 @@
 #include <map>
 
 #include "app/compare/render_rule.h"
+#include "app/grade/rubric.h"
 #include "base/testing/catch.h"
 #include "base/testing/scratch_folder.h"
 #include "grader/grade/check_definition.h"
-#include "grader/grade/rubric.h"
 
 using namespace raystep;
 namespace fs = std::filesystem;

@@ -14,10 +14,10 @@
 #include <string>
 #include <tuple>
 
+#include "app/report/console_summary.h"
 #include "base/image/image.h"
 #include "base/image/image_io.h"
 #include "grader/grade/write_reports.h"
-#include "grader/report/console_summary.h"
 #include "report_example.h"
 
 namespace {

@@ -1,11 +1,11 @@
 // What every report format must agree on: the outcome of each check, and the intake problem.
+#include "app/report/console_summary.h"
+#include "app/report/report_text.h"
 #include "base/testing/catch.h"
-#include "grader/report/console_summary.h"
 #include "grader/report/gradescope_results.h"
 #include "grader/report/html_report.h"
 #include "grader/report/junit_xml.h"
 #include "grader/report/prairielearn_results.h"
-#include "grader/report/report_text.h"
 #include "grader/report/student_results.h"
 #include "report_example.h"
 #include "xml_document.h"

@@ -1,4 +1,4 @@
-#include "grader/report/report_text.h"
+#include "app/report/report_text.h"
 
 #include <cmath>
 #include <random>

@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "app/check/case_file.h"
+#include "app/protocol/probe_json.h"
 #include "base/testing/catch.h"
 #include "grader/grade/checks/stage_checks.h"
-#include "grader/protocol/probe_json.h"
 
 using namespace raystep;
 using namespace raystep::grade;

@@ -7,11 +7,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/report/report_text.h"
 #include "base/testing/catch.h"
 #include "base/testing/scratch_folder.h"
 #include "grader/grade/report_json.h"
 #include "grader/report/markup_escape.h"
-#include "grader/report/report_text.h"
 #include "report_example.h"
 #include "xml_document.h"
 

@@ -12,12 +12,13 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/report/audience.h"
+#include "app/report/console_summary.h"
 #include "grader/grade/batch.h"
 #include "grader/grade/grade_submission.h"
 #include "grader/grade/release.h"
+#include "grader/grade/release_grading.h"
 #include "grader/grade/write_reports.h"
-#include "grader/report/audience.h"
-#include "grader/report/console_summary.h"
 #include "grader/sandbox/sandbox.h"
 
 using namespace raystep::grade;
@@ -126,8 +127,10 @@ int grade_many(const BatchArguments& arguments) {
 
 int release(const std::string& output) {
     const ReleaseSummary summary = make_release(this_build_toolchain().source, output);
-    std::printf("wrote the student release to %s: %zu files, %zu reference images\n",
-                output.c_str(), summary.files, summary.reference_images);
+    std::printf(
+        "wrote the student release to %s: %zu files, %zu reference images, %zu public "
+        "case files\n",
+        output.c_str(), summary.files, summary.reference_images, summary.public_checks);
     for (const std::string& skipped : summary.skipped)
         std::printf("  not rendered: %s\n", skipped.c_str());
     return 0;
@@ -189,6 +192,12 @@ int main(int argc, char** argv) {
         "Write the student starter repository: no solutions, no grader, reference images");
     release_command->add_option("folder", release_folder, "A new, empty folder")->required();
 
+    std::string grading_folder;
+    CLI::App* public_cases_command = app.add_subcommand(
+        "public-cases",
+        "Write a release's grading/ folder alone: the public case files and the rubric");
+    public_cases_command->add_option("folder", grading_folder, "Where they go")->required();
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -199,6 +208,12 @@ int main(int argc, char** argv) {
         if (submission->parsed()) return grade_one(one);
         if (batch->parsed()) return grade_many(many);
         if (release_command->parsed()) return release(release_folder);
+        if (public_cases_command->parsed()) {
+            const std::size_t written = write_release_grading(RAYSTEP_RUBRIC, grading_folder);
+            std::printf("wrote %zu public case files and the rubric to %s\n", written,
+                        grading_folder.c_str());
+            return 0;
+        }
     } catch (const std::exception& error) {
         std::fprintf(stderr, "raystep-grade: %s\n", error.what());
         return 1;

@@ -1,7 +1,5 @@
 #include "grader/grade/checks/case_text.h"
 
-#include <cstdio>
-
 namespace raystep::grade {
 
 namespace {
@@ -19,16 +17,6 @@ std::string op_text(const TransformOp& op) {
 }
 
 }  // namespace
-
-std::string full_text(double x) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.17g", x);
-    return text;
-}
-
-std::string full_text(const Vec3& v) {
-    return "(" + full_text(v.x) + ", " + full_text(v.y) + ", " + full_text(v.z) + ")";
-}
 
 std::string vec3_text(const Vec3& v) {
     return full_text(v);

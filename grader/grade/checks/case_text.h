@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "app/grade/value_text.h"
 #include "base/math/types.h"
 #include "base/scene/ray_offset.h"
 #include "base/scene/scene.h"
@@ -14,15 +15,7 @@
 
 namespace raystep::grade {
 
-// How a case's values are written in a report, the same way for every stage's checks: every
-// digit (17 significant), so that a counterexample shows the difference, however small, and can
-// be typed back in.
-
-/// `1.0000000000000002`, `inf`.
-std::string full_text(double x);
-
-/// `(1, 2.5, -3)`, each coordinate as full_text writes it.
-std::string full_text(const Vec3& v);
+// How a case's values are written in a report, in full_text's digits (app/grade/value_text.h).
 
 /// full_text of a vector, as one function (not an overload set) to pass to a judge.
 std::string vec3_text(const Vec3& v);

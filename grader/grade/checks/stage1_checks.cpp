@@ -6,10 +6,12 @@
 
 #include <glm/geometric.hpp>
 
+#include "app/grade/value_judges.h"
 #include "base/math/parallel_sine.h"
 #include "base/math/portable_random.h"
 #include "base/math/unit_roundoff.h"
 #include "grader/grade/checks/cpp_literal.h"
+#include "grader/grade/checks/data_judged.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
 
@@ -19,8 +21,12 @@ namespace {
 
 using probe::Json;
 
-ProbeCase vector_case(const std::string& call, std::initializer_list<Vec3> args,
-                      std::function<Judgement(const ProbeAnswer&)> judge) {
+// The stage's public name, shared by the grader's check and the release's case file.
+constexpr const char* kPublicName = "vector functions on hand-worked values";
+
+// Every case of stage 1 is judged by a data judge (app/grade/value_judges.h): the public ones go
+// into the student release as data, and the others are judged by the same code.
+PublicCase vector_case(const std::string& call, std::initializer_list<Vec3> args, Json judge) {
     Json json_args = Json::array();
     std::string code;
     for (const Vec3& v : args) {
@@ -31,46 +37,27 @@ ProbeCase vector_case(const std::string& call, std::initializer_list<Vec3> args,
         call + vectors_text(args), {call, json_args}, std::move(judge), call + "(" + code + ")"};
 }
 
-ProbeCase exact_vector(const std::string& call, std::initializer_list<Vec3> args, Vec3 expected,
-                       double tolerance = 0.0) {
-    return vector_case(call, args,
-                       [=](const ProbeAnswer& a) { return near_vec3(a, expected, tolerance); });
+PublicCase exact_vector(const std::string& call, std::initializer_list<Vec3> args, Vec3 expected,
+                        double tolerance = 0.0) {
+    return vector_case(call, args, near_vec3_judge(expected, tolerance));
 }
 
-ProbeCase exact_number(const std::string& call, std::initializer_list<Vec3> args, double expected,
-                       double tolerance = 0.0) {
-    return vector_case(call, args,
-                       [=](const ProbeAnswer& a) { return near_number(a, expected, tolerance); });
+PublicCase exact_number(const std::string& call, std::initializer_list<Vec3> args, double expected,
+                        double tolerance = 0.0) {
+    return vector_case(call, args, near_number_judge(expected, tolerance));
 }
 
-ProbeCase throws_domain_error(const std::string& call, std::initializer_list<Vec3> args) {
-    return vector_case(call, args, [](const ProbeAnswer& a) { return threw(a, "domain_error"); });
+PublicCase throws_domain_error(const std::string& call, std::initializer_list<Vec3> args) {
+    return vector_case(call, args, threw_judge("domain_error"));
 }
 
 // orthonormal_frame(a, b) against the expected frame, each component within `tolerance`.
-ProbeCase frame_case(const Vec3& a, const Vec3& b, const Vec3& u, const Vec3& v, const Vec3& w,
-                     double tolerance = 4 * kUnitRoundoff) {
-    return vector_case("orthonormal_frame", {a, b}, [=](const ProbeAnswer& answer) {
-        if (answer.kind != ProbeAnswer::Kind::result) return wrong("a frame", "");
-        const Vec3 got[3] = {probe::vec3_from(answer.value.at("u")),
-                             probe::vec3_from(answer.value.at("v")),
-                             probe::vec3_from(answer.value.at("w"))};
-        const Vec3 expected[3] = {u, v, w};
-        for (int k = 0; k < 3; ++k) {
-            for (int c = 0; c < 3; ++c) {
-                if (!(std::abs(got[k][c] - expected[k][c]) <= tolerance)) {
-                    return wrong("u " + full_text(u) + " v " + full_text(v) + " w " + full_text(w) +
-                                     " (within " + full_text(tolerance) + ")",
-                                 "u " + full_text(got[0]) + " v " + full_text(got[1]) + " w " +
-                                     full_text(got[2]));
-                }
-            }
-        }
-        return right();
-    });
+PublicCase frame_case(const Vec3& a, const Vec3& b, const Vec3& u, const Vec3& v, const Vec3& w,
+                      double tolerance = 4 * kUnitRoundoff) {
+    return vector_case("orthonormal_frame", {a, b}, frame_judge(u, v, w, tolerance));
 }
 
-std::vector<ProbeCase> public_cases() {
+std::vector<PublicCase> public_cases() {
     const double r2 = std::sqrt(0.5);
     return {
         exact_number("dot", {{1, 2, 3}, {4, -5, 6}}, 12.0),
@@ -101,7 +88,7 @@ Vec3 wide_unit(const Vec3& v) {
 }
 
 // The hidden ones: the contract's edge cases a student's own tests may not reach.
-std::vector<ProbeCase> hidden_cases() {
+std::vector<PublicCase> hidden_cases() {
     const double inf = HUGE_VAL;
     const double r2 = std::sqrt(0.5);
     return {
@@ -163,7 +150,7 @@ constexpr std::uint64_t kFrameSeed = 1703;
 
 // dot and cross against long double, each within a few roundings of the sizes of its terms:
 // cancellation can take every digit, so the bound is relative to sum |a_i b_i|, not to the answer.
-void add_product_cases(std::vector<ProbeCase>& cases) {
+void add_product_cases(std::vector<PublicCase>& cases) {
     for (int k = 0; k < 200; ++k) {
         PortableRandom random(kProductSeed, k);
         // Components within 1e±50 of each other, so that products stay in range.
@@ -186,7 +173,7 @@ void add_product_cases(std::vector<ProbeCase>& cases) {
 
 // length and normalize at every magnitude, squares far beyond a double's range: they must not
 // overflow or underflow.
-void add_length_cases(std::vector<ProbeCase>& cases) {
+void add_length_cases(std::vector<PublicCase>& cases) {
     for (int k = 0; k < 200; ++k) {
         PortableRandom random(kLengthSeed, k);
         const Vec3 v = random_vector(random) * (k % 2 ? 1e150 : 1e-150);
@@ -213,7 +200,7 @@ WideVec tilted(PortableRandom& random, const WideVec& w, Wide sine) {
 // worked out in long double. A third are well apart (sine 0.01 to 1); a third nearly parallel
 // but a hundredfold above kParallelSine, a frame; a third a hundredfold below it, an error. The
 // frame inherits w's rounding, a few ulps of |b|, over |b x w|: its tolerance is 8 ulps / sine.
-void add_frame_cases(std::vector<ProbeCase>& cases) {
+void add_frame_cases(std::vector<PublicCase>& cases) {
     for (int k = 0; k < 300; ++k) {
         PortableRandom random(kFrameSeed, k);
         const Vec3 direction = random.unit_vector();
@@ -241,19 +228,24 @@ void add_frame_cases(std::vector<ProbeCase>& cases) {
 }
 
 std::vector<ProbeCase> oracle_cases() {
-    std::vector<ProbeCase> cases;
+    std::vector<PublicCase> cases;
     add_product_cases(cases);
     add_length_cases(cases);
     add_frame_cases(cases);
-    return cases;
+    return data_judged_cases(cases);
 }
 
 }  // namespace
 
+PublicCheck stage1_public_check() {
+    return {"stage1.unit", 1, "unit", kPublicName, public_cases()};
+}
+
 std::vector<CheckDefinition> stage1_checks() {
     return stage_case_checks(
-        {1, "vector functions on hand-worked values", public_cases,
-         "vector functions on the contract's edge cases", hidden_cases,
+        {1, kPublicName, [] { return data_judged_cases(public_cases()); },
+         "vector functions on the contract's edge cases",
+         [] { return data_judged_cases(hidden_cases()); },
          "dot, cross, length, normalize and orthonormal_frame against long double on "
          "random vectors of every magnitude",
          oracle_cases});

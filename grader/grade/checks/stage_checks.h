@@ -4,6 +4,7 @@
 
 #include "app/check/ray_case.h"
 #include "app/check/stage3_methods.h"
+#include "app/grade/public_case.h"
 #include "grader/grade/check_definition.h"
 
 namespace raystep::grade {
@@ -18,6 +19,10 @@ std::vector<CheckDefinition> stage5_checks();
 std::vector<CheckDefinition> stage6_checks();
 std::vector<CheckDefinition> stage7_checks();
 std::vector<CheckDefinition> render_checks();
+
+/// The public checks of each stage as data (grader/grade/checks/data_judged.h): what the stage's
+/// "stageN.unit" check runs, and what the student release's `raystep grade` runs.
+PublicCheck stage1_public_check();
 
 /// One stage-3 case for one function of intersect.h (stage3_checks.cpp): the probe runs the
 /// function on the case alone, and the judge scores the answer as `raystep check` does, a stub's

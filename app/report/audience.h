@@ -1,6 +1,6 @@
 #pragma once
 
-#include "grader/report/grade_report.h"
+#include "app/report/grade_report.h"
 
 namespace raystep::grade {
 

@@ -1,10 +1,10 @@
-#include "grader/report/console_summary.h"
+#include "app/report/console_summary.h"
 
 #include <algorithm>
 #include <string_view>
 #include <vector>
 
-#include "grader/report/report_text.h"
+#include "app/report/report_text.h"
 
 namespace raystep::grade {
 
@@ -226,6 +226,12 @@ std::string console_summary(const GradeReport& report, Audience audience) {
                            "are published); the scores above leave them out.",
                        0);
     }
+    return out;
+}
+
+std::string console_paragraph(std::string_view text) {
+    std::string out;
+    append_wrapped(out, "", text, 0);
     return out;
 }
 

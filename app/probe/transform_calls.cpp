@@ -1,7 +1,7 @@
 // Stage 5 calls: the matrices, the stack's product, and moving rays, points and normals between
 // frames.
 
-#include "grader/probe/call_table.h"
+#include "app/probe/call_table.h"
 #include "stages/5_transforms/transform.h"
 
 namespace raystep::probe {

@@ -1,4 +1,4 @@
-#include "grader/report/audience.h"
+#include "app/report/audience.h"
 
 namespace raystep::grade {
 

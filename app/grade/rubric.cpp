@@ -1,4 +1,4 @@
-#include "grader/grade/rubric.h"
+#include "app/grade/rubric.h"
 
 #include <algorithm>
 #include <fstream>

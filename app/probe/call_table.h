@@ -4,13 +4,14 @@
 #include <map>
 #include <string>
 
-#include "grader/protocol/probe_json.h"
+#include "app/protocol/probe_json.h"
 
 namespace raystep::probe {
 
 // What a probe can be asked: each call takes its arguments as JSON and returns its result as
 // JSON, calling this build's stage functions (the submission's, or the reference's). Exceptions
-// go through: the probe's loop reports them (grader/probe/README.md).
+// go through: the probe's loop reports them (grader/probe/README.md), and `raystep grade` answers
+// its public cases with the same calls in process (call_reply.h).
 
 using Call = std::function<Json(const Json& arguments)>;
 using CallTable = std::map<std::string, Call>;
@@ -18,10 +19,14 @@ using CallTable = std::map<std::string, Call>;
 void add_vector_calls(CallTable& table);     ///< stage 1
 void add_ray_calls(CallTable& table);        ///< stage 2
 void add_intersect_calls(CallTable& table);  ///< stage 3
-void add_accel_calls(CallTable& table);      ///< stage 4
 void add_transform_calls(CallTable& table);  ///< stage 5
 void add_shading_calls(CallTable& table);    ///< stage 6
 void add_recursion_calls(CallTable& table);  ///< stage 7
 void add_render_calls(CallTable& table);     ///< whole images, through every stage a view needs
+
+/// Every call above: what `raystep grade` answers a public case with. Stage 4's calls count the
+/// primitive tests through the linker (grader/probe/stage3_test_count.h), so only the grader's
+/// probe, linked for that, has them (grader/probe/accel_calls.h).
+CallTable stage_calls();
 
 }  // namespace raystep::probe

@@ -1,6 +1,6 @@
 // Stage 1 calls: each vector function on the vectors given.
 
-#include "grader/probe/call_table.h"
+#include "app/probe/call_table.h"
 #include "stages/1_vectors/vectors.h"
 
 namespace raystep::probe {

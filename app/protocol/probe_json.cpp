@@ -1,4 +1,4 @@
-#include "grader/protocol/probe_json.h"
+#include "app/protocol/probe_json.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,6 +1,6 @@
 // Stage 6 calls: lights, the local model, and rays that leave a surface.
 
-#include "grader/probe/call_table.h"
+#include "app/probe/call_table.h"
 #include "stages/6_shading/shading.h"
 
 namespace raystep::probe {

@@ -1,7 +1,7 @@
 #pragma once
 
+#include "app/protocol/probe_json.h"
 #include "base/image/image.h"
-#include "grader/protocol/probe_json.h"
 
 namespace raystep::probe {
 

@@ -4,7 +4,7 @@
 #include <map>
 #include <string>
 
-#include "grader/report/grade_report.h"
+#include "app/report/grade_report.h"
 
 namespace raystep::grade {
 

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "app/check/stage3_methods.h"
-#include "grader/probe/call_table.h"
+#include "app/probe/call_table.h"
 
 namespace raystep::probe {
 

@@ -1,9 +1,10 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
-#include "grader/report/audience.h"
-#include "grader/report/grade_report.h"
+#include "app/report/audience.h"
+#include "app/report/grade_report.h"
 
 namespace raystep::grade {
 
@@ -24,5 +25,9 @@ std::string stage_table(const GradeReport& report);
 /// shown (audience.h) are left out of every line and sum, and a closing line says how many there
 /// are; the instructor sees them all, marked with their visibility.
 std::string console_summary(const GradeReport& report, Audience audience);
+
+/// A paragraph to print beside the summary (what `raystep grade` did not run), wrapped at
+/// kConsoleWidth as the summary's own lines are, ending in a newline.
+std::string console_paragraph(std::string_view text);
 
 }  // namespace raystep::grade

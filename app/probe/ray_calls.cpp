@@ -1,7 +1,7 @@
 // Stage 2 calls: points along rays, cameras and their rays. A camera call makes the camera and
 // the rays of the pixels asked for, so that one call covers a whole image's worth of checks.
 
-#include "grader/probe/call_table.h"
+#include "app/probe/call_table.h"
 #include "stages/2_rays/camera.h"
 
 namespace raystep::probe {

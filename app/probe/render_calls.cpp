@@ -7,10 +7,10 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "app/probe/call_table.h"
+#include "app/protocol/image_json.h"
 #include "app/render/tile_renderer.h"
 #include "base/scene/scene_loader.h"
-#include "grader/probe/call_table.h"
-#include "grader/protocol/image_json.h"
 
 namespace raystep::probe {
 

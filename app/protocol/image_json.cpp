@@ -1,10 +1,10 @@
-#include "grader/protocol/image_json.h"
+#include "app/protocol/image_json.h"
 
 #include <cstring>
 #include <stdexcept>
 #include <string>
 
-#include "grader/protocol/base64.h"
+#include "app/protocol/base64.h"
 
 namespace raystep::probe {
 

@@ -3,7 +3,7 @@
 // answer is the colour and every ray radiance asked about, so that the grader can check the
 // recursion's order, depth and rays without a scene.
 
-#include "grader/probe/call_table.h"
+#include "app/probe/call_table.h"
 #include "stages/7_recursion/recursion.h"
 
 namespace raystep::probe {

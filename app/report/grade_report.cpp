@@ -1,4 +1,4 @@
-#include "grader/report/grade_report.h"
+#include "app/report/grade_report.h"
 
 #include <tuple>
 

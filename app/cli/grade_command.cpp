@@ -1,0 +1,134 @@
+// `raystep grade [--stage N]`: the grader's public checks, run on this build in process, scored by
+// the rubric and reported in the student's layout of the real grade (app/report/console_summary.h).
+// A student release holds the checks as data (grading/public/*.json and grading/rubric.json,
+// written by `raystep-grade release`): each case's query, its expected answer and tolerance, as
+// the reference's oracle decided them, never the oracle. The hidden checks, the generated ones
+// and the speed checks are not run, and the report says which and what they are worth.
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <set>
+#include <vector>
+
+#include "app/cli/command_registry.h"
+#include "app/grade/public_case.h"
+#include "app/grade/public_check_run.h"
+#include "app/grade/rubric.h"
+#include "app/report/console_summary.h"
+#include "app/report/report_text.h"
+#include "base/errors/input_error.h"
+
+namespace raystep {
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace raystep::grade;
+
+struct GradeArguments {
+    int stage = -1;  ///< -1: every stage; 0: the whole pipeline
+    std::string grading = (fs::path(RAYSTEP_SOURCE_DIR) / "grading").string();
+};
+
+// The rubric's id prefix for a stage: "stage3." or, for the pipeline, "pipeline.".
+std::string id_prefix(int stage) {
+    return stage == 0 ? "pipeline." : "stage" + std::to_string(stage) + ".";
+}
+
+bool selected(const GradeArguments& arguments, const std::string& id) {
+    return arguments.stage < 0 || id.rfind(id_prefix(arguments.stage), 0) == 0;
+}
+
+// What the rubric holds for the stages asked that this build does not run: each id with its
+// points, and the sum; said before the summary and again after it, so that neither a glance at
+// the top nor at the total misses it.
+std::string not_run_text(const Rubric& rubric, const std::set<std::string>& run,
+                         const GradeArguments& arguments, const std::string& where) {
+    std::string ids;
+    double points = 0;
+    int count = 0;
+    for (const auto& [id, entry] : rubric.checks) {
+        if (!selected(arguments, id) || run.count(id)) continue;
+        ids += (ids.empty() ? "" : ", ") + id + " (" + score_text(entry.points) + ")";
+        points += entry.points;
+        ++count;
+    }
+    if (count == 0) return "Every check of the rubric for these stages ran here.";
+    return "Hidden checks exist and are not run here: " + std::to_string(count) +
+           (count == 1 ? " check worth " : " checks worth ") + score_text(points) +
+           " points, which only the grader runs (hidden cases, generated cases against its "
+           "oracle, speed): " +
+           ids + ". The total " + where + " counts the public checks alone.";
+}
+
+int run_grade(const GradeArguments& arguments) {
+    const fs::path folder = arguments.grading;
+    const fs::path public_folder = folder / "public";
+    std::vector<fs::path> files;
+    if (fs::is_directory(public_folder)) {
+        for (const auto& entry : fs::directory_iterator(public_folder)) {
+            if (entry.path().extension() == ".json") files.push_back(entry.path());
+        }
+    }
+    std::sort(files.begin(), files.end());
+    if (files.empty() || !fs::exists(folder / "rubric.json")) {
+        std::fprintf(stderr,
+                     "raystep grade: no public case files in %s (public/*.json and rubric.json): "
+                     "the release writer, `raystep-grade release`, makes them in a student "
+                     "release; the instructor's repository has none\n",
+                     folder.string().c_str());
+        return 2;
+    }
+    try {
+        const Rubric rubric = load_rubric(folder / "rubric.json");
+        const probe::CallTable calls = probe::stage_calls();
+        GradeReport report;
+        report.student = "the public checks on this build";
+        std::set<std::string> run;
+        for (const fs::path& file : files) {
+            const PublicCheck check = read_public_check(file);
+            if (!selected(arguments, check.id)) continue;
+            run.insert(check.id);
+            report.checks.push_back(run_public_check(check, rubric, calls));
+        }
+        if (report.checks.empty()) {
+            std::fprintf(stderr, "raystep grade: %s has no public check for stage %d\n",
+                         public_folder.string().c_str(), arguments.stage);
+            return 2;
+        }
+        std::printf("%s\n%s\n%s",
+                    console_paragraph(not_run_text(rubric, run, arguments, "below")).c_str(),
+                    console_summary(report, Audience::student).c_str(),
+                    console_paragraph(not_run_text(rubric, run, arguments, "above")).c_str());
+        const bool full = std::all_of(report.checks.begin(), report.checks.end(),
+                                      [](const CheckResult& c) { return c.score >= c.max_score; });
+        return full ? 0 : 1;
+    } catch (const InputError& error) {
+        std::fprintf(stderr, "%s\n", error.what());
+    } catch (const std::exception& error) {
+        std::fprintf(stderr, "raystep grade: %s\n", error.what());
+    }
+    return 2;
+}
+
+AddedCommand add_grade(CLI::App& app) {
+    auto arguments = std::make_shared<GradeArguments>();
+    CLI::App* command = app.add_subcommand(
+        "grade",
+        "Run the grader's public checks on this build and score them by the rubric (the hidden "
+        "and generated checks are not run)");
+    command->add_option("--stage", arguments->stage, "Only this stage's checks (0: the pipeline)")
+        ->check(CLI::Range(0, 7));
+    command
+        ->add_option("--grading", arguments->grading,
+                     "The folder of public case files and rubric (the release's grading/)")
+        ->check(CLI::ExistingDirectory);
+    return {command, [arguments] { return run_grade(*arguments); }};
+}
+
+const CommandRegistry::Registration kRegistration(add_grade);
+
+}  // namespace
+
+}  // namespace raystep

@@ -1,0 +1,122 @@
+#include "app/grade/public_check_run.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "app/grade/data_judge.h"
+#include "app/probe/call_reply.h"
+
+namespace raystep::grade {
+
+namespace {
+
+// As many counterexamples as the grader keeps per check.
+constexpr std::size_t kCounterexamples = 5;
+
+// The answer as a report writes it when the judge said nothing of it.
+std::string answer_text(const ProbeAnswer& answer) {
+    switch (answer.kind) {
+        case ProbeAnswer::Kind::result:
+            return answer.value.dump(-1, ' ', false, probe::Json::error_handler_t::replace);
+        case ProbeAnswer::Kind::not_implemented:
+            return "not implemented: " + answer.message;
+        case ProbeAnswer::Kind::threw:
+            return "threw " + answer.exception_type + ": " + answer.message;
+        case ProbeAnswer::Kind::unanswered:
+        case ProbeAnswer::Kind::malformed:
+            break;
+    }
+    return answer.message;
+}
+
+// "stage 1: dot is not implemented yet, see ..." gives "dot"; the whole message otherwise.
+std::string stub_function(const std::string& message) {
+    const std::size_t colon = message.find(": ");
+    const std::size_t tail = message.find(" is not implemented");
+    if (colon == std::string::npos || tail == std::string::npos || tail <= colon + 2) {
+        return message;
+    }
+    return message.substr(colon + 2, tail - colon - 2);
+}
+
+}  // namespace
+
+CheckResult run_public_check(const PublicCheck& check, const Rubric& rubric,
+                             const probe::CallTable& calls) {
+    const auto start = std::chrono::steady_clock::now();
+    const RubricEntry& entry = rubric.entry(check.id);
+    CheckResult result;
+    result.id = check.id;
+    result.stage = check.stage;
+    result.kind = check.kind;
+    result.name = check.name;
+    result.visibility = entry.visibility;
+    result.max_score = entry.points;
+
+    std::size_t passed = 0;
+    std::size_t stubs = 0;
+    std::vector<std::string> stub_functions;  // in the order first met
+    std::vector<Counterexample> wrong_answers;
+    std::vector<Counterexample> stub_answers;
+    for (const PublicCase& c : check.cases) {
+        const ProbeAnswer answer = probe::answer_in_process(calls, c.query);
+        Verdict verdict;
+        try {
+            verdict = build_judge(c.judge)(answer);
+        } catch (const std::exception& error) {
+            verdict = {false, "an answer in the protocol's form",
+                       std::string("unreadable: ") + error.what(), ""};
+        }
+        std::string stub = verdict.not_implemented;
+        if (answer.kind == ProbeAnswer::Kind::not_implemented) stub = answer.message;
+        if (verdict.passed && stub.empty()) {
+            ++passed;
+            continue;
+        }
+        if (!stub.empty()) {
+            ++stubs;
+            const std::string function = stub_function(stub);
+            if (std::find(stub_functions.begin(), stub_functions.end(), function) ==
+                stub_functions.end()) {
+                stub_functions.push_back(function);
+            }
+        }
+        std::vector<Counterexample>& kept = stub.empty() ? wrong_answers : stub_answers;
+        if (kept.size() < kCounterexamples) {
+            const std::string got = !stub.empty()         ? "not implemented: " + stub
+                                    : verdict.got.empty() ? answer_text(answer)
+                                                          : verdict.got;
+            kept.push_back({c.input, verdict.expected, got, "", c.reproduce});
+        }
+    }
+    result.counterexamples = wrong_answers;
+    for (const Counterexample& example : stub_answers) {
+        if (result.counterexamples.size() == kCounterexamples) break;
+        result.counterexamples.push_back(example);
+    }
+
+    const std::size_t total = check.cases.size();
+    result.metrics["cases"] = static_cast<double>(total);
+    result.metrics["passed"] = static_cast<double>(passed);
+    std::string stub_list;
+    for (const std::string& function : stub_functions)
+        stub_list += (stub_list.empty() ? "" : ", ") + function;
+    if (total == 0) {
+        result.outcome = Outcome::failed;
+        result.summary = "the case file has no cases";
+    } else if (stubs == total) {
+        result.outcome = Outcome::not_implemented;
+        result.summary = "not implemented: " + stub_list;
+    } else {
+        const double fraction = static_cast<double>(passed) / static_cast<double>(total);
+        result.score = entry.score(fraction);
+        result.outcome = passed == total ? Outcome::passed : Outcome::failed;
+        result.summary = std::to_string(passed) + " of " + std::to_string(total) + " cases right";
+        if (!stub_list.empty()) result.summary += "; not implemented: " + stub_list;
+    }
+    result.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+}  // namespace raystep::grade

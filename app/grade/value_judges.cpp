@@ -1,0 +1,116 @@
+#include "app/grade/value_judges.h"
+
+#include <cmath>
+
+#include "app/grade/data_judge.h"
+#include "app/grade/value_text.h"
+
+namespace raystep::grade {
+
+namespace {
+
+using probe::Json;
+using Kind = ProbeAnswer::Kind;
+
+Verdict right() {
+    return {true, "", "", ""};
+}
+
+Verdict wrong(std::string expected, std::string got) {
+    return {false, std::move(expected), std::move(got), ""};
+}
+
+std::string within(const std::string& expected, double tolerance) {
+    return expected + " (within " + full_text(tolerance) + ")";
+}
+
+// Written so that a NaN fails.
+bool near_vec(const Vec3& got, const Vec3& expected, double tolerance) {
+    for (int k = 0; k < 3; ++k) {
+        if (!(std::abs(got[k] - expected[k]) <= tolerance)) return false;
+    }
+    return true;
+}
+
+const JudgeRegistry::Registration near_number_registration{
+    {"near_number", [](const Json& p) -> Judge {
+         const double expected = probe::number_from(p.at("expected"));
+         const double tolerance = probe::number_from(p.at("tolerance"));
+         return [=](const ProbeAnswer& answer) {
+             if (answer.kind != Kind::result) return wrong(full_text(expected), "");
+             const double got = probe::number_from(answer.value);
+             if (std::abs(got - expected) <= tolerance) return right();
+             return wrong(within(full_text(expected), tolerance), full_text(got));
+         };
+     }}};
+
+const JudgeRegistry::Registration near_vec3_registration{
+    {"near_vec3", [](const Json& p) -> Judge {
+         const Vec3 expected = probe::vec3_from(p.at("expected"));
+         const double tolerance = probe::number_from(p.at("tolerance"));
+         return [=](const ProbeAnswer& answer) {
+             if (answer.kind != Kind::result) return wrong(full_text(expected), "");
+             const Vec3 got = probe::vec3_from(answer.value);
+             if (near_vec(got, expected, tolerance)) return right();
+             return wrong(within(full_text(expected), tolerance), full_text(got));
+         };
+     }}};
+
+const JudgeRegistry::Registration threw_registration{
+    {"threw", [](const Json& p) -> Judge {
+         const std::string type = p.at("type").get<std::string>();
+         return [=](const ProbeAnswer& answer) {
+             if (answer.kind == Kind::threw && answer.exception_type == type) return right();
+             return wrong("std::" + type + " thrown", "");
+         };
+     }}};
+
+const JudgeRegistry::Registration frame_registration{
+    {"frame", [](const Json& p) -> Judge {
+         const Vec3 u = probe::vec3_from(p.at("u"));
+         const Vec3 v = probe::vec3_from(p.at("v"));
+         const Vec3 w = probe::vec3_from(p.at("w"));
+         const double tolerance = probe::number_from(p.at("tolerance"));
+         return [=](const ProbeAnswer& answer) {
+             if (answer.kind != Kind::result) return wrong("a frame", "");
+             const Vec3 got[3] = {probe::vec3_from(answer.value.at("u")),
+                                  probe::vec3_from(answer.value.at("v")),
+                                  probe::vec3_from(answer.value.at("w"))};
+             if (near_vec(got[0], u, tolerance) && near_vec(got[1], v, tolerance) &&
+                 near_vec(got[2], w, tolerance)) {
+                 return right();
+             }
+             return wrong(
+                 within("u " + full_text(u) + " v " + full_text(v) + " w " + full_text(w),
+                        tolerance),
+                 "u " + full_text(got[0]) + " v " + full_text(got[1]) + " w " + full_text(got[2]));
+         };
+     }}};
+
+}  // namespace
+
+Json near_number_judge(double expected, double tolerance) {
+    return {{"judge", "near_number"},
+            {"expected", probe::number(expected)},
+            {"tolerance", probe::number(tolerance)}};
+}
+
+Json near_vec3_judge(const Vec3& expected, double tolerance) {
+    return {{"judge", "near_vec3"},
+            {"expected", probe::vec3(expected)},
+            {"tolerance", probe::number(tolerance)}};
+}
+
+Json threw_judge(const std::string& type) {
+    return {{"judge", "threw"}, {"type", type}};
+}
+
+Json frame_judge(const Vec3& u, const Vec3& v, const Vec3& w, double tolerance) {
+    return {{"judge", "frame"},
+            {"u", probe::vec3(u)},
+            {"v", probe::vec3(v)},
+            {"w", probe::vec3(w)},
+            {"tolerance", probe::number(tolerance)}};
+}
+
+}  // namespace raystep::grade

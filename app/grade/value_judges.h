@@ -1,0 +1,27 @@
+#pragma once
+
+#include <string>
+
+#include "app/protocol/probe_json.h"
+#include "base/math/types.h"
+
+namespace raystep::grade {
+
+// The judges of answers that are one value (value_judges.cpp): each function below writes the
+// judge's data, {"judge": NAME, ...}, which build_judge (data_judge.h) turns back into the judge.
+
+/// "near_number": the result a number within `tolerance` of `expected` (absolute).
+probe::Json near_number_judge(double expected, double tolerance);
+
+/// "near_vec3": the result a vector, every component within `tolerance` of `expected`'s
+/// (absolute); a NaN fails.
+probe::Json near_vec3_judge(const Vec3& expected, double tolerance);
+
+/// "threw": the call threw the named standard exception ("domain_error", ...).
+probe::Json threw_judge(const std::string& type);
+
+/// "frame": the result {"u", "v", "w"}, each component within `tolerance` of the expected
+/// frame's; a NaN fails.
+probe::Json frame_judge(const Vec3& u, const Vec3& v, const Vec3& w, double tolerance);
+
+}  // namespace raystep::grade

@@ -1,0 +1,31 @@
+#include "grader/grade/checks/data_judged.h"
+
+#include "app/grade/data_judge.h"
+#include "grader/grade/checks/stage_checks.h"
+
+namespace raystep::grade {
+
+ProbeCase data_judged_case(const PublicCase& c) {
+    const Judge judge = build_judge(c.judge);
+    return {c.input, c.query,
+            [judge](const ProbeAnswer& answer) {
+                const Verdict verdict = judge(answer);
+                return Judgement{verdict.passed, verdict.expected, verdict.got,
+                                 verdict.not_implemented};
+            },
+            c.reproduce};
+}
+
+std::vector<ProbeCase> data_judged_cases(const std::vector<PublicCase>& cases) {
+    std::vector<ProbeCase> judged;
+    judged.reserve(cases.size());
+    for (const PublicCase& c : cases)
+        judged.push_back(data_judged_case(c));
+    return judged;
+}
+
+std::vector<PublicCheck> public_checks() {
+    return {stage1_public_check()};
+}
+
+}  // namespace raystep::grade
