@@ -90,7 +90,7 @@ int run_grade(const GradeArguments& arguments) {
             const PublicCheck check = read_public_check(file);
             if (!selected(arguments, check.id)) continue;
             run.insert(check.id);
-            report.checks.push_back(run_public_check(check, rubric, calls));
+            report.checks.push_back(run_public_check(check, rubric, calls, RAYSTEP_SOURCE_DIR));
         }
         if (report.checks.empty()) {
             std::fprintf(stderr, "raystep grade: %s has no public check for stage %d\n",

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "app/probe/probe_answer.h"
@@ -22,6 +23,16 @@ struct Verdict {
     std::string expected;
     std::string got;
     std::string not_implemented;
+    /// A judge that measures a share rather than right or wrong (a render's pixels that match
+    /// the reference's): the share, which a check of that one case scores in place of its share
+    /// of cases passed, and the line that says it. Unset for right-or-wrong judges.
+    std::optional<double> fraction;
+    std::string summary;
+    /// Where the answer went wrong, when the judge can say it more precisely than the case's
+    /// input (a render's worst pixel), and the student's command that shows that place. Empty
+    /// otherwise.
+    std::string place;
+    std::string place_reproduce;
 };
 
 using Judge = std::function<Verdict(const ProbeAnswer&)>;

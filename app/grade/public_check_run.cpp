@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 
 #include "app/grade/data_judge.h"
 #include "app/probe/call_reply.h"
@@ -39,10 +40,19 @@ std::string stub_function(const std::string& message) {
     return message.substr(colon + 2, tail - colon - 2);
 }
 
+// The query with a relative scene file taken from under `root`.
+ProbeQuery rooted(ProbeQuery query, const std::filesystem::path& root) {
+    if (query.args.is_object() && query.args.contains("scene") && query.args["scene"].is_string()) {
+        const std::filesystem::path scene = query.args["scene"].get<std::string>();
+        if (scene.is_relative()) query.args["scene"] = (root / scene).string();
+    }
+    return query;
+}
+
 }  // namespace
 
 CheckResult run_public_check(const PublicCheck& check, const Rubric& rubric,
-                             const probe::CallTable& calls) {
+                             const probe::CallTable& calls, const std::filesystem::path& root) {
     const auto start = std::chrono::steady_clock::now();
     const RubricEntry& entry = rubric.entry(check.id);
     CheckResult result;
@@ -58,14 +68,21 @@ CheckResult run_public_check(const PublicCheck& check, const Rubric& rubric,
     std::vector<std::string> stub_functions;  // in the order first met
     std::vector<Counterexample> wrong_answers;
     std::vector<Counterexample> stub_answers;
+    std::optional<double> measured;  // a measuring judge's share, for a check of one case
+    std::string measured_summary;
     for (const PublicCase& c : check.cases) {
-        const ProbeAnswer answer = probe::answer_in_process(calls, c.query);
+        const ProbeAnswer answer = probe::answer_in_process(calls, rooted(c.query, root));
         Verdict verdict;
         try {
             verdict = build_judge(c.judge)(answer);
         } catch (const std::exception& error) {
-            verdict = {false, "an answer in the protocol's form",
-                       std::string("unreadable: ") + error.what(), ""};
+            verdict.passed = false;
+            verdict.expected = "an answer in the protocol's form";
+            verdict.got = std::string("unreadable: ") + error.what();
+        }
+        if (verdict.fraction && check.cases.size() == 1) {
+            measured = verdict.fraction;
+            measured_summary = verdict.summary;
         }
         std::string stub = verdict.not_implemented;
         if (answer.kind == ProbeAnswer::Kind::not_implemented) stub = answer.message;
@@ -86,7 +103,8 @@ CheckResult run_public_check(const PublicCheck& check, const Rubric& rubric,
             const std::string got = !stub.empty()         ? "not implemented: " + stub
                                     : verdict.got.empty() ? answer_text(answer)
                                                           : verdict.got;
-            kept.push_back({c.input, verdict.expected, got, "", c.reproduce});
+            kept.push_back({verdict.place.empty() ? c.input : verdict.place, verdict.expected, got,
+                            "", verdict.place.empty() ? c.reproduce : verdict.place_reproduce});
         }
     }
     result.counterexamples = wrong_answers;
@@ -107,6 +125,10 @@ CheckResult run_public_check(const PublicCheck& check, const Rubric& rubric,
     } else if (stubs == total) {
         result.outcome = Outcome::not_implemented;
         result.summary = "not implemented: " + stub_list;
+    } else if (measured) {
+        result.score = entry.score(*measured);
+        result.outcome = passed == total ? Outcome::passed : Outcome::failed;
+        result.summary = measured_summary;
     } else {
         const double fraction = static_cast<double>(passed) / static_cast<double>(total);
         result.score = entry.score(fraction);

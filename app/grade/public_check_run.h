@@ -1,5 +1,7 @@
 #pragma once
 
+#include <filesystem>
+
 #include "app/grade/public_case.h"
 #include "app/grade/rubric.h"
 #include "app/probe/call_table.h"
@@ -11,9 +13,11 @@ namespace raystep::grade {
 /// (answer_in_process, call_reply.h), judged by its data judge, and scored by the rubric as the
 /// grader scores it (a fraction of cases right; a check whose every case met a stub is not
 /// implemented and earns nothing). The first few counterexamples, wrong answers before stubs,
-/// carry each case's input and its student reproduce line. Throws std::out_of_range when the
-/// rubric has no entry for the check.
+/// carry each case's input and its student reproduce line. A judge that measures a share (a
+/// render's matching pixels) scores its check of one case by that share, as the grader does. A
+/// relative "scene" argument names a file under `root` (the release's root). Throws
+/// std::out_of_range when the rubric has no entry for the check.
 CheckResult run_public_check(const PublicCheck& check, const Rubric& rubric,
-                             const probe::CallTable& calls);
+                             const probe::CallTable& calls, const std::filesystem::path& root);
 
 }  // namespace raystep::grade

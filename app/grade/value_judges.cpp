@@ -13,11 +13,16 @@ using probe::Json;
 using Kind = ProbeAnswer::Kind;
 
 Verdict right() {
-    return {true, "", "", ""};
+    Verdict verdict;
+    verdict.passed = true;
+    return verdict;
 }
 
 Verdict wrong(std::string expected, std::string got) {
-    return {false, std::move(expected), std::move(got), ""};
+    Verdict verdict;
+    verdict.expected = std::move(expected);
+    verdict.got = std::move(got);
+    return verdict;
 }
 
 std::string within(const std::string& expected, double tolerance) {

@@ -85,8 +85,8 @@ ReleaseSummary make_release(const fs::path& source, const fs::path& output) {
             summary.skipped.push_back(relative.string() + ": " + error.what());
         }
     }
-    summary.public_checks =
-        write_release_grading(source / "grader" / "rubric" / "rubric.json", output / "grading");
+    summary.public_checks = write_release_grading(
+        source, source / "grader" / "rubric" / "rubric.json", output / "grading");
     return summary;
 }
 

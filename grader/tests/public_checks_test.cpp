@@ -1,5 +1,6 @@
 // The public checks a student release holds as data (grading/public/): each written, read back
-// and judged the same as the grader judges it, and each passed by the reference.
+// and judged the same as the grader judges it, and each passed by the reference (a render pixel
+// for pixel, since the release's reference is the grader's render at the grader's size).
 
 #include <filesystem>
 
@@ -7,8 +8,10 @@
 
 #include "app/grade/data_judge.h"
 #include "app/grade/public_case.h"
+#include "app/grade/render_judge.h"
 #include "app/grade/rubric.h"
 #include "app/probe/call_reply.h"
+#include "app/protocol/image_json.h"
 #include "grader/grade/checks/data_judged.h"
 
 using namespace raystep;
@@ -30,13 +33,15 @@ TEST_CASE("every public check the release writes reads back as written and is ju
     const std::filesystem::path folder =
         std::filesystem::temp_directory_path() / "raystep-public-checks-test";
     std::filesystem::remove_all(folder);
+    // The render cases name their scenes from the repository's root, as `raystep grade` does.
+    std::filesystem::current_path(RAYSTEP_SOURCE_DIR);
     const Rubric rubric = load_rubric(RAYSTEP_RUBRIC);
     const probe::CallTable reference = probe::stage_calls();
     ProbeAnswer stub;
     stub.kind = ProbeAnswer::Kind::threw;
     stub.exception_type = "other";
     stub.message = "an answer no judge takes";
-    const std::vector<PublicCheck> checks = public_checks();
+    const std::vector<PublicCheck> checks = public_checks(RAYSTEP_SOURCE_DIR);
     REQUIRE_FALSE(checks.empty());
     for (const PublicCheck& written : checks) {
         INFO(written.id);
@@ -62,7 +67,10 @@ TEST_CASE("every public check the release writes reads back as written and is ju
             const Judge releases = build_judge(r.judge);
             const ProbeAnswer answer = probe::answer_in_process(reference, r.query);
             require_alike(graders.judge(answer), releases(answer));
-            REQUIRE(releases(answer).passed);
+            const Verdict verdict = releases(answer);
+            REQUIRE(verdict.passed);
+            // A render judged against the image the grader compares with: every pixel the same.
+            if (verdict.fraction) REQUIRE(*verdict.fraction == 1.0);
             require_alike(graders.judge(stub), releases(stub));
             REQUIRE_FALSE(releases(stub).passed);
         }
@@ -83,4 +91,24 @@ TEST_CASE("a public case file names the line of a case whose judge is unknown") 
     REQUIRE_THROWS_WITH(read_public_check(file),
                         Catch::StartsWith(file + ":3: case 1: no judge named 'no_such_judge'"));
     std::filesystem::remove_all(folder);
+}
+
+TEST_CASE("a render the release judges wrong names its worst pixel and the trace that shows it") {
+    Image reference(4, 2);
+    reference.set(3, 1, Color(1, 0.5, 0));
+    const Judge judge =
+        build_judge(render_judge(reference, "stage2/orthographic.test", View::rays, 320, 160));
+    ProbeAnswer answer;
+    answer.kind = ProbeAnswer::Kind::result;
+    answer.value = probe::image(Image(4, 2));
+    const Verdict verdict = judge(answer);
+    REQUIRE_FALSE(verdict.passed);
+    REQUIRE(verdict.fraction == 7.0 / 8.0);
+    REQUIRE(verdict.place ==
+            "stage2/orthographic.test, rays view, pixel (3, 1) of the 4 x 2 render, pixel (280, "
+            "120) at the scene's 320 x 160");
+    REQUIRE(verdict.expected == "(1, 0.5, 0)");
+    REQUIRE(verdict.got == "(0, 0, 0)");
+    REQUIRE(verdict.place_reproduce ==
+            "build/student/bin/raystep trace scenes/stage2/orthographic.test 280 120 --view rays");
 }

@@ -209,7 +209,8 @@ int main(int argc, char** argv) {
         if (batch->parsed()) return grade_many(many);
         if (release_command->parsed()) return release(release_folder);
         if (public_cases_command->parsed()) {
-            const std::size_t written = write_release_grading(RAYSTEP_RUBRIC, grading_folder);
+            const std::size_t written = write_release_grading(this_build_toolchain().source,
+                                                              RAYSTEP_RUBRIC, grading_folder);
             std::printf("wrote %zu public case files and the rubric to %s\n", written,
                         grading_folder.c_str());
             return 0;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <filesystem>
 #include <vector>
 
 #include "app/grade/public_case.h"
@@ -14,7 +15,8 @@ ProbeCase data_judged_case(const PublicCase& c);
 std::vector<ProbeCase> data_judged_cases(const std::vector<PublicCase>& cases);
 
 /// Every public check whose cases the student release holds as data (grading/public/), decided
-/// here, by the grader's oracles, when the release is written.
-std::vector<PublicCheck> public_checks();
+/// here, by the grader's oracles and the reference's renders of the scenes under `source`, when
+/// the release is written.
+std::vector<PublicCheck> public_checks(const std::filesystem::path& source);
 
 }  // namespace raystep::grade

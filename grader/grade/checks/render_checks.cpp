@@ -1,5 +1,6 @@
 // Render checks: a scene's view as the submission renders it, diffed with the same view from the
-// reference, rendered here in the grader. Each stage is graded on the view that shows its work
+// reference, rendered here in the grader (and, for a student release, when the release is written:
+// render_public_checks). Each stage is graded on the view that shows its work
 // (ARCHITECTURE.md, "Checks per stage"), with every other stage from the reference; the pipeline
 // checks render with every stage from the submission.
 
@@ -7,6 +8,7 @@
 #include <filesystem>
 
 #include "app/compare/render_rule.h"
+#include "app/grade/render_judge.h"
 #include "app/protocol/image_json.h"
 #include "app/render/tile_renderer.h"
 #include "base/image/image_io.h"
@@ -59,70 +61,48 @@ std::string render_command(const std::string& scene, View view) {
            std::string(view_name(view));
 }
 
-// The pixel that differs most from the reference's (by its largest channel; a NaN first), and
-// how much.
-struct WorstPixel {
-    int i = 0;
-    int j = 0;
-    double difference = 0.0;
-};
-
-WorstPixel worst_pixel(const Image& reference, const Image& student) {
-    WorstPixel worst;
-    for (int j = 0; j < reference.height(); ++j) {
-        for (int i = 0; i < reference.width(); ++i) {
-            const Color d = glm::abs(reference.at(i, j) - student.at(i, j));
-            const double largest =
-                std::isnan(d.r + d.g + d.b) ? HUGE_VAL : std::max({d.r, d.g, d.b});
-            if (largest > worst.difference) worst = {i, j, largest};
-        }
-    }
-    return worst;
-}
-
-// The render's worst pixel as a counterexample: the colours, and the `raystep trace` of the same
-// place in the scene at its own size (the grader renders at most kWidth wide), which shows a
-// student every step of their own renderer's computation there.
+// The render's worst pixel as a counterexample (worst_render_place, app/grade/render_judge.h,
+// which a release's `raystep grade` reports the same way): the colours, and the `raystep trace` of
+// the same place in the scene at its own size (the grader renders at most kWidth wide), which
+// shows a student every step of their own renderer's computation there.
 Counterexample pixel_counterexample(const GradingContext& context, const std::string& id,
                                     const std::string& scene_name, View view,
                                     const Image& reference, const Image& student) {
-    const WorstPixel worst = worst_pixel(reference, student);
     const Scene scene = load_scene(context.source / "scenes" / scene_name);
-    const int x = std::min(scene.width - 1,
-                           static_cast<int>((worst.i + 0.5) * scene.width / reference.width()));
-    const int y = std::min(scene.height - 1,
-                           static_cast<int>((worst.j + 0.5) * scene.height / reference.height()));
-    const std::string place = "pixel (" + std::to_string(worst.i) + ", " + std::to_string(worst.j) +
-                              ") of the " + std::to_string(reference.width()) + " x " +
-                              std::to_string(reference.height()) + " render";
-    const std::string scene_place = "pixel (" + std::to_string(x) + ", " + std::to_string(y) +
-                                    ") at the scene's " + std::to_string(scene.width) + " x " +
-                                    std::to_string(scene.height);
-    return {
-        scene_name + ", " + std::string(view_name(view)) + " view, " + place + ", " + scene_place,
-        full_text(reference.at(worst.i, worst.j)), full_text(student.at(worst.i, worst.j)),
-        context.reproduce + " --check " + id + " --case 0",
-        std::string(kStudentRaystep) + " trace scenes/" + scene_name + " " + std::to_string(x) +
-            " " + std::to_string(y) + " --view " + std::string(view_name(view))};
+    const RenderPlace place = worst_render_place(scene_name, view, scene.width, scene.height,
+                                                 reference, student, kStudentRaystep);
+    return {place.input, place.expected, place.got,
+            context.reproduce + " --check " + id + " --case 0", place.trace};
+}
+
+// The probe's query for a render of the scene file at `scene_path`.
+ProbeQuery render_query(const std::string& scene_path, View view, const CameraClip& clip) {
+    probe::Json args = {
+        {"scene", scene_path}, {"view", std::string(view_name(view))}, {"max_width", kWidth}};
+    if (!clip.name.empty()) {
+        args["camera_t_min"] = probe::number(clip.t_min);
+        args["camera_t_max"] = probe::number(clip.t_max);
+    }
+    return {"render", args};
+}
+
+std::string render_input(const std::string& scene, View view, const CameraClip& clip) {
+    std::string input = scene + ", " + std::string(view_name(view)) + " view";
+    if (!clip.name.empty()) {
+        input +=
+            ", camera rays over [" + full_text(clip.t_min) + ", " + full_text(clip.t_max) + "]";
+    }
+    return input;
 }
 
 CheckMeasure measure_render(const GradingContext& context, const BuiltProbe& probe,
                             const std::string& id, const std::string& scene, View view,
                             const CameraClip& clip) {
     const fs::path path = context.source / "scenes" / scene;
-    probe::Json args = {
-        {"scene", path.string()}, {"view", std::string(view_name(view))}, {"max_width", kWidth}};
-    std::string input = scene + ", " + std::string(view_name(view)) + " view";
-    if (!clip.name.empty()) {
-        args["camera_t_min"] = probe::number(clip.t_min);
-        args["camera_t_max"] = probe::number(clip.t_max);
-        input +=
-            ", camera rays over [" + full_text(clip.t_min) + ", " + full_text(clip.t_max) + "]";
-    }
+    const std::string input = render_input(scene, view, clip);
     // The judge keeps the image; the diff comes once the run is over.
     std::optional<Image> student;
-    ProbeCase render_case{input,
-                          {"render", args},
+    ProbeCase render_case{input, render_query(path.string(), view, clip),
                           [&student](const ProbeAnswer& answer) {
                               if (answer.kind != ProbeAnswer::Kind::result)
                                   return wrong("an image", "");
@@ -165,46 +145,84 @@ CheckMeasure measure_render(const GradingContext& context, const BuiltProbe& pro
     return measure;
 }
 
-CheckDefinition render_check(int stage, const std::string& scene, View view,
-                             const CameraClip& clip = {}) {
-    const std::string stem =
-        fs::path(scene).stem().string() + (clip.name.empty() ? "" : "-" + clip.name);
-    const std::string id =
-        (stage == 0 ? std::string("pipeline") : "stage" + std::to_string(stage)) + ".render." +
-        stem + "." + std::string(view_name(view));
-    std::string name = "the " + std::string(view_name(view)) + " view of scenes/" + scene;
-    if (!clip.name.empty()) name += ", camera rays cut to [t_min, t_max]";
-    if (stage == 0) name += ", every stage from the submission";
-    return {id, stage, "render", name, [=](const GradingContext& context, const BuiltProbe& probe) {
-                return measure_render(context, probe, id, scene, view, clip);
-            }};
+// One render check: the stage it grades (0: the pipeline), the scene under scenes/, the view, and
+// the camera rays' clip.
+struct RenderCheck {
+    int stage = 0;
+    std::string scene;
+    View view = View::full;
+    CameraClip clip;
+
+    std::string id() const {
+        const std::string stem =
+            fs::path(scene).stem().string() + (clip.name.empty() ? "" : "-" + clip.name);
+        return (stage == 0 ? std::string("pipeline") : "stage" + std::to_string(stage)) +
+               ".render." + stem + "." + std::string(view_name(view));
+    }
+
+    std::string name() const {
+        std::string text = "the " + std::string(view_name(view)) + " view of scenes/" + scene;
+        if (!clip.name.empty()) text += ", camera rays cut to [t_min, t_max]";
+        if (stage == 0) text += ", every stage from the submission";
+        return text;
+    }
+};
+
+std::vector<RenderCheck> render_check_list() {
+    return {
+        {2, "stage2/perspective-wide.test", View::rays, {}},
+        {2, "stage2/orthographic.test", View::rays, {}},
+        {3, "stage3/spheres-on-plane.test", View::depth, {}},
+        {3, "stage3/spheres-on-plane.test", View::normal, {}},
+        {3, "stage3/triangle-fan.test", View::barycentric, {}},
+        {4, "stage4/sphere-field.test", View::depth, {}},
+        // Camera rays from 9 to 25 along the field: the near spheres cut open, seen from inside,
+        // and the floor beyond 25 gone. A structure whose leaf test or walk forgets t_min or
+        // t_max shows the near spheres whole or the far floor.
+        {4, "stage4/sphere-field.test", View::depth, {9.0, 25.0, "clipped"}},
+        {5, "stage5/ellipsoids.test", View::normal, {}},
+        {5, "stage5/table.test", View::depth, {}},
+        {6, "stage6/cornell-box.test", View::shaded, {}},
+        {6, "stage6/shininess-row.test", View::shaded, {}},
+        {6, "stage6/acne-scale-1e4.test", View::shaded, {}},
+        {7, "stage7/mirror-spheres.test", View::full, {}},
+        {7, "stage7/facing-mirrors-depth5.test", View::full, {}},
+        {0, "stage6/cornell-box.test", View::full, {}},
+        {0, "stage7/mirror-spheres.test", View::full, {}},
+        {0, "stage5/table.test", View::full, {}},
+    };
 }
 
 }  // namespace
 
 std::vector<CheckDefinition> render_checks() {
-    return {
-        render_check(2, "stage2/perspective-wide.test", View::rays),
-        render_check(2, "stage2/orthographic.test", View::rays),
-        render_check(3, "stage3/spheres-on-plane.test", View::depth),
-        render_check(3, "stage3/spheres-on-plane.test", View::normal),
-        render_check(3, "stage3/triangle-fan.test", View::barycentric),
-        render_check(4, "stage4/sphere-field.test", View::depth),
-        // Camera rays from 9 to 25 along the field: the near spheres cut open, seen from inside,
-        // and the floor beyond 25 gone. A structure whose leaf test or walk forgets t_min or
-        // t_max shows the near spheres whole or the far floor.
-        render_check(4, "stage4/sphere-field.test", View::depth, {9.0, 25.0, "clipped"}),
-        render_check(5, "stage5/ellipsoids.test", View::normal),
-        render_check(5, "stage5/table.test", View::depth),
-        render_check(6, "stage6/cornell-box.test", View::shaded),
-        render_check(6, "stage6/shininess-row.test", View::shaded),
-        render_check(6, "stage6/acne-scale-1e4.test", View::shaded),
-        render_check(7, "stage7/mirror-spheres.test", View::full),
-        render_check(7, "stage7/facing-mirrors-depth5.test", View::full),
-        render_check(0, "stage6/cornell-box.test", View::full),
-        render_check(0, "stage7/mirror-spheres.test", View::full),
-        render_check(0, "stage5/table.test", View::full),
-    };
+    std::vector<CheckDefinition> checks;
+    for (const RenderCheck& check : render_check_list()) {
+        checks.push_back({check.id(), check.stage, "render", check.name(),
+                          [check](const GradingContext& context, const BuiltProbe& probe) {
+                              return measure_render(context, probe, check.id(), check.scene,
+                                                    check.view, check.clip);
+                          }});
+    }
+    return checks;
+}
+
+std::vector<PublicCheck> render_public_checks(const fs::path& source) {
+    std::vector<PublicCheck> checks;
+    for (const RenderCheck& check : render_check_list()) {
+        const fs::path path = source / "scenes" / check.scene;
+        const Scene scene = load_scene(path);
+        ProbeQuery query = render_query("scenes/" + check.scene, check.view, check.clip);
+        checks.push_back({check.id(),
+                          check.stage,
+                          "render",
+                          check.name(),
+                          {{render_input(check.scene, check.view, check.clip), std::move(query),
+                            render_judge(reference_render(path, check.view, check.clip),
+                                         check.scene, check.view, scene.width, scene.height),
+                            render_command(check.scene, check.view)}}});
+    }
+    return checks;
 }
 
 }  // namespace raystep::grade

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <filesystem>
 #include <vector>
 
 #include "app/check/ray_case.h"
@@ -23,6 +24,11 @@ std::vector<CheckDefinition> render_checks();
 /// The public checks of each stage as data (grader/grade/checks/data_judged.h): what the stage's
 /// "stageN.unit" check runs, and what the student release's `raystep grade` runs.
 PublicCheck stage1_public_check();
+
+/// The render checks as data, each with the reference's render at the grader's size, made from
+/// the scenes under `source`/scenes: the grader judges a render by the same rule
+/// (app/compare/render_rule.h) against the same image, rendered the same way.
+std::vector<PublicCheck> render_public_checks(const std::filesystem::path& source);
 
 /// One stage-3 case for one function of intersect.h (stage3_checks.cpp): the probe runs the
 /// function on the case alone, and the judge scores the answer as `raystep check` does, a stub's
