@@ -1,5 +1,6 @@
 #include "app/grade/value_text.h"
 
+#include <cmath>
 #include <cstdio>
 
 namespace raystep::grade {
@@ -12,6 +13,19 @@ std::string full_text(double x) {
 
 std::string full_text(const Vec3& v) {
     return "(" + full_text(v.x) + ", " + full_text(v.y) + ", " + full_text(v.z) + ")";
+}
+
+std::string ray_text(const Ray& r) {
+    return "origin " + full_text(r.origin) + ", direction " + full_text(r.direction) + ", t in [" +
+           full_text(r.t_min) + ", " + full_text(r.t_max) + "]";
+}
+
+bool unit_length(const Vec3& v) {
+    constexpr long double kUnitLength = 4 * 0x1p-52L;
+    const long double x = v.x;
+    const long double y = v.y;
+    const long double z = v.z;
+    return std::abs(std::sqrt(x * x + y * y + z * z) - 1) <= kUnitLength;
 }
 
 }  // namespace raystep::grade

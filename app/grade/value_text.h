@@ -3,17 +3,26 @@
 #include <string>
 
 #include "base/math/types.h"
+#include "stages/2_rays/ray.h"
 
 namespace raystep::grade {
 
 // How a case's values are written in a report, the same way for every check and for
 // `raystep grade`: every digit (17 significant), so that a counterexample shows the difference,
-// however small, and can be typed back in.
+// however small, and can be typed back in; and the one test of a value the judges share.
 
 /// `1.0000000000000002`, `inf`.
 std::string full_text(double x);
 
 /// `(1, 2.5, -3)`, each coordinate as full_text writes it.
 std::string full_text(const Vec3& v);
+
+/// `origin (...), direction (...), t in [t_min, t_max]`.
+std::string ray_text(const Ray& r);
+
+/// A vector a student normalized (a camera ray's direction, a normal): its length, taken in long
+/// double, within 4 ulps of 1 (2^-52 each), since every normalization a student may write (stage
+/// 1's, glm's, v / |v|) lands within 3. Written so that a NaN fails.
+bool unit_length(const Vec3& v);
 
 }  // namespace raystep::grade

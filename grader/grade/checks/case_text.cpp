@@ -22,11 +22,6 @@ std::string vec3_text(const Vec3& v) {
     return full_text(v);
 }
 
-std::string ray_text(const Ray& r) {
-    return "origin " + full_text(r.origin) + ", direction " + full_text(r.direction) + ", t in [" +
-           full_text(r.t_min) + ", " + full_text(r.t_max) + "]";
-}
-
 std::string vectors_text(std::initializer_list<Vec3> vectors) {
     std::string text;
     for (const Vec3& v : vectors)

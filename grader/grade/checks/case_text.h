@@ -20,9 +20,6 @@ namespace raystep::grade {
 /// full_text of a vector, as one function (not an overload set) to pass to a judge.
 std::string vec3_text(const Vec3& v);
 
-/// `origin (...), direction (...), t in [t_min, t_max]`.
-std::string ray_text(const Ray& r);
-
 /// The case's vectors, separated by commas.
 std::string vectors_text(std::initializer_list<Vec3> vectors);
 

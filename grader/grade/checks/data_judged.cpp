@@ -25,7 +25,7 @@ std::vector<ProbeCase> data_judged_cases(const std::vector<PublicCase>& cases) {
 }
 
 std::vector<PublicCheck> public_checks(const std::filesystem::path& source) {
-    std::vector<PublicCheck> checks = {stage1_public_check()};
+    std::vector<PublicCheck> checks = {stage1_public_check(), stage2_public_check()};
     for (PublicCheck& check : render_public_checks(source))
         checks.push_back(std::move(check));
     return checks;

@@ -126,12 +126,6 @@ bool near(const Vec3& got, const WideVec& expected, const WideVec& tolerance) {
     return true;
 }
 
-bool unit_length(const Vec3& v) {
-    constexpr double kUnitLength = 4 * 0x1p-52;
-    const WideVec w = widen(v);
-    return std::abs(std::sqrt(glm::dot(w, w)) - 1) <= kUnitLength;
-}
-
 Judgement threw(const ProbeAnswer& answer, const std::string& type) {
     if (answer.kind == ProbeAnswer::Kind::threw && answer.exception_type == type) return right();
     return wrong("std::" + type + " thrown", "");

@@ -99,11 +99,6 @@ Judgement near_vec3(const ProbeAnswer& answer, const Vec3& expected, double tole
 /// that a NaN fails.
 bool near(const Vec3& got, const WideVec& expected, const WideVec& tolerance);
 
-/// A vector a student normalized (a camera ray's direction, a normal): its length, taken in long
-/// double, within 4 ulps of 1 (2^-52 each), since every normalization a student may write (stage
-/// 1's, glm's, v / |v|) lands within 3. Written so that a NaN fails.
-bool unit_length(const Vec3& v);
-
 /// The judge of a call whose answer is one value: wrong, with nothing got, when the call gave no
 /// result; else the result read by `read` (probe::vec3_from, probe::ray_from, ...), right when
 /// `accept` takes it, else wrong with it written by `describe`. `expected` says what was wanted.

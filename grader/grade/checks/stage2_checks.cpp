@@ -11,9 +11,12 @@
 
 #include <glm/geometric.hpp>
 
+#include "app/grade/camera_judges.h"
+#include "app/grade/value_judges.h"
 #include "base/math/portable_random.h"
 #include "base/math/unit_roundoff.h"
 #include "grader/grade/checks/cpp_literal.h"
+#include "grader/grade/checks/data_judged.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
 #include "grader/oracle/camera_oracle.h"
@@ -74,25 +77,6 @@ ProbeQuery camera_query(const CameraCase& c, int i, int j) {
     return {"orthographic_rays", args};
 }
 
-Judgement judge_camera_ray(const ProbeAnswer& answer, const ExpectedCameraRay& e) {
-    const std::string expected = "origin " + full_text(e.origin) + " (within " +
-                                 full_text(e.origin_tolerance) + "), unit direction " +
-                                 full_text(e.direction) + " (within " +
-                                 full_text(e.direction_tolerance) + "), t in [0, inf]";
-    if (answer.kind != ProbeAnswer::Kind::result || !answer.value.is_array() ||
-        answer.value.size() != 1) {
-        return wrong(expected, "");
-    }
-    const Ray got = probe::ray_from(answer.value[0]);
-    // Written so that a NaN anywhere fails
-    bool ok = got.t_min == 0.0 && got.t_max == kInf && unit_length(got.direction);
-    for (int k = 0; k < 3; ++k) {
-        ok = ok && std::abs(got.origin[k] - e.origin[k]) <= e.origin_tolerance &&
-             std::abs(got.direction[k] - e.direction[k]) <= e.direction_tolerance;
-    }
-    return ok ? right() : wrong(expected, ray_text(got));
-}
-
 // The camera's maker called as a student would: make_perspective_camera(...) or
 // make_orthographic_camera(...).
 std::string camera_code(const CameraCase& c) {
@@ -103,33 +87,36 @@ std::string camera_code(const CameraCase& c) {
            cpp(c.bottom) + ", " + cpp(c.top) + ", " + size;
 }
 
-ProbeCase camera_ray(const CameraCase& c, int i, int j) {
+// Every case of stage 2 is judged by a data judge (app/grade/camera_judges.h,
+// app/grade/value_judges.h): the public ones go into the student release as data, and the others
+// are judged by the same code.
+PublicCase camera_ray(const CameraCase& c, int i, int j) {
     const ExpectedCameraRay e =
         c.orthographic ? expected_orthographic(c, i, j) : expected_perspective(c, i, j);
     return {camera_text(c, i, j), camera_query(c, i, j),
-            [e](const ProbeAnswer& a) { return judge_camera_ray(a, e); },
+            camera_ray_judge(e.origin, e.origin_tolerance, e.direction, e.direction_tolerance),
             std::string(c.orthographic ? "orthographic_ray(" : "perspective_ray(") +
                 camera_code(c) + ", " + std::to_string(i) + ", " + std::to_string(j) + ")"};
 }
 
 // No pixels asked: the camera's maker must throw, not the rays it would make later.
-ProbeCase no_camera(const CameraCase& c) {
+PublicCase no_camera(const CameraCase& c) {
     ProbeQuery query = camera_query(c, 0, 0);
     query.args["pixels"] = Json::array();
     const std::string text = camera_text(c, 0, 0);
     return {text.substr(0, text.rfind(", pixel")) + ": no such camera", query,
-            [](const ProbeAnswer& a) { return threw(a, "domain_error"); }, camera_code(c)};
+            threw_judge("domain_error"), camera_code(c)};
 }
 
 // R(t) = A + t D, within `tolerance` of `expected` per coordinate.
-ProbeCase ray_at(const Ray& ray, double t, const Vec3& expected, double tolerance = 0.0) {
+PublicCase ray_at(const Ray& ray, double t, const Vec3& expected, double tolerance = 0.0) {
     return {"Ray{" + ray_text(ray) + "}.at(" + full_text(t) + ")",
             {"ray_at", {{"ray", probe::ray(ray)}, {"t", probe::number(t)}}},
-            [=](const ProbeAnswer& a) { return near_vec3(a, expected, tolerance); },
+            near_vec3_judge(expected, tolerance),
             cpp(ray) + ".at(" + cpp(t) + ")"};
 }
 
-std::vector<ProbeCase> public_cases() {
+std::vector<PublicCase> public_cases() {
     // From the origin looking down -z, +y up: u = +x, v = +y, w = +z.
     const auto front = [](double fovy, int width, int height) {
         return perspective({0, 0, 0}, {0, 0, -3}, {0, 1, 0}, fovy, width, height);
@@ -175,7 +162,7 @@ std::vector<ProbeCase> public_cases() {
 }
 
 // The hidden ones: the contract's edge cases a student's own tests may not reach.
-std::vector<ProbeCase> hidden_cases() {
+std::vector<PublicCase> hidden_cases() {
     const auto front = [](double fovy, int width, int height) {
         return perspective({0, 0, 0}, {0, 0, -3}, {0, 1, 0}, fovy, width, height);
     };
@@ -267,7 +254,7 @@ CameraCase random_camera(PortableRandom& random, bool ortho) {
 constexpr std::uint64_t kCameraSeed = 0x5EED'0002;
 
 std::vector<ProbeCase> oracle_cases() {
-    std::vector<ProbeCase> cases;
+    std::vector<PublicCase> cases;
     for (int k = 0; k < 400; ++k) {
         PortableRandom random(kCameraSeed, k);
         const CameraCase c = random_camera(random, k >= 300);
@@ -275,15 +262,23 @@ std::vector<ProbeCase> oracle_cases() {
         const int j = static_cast<int>(random.integer(0, c.height - 1));
         cases.push_back(camera_ray(c, i, j));
     }
-    return cases;
+    return data_judged_cases(cases);
 }
+
+// The stage's public name, shared by the grader's check and the release's case file.
+constexpr const char* kPublicName = "Ray::at and camera rays on hand-worked values";
 
 }  // namespace
 
+PublicCheck stage2_public_check() {
+    return {"stage2.unit", 2, "unit", kPublicName, public_cases()};
+}
+
 std::vector<CheckDefinition> stage2_checks() {
     return stage_case_checks(
-        {2, "Ray::at and camera rays on hand-worked values", public_cases,
-         "camera rays on the contract's edge cases", hidden_cases,
+        {2, kPublicName, [] { return data_judged_cases(public_cases()); },
+         "camera rays on the contract's edge cases",
+         [] { return data_judged_cases(hidden_cases()); },
          "perspective and orthographic rays of random cameras against long double", oracle_cases});
 }
 

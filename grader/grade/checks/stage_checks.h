@@ -24,6 +24,7 @@ std::vector<CheckDefinition> render_checks();
 /// The public checks of each stage as data (grader/grade/checks/data_judged.h): what the stage's
 /// "stageN.unit" check runs, and what the student release's `raystep grade` runs.
 PublicCheck stage1_public_check();
+PublicCheck stage2_public_check();
 
 /// The render checks as data, each with the reference's render at the grader's size, made from
 /// the scenes under `source`/scenes: the grader judges a render by the same rule
