@@ -7,14 +7,18 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <map>
 #include <memory>
 #include <set>
 #include <vector>
 
+#include "app/check/case_file.h"
 #include "app/cli/command_registry.h"
 #include "app/grade/public_case.h"
 #include "app/grade/public_check_run.h"
 #include "app/grade/rubric.h"
+#include "app/grade/stage3_case_checks.h"
 #include "app/report/console_summary.h"
 #include "app/report/report_text.h"
 #include "base/errors/input_error.h"
@@ -62,6 +66,17 @@ std::string not_run_text(const Rubric& rubric, const std::set<std::string>& run,
            ids + ". The total " + where + " counts the public checks alone.";
 }
 
+// The reference's count of stage-3 cases right per function, as the release writer wrote it.
+std::map<std::string, std::size_t> read_stage3_reference(const fs::path& file) {
+    std::ifstream in(file);
+    if (!in) throw InputError(file.string(), 0, "cannot be read; the release writer makes it");
+    try {
+        return probe::Json::parse(in).get<std::map<std::string, std::size_t>>();
+    } catch (const std::exception& error) {
+        throw InputError(file.string(), 0, error.what());
+    }
+}
+
 int run_grade(const GradeArguments& arguments) {
     const fs::path folder = arguments.grading;
     const fs::path public_folder = folder / "public";
@@ -92,6 +107,19 @@ int run_grade(const GradeArguments& arguments) {
             run.insert(check.id);
             report.checks.push_back(run_public_check(check, rubric, calls, RAYSTEP_SOURCE_DIR));
         }
+        // Stage 3's public cases are the case files `raystep check` reads, scored per function.
+        if (selected(arguments, "stage3.")) {
+            std::vector<CaseFamily> families;
+            for (const fs::path& file :
+                 case_files_in(fs::path(RAYSTEP_SOURCE_DIR) / "stages" / "3_intersect" / "cases")) {
+                for (CaseFamily& family : read_case_file(file))
+                    families.push_back(std::move(family));
+            }
+            const std::map<std::string, std::size_t> reference =
+                read_stage3_reference(folder / "stage3-reference.json");
+            for (CheckResult& result : run_stage3_case_checks(families, reference))
+                report.checks.push_back(std::move(result));
+        }
         if (report.checks.empty()) {
             std::fprintf(stderr, "raystep grade: %s has no public check for stage %d\n",
                          public_folder.string().c_str(), arguments.stage);
@@ -101,9 +129,12 @@ int run_grade(const GradeArguments& arguments) {
                     console_paragraph(not_run_text(rubric, run, arguments, "below")).c_str(),
                     console_summary(report, Audience::student).c_str(),
                     console_paragraph(not_run_text(rubric, run, arguments, "above")).c_str());
-        const bool full = std::all_of(report.checks.begin(), report.checks.end(),
-                                      [](const CheckResult& c) { return c.score >= c.max_score; });
-        return full ? 0 : 1;
+        // Every check passed: each with points earned all of them (the grader's "passed"), and each
+        // of stage 3's got as many cases right as the reference.
+        const bool all_passed =
+            std::all_of(report.checks.begin(), report.checks.end(),
+                        [](const CheckResult& c) { return c.outcome == Outcome::passed; });
+        return all_passed ? 0 : 1;
     } catch (const InputError& error) {
         std::fprintf(stderr, "%s\n", error.what());
     } catch (const std::exception& error) {

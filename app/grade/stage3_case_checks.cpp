@@ -1,0 +1,91 @@
+#include "app/grade/stage3_case_checks.h"
+
+#include <chrono>
+
+#include "app/check/case_scoring.h"
+#include "app/check/stage3_methods.h"
+#include "app/grade/render_judge.h"
+
+namespace raystep::grade {
+
+namespace {
+
+// One function over every family: its cases, those right, a stub's message, and its first
+// failure.
+struct MethodRun {
+    std::size_t cases = 0;
+    std::size_t passed = 0;
+    std::string stub;
+    std::vector<Counterexample> first_failure;
+};
+
+MethodRun run_over(const Stage3Method& method, const std::vector<CaseFamily>& families) {
+    MethodRun run;
+    for (const CaseFamily& family : families) {
+        std::vector<CaseAnswer> answers;
+        for (const RayCase& c : family.cases)
+            answers.push_back(run_method(method, c));
+        const MethodScore score = score_family(method, family, answers, 1);
+        if (score.not_implemented) {
+            run.stub = score.not_implemented_message;
+            return run;
+        }
+        run.cases += score.cases;
+        run.passed += score.passed;
+        if (run.first_failure.empty() && !score.counterexamples.empty()) {
+            const raystep::Counterexample& example = score.counterexamples.front();
+            const std::string index = std::to_string(example.case_index);
+            run.first_failure.push_back(
+                {"family " + family.name + ", case " + index + ": " + example.text, "pass",
+                 std::string(verdict_name(example.verdict)) + ": " + example.detail, "",
+                 std::string(kStudentBuildRaystep) + " check --stage 3 --family " + family.name +
+                     " --method " + method.name + " --case " + index});
+        }
+    }
+    return run;
+}
+
+}  // namespace
+
+std::map<std::string, std::size_t> stage3_cases_right(const std::vector<CaseFamily>& families) {
+    std::map<std::string, std::size_t> right;
+    for (const Stage3Method& method : stage3_methods()) {
+        const MethodRun run = run_over(method, families);
+        if (run.stub.empty()) right[method.name] = run.passed;
+    }
+    return right;
+}
+
+std::vector<CheckResult> run_stage3_case_checks(
+    const std::vector<CaseFamily>& families, const std::map<std::string, std::size_t>& reference) {
+    std::vector<CheckResult> results;
+    for (const Stage3Method& method : stage3_methods()) {
+        const auto start = std::chrono::steady_clock::now();
+        const std::size_t reference_right = reference.at(method.name);
+        const MethodRun run = run_over(method, families);
+        CheckResult result;
+        result.id = "stage3.cases." + method.name;
+        result.stage = 3;
+        result.kind = "oracle";
+        result.name = method.name + " on the public case files (no points: the grader scores " +
+                      "stage3.oracle." + method.name + " on its own cases)";
+        if (!run.stub.empty()) {
+            result.outcome = Outcome::not_implemented;
+            result.summary = run.stub;
+        } else {
+            result.outcome = run.passed >= reference_right ? Outcome::passed : Outcome::failed;
+            result.summary = std::to_string(run.passed) + " of " + std::to_string(run.cases) +
+                             " cases right (the reference: " + std::to_string(reference_right) +
+                             ")";
+            result.counterexamples = run.first_failure;
+        }
+        result.metrics["cases"] = static_cast<double>(run.cases);
+        result.metrics["passed"] = static_cast<double>(run.passed);
+        result.seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        results.push_back(std::move(result));
+    }
+    return results;
+}
+
+}  // namespace raystep::grade
