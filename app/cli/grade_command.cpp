@@ -2,9 +2,11 @@
 // the rubric and reported in the student's layout of the real grade (app/report/console_summary.h).
 // A student release holds the checks as data (grading/public/*.json and grading/rubric.json,
 // written by `raystep-grade release`): each case's query, its expected answer and tolerance, as
-// the reference's oracle decided them, never the oracle. The hidden checks, the generated ones
-// and the speed checks are not run, and the report says which and what they are worth.
+// the reference's oracle decided them, never the oracle; stage 3's functions run on the case files
+// of `raystep check` (app/grade/stage3_case_checks.h). The hidden checks, the generated ones and
+// the speed checks are not run, and the report says which and what they are worth.
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
