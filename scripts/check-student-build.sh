@@ -8,7 +8,10 @@
 #      them; `raystep check` must report every stage-3 function as not implemented; every
 #      `raystep demo` must stop at a stub; `raystep info`, which runs no stage code, must work;
 #      `raystep bench`, the studies' command, is not there.
-#   2. A mixed build, RAYSTEP_STUDENT_STAGES=1: the reference stage 2 must call the student's
+#   2. The same release with every stage written (the model submission's manifest files copied
+#      in, nothing else): every command its READMEs name works as written
+#      (scripts/check-student-readme.py).
+#   3. A mixed build, RAYSTEP_STUDENT_STAGES=1: the reference stage 2 must call the student's
 #      stage 1, so a render stops at a stage-1 stub.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -26,12 +29,15 @@ for folder in solutions studies grader; do
         exit 1
     fi
 done
-for instructors in scripts/test-all.sh scripts/render-all.sh docs/instructor.md; do
-    if [ -e "$release/$instructors" ]; then
-        echo "FAIL the release holds the instructor's $instructors"
-        exit 1
-    fi
-done
+if [ -e "$release/docs/instructor.md" ]; then
+    echo "FAIL the release holds the instructor's guide, docs/instructor.md"
+    exit 1
+fi
+scripts=$(cd "$release/scripts" && ls | tr '\n' ' ')
+if [ "$scripts" != "install-deps.sh setup.sh test.sh " ]; then
+    echo "FAIL the release's scripts/ holds $scripts; a student's are install-deps.sh setup.sh test.sh"
+    exit 1
+fi
 if ! grep -q "^scripts/setup.sh$" "$release/README.md"; then
     echo "FAIL the release's README.md is not the student's (docs/student-README.md)"
     exit 1
@@ -104,6 +110,10 @@ done
 check_command "raystep in a release has no bench: the studies are the instructor's" 2 \
     "no command 'bench' in this build; its commands are: render, [a-z, ]+" \
     "$bin/raystep" bench
+
+if ! scripts/check-student-readme.py "$release" grader/tests/submissions/model/stages; then
+    problems=$((problems + 1))
+fi
 
 cmake -S "$root" -B "$root/build/student-stage1" -G Ninja -DCMAKE_BUILD_TYPE=Release \
     -DRAYSTEP_STUDENT_STAGES=1 -DRAYSTEP_WARNINGS_AS_ERRORS=ON >/dev/null

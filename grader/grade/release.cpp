@@ -17,18 +17,22 @@ namespace {
 const fs::path kStudentReadme = "docs/student-README.md";
 
 // What a student's repository leaves out, relative to the repository's root: the instructor's
-// folders, guide, README and scripts (the student's are scripts/setup.sh and scripts/test.sh).
+// folders, guide, README and scripts. Of scripts/ only the students' own are kept, so that an
+// instructor's script added later stays out without anyone listing it.
 bool withheld(const fs::path& relative) {
     const std::string first = relative.begin()->string();
     if (first == "solutions" || first == "studies" || first == "grader" || first == ".git" ||
         first == ".ci" || first == "build" || first == "out") {
         return true;
     }
-    for (const char* instructors :
-         {"README.md", "docs/instructor.md", "scenes/meshes", "scripts/render-all.sh",
-          "scripts/test-all.sh", "scripts/check-student-build.sh", "scripts/check-format.py",
-          "scripts/check-layers.py", "scripts/check-doc-paths.py",
-          "scripts/make-watertight-scene.py"}) {
+    if (first == "scripts" && relative != "scripts") {
+        for (const char* students :
+             {"scripts/setup.sh", "scripts/test.sh", "scripts/install-deps.sh"}) {
+            if (relative == fs::path(students)) return false;
+        }
+        return true;
+    }
+    for (const char* instructors : {"README.md", "docs/instructor.md", "scenes/meshes"}) {
         if (relative == fs::path(instructors)) return true;
     }
     return relative == kStudentReadme;
