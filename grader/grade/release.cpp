@@ -16,13 +16,18 @@ namespace {
 // The student's README, written as the release's README.md in place of the instructor's.
 const fs::path kStudentReadme = "docs/student-README.md";
 
+// GitHub Classroom's autograding workflow, kept out of the instructor's .github/ so that it grades
+// students' pushes and never the instructor's; the release holds it where GitHub runs it.
+const fs::path kClassroomWorkflow = "release/github/classroom.yml";
+const fs::path kReleaseWorkflow = ".github/workflows/classroom.yml";
+
 // What a student's repository leaves out, relative to the repository's root: the instructor's
 // folders, guide, README and scripts. Of scripts/ only the students' own are kept, so that an
 // instructor's script added later stays out without anyone listing it.
 bool withheld(const fs::path& relative) {
     const std::string first = relative.begin()->string();
     if (first == "solutions" || first == "studies" || first == "grader" || first == ".git" ||
-        first == ".ci" || first == "build" || first == "out") {
+        first == ".ci" || first == "build" || first == "out" || first == "release") {
         return true;
     }
     if (first == "scripts" && relative != "scripts") {
@@ -69,6 +74,9 @@ ReleaseSummary make_release(const fs::path& source, const fs::path& output) {
     ReleaseSummary summary;
     summary.files = copy_tree(source, output);
     fs::copy_file(source / kStudentReadme, output / "README.md");
+    ++summary.files;
+    fs::create_directories((output / kReleaseWorkflow).parent_path());
+    fs::copy_file(source / kClassroomWorkflow, output / kReleaseWorkflow);
     ++summary.files;
 
     for (const auto& entry : fs::recursive_directory_iterator(source / "scenes")) {
