@@ -60,17 +60,17 @@ std::string joined(const std::vector<std::string>& names) {
 // written (a full disk, an interrupted run): it is the old one or the whole new one.
 void write_atomically(const fs::path& zip, const std::string& bytes) {
     const fs::path partial = zip.string() + ".partial";
-    {
-        std::ofstream out(partial, std::ios::binary | std::ios::trunc);
-        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-        out.close();
-        if (!out) {
-            std::error_code ignored;
-            fs::remove(partial, ignored);
-            throw std::runtime_error(partial.string() + ": cannot be written");
-        }
+    std::ofstream out(partial, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.close();
+    std::error_code error;
+    if (out) fs::rename(partial, zip, error);
+    if (!out || error) {
+        std::error_code ignored;
+        fs::remove(partial, ignored);
+        throw std::runtime_error(zip.string() + ": cannot be written" +
+                                 (error ? " (" + error.message() + ")" : std::string()));
     }
-    fs::rename(partial, zip);
 }
 
 int run_submit(const SubmitArguments& arguments) {
@@ -79,6 +79,8 @@ int run_submit(const SubmitArguments& arguments) {
         throw std::runtime_error(zip.string() +
                                  " already exists: --force replaces it, -o writes another file");
     }
+    if (!fs::is_directory(zip.parent_path()))
+        throw std::runtime_error(zip.parent_path().string() + ": no such folder for the zip");
     const fs::path root = find_repository_root(fs::current_path());
     const std::vector<SubmissionFile> files = submission_files(root);
 
