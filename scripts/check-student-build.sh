@@ -13,11 +13,12 @@
 #      (scripts/check-student-readme.py).
 #   3. A mixed build, RAYSTEP_STUDENT_STAGES=1: the reference stage 2 must call the student's
 #      stage 1, so a render stops at a stage-1 stub.
-#   3. Handing in: the release's GitHub Classroom workflow (.github/workflows/classroom.yml), its
-#      `run:` and `command:` lines run in order as GitHub would (the package installation skipped
-#      only where it would need a root this user lacks), each stage's public tests failing on the
-#      stubs, and its points the rubric's; `raystep submit`'s zip holding exactly the manifests'
-#      files, all of which the grader's unpacker takes.
+#   4. Handing in, on the stubs (so before 2 writes the stages): the release's GitHub Classroom
+#      workflow (.github/workflows/classroom.yml), its `run:` and `command:` lines run in order as
+#      GitHub would (the package installation skipped only where it would need a root this user
+#      lacks), each stage's public tests failing on the stubs, and its points the rubric's;
+#      `raystep submit`'s zip holding exactly the manifests' files, all of which the grader's
+#      unpacker takes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
@@ -116,17 +117,6 @@ check_command "raystep in a release has no bench: the studies are the instructor
     "no command 'bench' in this build; its commands are: render, [a-z, ]+" \
     "$bin/raystep" bench
 
-if ! scripts/check-student-readme.py "$release" grader/tests/submissions/model/stages; then
-    problems=$((problems + 1))
-fi
-
-cmake -S "$root" -B "$root/build/student-stage1" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-    -DRAYSTEP_STUDENT_STAGES=1 -DRAYSTEP_WARNINGS_AS_ERRORS=ON >/dev/null
-cmake --build "$root/build/student-stage1" --target raystep
-check_command "with stage 1 the student's, the reference camera calls the stage-1 stubs" 1 \
-    "^raystep: stage 1: [a-z_]+ is not implemented yet" \
-    "$root/build/student-stage1/bin/raystep" render "$scene" --view normal -o "$release/mixed.png"
-
 # The workflow's steps, read without a YAML library (python3-yaml is not among the packages
 # scripts/install-deps.sh installs): each step's name, its `run:` or `command:` line with the
 # workflow's `${{ env.NAME }}` filled in, and its max-score.
@@ -213,9 +203,9 @@ manifest_files=$(cd "$release" && for manifest in stages/*/manifest.txt; do
     sed -e 's/^[ \t\r]*//' -e 's/[ \t\r]*$//' -e '/^#/d' -e '/^$/d' -e "s|^|$(dirname "$manifest")/|" "$manifest"
 done | sort)
 check_command "raystep submit from a stage folder lists the files and writes the zip" 0 \
-    "wrote $release/submission.zip \([0-9]+ files" \
-    bash -c "cd '$release/stages/2_rays' && '$bin/raystep' submit -o '$release/submission.zip'"
-zipped=$(python3 -m zipfile -l "$release/submission.zip" | awk 'NR > 1 {print $1}' | sort)
+    "wrote $release/build/submission.zip \([0-9]+ files" \
+    bash -c "cd '$release/stages/2_rays' && '$bin/raystep' submit -o '$release/build/submission.zip'"
+zipped=$(python3 -m zipfile -l "$release/build/submission.zip" | awk 'NR > 1 {print $1}' | sort)
 if [ "$zipped" != "$manifest_files" ]; then
     echo "FAIL submission.zip does not hold exactly the manifests' files:"
     diff <(echo "$manifest_files") <(echo "$zipped") | sed 's/^/  /'
@@ -227,7 +217,7 @@ mkdir "$release/unpacked"
 mapfile -t manifest_names < <(xargs -n 1 basename <<<"$manifest_files")
 unpack_exit=0
 listing=$("$root/build/release/bin/raystep-unpack" "$release/unpacked" 1048576 33554432 \
-    "${manifest_names[@]}" <"$release/submission.zip") || unpack_exit=$?
+    "${manifest_names[@]}" <"$release/build/submission.zip") || unpack_exit=$?
 taken=$(grep -c '"taken":true' <<<"$listing" || true)
 if [ "$unpack_exit" -ne 0 ] || [ "$taken" -ne "${#manifest_names[@]}" ]; then
     echo "FAIL raystep-unpack took $taken of the zip's ${#manifest_names[@]} files (exit $unpack_exit):"
@@ -237,7 +227,18 @@ else
     echo "ok   the grader's unpacker (raystep-unpack) takes all $taken files of the zip"
 fi
 check_command "raystep submit does not replace its zip without --force" 1 "already exists" \
-    bash -c "cd '$release' && '$bin/raystep' submit -o '$release/submission.zip'"
+    bash -c "cd '$release' && '$bin/raystep' submit -o '$release/build/submission.zip'"
+
+if ! scripts/check-student-readme.py "$release" grader/tests/submissions/model/stages; then
+    problems=$((problems + 1))
+fi
+
+cmake -S "$root" -B "$root/build/student-stage1" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+    -DRAYSTEP_STUDENT_STAGES=1 -DRAYSTEP_WARNINGS_AS_ERRORS=ON >/dev/null
+cmake --build "$root/build/student-stage1" --target raystep
+check_command "with stage 1 the student's, the reference camera calls the stage-1 stubs" 1 \
+    "^raystep: stage 1: [a-z_]+ is not implemented yet" \
+    "$root/build/student-stage1/bin/raystep" render "$scene" --view normal -o "$release/mixed.png"
 
 if [ "$problems" -ne 0 ]; then
     echo "$problems problem(s) in the student builds"
