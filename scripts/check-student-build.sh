@@ -5,7 +5,8 @@
 #      (scripts/setup.sh), and scripts/test.sh run as it says.
 #      Every public test must fail with a NotImplemented message and no test binary may crash;
 #      `raystep render` and `raystep trace` must stop with the message of the stub that stopped
-#      them; `raystep check` must report every stage-3 function as not implemented; every
+#      them, `raystep trace --compare` too, having found the reference trace the release ships,
+#      and with the solutions of stages 1 and 2 put in it must find the pixel the reference's; `raystep check` must report every stage-3 function as not implemented; every
 #      `raystep demo` must stop at a stub; `raystep info`, which runs no stage code, must work;
 #      `raystep bench`, the studies' command, is not there.
 #   2. A mixed build, RAYSTEP_STUDENT_STAGES=1: the reference stage 2 must call the student's
@@ -92,6 +93,31 @@ check_command "raystep render names the stub" 1 "^raystep: $stub_message" \
     "$bin/raystep" render "$scene" --view normal -o "$release/normal.png"
 check_command "raystep trace stops at the stub" 1 "^stopped: $stub_message" \
     "$bin/raystep" trace "$scene" 1 1 --view normal
+# trace --compare holds a pixel against the reference trace the release ships beside the scene:
+# with every stage a stub it stops at the first one.
+compare_scene=$release/scenes/stage2/perspective-wide.test
+check_command "raystep trace --compare finds the shipped reference trace and stops at the stub" 1 \
+    "^stopped: $stub_message" "$bin/raystep" trace "$compare_scene" 0 0 --view rays --compare
+# With the solutions of stages 1 and 2 in place of the student's files, the same pixel is the
+# reference's. They are swapped into the release and back, each time rebuilding raystep alone:
+# a copy of the release would cost a second whole build, minutes, not seconds.
+swap_stage_files() {
+    local from=$1 to=$2
+    for stage in 1_vectors 2_rays; do
+        mkdir -p "$to/$stage"
+        for file in $(grep -v '^#' "$release/stages/$stage/manifest.txt"); do
+            cp "$from/$stage/$file" "$to/$stage/$file"
+        done
+    done
+    cmake --build "$release/build/student" --target raystep >/dev/null
+}
+student_files=$(mktemp -d)
+cp -r "$release/stages/." "$student_files"
+swap_stage_files "$root/solutions" "$release/stages"
+check_command "raystep trace --compare of the solutions' pixel finds the traces the same" 0 \
+    "the traces are the same" "$bin/raystep" trace "$compare_scene" 0 0 --view rays --compare
+swap_stage_files "$student_files" "$release/stages"
+rm -rf "$student_files"
 check_command "raystep check reports every stage-3 function as a stub" 1 \
     "nothing was checked: 7 methods are not implemented" "$bin/raystep" check --stage 3
 check_command "raystep info needs no stage" 0 "^primitives" "$bin/raystep" info "$scene"

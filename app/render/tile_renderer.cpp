@@ -147,7 +147,7 @@ Image render_image(const RenderScene& render_scene, const RenderOptions& options
     const Scene& scene = *render_scene.scene;
     const View view = options.view;
     const PixelFunction pixel = [&render_scene, view](int i, int j) {
-        return render_pixel(render_scene, view, i, j, nullptr);
+        return render_pixel(render_scene, view, i, j, nullptr, nullptr);
     };
     ProgressBar bar(options.label,
                     static_cast<std::size_t>(scene.width) * static_cast<std::size_t>(scene.height),

@@ -3,6 +3,8 @@
 #include <stdexcept>
 
 #include "app/compare/reference_image.h"
+#include "app/compare/reference_trace.h"
+#include "app/render/pixel_record.h"
 #include "app/render/tile_renderer.h"
 #include "base/image/image_io.h"
 #include "base/scene/scene_loader.h"
@@ -73,13 +75,22 @@ ReleaseSummary make_release(const fs::path& source, const fs::path& output) {
         try {
             const Scene scene = load_scene(entry.path());
             const RenderScene render_scene = prepare_render_scene(scene);
+            View furthest = View::rays;
             for (const std::string& name : reference_views(entry.path())) {
                 RenderOptions options;
                 options.view = *parse_view(name);
                 write_image(render_image(render_scene, options),
                             reference_image_path(output / "scenes" / relative, name));
                 ++summary.reference_images;
+                if (pipeline_reach(options.view) > pipeline_reach(furthest))
+                    furthest = options.view;
             }
+            // The reference's steps of every pixel, as far as its furthest view takes them: what
+            // `raystep trace --compare` holds a student's pixel against.
+            write_reference_trace(reference_trace_path(output / "scenes" / relative), scene.width,
+                                  scene.height, furthest,
+                                  scene.point_lights.size() + scene.directional_lights.size(),
+                                  record_pixels(render_scene, furthest, 0));
         } catch (const std::exception& error) {
             summary.skipped.push_back(relative.string() + ": " + error.what());
         }
