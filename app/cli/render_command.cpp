@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <thread>
+#include <vector>
 
 #include "app/compare/reference_trace.h"
 #include "app/render/pixel_record.h"
@@ -63,6 +64,8 @@ int run_render(const RenderArguments& arguments) {
     options.label = output.filename().string();
 
     const auto start = std::chrono::steady_clock::now();
+    std::vector<PixelRecord> records;
+    if (!arguments.trace_data.empty()) options.records = &records;
     const RenderScene render_scene = prepare_render_scene(scene);
     const Image image = render_image(render_scene, options);
     const double seconds =
@@ -77,8 +80,7 @@ int run_render(const RenderArguments& arguments) {
 
     if (!arguments.trace_data.empty()) {
         write_reference_trace(arguments.trace_data, scene.width, scene.height, view,
-                              scene.point_lights.size() + scene.directional_lights.size(),
-                              record_pixels(render_scene, view, arguments.threads));
+                              scene.point_lights.size() + scene.directional_lights.size(), records);
         std::printf("wrote %s (the trace data of every pixel)\n", arguments.trace_data.c_str());
     }
     return 0;

@@ -23,10 +23,15 @@ namespace {
 // (docs/measurements/reference-trace.md has the sizes). Rounded to nearest with b bits kept, a
 // value is within 2^-(b+1) of the reference's, relative to its magnitude.
 //
-// The camera ray and t keep 16 bits, 2^-17 = 7.6e-6 relative: the smallest error of a stage that
-// a trace is for, a camera ray half a pixel off in a 10 degree field of view 360 pixels high,
-// moves the direction by 2.4e-4, thirty times that.
-constexpr int kGeometryBits = 16;
+// The camera ray keeps 12 bits, 2^-13 = 1.2e-4 relative: the smallest error of a stage that a
+// trace is for, a camera ray half a pixel off in a 10 degree field of view 360 pixels high, moves
+// the direction by 2.4e-4, twice that. The direction is the largest part of the file, so it keeps
+// no more.
+constexpr int kRayBits = 12;
+// t keeps 16 bits, 2^-17 = 7.6e-6 relative: everything after the hit rests on it, a hit point
+// off by a small error in t is where shadow acne starts, and t varies smoothly over a surface, so
+// its bits cost less than the direction's.
+constexpr int kDistanceBits = 16;
 // The normal and the barycentrics keep 10 bits, 2^-11 = 4.9e-4 relative, as a half would: the
 // errors a stage makes in them are whole (a normal by M instead of M^-T, unnormalized, flipped;
 // beta and gamma swapped), and they vary fastest from pixel to pixel (small spheres, a mesh's
@@ -249,12 +254,16 @@ int stored_bits(TraceQuantity quantity) {
         case TraceQuantity::local_colour:
         case TraceQuantity::full_colour:
             return kColourBits;
+        case TraceQuantity::camera_origin:
+        case TraceQuantity::camera_direction:
+            return kRayBits;
+        case TraceQuantity::t:
+            return kDistanceBits;
         case TraceQuantity::normal:
         case TraceQuantity::barycentrics:
             return kSurfaceBits;
-        default:
-            return kGeometryBits;
     }
+    return 23;
 }
 
 double stored_value(double value, TraceQuantity quantity) {

@@ -52,7 +52,7 @@ struct ReferenceTrace {
     }
 };
 
-/// Writes the records of a width x height render of `view` (from record_pixels) as a
+/// Writes the records of a width x height render of `view` (RenderOptions::records) as a
 /// multi-channel OpenEXR image with ZIP compression, one channel a component ("hit.t",
 /// "light0.term.R"): only the channels the view's reach fills, each value rounded to its
 /// stored_bits and coded as reference_trace.cpp says. Throws std::runtime_error when it cannot

@@ -54,9 +54,4 @@ constexpr PipelineReach pipeline_reach(View view) {
     }
 }
 
-/// Every pixel of the view, recorded, row by row from the top (index j * width + i), on `threads`
-/// threads (0: one per hardware thread) as render_image does. The first exception a pixel throws
-/// is rethrown.
-std::vector<PixelRecord> record_pixels(const RenderScene& render_scene, View view, int threads);
-
 }  // namespace raystep

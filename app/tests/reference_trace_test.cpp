@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "app/compare/reference_image.h"
+#include "app/render/tile_renderer.h"
 #include "base/errors/input_error.h"
 #include "base/image/image_io.h"
 #include "base/scene/scene_loader.h"
@@ -127,8 +128,11 @@ TEST_CASE("reference trace: a truncated file is an InputError naming it", "[app]
     const Scene scene =
         parse_scene("size 40 30\ncamera 0 0 5 0 0 0 0 1 0 45\nsphere 0 0 0 1\npoint 0 5 5 1 1 1\n",
                     "cut.test", RAYSTEP_TEST_DATA);
-    write_reference_trace(path, 40, 30, View::full, 1,
-                          record_pixels(prepare_render_scene(scene), View::full, 1));
+    std::vector<PixelRecord> records;
+    RenderOptions options;
+    options.records = &records;
+    render_image(prepare_render_scene(scene), options);
+    write_reference_trace(path, 40, 30, View::full, 1, records);
     fs::resize_file(path, fs::file_size(path) / 2);
 
     try {
