@@ -13,11 +13,11 @@ namespace {
 
 // The one tolerance of the comparison. Two values of a quantity are the same when they are apart
 // by no more than the rounding the reference trace stored the reference's value with
-// (stored_roundoff: 2^-17 for the camera ray and t, 2^-11 for the normal and the
-// barycentrics, 2^-9 for a colour), relative to `scale`, the
-// magnitude of the whole quantity: the largest component of a vector, so that a component near 0
-// of a unit vector is held to the vector's precision, not its own. A difference below that is
-// no difference: the reference's own value could be anywhere within it.
+// (stored_roundoff: about 2^-13 for the camera ray, 2^-17 for t, 2^-11 for the normal and the
+// barycentrics, 2^-9 for a colour), relative to `scale`, the magnitude of the whole quantity: the
+// largest component of a vector, so that a component near 0 of a unit vector is held to the
+// vector's precision, not its own. A difference below that is no difference: the reference's own
+// value could be anywhere within it.
 bool same_within(double ours, double reference, TraceQuantity quantity, double scale) {
     return std::abs(ours - reference) <= stored_roundoff(quantity) * scale;
 }

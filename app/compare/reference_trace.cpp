@@ -98,14 +98,15 @@ std::uint32_t rounded_bits(float value, int bits) {
 }
 
 // The rounded values are stored losslessly but not as they are: the low bits of a float32 are
-// noise to the EXR ZIP compressor, which left the camera ray's direction alone at 3.6 bytes a
-// pixel. Each channel's bit pattern is predicted from its neighbours before it, the one to the
-// left (a), above (b) and above-left (c), by the median edge detector of LOCO-I (JPEG-LS):
-// min(a, b) or max(a, b) where c says an edge runs between them, else a + b - c, exact on a
-// quantity linear in the pixel's position. Only the prediction's error is stored, zigzag-coded
-// so that small errors of either sign have zero high bytes: on smooth quantities it is a few
-// units and ZIP packs it tightly, and an edge costs one pixel, not the two or three of a
-// prediction along the row alone. The first row and column take the missing neighbours as 0.
+// noise to the EXR ZIP compressor, which then packs a smooth quantity little better than a noisy
+// one (docs/measurements/reference-trace.md). Each channel's bit pattern is predicted from its
+// neighbours before it, the one to the left (a), above (b) and above-left (c), by the median edge
+// detector of LOCO-I (JPEG-LS): min(a, b) or max(a, b) where c says an edge runs between them, else
+// a + b - c, exact on a quantity linear in the pixel's position. Only the prediction's error is
+// stored, zigzag-coded so that small errors of either sign have zero high bytes: on smooth
+// quantities it is a few units and ZIP packs it tightly, and an edge costs one pixel, not the two
+// or three of a prediction along the row alone. The first row and column take the missing
+// neighbours as 0.
 std::uint32_t predicted(const std::vector<std::uint32_t>& bits, std::size_t width,
                         std::size_t stride, std::size_t channel, std::size_t pixel) {
     const std::size_t i = pixel % width;
@@ -274,11 +275,9 @@ double stored_value(double value, TraceQuantity quantity) {
 }
 
 double stored_roundoff(TraceQuantity quantity) {
-    const int bits = stored_bits(quantity);
-    return bits >= 23 &&
-                   (quantity == TraceQuantity::primitive || quantity == TraceQuantity::light_reach)
-               ? 0.0
-               : std::ldexp(1.0, -(bits + 1));
+    if (quantity == TraceQuantity::primitive || quantity == TraceQuantity::light_reach) return 0.0;
+    // Rounding to float32 first, then to the bits kept.
+    return std::ldexp(1.0, -(stored_bits(quantity) + 1)) + std::ldexp(1.0, -24);
 }
 
 void write_reference_trace(const fs::path& path, int width, int height, View view,

@@ -32,8 +32,8 @@ int stored_bits(TraceQuantity quantity);
 double stored_value(double value, TraceQuantity quantity);
 
 /// How far a stored value may be from the reference's own, relative to the quantity's
-/// magnitude: 2^-(stored_bits + 1), the rounding of keeping that many bits; 0 for the quantities
-/// stored exactly (the primitive, a light's reach).
+/// magnitude: 2^-24 for rounding it to a float32, and 2^-(stored_bits + 1) for keeping that many
+/// bits of it; 0 for the quantities stored exactly (the primitive, a light's reach).
 double stored_roundoff(TraceQuantity quantity);
 
 /// The reference's values of every pixel of one scene, as a reference trace file holds them:

@@ -1,5 +1,7 @@
 #include "app/cli/trace_comparison.h"
 
+#include <cmath>
+
 #include "app/compare/reference_trace.h"
 #include "base/testing/catch.h"
 
@@ -92,4 +94,16 @@ TEST_CASE("compare_pixel: the rays view compares the camera ray only", "[app]") 
     const TraceComparison comparison = compare_pixel(ours, shaded_hit(), View::rays, kOneLight);
     CHECK(comparison.rows.size() == 2);
     CHECK_FALSE(comparison.first_difference);
+}
+
+TEST_CASE("compare_pixel: a value is the same as itself stored, rounded twice", "[app]") {
+    // Just below a tie of t's 16 stored bits at 1 + 2^-17: float32 rounding moves it onto the
+    // tie, which then rounds away, a little more than half a stored step from where it was.
+    PixelRecord ours = shaded_hit();
+    ours.hit->hit.t = 1.0 + std::ldexp(1.0, -17) - std::ldexp(1.0, -24) + std::ldexp(1.0, -28);
+    PixelRecord stored = ours;
+    stored.hit->hit.t = stored_value(ours.hit->hit.t, TraceQuantity::t);
+    REQUIRE(stored.hit->hit.t == 1.0 + std::ldexp(1.0, -16));
+    CHECK(std::abs(stored.hit->hit.t - ours.hit->hit.t) > std::ldexp(1.0, -17) * stored.hit->hit.t);
+    CHECK_FALSE(compare_pixel(ours, stored, View::depth, kOneLight).first_difference);
 }
