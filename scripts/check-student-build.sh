@@ -5,12 +5,13 @@
 #      (scripts/setup.sh), and scripts/test.sh run as it says.
 #      Every public test must fail with a NotImplemented message and no test binary may crash;
 #      `raystep render` and `raystep trace` must stop with the message of the stub that stopped
-#      them; `raystep check` must report every stage-3 function as not implemented; every
+#      them, `raystep trace --compare` too, having found the reference trace the release ships;
+#      `raystep check` must report every stage-3 function as not implemented; every
 #      `raystep demo` must stop at a stub; `raystep info`, which runs no stage code, must work;
 #      `raystep bench`, the studies' command, is not there.
 #   2. The same release with every stage written (the model submission's manifest files copied
 #      in, nothing else): every command its READMEs name works as written
-#      (scripts/check-student-readme.py).
+#      (scripts/check-student-readme.py), `trace --compare` finding the traces the same among them.
 #   3. A mixed build, RAYSTEP_STUDENT_STAGES=1: the reference stage 2 must call the student's
 #      stage 1, so a render stops at a stage-1 stub.
 #   4. Handing in, on the stubs (so before 2 writes the stages): the release's GitHub Classroom
@@ -104,6 +105,11 @@ check_command "raystep render names the stub" 1 "^raystep: $stub_message" \
     "$bin/raystep" render "$scene" --view normal -o "$release/normal.png"
 check_command "raystep trace stops at the stub" 1 "^stopped: $stub_message" \
     "$bin/raystep" trace "$scene" 1 1 --view normal
+# trace --compare holds a pixel against the reference trace the release ships beside the scene:
+# with every stage a stub it stops at the first one.
+compare_scene=$release/scenes/stage2/perspective-wide.test
+check_command "raystep trace --compare finds the shipped reference trace and stops at the stub" 1 \
+    "^stopped: $stub_message" "$bin/raystep" trace "$compare_scene" 0 0 --view rays --compare
 check_command "raystep check reports every stage-3 function as a stub" 1 \
     "nothing was checked: 7 methods are not implemented" "$bin/raystep" check --stage 3
 check_command "raystep info needs no stage" 0 "^primitives" "$bin/raystep" info "$scene"

@@ -30,6 +30,7 @@ EXPECTED = [
     (r"build/student/bin/raystep_stage[1-9]_tests( .*)?", {0}, r"All tests passed"),
     (RAYSTEP + r" render .* -o (?P<made>\S+)", {0}, r"^wrote "),
     (RAYSTEP + r" compare .*", {0}, r"^pass"),
+    (RAYSTEP + r" trace .* --compare", {0}, r"^the traces are the same$"),
     (RAYSTEP + r" trace .*", {0}, r"^value: "),
     # A right triangle test that is not watertight lets some rays through shared edges (the
     # families' leaks), so a right stage 3 need not pass every case: exit 1, nothing a stub.

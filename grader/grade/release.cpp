@@ -3,6 +3,8 @@
 #include <stdexcept>
 
 #include "app/compare/reference_image.h"
+#include "app/compare/reference_trace.h"
+#include "app/render/pixel_record.h"
 #include "app/render/tile_renderer.h"
 #include "base/image/image_io.h"
 #include "base/scene/scene_loader.h"
@@ -85,13 +87,29 @@ ReleaseSummary make_release(const fs::path& source, const fs::path& output) {
         try {
             const Scene scene = load_scene(entry.path());
             const RenderScene render_scene = prepare_render_scene(scene);
-            for (const std::string& name : reference_views(entry.path())) {
+            // The reference's steps of every pixel, as far as its furthest view takes them,
+            // recorded while that view renders: what `raystep trace --compare` holds a student's
+            // pixel against.
+            const std::vector<std::string> views = reference_views(entry.path());
+            if (views.empty()) continue;
+            std::string furthest = views.front();
+            for (const std::string& name : views) {
+                if (pipeline_reach(*parse_view(name)) > pipeline_reach(*parse_view(furthest)))
+                    furthest = name;
+            }
+            std::vector<PixelRecord> records;
+            for (const std::string& name : views) {
                 RenderOptions options;
                 options.view = *parse_view(name);
+                if (name == furthest) options.records = &records;
                 write_image(render_image(render_scene, options),
                             reference_image_path(output / "scenes" / relative, name));
                 ++summary.reference_images;
             }
+            write_reference_trace(reference_trace_path(output / "scenes" / relative), scene.width,
+                                  scene.height, *parse_view(furthest),
+                                  scene.point_lights.size() + scene.directional_lights.size(),
+                                  records);
         } catch (const std::exception& error) {
             summary.skipped.push_back(relative.string() + ": " + error.what());
         }
