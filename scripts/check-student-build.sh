@@ -5,12 +5,22 @@
 #      (scripts/setup.sh), and scripts/test.sh run as it says.
 #      Every public test must fail with a NotImplemented message and no test binary may crash;
 #      `raystep render` and `raystep trace` must stop with the message of the stub that stopped
-#      them; `raystep check` must report every stage-3 function as not implemented; every
+#      them, `raystep trace --compare` too, having found the reference trace the release ships;
+#      `raystep check` must report every stage-3 function as not implemented; every
 #      `raystep demo` must stop at a stub; `raystep info`, which runs no stage code, must work;
 #      `raystep bench`, the studies' command, is not there; `raystep grade` must run the public
 #      checks of grading/ (every one not implemented) and say that hidden checks exist.
-#   2. A mixed build, RAYSTEP_STUDENT_STAGES=1: the reference stage 2 must call the student's
+#   2. The same release with every stage written (the model submission's manifest files copied
+#      in, nothing else): every command its READMEs name works as written
+#      (scripts/check-student-readme.py), `trace --compare` finding the traces the same among them.
+#   3. A mixed build, RAYSTEP_STUDENT_STAGES=1: the reference stage 2 must call the student's
 #      stage 1, so a render stops at a stage-1 stub.
+#   4. Handing in, on the stubs (so before 2 writes the stages): the release's GitHub Classroom
+#      workflow (.github/workflows/classroom.yml), its `run:` and `command:` lines run in order as
+#      GitHub would (the package installation skipped only where it would need a root this user
+#      lacks), each stage's public tests failing on the stubs, and its points the rubric's;
+#      `raystep submit`'s zip holding exactly the manifests' files, all of which the grader's
+#      unpacker takes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
@@ -21,18 +31,21 @@ release=$(mktemp -d)
 trap 'rm -rf "$release"' EXIT
 rmdir "$release"
 build/release/bin/raystep-grade release "$release" >/dev/null
-for folder in solutions studies grader; do
+for folder in solutions studies grader release; do
     if [ -e "$release/$folder" ]; then
         echo "FAIL the release holds $folder/"
         exit 1
     fi
 done
-for instructors in scripts/test-all.sh scripts/render-all.sh docs/instructor.md; do
-    if [ -e "$release/$instructors" ]; then
-        echo "FAIL the release holds the instructor's $instructors"
-        exit 1
-    fi
-done
+if [ -e "$release/docs/instructor.md" ]; then
+    echo "FAIL the release holds the instructor's guide, docs/instructor.md"
+    exit 1
+fi
+scripts=$(cd "$release/scripts" && ls | tr '\n' ' ')
+if [ "$scripts" != "install-deps.sh setup.sh test.sh " ]; then
+    echo "FAIL the release's scripts/ holds $scripts; a student's are install-deps.sh setup.sh test.sh"
+    exit 1
+fi
 if ! grep -q "^scripts/setup.sh$" "$release/README.md"; then
     echo "FAIL the release's README.md is not the student's (docs/student-README.md)"
     exit 1
@@ -93,6 +106,11 @@ check_command "raystep render names the stub" 1 "^raystep: $stub_message" \
     "$bin/raystep" render "$scene" --view normal -o "$release/normal.png"
 check_command "raystep trace stops at the stub" 1 "^stopped: $stub_message" \
     "$bin/raystep" trace "$scene" 1 1 --view normal
+# trace --compare holds a pixel against the reference trace the release ships beside the scene:
+# with every stage a stub it stops at the first one.
+compare_scene=$release/scenes/stage2/perspective-wide.test
+check_command "raystep trace --compare finds the shipped reference trace and stops at the stub" 1 \
+    "^stopped: $stub_message" "$bin/raystep" trace "$compare_scene" 0 0 --view rays --compare
 check_command "raystep check reports every stage-3 function as a stub" 1 \
     "nothing was checked: 7 methods are not implemented" "$bin/raystep" check --stage 3
 check_command "raystep info needs no stage" 0 "^primitives" "$bin/raystep" info "$scene"
@@ -111,6 +129,122 @@ check_command "raystep grade finds no public check passed" 1 \
 check_command "raystep in a release has no bench: the studies are the instructor's" 2 \
     "no command 'bench' in this build; its commands are: render, [a-z, ]+" \
     "$bin/raystep" bench
+
+# The workflow's steps, read without a YAML library (python3-yaml is not among the packages
+# scripts/install-deps.sh installs): each step's name, its `run:` or `command:` line with the
+# workflow's `${{ env.NAME }}` filled in, and its max-score.
+workflow_steps=$(python3 - "$release/.github/workflows/classroom.yml" <<'PYTHON'
+import re, sys
+env, steps, in_env = {}, [], False
+for line in open(sys.argv[1]):
+    if re.match(r"^env:\s*$", line):
+        in_env = True
+        continue
+    if in_env:
+        setting = re.match(r"^  ([A-Z_]+): (.*)$", line)
+        if setting:
+            env[setting.group(1)] = setting.group(2).strip()
+            continue
+        in_env = False
+    step = re.match(r"^\s+- name: (.*)$", line)
+    if step:
+        steps.append([step.group(1).strip(), "", ""])
+        continue
+    field = re.match(r"^\s+(run|command|max-score): (.*)$", line)
+    if field and steps:
+        value = re.sub(r"\$\{\{ env\.([A-Z_]+) \}\}", lambda m: env[m.group(1)], field.group(2).strip())
+        steps[-1][2 if field.group(1) == "max-score" else 1] = value
+for name, command, points in steps:
+    if command:
+        print(f"{name}\t{command}\t{points}")
+PYTHON
+)
+# The rubric's points of each stage's public checks, which the workflow's max-scores must be.
+rubric_points=$(python3 - "$root/grader/rubric/rubric.json" <<'PYTHON'
+import collections, json, re, sys
+rubric = json.loads(re.sub(r"^\s*//.*$", "", open(sys.argv[1]).read(), flags=re.M))
+points = collections.Counter()
+for check, entry in rubric["checks"].items():
+    if entry.get("visibility", "visible") == "visible" and check.startswith("stage"):
+        points[int(check[5])] += entry["points"]
+print(" ".join(f"{stage}:{points[stage]:g}" for stage in sorted(points)))
+PYTHON
+)
+stages_graded=0
+while IFS=$'\t' read -r name command points; do
+    if [[ "$command" == *install-deps.sh* ]] && [ "$(id -u)" -ne 0 ] && ! sudo -n true 2>/dev/null; then
+        echo "skip workflow step '$name' ($command): installing packages needs root, which this user lacks"
+        continue
+    fi
+    # A step with points grades one stage, the number its command ends with; the others set up.
+    if [ -z "$points" ]; then
+        check_command "workflow step '$name' runs" 0 "" bash -c "cd '$release' && $command"
+        continue
+    fi
+    stage=${command##* }
+    stages_graded=$((stages_graded + 1))
+    if [ "$points" != "$(grep -Eo "(^| )$stage:[0-9.]+" <<<"$rubric_points" | cut -d: -f2)" ]; then
+        echo "FAIL workflow step '$name' gives $points points; the rubric's public checks of stage $stage give $rubric_points"
+        problems=$((problems + 1))
+    fi
+    # As GitHub's command grader runs it: a shell in the repository, only PATH and HOME set. What
+    # follows expects scripts/test.sh's ctest summary; `raystep grade` will print its own.
+    exit_code=0
+    output=$(cd "$release" && env -i PATH="$PATH" HOME="$HOME" sh -c "$command" 2>&1) ||
+        exit_code=$?
+    summary=$(grep -Eo "0% tests passed, [0-9]+ tests failed out of [0-9]+" <<<"$output" || true)
+    label=$(grep -E "^ *stage[0-9]+ += .*\([0-9]+ tests?\)" <<<"$output" | sed 's/  */ /g' || true)
+    if [ "$exit_code" -ne 8 ] || [ -z "$summary" ] || ! grep -Eq "^ ?stage$stage = " <<<"$label" ||
+        [ "$(wc -l <<<"$label")" -ne 1 ]; then
+        echo "FAIL workflow step '$name' ($command): exit $exit_code (expected 8, every test of" \
+            "stage $stage failing on a stub), printed:"
+        echo "$output" | tail -n 20 | sed 's/^/  /'
+        problems=$((problems + 1))
+    else
+        echo "ok   workflow step '$name' ($command, $points points): exit 8, $summary, all" \
+            "labelled stage$stage"
+    fi
+done <<<"$workflow_steps"
+if [ "$stages_graded" -ne "$(ls -d "$release"/stages/*/ | wc -l)" ]; then
+    echo "FAIL the workflow grades $stages_graded stages, the release has $(ls -d "$release"/stages/*/ | wc -l)"
+    problems=$((problems + 1))
+fi
+
+# raystep submit in the release: the zip holds exactly the manifests' files, and the grader's
+# unpacker takes every one of them.
+manifest_files=$(cd "$release" && for manifest in stages/*/manifest.txt; do
+    sed -e 's/^[ \t\r]*//' -e 's/[ \t\r]*$//' -e '/^#/d' -e '/^$/d' -e "s|^|$(dirname "$manifest")/|" "$manifest"
+done | sort)
+check_command "raystep submit from a stage folder lists the files and writes the zip" 0 \
+    "wrote $release/build/submission.zip \([0-9]+ files" \
+    bash -c "cd '$release/stages/2_rays' && '$bin/raystep' submit -o '$release/build/submission.zip'"
+zipped=$(python3 -m zipfile -l "$release/build/submission.zip" | awk 'NR > 1 {print $1}' | sort)
+if [ "$zipped" != "$manifest_files" ]; then
+    echo "FAIL submission.zip does not hold exactly the manifests' files:"
+    diff <(echo "$manifest_files") <(echo "$zipped") | sed 's/^/  /'
+    problems=$((problems + 1))
+else
+    echo "ok   submission.zip holds exactly the $(wc -l <<<"$zipped") files the manifests list"
+fi
+mkdir "$release/unpacked"
+mapfile -t manifest_names < <(xargs -n 1 basename <<<"$manifest_files")
+unpack_exit=0
+listing=$("$root/build/release/bin/raystep-unpack" "$release/unpacked" 1048576 33554432 \
+    "${manifest_names[@]}" <"$release/build/submission.zip") || unpack_exit=$?
+taken=$(grep -c '"taken":true' <<<"$listing" || true)
+if [ "$unpack_exit" -ne 0 ] || [ "$taken" -ne "${#manifest_names[@]}" ]; then
+    echo "FAIL raystep-unpack took $taken of the zip's ${#manifest_names[@]} files (exit $unpack_exit):"
+    echo "$listing" | sed 's/^/  /'
+    problems=$((problems + 1))
+else
+    echo "ok   the grader's unpacker (raystep-unpack) takes all $taken files of the zip"
+fi
+check_command "raystep submit does not replace its zip without --force" 1 "already exists" \
+    bash -c "cd '$release' && '$bin/raystep' submit -o '$release/build/submission.zip'"
+
+if ! scripts/check-student-readme.py "$release" grader/tests/submissions/model/stages; then
+    problems=$((problems + 1))
+fi
 
 cmake -S "$root" -B "$root/build/student-stage1" -G Ninja -DCMAKE_BUILD_TYPE=Release \
     -DRAYSTEP_STUDENT_STAGES=1 -DRAYSTEP_WARNINGS_AS_ERRORS=ON >/dev/null

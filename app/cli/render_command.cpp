@@ -3,8 +3,12 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <stdexcept>
 #include <thread>
+#include <vector>
 
+#include "app/compare/reference_trace.h"
+#include "app/render/pixel_record.h"
 #include "app/render/render_scene.h"
 #include "app/render/terminal.h"
 #include "app/render/tile_renderer.h"
@@ -28,10 +32,20 @@ CLI::App* add_render_command(CLI::App& app, RenderArguments& arguments) {
                      "What to show: the stage whose output you want to see")
         ->check(CLI::IsMember(view_names()));
     add_ray_offset_options(*command, arguments.ray_offset);
+    command->add_option("--trace-data", arguments.trace_data,
+                        "Also write every pixel's steps (camera ray, hit, lights, colours) to this "
+                        "file, the reference trace `trace --compare` reads: a student release "
+                        "ships the reference build's as reference/<scene>.trace.exr");
     return command;
 }
 
 int run_render(const RenderArguments& arguments) {
+    // trace --compare holds a pixel against the scene as it is, ray offset included.
+    if (!arguments.trace_data.empty() && !arguments.ray_offset.rule.empty()) {
+        throw std::invalid_argument(
+            "--trace-data records the scene's own ray offset: leave out "
+            "--ray-offset");
+    }
     Scene scene = load_scene(arguments.scene);
     apply_ray_offset(arguments.ray_offset, scene);
     const View view = *parse_view(arguments.view);
@@ -50,6 +64,8 @@ int run_render(const RenderArguments& arguments) {
     options.label = output.filename().string();
 
     const auto start = std::chrono::steady_clock::now();
+    std::vector<PixelRecord> records;
+    if (!arguments.trace_data.empty()) options.records = &records;
     const RenderScene render_scene = prepare_render_scene(scene);
     const Image image = render_image(render_scene, options);
     const double seconds =
@@ -61,6 +77,12 @@ int run_render(const RenderArguments& arguments) {
                                  : std::max(1u, std::thread::hardware_concurrency());
     std::printf("wrote %s (%d x %d, view %s, %.2f s on %u threads)\n", output.string().c_str(),
                 image.width(), image.height(), arguments.view.c_str(), seconds, threads);
+
+    if (!arguments.trace_data.empty()) {
+        write_reference_trace(arguments.trace_data, scene.width, scene.height, view,
+                              scene.point_lights.size() + scene.directional_lights.size(), records);
+        std::printf("wrote %s (the trace data of every pixel)\n", arguments.trace_data.c_str());
+    }
     return 0;
 }
 

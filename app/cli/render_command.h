@@ -8,10 +8,12 @@
 
 namespace raystep {
 
-/// `raystep render SCENE [-o FILE] [--threads N] [--view VIEW] [--ray-offset RULE [--epsilon E]]`
+/// `raystep render SCENE [-o FILE] [--threads N] [--view VIEW] [--ray-offset RULE [--epsilon E]]
+/// [--trace-data FILE]`
 struct RenderArguments {
     std::string scene;
     std::string output;
+    std::string trace_data;  ///< where to write every pixel's record too; empty: nowhere
     int threads = 0;
     std::string view = "full";
     RayOffsetArguments ray_offset;

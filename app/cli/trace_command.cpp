@@ -2,14 +2,16 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
-#include <random>
 #include <stdexcept>
 
+#include "app/cli/trace_comparison.h"
+#include "app/compare/reference_image.h"
+#include "app/compare/reference_trace.h"
+#include "app/render/pixel_record.h"
 #include "app/render/render_pixel.h"
 #include "app/render/render_scene.h"
+#include "base/errors/input_error.h"
 #include "base/errors/not_implemented.h"
 #include "base/math/to_text.h"
 #include "base/scene/scene_loader.h"
@@ -41,7 +43,8 @@ TraceResult trace_pixel(const TraceArguments& arguments) {
     TraceResult result;
     try {
         const RenderScene render_scene = prepare_render_scene(scene);
-        const Color value = render_pixel(render_scene, view, arguments.x, arguments.y, &log);
+        const Color value =
+            render_pixel(render_scene, view, arguments.x, arguments.y, &log, nullptr);
         log.add("value: " + to_text(value) +
                 (view == View::depth ? " (t; the image scales it to grey)" : ""));
     } catch (const NotImplemented& stub) {
@@ -55,108 +58,125 @@ TraceResult trace_pixel(const TraceArguments& arguments) {
     return result;
 }
 
-// One argument of a command line for the platform's shell, with nothing in it the shell would
-// interpret: POSIX single quotes (each ' becomes '\''), or on Windows double quotes around text
-// that cmd.exe cannot misread.
-std::string shell_argument(const std::string& text) {
-#ifdef _WIN32
-    if (text.find_first_of("\"%^!") != std::string::npos) {
-        throw std::runtime_error("--compare cannot pass " + text +
-                                 " to the reference build: rename it without \" % ^ !");
-    }
-    return "\"" + text + "\"";
-#else
-    std::string quoted = "'";
-    for (const char c : text)
-        quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return quoted + "'";
-#endif
+// The scene's lights as a trace names them, in the order shade_hit takes them.
+std::vector<std::string> light_names(const Scene& scene) {
+    std::vector<std::string> names;
+    for (const PointLight& light : scene.point_lights)
+        names.push_back("point light (line " + std::to_string(light.line) + ")");
+    for (const DirectionalLight& light : scene.directional_lights)
+        names.push_back("directional light (line " + std::to_string(light.line) + ")");
+    return names;
 }
 
-std::string reference_executable(const TraceArguments& arguments) {
-    if (!arguments.reference.empty()) return arguments.reference;
-#ifdef RAYSTEP_REFERENCE_EXECUTABLE
-    return RAYSTEP_REFERENCE_EXECUTABLE;
-#else
-    throw std::runtime_error(
-        "--compare needs the reference build (raystep-reference), which this repository does not "
-        "have; give its path with --reference");
-#endif
+// The reference's trace of the scene, checked against the scene and the pixel as it is now;
+// InputError, naming the file and the problem, when it cannot serve.
+ReferenceTrace reference_trace_for(const TraceArguments& arguments, const Scene& scene, View view) {
+    const std::filesystem::path path = reference_trace_path(arguments.scene);
+    if (!std::filesystem::exists(path)) {
+        throw InputError(
+            arguments.scene, 0,
+            "no reference trace: --compare reads " + path.string() +
+                ", the reference's values of every pixel, which a student release ships for "
+                "its own scenes. A scene of your own has none; the reference build writes one "
+                "(`raystep-reference render SCENE --view full --trace-data " +
+                path.string() + "` in the instructor's repository)");
+    }
+    ReferenceTrace trace = read_reference_trace(path);
+    const std::string file = path.string();
+    if (trace.width != scene.width || trace.height != scene.height) {
+        throw InputError(file, 0,
+                         "recorded for a " + std::to_string(trace.width) + " x " +
+                             std::to_string(trace.height) + " image, but " + arguments.scene +
+                             " is " + std::to_string(scene.width) + " x " +
+                             std::to_string(scene.height) + ": the scene changed since then");
+    }
+    const std::size_t lights = scene.point_lights.size() + scene.directional_lights.size();
+    if (pipeline_reach(trace.view) >= PipelineReach::shading && trace.lights != lights) {
+        throw InputError(file, 0,
+                         "recorded for " + std::to_string(trace.lights) + " lights, but " +
+                             arguments.scene + " has " + std::to_string(lights) +
+                             ": the scene changed since then");
+    }
+    if (pipeline_reach(view) > pipeline_reach(trace.view)) {
+        throw InputError(file, 0,
+                         "it holds the reference's steps as far as the " +
+                             std::string(view_name(trace.view)) + " view takes them; --view " +
+                             arguments.view + " goes further: compare with --view " +
+                             std::string(view_name(trace.view)) + " or a view before it");
+    }
+    return trace;
 }
 
-// A new folder of our own under the system's temporary folder: create_directory fails when the
-// name exists, so no one else's file can be there.
-std::filesystem::path private_folder() {
-    std::random_device entropy;
-    for (int attempt = 0; attempt < 100; ++attempt) {
-        const std::filesystem::path folder =
-            std::filesystem::temp_directory_path() / ("raystep-trace-" + std::to_string(entropy()));
-        if (std::filesystem::create_directory(folder)) return folder;
+// Prints the quantities in three columns, marking the first that differs, and the verdict.
+void print_comparison(const TraceComparison& comparison, const std::string& stop) {
+    std::size_t quantity = std::string("quantity").size();
+    std::size_t ours = std::string("this build").size();
+    for (const TraceRow& row : comparison.rows) {
+        quantity = std::max(quantity, row.quantity.size());
+        ours = std::max(ours, row.ours.size());
     }
-    throw std::runtime_error("cannot create a temporary folder for the reference trace");
-}
-
-// Runs the reference build's trace of the same pixel and returns its lines.
-std::vector<std::string> reference_trace(const TraceArguments& arguments) {
-    const std::string executable = reference_executable(arguments);
-    std::error_code error;
-    if (!std::filesystem::is_regular_file(executable, error)) {
-        throw std::runtime_error("the reference build " + executable + " does not exist");
+    std::printf("   %-*s  %-*s  %s\n", static_cast<int>(quantity), "quantity",
+                static_cast<int>(ours), "this build", "reference");
+    for (std::size_t k = 0; k < comparison.rows.size(); ++k) {
+        const TraceRow& row = comparison.rows[k];
+        std::printf("%s %-*s  %-*s  %s\n", comparison.first_difference == k ? ">>" : "  ",
+                    static_cast<int>(quantity), row.quantity.c_str(), static_cast<int>(ours),
+                    row.ours.c_str(), row.reference.c_str());
     }
-    const std::filesystem::path folder = private_folder();
-    const std::filesystem::path output = folder / "trace.txt";
-    std::string command = shell_argument(executable) + " trace " + shell_argument(arguments.scene) +
-                          " " + std::to_string(arguments.x) + " " + std::to_string(arguments.y) +
-                          " --view " + arguments.view + arguments.ray_offset.command_line() +
-                          " > " + shell_argument(output.string()) + " 2>&1";
-#ifdef _WIN32
-    command = "\"" + command + "\"";  // cmd /c strips one outer pair of quotes
-#endif
-    // The reference exits 1 when its trace stops early; its lines are what matter.
-    std::system(command.c_str());
-
-    std::vector<std::string> lines;
-    std::ifstream in(output);
-    for (std::string line; std::getline(in, line);)
-        lines.push_back(line);
-    in.close();
-    std::filesystem::remove_all(folder, error);
-    if (lines.empty()) throw std::runtime_error("the reference build printed no trace: " + command);
-    return lines;
-}
-
-// Prints both traces in two columns, marking the first line that differs; true when they are
-// the same.
-bool print_side_by_side(const std::vector<std::string>& ours,
-                        const std::vector<std::string>& reference) {
-    std::size_t width = std::string("this build").size();
-    for (const std::string& line : ours)
-        width = std::max(width, line.size());
-
-    const std::size_t rows = std::max(ours.size(), reference.size());
-    std::size_t first_difference = rows;
-    for (std::size_t k = 0; k < rows; ++k) {
-        const std::string left = k < ours.size() ? ours[k] : "";
-        const std::string right = k < reference.size() ? reference[k] : "";
-        if (left != right) {
-            first_difference = k;
-            break;
-        }
-    }
-
-    std::printf("   %-*s | %s\n", static_cast<int>(width), "this build", "reference");
-    for (std::size_t k = 0; k < rows; ++k) {
-        const std::string left = k < ours.size() ? ours[k] : "";
-        const std::string right = k < reference.size() ? reference[k] : "";
-        std::printf("%s %-*s | %s\n", k == first_difference ? ">>" : "  ", static_cast<int>(width),
-                    left.c_str(), right.c_str());
-    }
-    if (first_difference == rows) {
+    if (comparison.first_difference) {
+        const TraceRow& row = comparison.rows[*comparison.first_difference];
+        std::printf("first difference: %s, %s here against %s in the reference\n",
+                    row.quantity.c_str(), row.ours.c_str(), row.reference.c_str());
+    } else if (!comparison.stopped) {
         std::printf("the traces are the same\n");
-        return true;
     }
-    std::printf("first difference at line %zu (marked >>)\n", first_difference + 1);
-    return false;
+    if (comparison.stopped) std::printf("stopped: %s\n", stop.c_str());
+}
+
+// trace --compare: 0 when this build's pixel is the reference's, 1 when it differs or a stub
+// stopped it, 2 when there is nothing to compare with (bad input).
+int compare_with_reference(const TraceArguments& arguments) {
+    if (!arguments.ray_offset.rule.empty()) {
+        std::fprintf(stderr,
+                     "raystep: --compare holds this build against the reference's trace, "
+                     "recorded with the scene's own ray offset: leave out --ray-offset\n");
+        return 2;
+    }
+    const Scene scene = load_scene(arguments.scene);
+    const View view = *parse_view(arguments.view);
+    ReferenceTrace reference;
+    try {
+        if (arguments.x < 0 || arguments.x >= scene.width || arguments.y < 0 ||
+            arguments.y >= scene.height) {
+            throw InputError(arguments.scene, 0,
+                             "pixel (" + std::to_string(arguments.x) + ", " +
+                                 std::to_string(arguments.y) + ") is outside its " +
+                                 std::to_string(scene.width) + " x " +
+                                 std::to_string(scene.height) + " image");
+        }
+        reference = reference_trace_for(arguments, scene, view);
+    } catch (const InputError& error) {
+        std::fprintf(stderr, "raystep: %s\n", error.what());
+        return 2;
+    }
+
+    PixelRecord ours;
+    std::string stop;
+    try {
+        const RenderScene render_scene = prepare_render_scene(scene);
+        render_pixel(render_scene, view, arguments.x, arguments.y, nullptr, &ours);
+    } catch (const std::exception& error) {
+        stop = error.what();
+    }
+    std::printf("pixel (%d, %d) of %s, view %s, against %s\n", arguments.x, arguments.y,
+                arguments.scene.c_str(), arguments.view.c_str(),
+                reference_trace_path(arguments.scene).string().c_str());
+    TraceComparison comparison =
+        compare_pixel(ours, reference.at(arguments.x, arguments.y), view, light_names(scene));
+    // An error after the last step the view takes (none do today) still stops the trace.
+    comparison.stopped = comparison.stopped || !stop.empty();
+    print_comparison(comparison, stop);
+    return comparison.first_difference || comparison.stopped ? 1 : 0;
 }
 
 }  // namespace
@@ -172,20 +192,16 @@ CLI::App* add_trace_command(CLI::App& app, TraceArguments& arguments) {
     command->add_option("--view", arguments.view, "Which view's computation to trace")
         ->check(CLI::IsMember(view_names()));
     command->add_flag("--compare", arguments.compare,
-                      "Print the reference build's trace beside this build's, marking the first "
-                      "line where they differ");
-    command->add_option("--reference", arguments.reference,
-                        "The reference raystep to compare with (default: the one built here)");
+                      "Hold this build's values of the pixel against the reference's, shipped "
+                      "beside the scene as reference/<scene>.trace.exr, and name the first that "
+                      "differs");
     add_ray_offset_options(*command, arguments.ray_offset);
     return command;
 }
 
 int run_trace(const TraceArguments& arguments) {
+    if (arguments.compare) return compare_with_reference(arguments);
     const TraceResult ours = trace_pixel(arguments);
-    if (arguments.compare) {
-        const bool same = print_side_by_side(ours.lines, reference_trace(arguments));
-        return same && !ours.stopped ? 0 : 1;
-    }
     for (const std::string& line : ours.lines)
         std::printf("%s\n", line.c_str());
     return ours.stopped ? 1 : 0;

@@ -8,22 +8,24 @@
 
 namespace raystep {
 
-/// `raystep trace SCENE X Y [--view VIEW] [--ray-offset RULE [--epsilon E]] [--compare]
-/// [--reference PATH]`
+/// `raystep trace SCENE X Y [--view VIEW] [--ray-offset RULE [--epsilon E]] [--compare]`
 struct TraceArguments {
     std::string scene;
     int x = 0;
     int y = 0;
     std::string view = "full";
     bool compare = false;
-    std::string reference;  ///< the reference build's raystep; empty means the one built here
     RayOffsetArguments ray_offset;
 };
 
 CLI::App* add_trace_command(CLI::App& app, TraceArguments& arguments);
 
-/// Prints the trace (or, with --compare, both traces side by side). Exit code 0; 1 when a stub or
-/// an error stopped the trace, or when --compare found the traces differ.
+/// Prints the trace: exit code 0, or 1 when a stub or an error stopped it. With --compare, the
+/// pixel's values beside the reference's from the scene's reference trace
+/// (reference_trace_path), step by step, naming the first that differs: 0 when they are the
+/// same, 1 when they differ or a stub stopped this build, 2 when there is no usable reference
+/// trace for the scene and pixel (none shipped, a truncated or foreign file, a pixel outside the
+/// image, a scene changed since the trace was written).
 int run_trace(const TraceArguments& arguments);
 
 }  // namespace raystep

@@ -73,6 +73,10 @@ fs::path reference_image_path(const fs::path& scene, std::string_view view) {
            (scene.stem().string() + "." + std::string(view) + ".png");
 }
 
+fs::path reference_trace_path(const fs::path& scene) {
+    return scene.parent_path() / "reference" / (scene.stem().string() + ".trace.exr");
+}
+
 fs::path find_reference_image(const fs::path& image, const std::string& view) {
     std::string name = image.stem().string();
     if (!view.empty() && !ends_with(name, "." + view)) name += "." + view;

@@ -12,6 +12,11 @@ namespace raystep {
 std::filesystem::path reference_image_path(const std::filesystem::path& scene,
                                            std::string_view view);
 
+/// Where the student release keeps the reference's per-pixel trace of a scene, the values `raystep
+/// trace --compare` holds a pixel against (app/compare/reference_trace.h): `<scene name>.trace.exr`
+/// in the same reference/ folder (scenes/stage2/reference/orthographic.trace.exr).
+std::filesystem::path reference_trace_path(const std::filesystem::path& scene);
+
 /// The views of a scene the release renders by the reference: those its `# views:` line lists,
 /// or `full` when it has none. An unreadable scene has none.
 std::vector<std::string> reference_views(const std::filesystem::path& scene);

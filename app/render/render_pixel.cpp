@@ -81,10 +81,13 @@ Color direction_color(const Vec3& direction) {
 
 // The finished image: stage 6's colour, and where something reflects, stage 7's recursion over
 // it. The eye ray's hit is already known; every later ray is found and shaded here.
+// The record gets the eye ray's shading only: the steps a trace compares.
 Color full_colour(const RenderScene& render_scene, const Ray& eye_ray,
-                  const std::optional<PrimitiveHit>& eye_hit, TraceLog* trace) {
+                  const std::optional<PrimitiveHit>& eye_hit, TraceLog* trace,
+                  PixelRecord* record) {
     if (render_scene.bounces == 0) {
-        return eye_hit ? shade_hit(render_scene, eye_ray, *eye_hit, trace).local : Color(0.0);
+        return eye_hit ? shade_hit(render_scene, eye_ray, *eye_hit, trace, record).local
+                       : Color(0.0);
     }
     int rays = 0;
     const ShadeFunction shade = [&](const Ray& ray) -> std::optional<ShadedHit> {
@@ -98,7 +101,7 @@ Color full_colour(const RenderScene& render_scene, const Ray& eye_ray,
                             : std::string(" leaves the scene")));
         }
         if (!hit) return std::nullopt;
-        return shade_hit(render_scene, ray, *hit, trace);
+        return shade_hit(render_scene, ray, *hit, trace, rays == 1 ? record : nullptr);
     };
     const Color colour = radiance(shade, eye_ray, render_scene.bounces, render_scene.ray_offset);
     if (trace) trace->add("colour " + to_text(colour));
@@ -107,9 +110,11 @@ Color full_colour(const RenderScene& render_scene, const Ray& eye_ray,
 
 }  // namespace
 
-Color render_pixel(const RenderScene& render_scene, View view, int i, int j, TraceLog* trace) {
+Color render_pixel(const RenderScene& render_scene, View view, int i, int j, TraceLog* trace,
+                   PixelRecord* record) {
     // Stage 2: the camera ray
     const Ray ray = camera_ray(render_scene, i, j);
+    if (record) record->camera_ray = ray;
     if (trace) {
         trace->add("camera ray: origin " + to_text(ray.origin) + " direction " +
                    to_text(ray.direction) + " t in [" + to_text(ray.t_min) + ", " +
@@ -121,6 +126,10 @@ Color render_pixel(const RenderScene& render_scene, View view, int i, int j, Tra
     if (trace) trace_primitives(render_scene, ray, *trace);
     TraversalStats cost;
     const std::optional<PrimitiveHit> closest = scene_closest_hit(render_scene, ray, &cost);
+    if (record) {
+        record->hit_searched = true;
+        record->hit = closest;
+    }
     if (trace) {
         if (render_scene.bvh) {
             trace->add("BVH: " + std::to_string(cost.nodes) + " nodes visited, " +
@@ -150,9 +159,12 @@ Color render_pixel(const RenderScene& render_scene, View view, int i, int j, Tra
                     closest->hit.gamma};
         case View::shaded:
             if (!closest) return Color(0.0);
-            return shade_hit(render_scene, ray, *closest, trace).local;
-        case View::full:
-            return full_colour(render_scene, ray, closest, trace);
+            return shade_hit(render_scene, ray, *closest, trace, record).local;
+        case View::full: {
+            const Color colour = full_colour(render_scene, ray, closest, trace, record);
+            if (record) record->full = colour;
+            return colour;
+        }
         case View::rays:
             break;
     }

@@ -34,13 +34,13 @@ std::string light_name(const char* kind, std::uint32_t line) {
     return std::string(kind) + " light (line " + std::to_string(line) + ")";
 }
 
-// One light at the point: its sample, or nothing when it cannot reach the point.
-std::optional<LightSample> reaching(const RenderScene& render_scene, const SurfacePoint& point,
-                                    const LightSample& light, const char* kind, std::uint32_t line,
-                                    TraceLog* trace) {
+// Whether one light reaches the point.
+LightReach reach_of(const RenderScene& render_scene, const SurfacePoint& point,
+                    const LightSample& light, const char* kind, std::uint32_t line,
+                    TraceLog* trace) {
     if (glm::dot(point.normal, light.direction) <= 0.0) {
         if (trace) trace->add(light_name(kind, line) + ": behind the surface, no shadow ray");
-        return std::nullopt;
+        return LightReach::behind;
     }
     const Ray shadow = shadow_ray(point, light, render_scene.ray_offset);
     const bool blocked = scene_occluded(render_scene, shadow);
@@ -50,8 +50,7 @@ std::optional<LightSample> reaching(const RenderScene& render_scene, const Surfa
                    to_text(light.intensity));
         trace->add("  shadow ray " + describe(shadow) + ": " + blocker(render_scene, shadow));
     }
-    if (blocked) return std::nullopt;
-    return light;
+    return blocked ? LightReach::blocked : LightReach::reaches;
 }
 
 // The diffuse and specular parts of one light's term, each from blinn_phong with the other
@@ -69,7 +68,7 @@ void trace_terms(const Material& material, const SurfacePoint& point, const Ligh
 }  // namespace
 
 ShadedHit shade_hit(const RenderScene& render_scene, const Ray& ray, const PrimitiveHit& hit,
-                    TraceLog* trace) {
+                    TraceLog* trace, PixelRecord* record) {
     const Scene& scene = *render_scene.scene;
     const ObjectAttributes& attributes = attributes_of(render_scene, hit.kind, hit.index);
     const Material& material = scene.materials[attributes.material];
@@ -82,20 +81,21 @@ ShadedHit shade_hit(const RenderScene& render_scene, const Ray& ray, const Primi
 
     std::vector<LightSample> visible;
     std::vector<std::string> names;
-    for (const PointLight& light : scene.point_lights) {
-        const LightSample sample = sample_light(light, point.position);
-        if (reaching(render_scene, point, sample, "point", light.line, trace)) {
-            visible.push_back(sample);
-            if (trace) names.push_back(light_name("point", light.line));
+    const auto consider = [&](const LightSample& sample, const char* kind, std::uint32_t line) {
+        const LightReach reach = reach_of(render_scene, point, sample, kind, line, trace);
+        if (record) {
+            record->lights.push_back({reach, reach == LightReach::reaches
+                                                 ? blinn_phong(material, point, sample)
+                                                 : Color(0.0)});
         }
-    }
-    for (const DirectionalLight& light : scene.directional_lights) {
-        const LightSample sample = sample_light(light);
-        if (reaching(render_scene, point, sample, "directional", light.line, trace)) {
-            visible.push_back(sample);
-            if (trace) names.push_back(light_name("directional", light.line));
-        }
-    }
+        if (reach != LightReach::reaches) return;
+        visible.push_back(sample);
+        if (trace) names.push_back(light_name(kind, line));
+    };
+    for (const PointLight& light : scene.point_lights)
+        consider(sample_light(light, point.position), "point", light.line);
+    for (const DirectionalLight& light : scene.directional_lights)
+        consider(sample_light(light), "directional", light.line);
 
     const Color local = local_shading(material, point, visible);
     if (trace) {
@@ -106,6 +106,7 @@ ShadedHit shade_hit(const RenderScene& render_scene, const Ray& ray, const Primi
         }
         trace->add("local colour " + to_text(local));
     }
+    if (record) record->local = local;
     return {point, local, material.specular};
 }
 

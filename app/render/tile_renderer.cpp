@@ -146,8 +146,20 @@ Image render_pixels(int width, int height, const PixelFunction& pixel, int threa
 Image render_image(const RenderScene& render_scene, const RenderOptions& options) {
     const Scene& scene = *render_scene.scene;
     const View view = options.view;
-    const PixelFunction pixel = [&render_scene, view](int i, int j) {
-        return render_pixel(render_scene, view, i, j, nullptr);
+    std::vector<PixelRecord>* records = options.records;
+    if (records) {
+        records->assign(
+            static_cast<std::size_t>(scene.width) * static_cast<std::size_t>(scene.height),
+            PixelRecord{});
+    }
+    // Each pixel writes only its own record, so the threads share nothing.
+    const PixelFunction pixel = [&render_scene, view, records, &scene](int i, int j) {
+        PixelRecord* record =
+            records
+                ? &(*records)[static_cast<std::size_t>(j) * static_cast<std::size_t>(scene.width) +
+                              static_cast<std::size_t>(i)]
+                : nullptr;
+        return render_pixel(render_scene, view, i, j, nullptr, record);
     };
     ProgressBar bar(options.label,
                     static_cast<std::size_t>(scene.width) * static_cast<std::size_t>(scene.height),

@@ -2,7 +2,9 @@
 
 #include <functional>
 #include <string>
+#include <vector>
 
+#include "app/render/pixel_record.h"
 #include "app/render/render_scene.h"
 #include "app/render/view.h"
 #include "base/image/image.h"
@@ -14,6 +16,9 @@ struct RenderOptions {
     int threads = 0;                  ///< worker threads; 0 means one per hardware thread
     bool progress = false;            ///< draw a progress bar on stderr
     std::string label = "rendering";  ///< what the progress bar calls this render
+    /// When given, filled with every pixel's record as it is rendered, row by row from the top
+    /// (j * width + i): the values of its steps, which a reference trace stores.
+    std::vector<PixelRecord>* records = nullptr;
 };
 
 /// The colour of pixel (i, j), column i from the left and row j from the top. It is called from

@@ -22,7 +22,7 @@ const std::string kCentreCamera = "size 1 1\ncamera 0 0 5 0 0 0 0 1 0 45\n";
 
 Color pixel(const std::string& text, View view, TraceLog* trace = nullptr) {
     const Scene scene = parse_scene(text, "shading.test", ".");
-    return render_pixel(prepare_render_scene(scene), view, 0, 0, trace);
+    return render_pixel(prepare_render_scene(scene), view, 0, 0, trace, nullptr);
 }
 
 bool has_line_starting(const TraceLog& trace, const std::string& start) {

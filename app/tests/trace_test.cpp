@@ -14,7 +14,7 @@ std::vector<std::string> trace(const std::string& text, View view, int x, int y)
     const Scene scene = parse_scene(text, "trace.test", RAYSTEP_TEST_DATA);
     const RenderScene render_scene = prepare_render_scene(scene);
     TraceLog log;
-    render_pixel(render_scene, view, x, y, &log);
+    render_pixel(render_scene, view, x, y, &log, nullptr);
     return log.lines();
 }
 

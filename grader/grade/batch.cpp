@@ -5,6 +5,7 @@
 #include <fstream>
 #include <map>
 
+#include "grader/grade/merge_shards.h"
 #include "grader/grade/report_folders.h"
 #include "grader/grade/report_json.h"
 #include "grader/grade/submission.h"
@@ -18,17 +19,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kClassCsv = "grades.csv";
-
-// A report written completely by an earlier run, or nothing.
-std::optional<GradeReport> finished_report(const fs::path& folder) {
-    std::ifstream in(finished_report_file(folder));
-    if (!in) return std::nullopt;
-    try {
-        return report_from_json(nlohmann::json::parse(in));
-    } catch (const std::exception&) {
-        return std::nullopt;
-    }
-}
 
 std::string csv_field(const std::string& text) {
     if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
@@ -57,7 +47,8 @@ std::vector<ClassEntry> class_submissions(const fs::path& folder, const fs::path
     std::sort(paths.begin(), paths.end());
     std::vector<ClassEntry> entries;
     // The class's own files in OUT are taken before any student's name.
-    std::map<std::string, int> taken = {{kClassCsv, 1}};
+    std::map<std::string, int> taken = {{kClassCsv, 1},
+                                        {shard_record_file("").filename().string(), 1}};
     for (const fs::path& path : paths) {
         const std::string base = submission_name(path);
         const int seen = ++taken[base];
@@ -92,14 +83,24 @@ std::string grades_csv(const std::vector<GradeReport>& reports) {
 BatchTally grade_class(const BatchOptions& options, const Rubric& rubric,
                        const ProbeToolchain& toolchain) {
     const std::vector<ClassEntry> submissions = class_submissions(options.folder, options.output);
+    std::vector<ClassEntry> mine;
+    for (std::size_t k = 0; k < submissions.size(); ++k) {
+        if (options.shard.holds(k)) mine.push_back(submissions[k]);
+    }
+    fs::create_directories(options.output);
+    if (options.shard.count > 1) {
+        ShardRecord record{options.shard.index, options.shard.count, submissions.size(), {}};
+        for (const ClassEntry& entry : mine)
+            record.students.push_back(entry.name);
+        write_shard_record(record, options.output);
+    }
     BatchTally tally;
     std::vector<GradeReport> reports;
-    for (std::size_t k = 0; k < submissions.size(); ++k) {
-        const ClassEntry& entry = submissions[k];
+    for (std::size_t k = 0; k < mine.size(); ++k) {
+        const ClassEntry& entry = mine[k];
         const fs::path folder = options.output / entry.name;
         if (options.progress) {
-            std::fprintf(stderr, "\r\033[K[%zu/%zu] %s", k + 1, submissions.size(),
-                         entry.name.c_str());
+            std::fprintf(stderr, "\r\033[K[%zu/%zu] %s", k + 1, mine.size(), entry.name.c_str());
         }
         if (std::optional<GradeReport> done = finished_report(folder)) {
             reports.push_back(std::move(*done));
@@ -111,6 +112,7 @@ BatchTally grade_class(const BatchOptions& options, const Rubric& rubric,
             one.submission = entry.submission;
             one.output = folder;
             one.jobs = options.jobs;
+            one.skip_speed = options.skip_speed;
             one.reference_probe = options.reference_probe;
             one.reproduce = "raystep-grade submission " + entry.submission.string();
             GradeReport report = grade_submission(one, rubric, toolchain);
@@ -125,13 +127,16 @@ BatchTally grade_class(const BatchOptions& options, const Rubric& rubric,
         }
     }
     if (options.progress) std::fputs("\r\033[K", stderr);
-    fs::create_directories(options.output);
-    std::ofstream csv(options.output / kClassCsv, std::ios::binary);
+    write_grades_csv(reports, options.output);
+    return tally;
+}
+
+void write_grades_csv(const std::vector<GradeReport>& reports, const fs::path& output) {
+    fs::create_directories(output);
+    std::ofstream csv(output / kClassCsv, std::ios::binary);
     csv << grades_csv(reports);
     csv.close();
-    if (!csv)
-        throw std::runtime_error((options.output / kClassCsv).string() + ": cannot be written");
-    return tally;
+    if (!csv) throw std::runtime_error((output / kClassCsv).string() + ": cannot be written");
 }
 
 }  // namespace raystep::grade

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "grader/grade/grade_submission.h"
+#include "grader/grade/shard.h"
 
 namespace raystep::grade {
 
@@ -12,7 +13,9 @@ struct BatchOptions {
     std::filesystem::path folder;  ///< one entry per student: a folder or a .zip
     std::filesystem::path output;  ///< OUT/<student>/ per student, OUT/grades.csv for the class
     int jobs = 1;
-    bool progress = false;  ///< a progress line on stderr
+    bool progress = false;    ///< a progress line on stderr
+    bool skip_speed = false;  ///< leave the speed checks out (--no-speed)
+    Shard shard;              ///< grade only this slice of the class (--shard I/N)
     std::filesystem::path reference_probe;
 };
 
@@ -34,8 +37,10 @@ std::vector<ClassEntry> class_submissions(const std::filesystem::path& folder,
 /// report.json is already complete is not graded again, so a batch stopped halfway picks up where
 /// it stopped. A submission that breaks the grader itself (which should not happen) is reported on
 /// stderr and skipped, and the rest go on. Writes OUT/grades.csv: one row per student with the
-/// total and each stage's score. Returns the number of submissions graded now, skipped (already
-/// done), and failed.
+/// total and each stage's score. With a shard other than 1/1 it grades only the shard's
+/// submissions, and OUT/grades.csv has only theirs; OUT/shard.json says which they are, for
+/// `batch --merge` (merge_shards.h). Returns the number of submissions graded now, skipped
+/// (already done), and failed.
 struct BatchTally {
     std::size_t graded = 0;
     std::size_t resumed = 0;
@@ -47,5 +52,8 @@ BatchTally grade_class(const BatchOptions& options, const Rubric& rubric,
 /// The class CSV from the students' reports: header and one row each, fields quoted as RFC 4180
 /// wants where they hold a comma, a quote or a line break.
 std::string grades_csv(const std::vector<GradeReport>& reports);
+
+/// Writes grades_csv(reports) to OUT/grades.csv; throws naming the file when it cannot.
+void write_grades_csv(const std::vector<GradeReport>& reports, const std::filesystem::path& output);
 
 }  // namespace raystep::grade

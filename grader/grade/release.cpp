@@ -3,6 +3,8 @@
 #include <stdexcept>
 
 #include "app/compare/reference_image.h"
+#include "app/compare/reference_trace.h"
+#include "app/render/pixel_record.h"
 #include "app/render/tile_renderer.h"
 #include "base/image/image_io.h"
 #include "base/scene/scene_loader.h"
@@ -17,19 +19,28 @@ namespace {
 // The student's README, written as the release's README.md in place of the instructor's.
 const fs::path kStudentReadme = "docs/student-README.md";
 
+// GitHub Classroom's autograding workflow, kept out of the instructor's .github/ so that it grades
+// students' pushes and never the instructor's; the release holds it where GitHub runs it.
+const fs::path kClassroomWorkflow = "release/github/classroom.yml";
+const fs::path kReleaseWorkflow = ".github/workflows/classroom.yml";
+
 // What a student's repository leaves out, relative to the repository's root: the instructor's
-// folders, guide, README and scripts (the student's are scripts/setup.sh and scripts/test.sh).
+// folders, guide, README and scripts. Of scripts/ only the students' own are kept, so that an
+// instructor's script added later stays out without anyone listing it.
 bool withheld(const fs::path& relative) {
     const std::string first = relative.begin()->string();
     if (first == "solutions" || first == "studies" || first == "grader" || first == ".git" ||
-        first == ".ci" || first == "build" || first == "out") {
+        first == ".ci" || first == "build" || first == "out" || first == "release") {
         return true;
     }
-    for (const char* instructors :
-         {"README.md", "docs/instructor.md", "scenes/meshes", "scripts/render-all.sh",
-          "scripts/test-all.sh", "scripts/check-student-build.sh", "scripts/check-format.py",
-          "scripts/check-layers.py", "scripts/check-doc-paths.py",
-          "scripts/make-watertight-scene.py"}) {
+    if (first == "scripts" && relative != "scripts") {
+        for (const char* students :
+             {"scripts/setup.sh", "scripts/test.sh", "scripts/install-deps.sh"}) {
+            if (relative == fs::path(students)) return false;
+        }
+        return true;
+    }
+    for (const char* instructors : {"README.md", "docs/instructor.md", "scenes/meshes"}) {
         if (relative == fs::path(instructors)) return true;
     }
     return relative == kStudentReadme;
@@ -67,6 +78,9 @@ ReleaseSummary make_release(const fs::path& source, const fs::path& output) {
     summary.files = copy_tree(source, output);
     fs::copy_file(source / kStudentReadme, output / "README.md");
     ++summary.files;
+    fs::create_directories((output / kReleaseWorkflow).parent_path());
+    fs::copy_file(source / kClassroomWorkflow, output / kReleaseWorkflow);
+    ++summary.files;
 
     for (const auto& entry : fs::recursive_directory_iterator(source / "scenes")) {
         if (entry.path().extension() != ".test") continue;
@@ -74,13 +88,29 @@ ReleaseSummary make_release(const fs::path& source, const fs::path& output) {
         try {
             const Scene scene = load_scene(entry.path());
             const RenderScene render_scene = prepare_render_scene(scene);
-            for (const std::string& name : reference_views(entry.path())) {
+            // The reference's steps of every pixel, as far as its furthest view takes them,
+            // recorded while that view renders: what `raystep trace --compare` holds a student's
+            // pixel against.
+            const std::vector<std::string> views = reference_views(entry.path());
+            if (views.empty()) continue;
+            std::string furthest = views.front();
+            for (const std::string& name : views) {
+                if (pipeline_reach(*parse_view(name)) > pipeline_reach(*parse_view(furthest)))
+                    furthest = name;
+            }
+            std::vector<PixelRecord> records;
+            for (const std::string& name : views) {
                 RenderOptions options;
                 options.view = *parse_view(name);
+                if (name == furthest) options.records = &records;
                 write_image(render_image(render_scene, options),
                             reference_image_path(output / "scenes" / relative, name));
                 ++summary.reference_images;
             }
+            write_reference_trace(reference_trace_path(output / "scenes" / relative), scene.width,
+                                  scene.height, *parse_view(furthest),
+                                  scene.point_lights.size() + scene.directional_lights.size(),
+                                  records);
         } catch (const std::exception& error) {
             summary.skipped.push_back(relative.string() + ": " + error.what());
         }

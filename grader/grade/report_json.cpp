@@ -1,7 +1,10 @@
 #include "grader/grade/report_json.h"
 
 #include <cmath>
+#include <fstream>
 #include <stdexcept>
+
+#include "grader/grade/report_folders.h"
 
 namespace raystep::grade {
 
@@ -130,6 +133,16 @@ GradeReport report_from_json(const nlohmann::json& j) {
         report.checks.push_back(std::move(check));
     }
     return report;
+}
+
+std::optional<GradeReport> finished_report(const std::filesystem::path& output) {
+    std::ifstream in(finished_report_file(output));
+    if (!in) return std::nullopt;
+    try {
+        return report_from_json(nlohmann::json::parse(in));
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
 }
 
 }  // namespace raystep::grade

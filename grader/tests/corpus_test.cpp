@@ -20,6 +20,8 @@
 #include <thread>
 #include <vector>
 
+#include <sys/wait.h>
+
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
@@ -430,4 +432,57 @@ TEST_CASE(
     }
     const std::string csv = read_text(home / "grades/grades.csv");
     CHECK(std::count(csv.begin(), csv.end(), '\n') == 1 + static_cast<long>(expected.size()));
+}
+
+TEST_CASE(
+    "a class graded as three shards and merged has one row per student as one batch does, and a "
+    "missing shard and a shard graded with other checks are warned of",
+    "[corpus]") {
+    const fs::path root = kWork / "shards";
+    fs::remove_all(root);
+    const fs::path class_folder = root / "submissions";
+    // Submissions that need no build, so that the test is about sharding, not grading.
+    for (const std::string name : {"ana", "ben", "chloe", "dev", "eli"})
+        fs::create_directories(class_folder / name);
+    std::ofstream(class_folder / "essay.zip") << "My ray tracer is in my other folder.\n";
+    const auto run = [&](const std::string& arguments, const std::string& log) {
+        const std::string command = "cd " + shell_quoted(root) + " && " +
+                                    shell_quoted(RAYSTEP_GRADE_PROGRAM) + " batch " + arguments +
+                                    " > " + log + " 2>&1";
+        const int status = std::system(command.c_str());
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    };
+    REQUIRE(run("submissions -o whole --no-speed", "whole.log") == 0);
+    for (int shard = 1; shard <= 3; ++shard) {
+        const std::string i = std::to_string(shard);
+        REQUIRE(run("submissions -o shard" + i + " --no-speed --shard " + i + "/3",
+                    "shard" + i + ".log") == 0);
+    }
+    // Each shard graded two of the six, round robin: shard 1 the first and fourth by name.
+    const nlohmann::json first = nlohmann::json::parse(read_text(root / "shard1/shard.json"));
+    CHECK(first.at("students") == nlohmann::json({"ana", "dev"}));
+
+    const int merged = run("--merge shard1 shard2 shard3 -o merged", "merged.log");
+    INFO(read_text(root / "merged.log"));
+    CHECK(merged == 0);
+    // The same rows as one batch's, but for the last field, the seconds each took.
+    const auto rows_without_seconds = [&](const fs::path& csv) {
+        std::vector<std::string> rows;
+        std::ifstream in(csv);
+        for (std::string line; std::getline(in, line);)
+            rows.push_back(line.substr(0, line.rfind(',')));
+        return rows;
+    };
+    const std::vector<std::string> whole = rows_without_seconds(root / "whole/grades.csv");
+    CHECK(whole.size() == 7);
+    CHECK(rows_without_seconds(root / "merged/grades.csv") == whole);
+
+    CHECK(run("--merge shard1 shard3 -o partial", "partial.log") == 1);
+    CHECK_THAT(read_text(root / "partial.log"),
+               Catch::Matchers::Contains("shard 2/3 is missing: its students are not in"));
+
+    REQUIRE(run("submissions -o shard2-speed --shard 2/3", "speed.log") == 0);
+    CHECK(run("--merge shard1 shard2-speed shard3 -o mixed", "mixed.log") == 1);
+    CHECK_THAT(read_text(root / "mixed.log"),
+               Catch::Matchers::Contains("was graded with other checks or points than ana"));
 }

@@ -5,7 +5,9 @@
 #include <chrono>
 #include <cstdio>
 #include <exception>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -16,8 +18,10 @@
 #include "app/report/console_summary.h"
 #include "grader/grade/batch.h"
 #include "grader/grade/grade_submission.h"
+#include "grader/grade/merge_shards.h"
 #include "grader/grade/release.h"
 #include "grader/grade/release_grading.h"
+#include "grader/grade/shard.h"
 #include "grader/grade/write_reports.h"
 #include "grader/sandbox/sandbox.h"
 
@@ -103,14 +107,33 @@ struct BatchArguments {
     std::string output = "grades";
     int jobs = default_jobs();
     std::string rubric = RAYSTEP_RUBRIC;
+    bool no_speed = false;
+    std::string shard = "1/1";
+    std::vector<std::string> merge;
 };
 
+// batch --merge: the shards' folders put back together into one grades.csv.
+int merge_many(const BatchArguments& arguments) {
+    std::vector<fs::path> folders(arguments.merge.begin(), arguments.merge.end());
+    const MergedClass merged = merge_shards(folders);
+    write_grades_csv(merged.reports, fs::absolute(arguments.output));
+    for (const std::string& warning : merged.warnings)
+        std::fprintf(stderr, "raystep-grade: warning: %s\n", warning.c_str());
+    std::printf("merged %zu shard folders: %zu students in %s/grades.csv%s\n", folders.size(),
+                merged.reports.size(), arguments.output.c_str(),
+                merged.warnings.empty() ? "" : "; see the warnings above");
+    return merged.warnings.empty() ? 0 : 1;
+}
+
 int grade_many(const BatchArguments& arguments) {
+    if (!arguments.merge.empty()) return merge_many(arguments);
     print_sandbox();
     BatchOptions options;
     options.folder = fs::absolute(arguments.folder);
     options.output = fs::absolute(arguments.output);
     options.jobs = arguments.jobs;
+    options.skip_speed = arguments.no_speed;
+    options.shard = parse_shard(arguments.shard);
     options.progress = isatty(fileno(stderr)) != 0;
     options.reference_probe = RAYSTEP_REFERENCE_PROBE;
     const auto start = std::chrono::steady_clock::now();
@@ -119,9 +142,11 @@ int grade_many(const BatchArguments& arguments) {
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf(
-        "graded %zu submissions, %zu already graded before, %zu failed, in %.0f s; the class: "
+        "graded %zu submissions, %zu already graded before, %zu failed, in %.0f s; %s: "
         "%s/grades.csv\n",
-        tally.graded, tally.resumed, tally.failed, seconds, arguments.output.c_str());
+        tally.graded, tally.resumed, tally.failed, seconds,
+        options.shard.count > 1 ? ("shard " + options.shard.text()).c_str() : "the class",
+        arguments.output.c_str());
     return tally.failed == 0 ? 0 : 1;
 }
 
@@ -177,14 +202,40 @@ int main(int argc, char** argv) {
     BatchArguments many;
     CLI::App* batch = app.add_subcommand(
         "batch", "Grade a class: every folder and .zip in DIR; resumable; writes grades.csv");
-    batch->add_option("folder", many.folder, "The class's submissions")
-        ->required()
-        ->check(CLI::ExistingDirectory);
+    CLI::Option* class_folder = batch->add_option("folder", many.folder, "The class's submissions")
+                                    ->check(CLI::ExistingDirectory);
     batch->add_option("-o,--output", many.output, "Where the reports go (default: grades)");
     batch->add_option("--jobs", many.jobs, "Compiles and checks at a time (default: every core)")
         ->check(CLI::Range(1, 256));
     batch->add_option("--rubric", many.rubric, "The rubric (default: grader/rubric/rubric.json)")
         ->check(CLI::ExistingFile);
+    batch->add_flag("--no-speed", many.no_speed, "Leave out the speed checks");
+    batch
+        ->add_option("--shard", many.shard,
+                     "Grade only the I-th of N slices of the class, I/N (docs/instructor.md, "
+                     "\"Grading a class on several machines\")")
+        ->check(
+            [](const std::string& text) {
+                try {
+                    parse_shard(text);
+                    return std::string();
+                } catch (const std::invalid_argument& error) {
+                    return std::string(error.what());
+                }
+            },
+            "I/N");
+    CLI::Option* merge =
+        batch
+            ->add_option("--merge", many.merge,
+                         "Write one grades.csv into -o from the output folders of every shard")
+            ->check(CLI::ExistingDirectory)
+            ->excludes(class_folder);
+    batch->callback([class_folder, merge] {
+        if (class_folder->count() == 0 && merge->count() == 0) {
+            throw CLI::ValidationError(
+                "batch needs the class's folder, or --merge and the shards' folders");
+        }
+    });
 
     std::string release_folder;
     CLI::App* release_command = app.add_subcommand(

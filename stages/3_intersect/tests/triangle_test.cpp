@@ -156,7 +156,13 @@ void check_agrees_with_glm(TriangleTest intersect) {
             if (std::min({alpha, barycentric.x, barycentric.y}) < 1e-6) continue;  // near an edge
             ++hits;
         }
-        CAPTURE(k, expected, t, barycentric.x, barycentric.y);
+        // glm leaves t and the barycentrics as they were when it misses: print them on a hit only.
+        using Catch::Detail::stringify;
+        INFO("random ray " << k << ": glm says "
+                           << (expected ? "a hit at t = " + stringify(t) +
+                                              ", beta = " + stringify(barycentric.x) +
+                                              ", gamma = " + stringify(barycentric.y)
+                                        : std::string("a miss")));
         INFO(inputs(ray, tri));
         const std::optional<Hit> hit = intersect(ray, tri);
         REQUIRE(hit.has_value() == expected);

@@ -1,0 +1,57 @@
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "app/render/render_scene.h"
+#include "app/render/view.h"
+
+namespace raystep {
+
+/// What one light does at the eye ray's hit, as stage 6 decides it.
+enum class LightReach {
+    behind,   ///< the light is behind the surface: no shadow ray
+    blocked,  ///< the shadow ray meets something before the light
+    reaches,  ///< the shadow ray reaches the light; its term counts
+};
+
+/// One light at the eye ray's hit: whether it reaches the point and, when it does, its
+/// blinn_phong term (diffuse and specular together; 0 otherwise).
+struct LightRecord {
+    LightReach reach = LightReach::behind;
+    Color term{0.0};
+};
+
+/// The values of one pixel's steps, in the order the renderer takes them: what `raystep trace
+/// --compare` holds against the reference's, and what a student release ships of the reference
+/// for each pixel of its scenes. render_pixel fills as far as it gets: a step it did not reach (a
+/// stub stopped it, or the view does not go that far) stays empty.
+struct PixelRecord {
+    std::optional<Ray> camera_ray;
+    bool hit_searched = false;        ///< closest_hit ran; `hit` is its answer
+    std::optional<PrimitiveHit> hit;  ///< the eye ray's closest hit; empty on a miss
+    std::vector<LightRecord> lights;  ///< point lights, then directional, in scene order
+    std::optional<Color> local;       ///< stage 6's colour at the hit
+    std::optional<Color> full;        ///< the finished colour, reflections included
+};
+
+/// How far a view takes a pixel through the pipeline, and so which parts of a record it fills:
+/// rays stops at the camera ray; depth, normal, barycentric and cost at the closest hit; shaded
+/// adds the lights and the local colour; full the finished colour.
+enum class PipelineReach { camera_ray, closest_hit, shading, full_colour };
+
+/// The reach of a view.
+constexpr PipelineReach pipeline_reach(View view) {
+    switch (view) {
+        case View::rays:
+            return PipelineReach::camera_ray;
+        case View::shaded:
+            return PipelineReach::shading;
+        case View::full:
+            return PipelineReach::full_colour;
+        default:
+            return PipelineReach::closest_hit;
+    }
+}
+
+}  // namespace raystep

@@ -1,0 +1,109 @@
+#include "app/cli/trace_comparison.h"
+
+#include <cmath>
+
+#include "app/compare/reference_trace.h"
+#include "base/testing/catch.h"
+
+using namespace raystep;
+
+namespace {
+
+PixelRecord shaded_hit() {
+    PixelRecord record;
+    record.camera_ray = Ray{Vec3(0.0, 0.0, 4.0), Vec3(0.6, 0.0, -0.8)};
+    record.hit_searched = true;
+    record.hit = PrimitiveHit{Hit{4.5, Vec3(0.0, 0.0, 1.0)}, PrimitiveKind::sphere, 1};
+    record.lights = {{LightReach::reaches, Color(0.5)}};
+    record.local = Color(0.6);
+    record.full = Color(0.6);
+    return record;
+}
+
+const std::vector<std::string> kOneLight = {"point light (line 7)"};
+
+}  // namespace
+
+TEST_CASE("compare_pixel: the same record is the same at every step of the view", "[app]") {
+    const TraceComparison comparison =
+        compare_pixel(shaded_hit(), shaded_hit(), View::full, kOneLight);
+    CHECK_FALSE(comparison.first_difference);
+    CHECK_FALSE(comparison.stopped);
+    REQUIRE(comparison.rows.size() == 10);
+    CHECK(comparison.rows[2].quantity == "the hit primitive");
+    CHECK(comparison.rows[2].ours == "sphere 1");
+    CHECK(comparison.rows[7].quantity == "point light (line 7): term");
+    CHECK(comparison.rows[9].quantity == "the full colour");
+}
+
+TEST_CASE("compare_pixel: names the first quantity that differs, in pipeline order", "[app]") {
+    PixelRecord ours = shaded_hit();
+    ours.hit->hit.t = 4.25;
+    ours.local = Color(0.1);
+    const TraceComparison comparison = compare_pixel(ours, shaded_hit(), View::full, kOneLight);
+    REQUIRE(comparison.first_difference);
+    const TraceRow& row = comparison.rows[*comparison.first_difference];
+    CHECK(row.quantity == "the hit's t");
+    CHECK(row.ours == "4.25");
+    CHECK(row.reference == "4.5");
+}
+
+TEST_CASE("compare_pixel: a difference within the stored rounding is none, beyond it is one",
+          "[app]") {
+    const double inside = 0.5 * stored_roundoff(TraceQuantity::t);
+    const double outside = 4.0 * stored_roundoff(TraceQuantity::t);
+    PixelRecord near = shaded_hit();
+    near.hit->hit.t = 4.5 * (1.0 + inside);
+    CHECK_FALSE(compare_pixel(near, shaded_hit(), View::depth, kOneLight).first_difference);
+    PixelRecord far = shaded_hit();
+    far.hit->hit.t = 4.5 * (1.0 + outside);
+    CHECK(compare_pixel(far, shaded_hit(), View::depth, kOneLight).first_difference == 3u);
+}
+
+TEST_CASE("compare_pixel: a component near 0 is held to its vector's precision", "[app]") {
+    PixelRecord ours = shaded_hit();
+    ours.camera_ray->direction.y = 1e-12;
+    CHECK_FALSE(compare_pixel(ours, shaded_hit(), View::rays, kOneLight).first_difference);
+}
+
+TEST_CASE("compare_pixel: a miss against a hit differs at the primitive", "[app]") {
+    PixelRecord ours = shaded_hit();
+    ours.hit.reset();
+    ours.lights.clear();
+    ours.local.reset();
+    const TraceComparison comparison = compare_pixel(ours, shaded_hit(), View::full, kOneLight);
+    REQUIRE(comparison.first_difference == 2u);
+    CHECK(comparison.rows[2].ours == "miss");
+    CHECK(comparison.rows[3].ours == "-");
+}
+
+TEST_CASE("compare_pixel: stops at the first step this build did not reach", "[app]") {
+    PixelRecord ours;
+    ours.camera_ray = shaded_hit().camera_ray;
+    const TraceComparison comparison = compare_pixel(ours, shaded_hit(), View::full, kOneLight);
+    CHECK(comparison.stopped);
+    CHECK_FALSE(comparison.first_difference);
+    REQUIRE(comparison.rows.size() == 3);
+    CHECK(comparison.rows[2].quantity == "the hit primitive");
+    CHECK(comparison.rows[2].ours == "(not reached)");
+}
+
+TEST_CASE("compare_pixel: the rays view compares the camera ray only", "[app]") {
+    PixelRecord ours = shaded_hit();
+    ours.hit->hit.t = 1.0;
+    const TraceComparison comparison = compare_pixel(ours, shaded_hit(), View::rays, kOneLight);
+    CHECK(comparison.rows.size() == 2);
+    CHECK_FALSE(comparison.first_difference);
+}
+
+TEST_CASE("compare_pixel: a value is the same as itself stored, rounded twice", "[app]") {
+    // Just below a tie of t's 16 stored bits at 1 + 2^-17: float32 rounding moves it onto the
+    // tie, which then rounds away, a little more than half a stored step from where it was.
+    PixelRecord ours = shaded_hit();
+    ours.hit->hit.t = 1.0 + std::ldexp(1.0, -17) - std::ldexp(1.0, -24) + std::ldexp(1.0, -28);
+    PixelRecord stored = ours;
+    stored.hit->hit.t = stored_value(ours.hit->hit.t, TraceQuantity::t);
+    REQUIRE(stored.hit->hit.t == 1.0 + std::ldexp(1.0, -16));
+    CHECK(std::abs(stored.hit->hit.t - ours.hit->hit.t) > std::ldexp(1.0, -17) * stored.hit->hit.t);
+    CHECK_FALSE(compare_pixel(ours, stored, View::depth, kOneLight).first_difference);
+}

@@ -1,0 +1,122 @@
+#!/usr/bin/env python3
+"""Every command a student release's READMEs name works, as written, once the stages are written.
+
+    scripts/check-student-readme.py RELEASE MODEL_STAGES
+
+RELEASE is a student release already built by its scripts/setup.sh. This plays the student who
+has written every stage: it copies the files each stage's manifest.txt lists, and nothing else,
+from MODEL_STAGES (a right submission's stages/ folder) into RELEASE, then runs each line of the
+```sh blocks of RELEASE/README.md and of every stages/*/README.md, in order, from RELEASE's root,
+and holds its exit code and output against what the line promises (EXPECTED below). A README
+line that no entry of EXPECTED knows fails too, so that a new command cannot go unchecked.
+Prints one line per command with its time, and exits 1 when any command failed."""
+
+import pathlib
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+RAYSTEP = r"build/student/bin/raystep"
+
+# (command pattern, exit codes, pattern its output must hold). A file the command names in the
+# pattern's group "made" must exist after it. The first entry whose pattern matches the whole
+# line applies.
+EXPECTED = [
+    (r"scripts/setup\.sh", {0}, r"Built: build/student/bin/raystep"),
+    (r"scripts/test\.sh( [1-9])*", {0}, r"100% tests passed"),
+    (r"ctest --preset student .*", {0}, r"100% tests passed"),
+    (r"build/student/bin/raystep_stage[1-9]_tests( .*)?", {0}, r"All tests passed"),
+    (RAYSTEP + r" render .* -o (?P<made>\S+)", {0}, r"^wrote "),
+    (RAYSTEP + r" compare .*", {0}, r"^pass"),
+    (RAYSTEP + r" trace .* --compare", {0}, r"^the traces are the same$"),
+    (RAYSTEP + r" trace .*", {0}, r"^value: "),
+    # A right triangle test that is not watertight lets some rays through shared edges (the
+    # families' leaks), so a right stage 3 need not pass every case: exit 1, nothing a stub.
+    (RAYSTEP + r" check --stage 3", {0, 1}, r"^\d+ of \d+ checks passed[^;]*$"),
+    # Every stage written: the zip is made, and no function is left a stub to warn of.
+    (RAYSTEP + r" submit", {0}, r"^wrote \S*submission\.zip \(\d+ files(?![\s\S]*warning)"),
+]
+
+FENCE = re.compile(r"^```(\w*)\s*$")
+
+
+def readme_commands(release: pathlib.Path):
+    """(README, line number, command) for each line of each ```sh block, the top README first."""
+    readmes = [release / "README.md"] + sorted(release.glob("stages/*/README.md"))
+    for readme in readmes:
+        language = None
+        for number, line in enumerate(readme.read_text(encoding="utf-8").splitlines(), start=1):
+            fence = FENCE.match(line)
+            if fence:
+                language = None if language is not None else fence.group(1)
+                continue
+            command = line.split("  #")[0].strip()
+            if language == "sh" and command:
+                yield readme.relative_to(release), number, command
+
+
+def write_the_stages(release: pathlib.Path, model: pathlib.Path):
+    """Copies the model's manifest files into the release: what a student's edits amount to."""
+    copied = 0
+    for manifest in sorted(release.glob("stages/*/manifest.txt")):
+        stage = manifest.parent.name
+        for entry in manifest.read_text(encoding="utf-8").splitlines():
+            entry = entry.strip()
+            if not entry or entry.startswith("#"):
+                continue
+            shutil.copyfile(model / stage / entry, manifest.parent / entry)
+            copied += 1
+    return copied
+
+
+def expectation(command: str):
+    for pattern, code, output in EXPECTED:
+        match = re.fullmatch(pattern, command)
+        if match:
+            return match, code, output
+    return None
+
+
+def main() -> int:
+    if len(sys.argv) != 3:
+        print(__doc__, file=sys.stderr)
+        return 2
+    release, model = pathlib.Path(sys.argv[1]).resolve(), pathlib.Path(sys.argv[2]).resolve()
+    print(f"wrote {write_the_stages(release, model)} stage files from {model}")
+    failures = 0
+    for readme, number, command in readme_commands(release):
+        where = f"{readme}:{number}"
+        expected = expectation(command)
+        if expected is None:
+            print(f"FAIL {where}: no check knows what `{command}` should do; add it to EXPECTED")
+            failures += 1
+            continue
+        match, code, output_pattern = expected
+        start = time.monotonic()
+        run = subprocess.run(["bash", "-c", command], cwd=release, capture_output=True, text=True)
+        seconds = time.monotonic() - start
+        output = run.stdout + run.stderr
+        made = match.groupdict().get("made")
+        problems = []
+        if run.returncode not in code:
+            problems.append(f"exit {run.returncode}, expected {' or '.join(map(str, code))}")
+        if not re.search(output_pattern, output, re.MULTILINE):
+            problems.append(f"no line matching {output_pattern!r}")
+        if made and not (release / made).is_file():
+            problems.append(f"{made} was not written")
+        if problems:
+            print(f"FAIL {where}: `{command}`: {'; '.join(problems)}; it printed:")
+            print("\n".join("  " + line for line in output.splitlines()[-40:]))
+            failures += 1
+        else:
+            print(f"ok   {where}: `{command}` ({seconds:.1f} s)")
+    if failures:
+        print(f"{failures} README command(s) did not do what they promise")
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
