@@ -63,9 +63,10 @@ std::string not_run_text(const Rubric& rubric, const std::set<std::string>& run,
     if (count == 0) return "Every check of the rubric for these stages ran here.";
     return "Hidden checks exist and are not run here: " + std::to_string(count) +
            (count == 1 ? " check worth " : " checks worth ") + score_text(points) +
-           " points, which only the grader runs (hidden cases, generated cases against its "
-           "oracle, speed): " +
-           ids + ". The total " + where + " counts the public checks alone.";
+           " points run only in the grader (hidden cases, generated cases against its oracle, "
+           "speed, and the hand-worked cases of the checks this release holds no case file "
+           "for): " +
+           ids + ". The total " + where + " counts the checks run here alone.";
 }
 
 // The reference's count of stage-3 cases right per function, as the release writer wrote it.

@@ -100,6 +100,6 @@ TEST_CASE("method_case: the student's reproduce line writes the case to a file a
     CHECK(written.front().name == "contract");
     CHECK(case_text(written.front().cases.front()) == case_text(family.cases.front()));
     CHECK(line.substr(end + 4) ==
-          "build/release/bin/raystep check --stage 3 contract-11.cases --method intersect_sphere "
+          "build/student/bin/raystep check --stage 3 contract-11.cases --method intersect_sphere "
           "--case 11");
 }

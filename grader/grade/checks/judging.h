@@ -18,7 +18,7 @@ namespace raystep::grade {
 
 /// The student release's raystep, as the handouts run it from the repository's root: the
 /// program a student's reproduce line calls.
-inline constexpr const char* kStudentRaystep = "build/release/bin/raystep";
+inline constexpr const char* kStudentRaystep = "build/student/bin/raystep";
 
 /// A check that sends the probe of `stage` the cases `make_cases` writes and judges each answer
 /// (run_cases); the cases are made when the check runs, not when the checks are listed.
