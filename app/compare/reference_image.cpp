@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "app/render/view.h"
 #include "base/errors/input_error.h"
 
 namespace raystep {
@@ -57,12 +58,23 @@ std::vector<std::string> references_of(const std::string& scene,
 
 std::vector<std::string> reference_views(const fs::path& scene) {
     std::ifstream in(scene);
+    int number = 0;
     for (std::string line; std::getline(in, line);) {
+        ++number;
         if (line.rfind("# views:", 0) != 0) continue;
         std::istringstream words(line.substr(8));
         std::vector<std::string> views;
-        for (std::string view; words >> view;)
+        for (std::string view; words >> view;) {
+            if (!parse_view(view)) {
+                std::string known;
+                for (const std::string& name : view_names())
+                    known += (known.empty() ? "" : ", ") + name;
+                throw InputError(
+                    scene.string(), number,
+                    "'# views:' names '" + view + "', which is no view (" + known + ")");
+            }
             views.push_back(view);
+        }
         return views;
     }
     return {"full"};

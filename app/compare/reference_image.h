@@ -18,7 +18,8 @@ std::filesystem::path reference_image_path(const std::filesystem::path& scene,
 std::filesystem::path reference_trace_path(const std::filesystem::path& scene);
 
 /// The views of a scene the release renders by the reference: those its `# views:` line lists,
-/// or `full` when it has none. An unreadable scene has none.
+/// or `full` when it has none. An unreadable scene has none. Throws InputError naming the line
+/// when it lists a word that is no view.
 std::vector<std::string> reference_views(const std::filesystem::path& scene);
 
 /// The reference image for a render: `<name>.png` with the image's own name

@@ -1,5 +1,7 @@
 #include "app/compare/reference_image.h"
 
+#include <fstream>
+
 #include "base/errors/input_error.h"
 #include "base/image/image_io.h"
 #include "base/testing/catch.h"
@@ -20,6 +22,24 @@ TEST_CASE("reference_views: the scene's views line, or full without one", "[app]
           std::vector<std::string>{"rays", "depth"});
     CHECK(reference_views(fs::path(RAYSTEP_TEST_DATA) / "good" / "quad.test") ==
           std::vector<std::string>{"full"});
+}
+
+TEST_CASE("reference_views: a word that is no view is an error naming the scene's line", "[app]") {
+    const raystep::testing::ScratchFolder folder("reference-views");
+    const fs::path scene = folder.path() / "typo.test";
+    std::ofstream(scene) << "size 4 4\n# views: rays shiny\n";
+    CHECK_THROWS_WITH(reference_views(scene),
+                      Catch::Matchers::Contains("typo.test:2") &&
+                          Catch::Matchers::Contains("'shiny', which is no view"));
+}
+
+TEST_CASE("reference_views: every scene the release renders names views that exist", "[app]") {
+    for (const auto& entry :
+         fs::recursive_directory_iterator(fs::path(RAYSTEP_SOURCE_DIR) / "scenes")) {
+        if (entry.path().extension() != ".test") continue;
+        INFO(entry.path());
+        CHECK_FALSE(reference_views(entry.path()).empty());
+    }
 }
 
 TEST_CASE("find_reference_image: by the image's name, or its scene's name and a view", "[app]") {

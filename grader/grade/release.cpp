@@ -91,6 +91,7 @@ ReleaseSummary make_release(const fs::path& source, const fs::path& output) {
             // The reference's steps of every pixel, as far as its furthest view takes them,
             // recorded while that view renders: what `raystep trace --compare` holds a student's
             // pixel against.
+            // Each a view: reference_views throws for a word that is not one.
             const std::vector<std::string> views = reference_views(entry.path());
             if (views.empty()) continue;
             std::string furthest = views.front();
