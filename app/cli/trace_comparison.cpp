@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "app/compare/reference_trace.h"
+#include "app/render/render_scene.h"
 
 namespace raystep {
 
@@ -48,21 +49,9 @@ std::vector<double> components(const Vec3& v) {
     return {v.x, v.y, v.z};
 }
 
-const char* kind_text(PrimitiveKind kind) {
-    switch (kind) {
-        case PrimitiveKind::sphere:
-            return "sphere";
-        case PrimitiveKind::triangle:
-            return "triangle";
-        case PrimitiveKind::plane:
-            return "plane";
-    }
-    return "primitive";
-}
-
 std::string primitive_text(const std::optional<PrimitiveHit>& hit) {
     if (!hit) return "miss";
-    return std::string(kind_text(hit->kind)) + " " + std::to_string(hit->index);
+    return std::string(kind_name(hit->kind)) + " " + std::to_string(hit->index);
 }
 
 const char* reach_text(LightReach reach) {
