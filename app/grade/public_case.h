@@ -30,10 +30,16 @@ struct PublicCase {
     std::string reproduce;
 };
 
+inline constexpr const char* kSampleKind = "sample";
+
 struct PublicCheck {
     std::string id;  ///< the rubric's key, "stage1.unit"
     int stage = 0;
-    std::string kind;  ///< "unit", "oracle", "render"
+    /// "unit", "render", or kSampleKind: a sample of a stage's generated cases, decided by the
+    /// oracle as the grader's "stageN.oracle" cases are but drawn from seeds that check does not
+    /// use, so that a student can try the kind of case the oracle holds without seeing the
+    /// grader's own. A sample has no rubric entry and is worth no points.
+    std::string kind;
     std::string name;
     std::vector<PublicCase> cases;
 };

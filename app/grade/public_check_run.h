@@ -15,8 +15,9 @@ namespace raystep::grade {
 /// implemented and earns nothing). The first few counterexamples, wrong answers before stubs,
 /// carry each case's input and its student reproduce line. A judge that measures a share (a
 /// render's matching pixels) scores its check of one case by that share, as the grader does. A
-/// relative "scene" argument names a file under `root` (the release's root). Throws
-/// std::out_of_range when the rubric has no entry for the check.
+/// relative "scene" argument names a file under `root` (the release's root). A sample
+/// (kSampleKind) is worth nothing and needs no rubric entry; any other check throws
+/// std::out_of_range when the rubric has none.
 CheckResult run_public_check(const PublicCheck& check, const Rubric& rubric,
                              const probe::CallTable& calls, const std::filesystem::path& root);
 

@@ -4,6 +4,7 @@
 
 #include "app/grade/data_judge.h"
 #include "app/grade/value_text.h"
+#include "app/protocol/wide_json.h"
 
 namespace raystep::grade {
 
@@ -61,6 +62,43 @@ const JudgeRegistry::Registration near_vec3_registration{
          };
      }}};
 
+// In long double, written so that a NaN fails.
+bool near_wide(const Vec3& got, const WideVec& expected, const WideVec& tolerance) {
+    for (int k = 0; k < 3; ++k) {
+        if (!(std::abs(Wide(got[k]) - expected[k]) <= tolerance[k])) return false;
+    }
+    return true;
+}
+
+const JudgeRegistry::Registration near_wide_number_registration{
+    {"near_wide_number", [](const Json& p) -> Judge {
+         const Wide expected = probe::wide_from(p.at("expected"));
+         const Wide tolerance = probe::wide_from(p.at("tolerance"));
+         const std::string text =
+             within(full_text(static_cast<double>(expected)), static_cast<double>(tolerance));
+         return [=](const ProbeAnswer& answer) {
+             if (answer.kind != Kind::result) return wrong(text, "");
+             const double got = probe::number_from(answer.value);
+             if (std::abs(Wide(got) - expected) <= tolerance) return right();
+             return wrong(text, full_text(got));
+         };
+     }}};
+
+const JudgeRegistry::Registration near_wide_vec3_registration{
+    {"near_wide_vec3", [](const Json& p) -> Judge {
+         const WideVec expected = probe::wide_vec3_from(p.at("expected"));
+         const WideVec tolerance = probe::wide_vec3_from(p.at("tolerance"));
+         const bool unit = p.at("unit").get<bool>();
+         const std::string text = std::string(unit ? "unit " : "") + full_text(narrow(expected)) +
+                                  " (within " + full_text(narrow(tolerance)) + ")";
+         return [=](const ProbeAnswer& answer) {
+             if (answer.kind != Kind::result) return wrong(text, "");
+             const Vec3 got = probe::vec3_from(answer.value);
+             if (near_wide(got, expected, tolerance) && (!unit || unit_length(got))) return right();
+             return wrong(text, full_text(got));
+         };
+     }}};
+
 const JudgeRegistry::Registration threw_registration{
     {"threw", [](const Json& p) -> Judge {
          const std::string type = p.at("type").get<std::string>();
@@ -104,6 +142,19 @@ Json near_vec3_judge(const Vec3& expected, double tolerance) {
     return {{"judge", "near_vec3"},
             {"expected", probe::vec3(expected)},
             {"tolerance", probe::number(tolerance)}};
+}
+
+Json near_wide_number_judge(Wide expected, Wide tolerance) {
+    return {{"judge", "near_wide_number"},
+            {"expected", probe::wide(expected)},
+            {"tolerance", probe::wide(tolerance)}};
+}
+
+Json near_wide_vec3_judge(const WideVec& expected, const WideVec& tolerance, bool unit) {
+    return {{"judge", "near_wide_vec3"},
+            {"expected", probe::wide_vec3(expected)},
+            {"tolerance", probe::wide_vec3(tolerance)},
+            {"unit", unit}};
 }
 
 Json threw_judge(const std::string& type) {

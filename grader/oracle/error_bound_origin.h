@@ -1,6 +1,6 @@
 #pragma once
 
-#include "grader/oracle/wide_vec.h"
+#include "base/math/wide_vec.h"
 #include "stages/6_shading/shading.h"
 
 namespace raystep {

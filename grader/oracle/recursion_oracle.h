@@ -7,9 +7,9 @@
 #include <optional>
 #include <vector>
 
+#include "base/math/wide_vec.h"
 #include "base/scene/ray_offset.h"
 #include "grader/oracle/error_bound_origin.h"
-#include "grader/oracle/wide_vec.h"
 #include "stages/2_rays/ray.h"
 #include "stages/6_shading/shading.h"
 #include "stages/7_recursion/recursion.h"

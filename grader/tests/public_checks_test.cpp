@@ -8,6 +8,7 @@
 
 #include "app/grade/data_judge.h"
 #include "app/grade/public_case.h"
+#include "app/grade/public_check_run.h"
 #include "app/grade/render_judge.h"
 #include "app/grade/rubric.h"
 #include "app/probe/call_reply.h"
@@ -45,7 +46,16 @@ TEST_CASE("every public check the release writes reads back as written and is ju
     REQUIRE_FALSE(checks.empty());
     for (const PublicCheck& written : checks) {
         INFO(written.id);
-        REQUIRE(rubric.entry(written.id).points > 0);
+        // A sample is worth nothing and has no rubric entry; every other check is scored.
+        if (written.kind == kSampleKind) {
+            REQUIRE(rubric.checks.count(written.id) == 0);
+            const CheckResult run =
+                run_public_check(written, rubric, reference, RAYSTEP_SOURCE_DIR);
+            REQUIRE(run.outcome == Outcome::passed);
+            REQUIRE(run.max_score == 0.0);
+        } else {
+            REQUIRE(rubric.entry(written.id).points > 0);
+        }
         write_public_check(written, folder);
         const PublicCheck read = read_public_check(folder / (written.id + ".json"));
         REQUIRE(read.id == written.id);

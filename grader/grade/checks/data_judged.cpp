@@ -24,8 +24,14 @@ std::vector<ProbeCase> data_judged_cases(const std::vector<PublicCase>& cases) {
     return judged;
 }
 
+PublicCheck sample_check(int stage, std::string name, std::vector<PublicCase> cases) {
+    return {"stage" + std::to_string(stage) + ".sample", stage, kSampleKind,
+            std::move(name) + " (a sample)", std::move(cases)};
+}
+
 std::vector<PublicCheck> public_checks(const std::filesystem::path& source) {
-    std::vector<PublicCheck> checks = {stage1_public_check(), stage2_public_check()};
+    std::vector<PublicCheck> checks = {stage1_public_check(), stage1_sample_check(),
+                                       stage2_public_check(), stage2_sample_check()};
     for (PublicCheck& check : render_public_checks(source))
         checks.push_back(std::move(check));
     return checks;

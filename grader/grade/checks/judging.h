@@ -8,9 +8,9 @@
 #include <glm/vec3.hpp>
 
 #include "base/math/portable_random.h"
+#include "base/math/wide_vec.h"
 #include "grader/grade/check_definition.h"
 #include "grader/grade/checks/case_text.h"
-#include "grader/oracle/wide_vec.h"
 
 namespace raystep::grade {
 

@@ -150,9 +150,9 @@ constexpr std::uint64_t kFrameSeed = 1703;
 
 // dot and cross against long double, each within a few roundings of the sizes of its terms:
 // cancellation can take every digit, so the bound is relative to sum |a_i b_i|, not to the answer.
-void add_product_cases(std::vector<PublicCase>& cases) {
-    for (int k = 0; k < 200; ++k) {
-        PortableRandom random(kProductSeed, k);
+void add_product_cases(std::vector<PublicCase>& cases, std::uint64_t seed, int count) {
+    for (int k = 0; k < count; ++k) {
+        PortableRandom random(seed, k);
         // Components within 1e±50 of each other, so that products stay in range.
         const Vec3 a = random_vector(random) * 1e-50;
         const Vec3 b = random_vector(random) * 1e-50;
@@ -173,9 +173,9 @@ void add_product_cases(std::vector<PublicCase>& cases) {
 
 // length and normalize at every magnitude, squares far beyond a double's range: they must not
 // overflow or underflow.
-void add_length_cases(std::vector<PublicCase>& cases) {
-    for (int k = 0; k < 200; ++k) {
-        PortableRandom random(kLengthSeed, k);
+void add_length_cases(std::vector<PublicCase>& cases, std::uint64_t seed, int count) {
+    for (int k = 0; k < count; ++k) {
+        PortableRandom random(seed, k);
         const Vec3 v = random_vector(random) * (k % 2 ? 1e150 : 1e-150);
         const Wide exact = std::sqrt(Wide(v.x) * v.x + Wide(v.y) * v.y + Wide(v.z) * v.z);
         cases.push_back(exact_number("length", {v}, static_cast<double>(exact),
@@ -200,9 +200,9 @@ WideVec tilted(PortableRandom& random, const WideVec& w, Wide sine) {
 // worked out in long double. A third are well apart (sine 0.01 to 1); a third nearly parallel
 // but a hundredfold above kParallelSine, a frame; a third a hundredfold below it, an error. The
 // frame inherits w's rounding, a few ulps of |b|, over |b x w|: its tolerance is 8 ulps / sine.
-void add_frame_cases(std::vector<PublicCase>& cases) {
-    for (int k = 0; k < 300; ++k) {
-        PortableRandom random(kFrameSeed, k);
+void add_frame_cases(std::vector<PublicCase>& cases, std::uint64_t seed, int count) {
+    for (int k = 0; k < count; ++k) {
+        PortableRandom random(seed, k);
         const Vec3 direction = random.unit_vector();
         const Vec3 a = direction * random.decade(-100, 100);
         const WideVec w_wide = widen(direction);
@@ -227,18 +227,29 @@ void add_frame_cases(std::vector<PublicCase>& cases) {
     }
 }
 
-std::vector<ProbeCase> oracle_cases() {
+// The generated cases: `count` of each kind, drawn from the kinds' seeds plus `offset`.
+std::vector<PublicCase> generated_cases(std::uint64_t offset, int count) {
     std::vector<PublicCase> cases;
-    add_product_cases(cases);
-    add_length_cases(cases);
-    add_frame_cases(cases);
-    return data_judged_cases(cases);
+    add_product_cases(cases, kProductSeed + offset, count);
+    add_length_cases(cases, kLengthSeed + offset, count);
+    add_frame_cases(cases, kFrameSeed + offset, 3 * count / 2);
+    return cases;
+}
+
+std::vector<ProbeCase> oracle_cases() {
+    return data_judged_cases(generated_cases(0, 200));
 }
 
 }  // namespace
 
 PublicCheck stage1_public_check() {
     return {"stage1.unit", 1, "unit", kPublicName, public_cases()};
+}
+
+PublicCheck stage1_sample_check() {
+    return sample_check(1,
+                        "dot, cross, length, normalize and orthonormal_frame against long double",
+                        generated_cases(kSampleSeedOffset, 10));
 }
 
 std::vector<CheckDefinition> stage1_checks() {

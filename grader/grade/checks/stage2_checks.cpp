@@ -250,19 +250,25 @@ CameraCase random_camera(PortableRandom& random, bool ortho) {
     }
 }
 
-// Case k is drawn from PortableRandom(kCameraSeed, k), so that it is rebuilt without the others.
+// Case k is drawn from PortableRandom(seed, k), so that it is rebuilt without the others; the
+// grader's from kCameraSeed, a release's sample from kCameraSeed + kSampleSeedOffset.
 constexpr std::uint64_t kCameraSeed = 0x5EED'0002;
 
-std::vector<ProbeCase> oracle_cases() {
+// `count` camera rays, the last quarter through orthographic cameras.
+std::vector<PublicCase> generated_cases(std::uint64_t seed, int count) {
     std::vector<PublicCase> cases;
-    for (int k = 0; k < 400; ++k) {
-        PortableRandom random(kCameraSeed, k);
-        const CameraCase c = random_camera(random, k >= 300);
+    for (int k = 0; k < count; ++k) {
+        PortableRandom random(seed, k);
+        const CameraCase c = random_camera(random, 4 * k >= 3 * count);
         const int i = static_cast<int>(random.integer(0, c.width - 1));
         const int j = static_cast<int>(random.integer(0, c.height - 1));
         cases.push_back(camera_ray(c, i, j));
     }
-    return data_judged_cases(cases);
+    return cases;
+}
+
+std::vector<ProbeCase> oracle_cases() {
+    return data_judged_cases(generated_cases(kCameraSeed, 400));
 }
 
 // The stage's public name, shared by the grader's check and the release's case file.
@@ -272,6 +278,12 @@ constexpr const char* kPublicName = "Ray::at and camera rays on hand-worked valu
 
 PublicCheck stage2_public_check() {
     return {"stage2.unit", 2, "unit", kPublicName, public_cases()};
+}
+
+PublicCheck stage2_sample_check() {
+    return sample_check(2,
+                        "perspective and orthographic rays of random cameras against long double",
+                        generated_cases(kCameraSeed + kSampleSeedOffset, 20));
 }
 
 std::vector<CheckDefinition> stage2_checks() {

@@ -1,0 +1,33 @@
+#include "app/protocol/wide_json.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace raystep::probe {
+
+Json wide(Wide x) {
+    const double hi = static_cast<double>(x);
+    // Subtracting an infinite or NaN hi would give NaN: such a value is its hi alone.
+    const double lo = std::isfinite(hi) ? static_cast<double>(x - hi) : 0.0;
+    return Json::array({number(hi), number(lo)});
+}
+
+Wide wide_from(const Json& j) {
+    if (!j.is_array() || j.size() != 2) {
+        throw std::invalid_argument("expected a long double as the pair [hi, lo]");
+    }
+    return Wide(number_from(j[0])) + Wide(number_from(j[1]));
+}
+
+Json wide_vec3(const WideVec& v) {
+    return Json::array({wide(v.x), wide(v.y), wide(v.z)});
+}
+
+WideVec wide_vec3_from(const Json& j) {
+    if (!j.is_array() || j.size() != 3) {
+        throw std::invalid_argument("expected a long-double vector as three [hi, lo] pairs");
+    }
+    return {wide_from(j[0]), wide_from(j[1]), wide_from(j[2])};
+}
+
+}  // namespace raystep::probe
