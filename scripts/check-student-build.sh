@@ -18,7 +18,8 @@
 #   4. Handing in, on the stubs (so before 2 writes the stages): the release's GitHub Classroom
 #      workflow (.github/workflows/classroom.yml), its `run:` and `command:` lines run in order as
 #      GitHub would (the package installation skipped only where it would need a root this user
-#      lacks), each stage's public tests failing on the stubs, and its points the rubric's;
+#      lacks): the public tests failing on the stubs, and each stage's `raystep grade` finding
+#      every check not implemented, its points those of the checks the release holds cases for;
 #      `raystep submit`'s zip holding exactly the manifests' files, all of which the grader's
 #      unpacker takes.
 set -euo pipefail
@@ -131,82 +132,103 @@ check_command "raystep in a release has no bench: the studies are the instructor
     "$bin/raystep" bench
 
 # The workflow's steps, read without a YAML library (python3-yaml is not among the packages
-# scripts/install-deps.sh installs): each step's name, its `run:` or `command:` line with the
-# workflow's `${{ env.NAME }}` filled in, and its max-score.
+# scripts/install-deps.sh installs): each step's name, its `run:` or `command:` line, its
+# max-score ("none" for a step that sets up), and whether it may fail (continue-on-error); never
+# an empty field, which bash's read would merge with the tab beside it.
 workflow_steps=$(python3 - "$release/.github/workflows/classroom.yml" <<'PYTHON'
 import re, sys
-env, steps, in_env = {}, [], False
+steps = []
 for line in open(sys.argv[1]):
-    if re.match(r"^env:\s*$", line):
-        in_env = True
-        continue
-    if in_env:
-        setting = re.match(r"^  ([A-Z_]+): (.*)$", line)
-        if setting:
-            env[setting.group(1)] = setting.group(2).strip()
-            continue
-        in_env = False
     step = re.match(r"^\s+- name: (.*)$", line)
     if step:
-        steps.append([step.group(1).strip(), "", ""])
+        steps.append([step.group(1).strip(), "", "none", "no"])
         continue
-    field = re.match(r"^\s+(run|command|max-score): (.*)$", line)
+    field = re.match(r"^\s+(run|command|max-score|continue-on-error): (.*)$", line)
     if field and steps:
-        value = re.sub(r"\$\{\{ env\.([A-Z_]+) \}\}", lambda m: env[m.group(1)], field.group(2).strip())
-        steps[-1][2 if field.group(1) == "max-score" else 1] = value
-for name, command, points in steps:
+        column = {"run": 1, "command": 1, "max-score": 2, "continue-on-error": 3}[field.group(1)]
+        steps[-1][column] = "yes" if field.group(2).strip() == "true" else field.group(2).strip()
+for name, command, points, may_fail in steps:
     if command:
-        print(f"{name}\t{command}\t{points}")
+        print(f"{name}\t{command}\t{points}\t{may_fail}")
 PYTHON
 )
-# The rubric's points of each stage's public checks, which the workflow's max-scores must be.
-rubric_points=$(python3 - "$root/grader/rubric/rubric.json" <<'PYTHON'
-import collections, json, re, sys
-rubric = json.loads(re.sub(r"^\s*//.*$", "", open(sys.argv[1]).read(), flags=re.M))
+# The points `raystep grade --stage N` can give each stage: the rubric's points of the checks the
+# release holds a case file for (grading/public/, samples worth none), which the workflow's
+# max-scores must be.
+public_points=$(python3 - "$release/grading" <<'PYTHON'
+import collections, json, pathlib, re, sys
+grading = pathlib.Path(sys.argv[1])
+rubric = json.loads(re.sub(r"^\s*//.*$", "", (grading / "rubric.json").read_text(), flags=re.M))
 points = collections.Counter()
-for check, entry in rubric["checks"].items():
-    if entry.get("visibility", "visible") == "visible" and check.startswith("stage"):
-        points[int(check[5])] += entry["points"]
+for case_file in grading.glob("public/*.json"):
+    check = json.loads(case_file.read_text().splitlines()[0] + "]}")
+    if check["kind"] != "sample":
+        points[check["stage"]] += rubric["checks"][check["check"]]["points"]
 print(" ".join(f"{stage}:{points[stage]:g}" for stage in sorted(points)))
 PYTHON
 )
 stages_graded=0
-while IFS=$'\t' read -r name command points; do
+while IFS=$'\t' read -r name command points may_fail; do
     if [[ "$command" == *install-deps.sh* ]] && [ "$(id -u)" -ne 0 ] && ! sudo -n true 2>/dev/null; then
         echo "skip workflow step '$name' ($command): installing packages needs root, which this user lacks"
         continue
     fi
+    # As GitHub runs it: a shell in the repository (the command grader's with only PATH and
+    # HOME set).
+    exit_code=0
+    output=$(cd "$release" && env -i PATH="$PATH" HOME="$HOME" sh -c "$command" 2>&1) ||
+        exit_code=$?
+    # The public tests, on the stubs: they fail, and the workflow goes on to the grade.
+    if [ "$may_fail" = yes ]; then
+        summary=$(grep -Eo "0% tests passed, [0-9]+ tests failed out of [0-9]+" <<<"$output" || true)
+        if [ "$exit_code" -ne 8 ] || [ -z "$summary" ]; then
+            echo "FAIL workflow step '$name' ($command): exit $exit_code (expected 8, every" \
+                "public test failing on a stub), printed:"
+            echo "$output" | tail -n 20 | sed 's/^/  /'
+            problems=$((problems + 1))
+        else
+            echo "ok   workflow step '$name' ($command): exit 8, $summary, and the workflow goes on"
+        fi
+        continue
+    fi
     # A step with points grades one stage, the number its command ends with; the others set up.
-    if [ -z "$points" ]; then
-        check_command "workflow step '$name' runs" 0 "" bash -c "cd '$release' && $command"
+    if [ "$points" = none ]; then
+        if [ "$exit_code" -ne 0 ]; then
+            echo "FAIL workflow step '$name' ($command): exit $exit_code, printed:"
+            echo "$output" | tail -n 20 | sed 's/^/  /'
+            problems=$((problems + 1))
+        else
+            echo "ok   workflow step '$name' runs"
+        fi
         continue
     fi
     stage=${command##* }
     stages_graded=$((stages_graded + 1))
-    if [ "$points" != "$(grep -Eo "(^| )$stage:[0-9.]+" <<<"$rubric_points" | cut -d: -f2)" ]; then
-        echo "FAIL workflow step '$name' gives $points points; the rubric's public checks of stage $stage give $rubric_points"
+    expected_points=$(grep -Eo "(^| )$stage:[0-9.]+" <<<"$public_points" | cut -d: -f2)
+    if [ "$points" != "$expected_points" ]; then
+        echo "FAIL workflow step '$name' gives $points points; raystep grade's checks of stage" \
+            "$stage are worth ${expected_points:-nothing} ($public_points)"
         problems=$((problems + 1))
     fi
-    # As GitHub's command grader runs it: a shell in the repository, only PATH and HOME set. What
-    # follows expects scripts/test.sh's ctest summary; `raystep grade` will print its own.
-    exit_code=0
-    output=$(cd "$release" && env -i PATH="$PATH" HOME="$HOME" sh -c "$command" 2>&1) ||
-        exit_code=$?
-    summary=$(grep -Eo "0% tests passed, [0-9]+ tests failed out of [0-9]+" <<<"$output" || true)
-    label=$(grep -E "^ *stage[0-9]+ += .*\([0-9]+ tests?\)" <<<"$output" | sed 's/  */ /g' || true)
-    if [ "$exit_code" -ne 8 ] || [ -z "$summary" ] || ! grep -Eq "^ ?stage$stage = " <<<"$label" ||
-        [ "$(wc -l <<<"$label")" -ne 1 ]; then
-        echo "FAIL workflow step '$name' ($command): exit $exit_code (expected 8, every test of" \
-            "stage $stage failing on a stub), printed:"
+    # On the stubs: exit 1, the checks not run named (the pipeline's all run), every check run not
+    # implemented.
+    if [ "$exit_code" -ne 1 ] ||
+        ! grep -Eq "^(Hidden checks exist and are not run here|Every check of the rubric for these stages ran here)" <<<"$output" ||
+        ! grep -Eq "^  total +0 / $points " <<<"$output" ||
+        grep -Eq "^  (passed|failed) " <<<"$output"; then
+        echo "FAIL workflow step '$name' ($command): exit $exit_code (expected 1, every check of" \
+            "stage $stage not implemented, $points points at stake), printed:"
         echo "$output" | tail -n 20 | sed 's/^/  /'
         problems=$((problems + 1))
     else
-        echo "ok   workflow step '$name' ($command, $points points): exit 8, $summary, all" \
-            "labelled stage$stage"
+        echo "ok   workflow step '$name' ($command, $points points): exit 1, every check not" \
+            "implemented"
     fi
 done <<<"$workflow_steps"
-if [ "$stages_graded" -ne "$(ls -d "$release"/stages/*/ | wc -l)" ]; then
-    echo "FAIL the workflow grades $stages_graded stages, the release has $(ls -d "$release"/stages/*/ | wc -l)"
+# Every stage and the whole pipeline (stage 0, the render checks of every stage together).
+if [ "$stages_graded" -ne "$(($(ls -d "$release"/stages/*/ | wc -l) + 1))" ]; then
+    echo "FAIL the workflow grades $stages_graded stages and the pipeline; the release has" \
+        "$(ls -d "$release"/stages/*/ | wc -l) stages and the pipeline"
     problems=$((problems + 1))
 fi
 

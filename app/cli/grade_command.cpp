@@ -13,6 +13,7 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <utility>
 #include <vector>
 
 #include "app/check/case_file.h"
@@ -60,13 +61,21 @@ std::string not_run_text(const Rubric& rubric, const std::set<std::string>& run,
         points += entry.points;
         ++count;
     }
-    if (count == 0) return "Every check of the rubric for these stages ran here.";
+    const bool samples = std::any_of(run.begin(), run.end(), [](const std::string& id) {
+        return id.size() > 7 && id.compare(id.size() - 7, 7, ".sample") == 0;
+    });
+    const std::string sample_text =
+        samples ? " A stage's sample (stageN.sample) is a few generated cases of the kinds its "
+                  "oracle check draws, decided by the same oracle but not the grader's own cases, "
+                  "and worth no points."
+                : "";
+    if (count == 0) return "Every check of the rubric for these stages ran here." + sample_text;
     return "Hidden checks exist and are not run here: " + std::to_string(count) +
            (count == 1 ? " check worth " : " checks worth ") + score_text(points) +
            " points run only in the grader (hidden cases, generated cases against its oracle, "
            "speed, and the hand-worked cases of the checks this release holds no case file "
            "for): " +
-           ids + ". The total " + where + " counts the checks run here alone.";
+           ids + ". The total " + where + " counts the checks run here alone." + sample_text;
 }
 
 // The reference's count of stage-3 cases right per function, as the release writer wrote it.
@@ -124,6 +133,13 @@ int run_grade(const GradeArguments& arguments) {
             for (CheckResult& result : run_stage3_case_checks(families, reference))
                 report.checks.push_back(std::move(result));
         }
+        // Each stage's checks in the order of the rubric's kinds, its sample of generated cases
+        // after the checks that carry points.
+        std::stable_sort(report.checks.begin(), report.checks.end(),
+                         [](const CheckResult& a, const CheckResult& b) {
+                             return std::make_pair(a.stage, a.kind == kSampleKind) <
+                                    std::make_pair(b.stage, b.kind == kSampleKind);
+                         });
         if (report.checks.empty()) {
             std::fprintf(stderr, "raystep grade: %s has no public check for stage %d\n",
                          public_folder.string().c_str(), arguments.stage);

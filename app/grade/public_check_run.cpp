@@ -56,13 +56,6 @@ CheckResult run_public_check(const PublicCheck& check, const Rubric& rubric,
     const auto start = std::chrono::steady_clock::now();
     const bool sample = check.kind == kSampleKind;
     const RubricEntry entry = sample ? RubricEntry{} : rubric.entry(check.id);
-    CheckResult result;
-    result.id = check.id;
-    result.stage = check.stage;
-    result.kind = check.kind;
-    result.name = check.name;
-    result.visibility = entry.visibility;
-    result.max_score = entry.points;
 
     std::size_t passed = 0;
     std::size_t stubs = 0;
@@ -108,32 +101,34 @@ CheckResult run_public_check(const PublicCheck& check, const Rubric& rubric,
                             "", verdict.place.empty() ? c.reproduce : verdict.place_reproduce});
         }
     }
-    result.counterexamples = wrong_answers;
+    std::vector<Counterexample> counterexamples = wrong_answers;
     for (const Counterexample& example : stub_answers) {
-        if (result.counterexamples.size() == kCounterexamples) break;
-        result.counterexamples.push_back(example);
+        if (counterexamples.size() == kCounterexamples) break;
+        counterexamples.push_back(example);
     }
 
     const std::size_t total = check.cases.size();
+    const Outcome outcome = total > 0 && stubs == total    ? Outcome::not_implemented
+                            : total > 0 && passed == total ? Outcome::passed
+                                                           : Outcome::failed;
+    const double fraction = measured     ? *measured
+                            : total == 0 ? 0.0
+                                         : static_cast<double>(passed) / static_cast<double>(total);
+    CheckResult result = scored_check(check.id, check.stage, check.kind, check.name, entry, outcome,
+                                      fraction, total > 0);
+    result.counterexamples = std::move(counterexamples);
     result.metrics["cases"] = static_cast<double>(total);
     result.metrics["passed"] = static_cast<double>(passed);
     std::string stub_list;
     for (const std::string& function : stub_functions)
         stub_list += (stub_list.empty() ? "" : ", ") + function;
     if (total == 0) {
-        result.outcome = Outcome::failed;
         result.summary = "the case file has no cases";
     } else if (stubs == total) {
-        result.outcome = Outcome::not_implemented;
         result.summary = "not implemented: " + stub_list;
     } else if (measured) {
-        result.score = entry.score(*measured);
-        result.outcome = passed == total ? Outcome::passed : Outcome::failed;
         result.summary = measured_summary;
     } else {
-        const double fraction = static_cast<double>(passed) / static_cast<double>(total);
-        result.score = entry.score(fraction);
-        result.outcome = passed == total ? Outcome::passed : Outcome::failed;
         result.summary = std::to_string(passed) + " of " + std::to_string(total) + " cases right";
         if (!stub_list.empty()) result.summary += "; not implemented: " + stub_list;
         if (sample) {

@@ -14,6 +14,36 @@ double RubricEntry::score(double fraction) const {
     return points * (fraction - zero_at) / (full_at - zero_at);
 }
 
+CheckResult scored_check(std::string id, int stage, std::string kind, std::string name,
+                         const RubricEntry& entry, Outcome measured, double fraction,
+                         bool scorable) {
+    CheckResult result;
+    result.id = std::move(id);
+    result.stage = stage;
+    result.kind = std::move(kind);
+    result.name = std::move(name);
+    result.max_score = entry.points;
+    result.visibility = entry.visibility;
+    scorable =
+        scorable && measured != Outcome::did_not_compile && measured != Outcome::not_implemented;
+    result.score = scorable ? entry.score(fraction) : 0.0;
+    // Passed means full points, in every report: the rubric may give full points short of every
+    // case (a lecture method loses a few slivers by design), and Gradescope shows a test's status
+    // in colour, so a check at its maximum must not read "failed", nor one short of it "passed"
+    // (a speed check's partial points). A stub, a check that did not compile or could not measure
+    // anything keeps its own outcome: it earned nothing. A check worth no points (reported only)
+    // keeps what it measured.
+    result.outcome = measured;
+    if (scorable && entry.points > 0.0) {
+        if (result.score >= entry.points) {
+            result.outcome = Outcome::passed;
+        } else if (measured == Outcome::passed) {
+            result.outcome = Outcome::failed;
+        }
+    }
+    return result;
+}
+
 const RubricEntry& Rubric::entry(const std::string& id) const {
     const auto found = checks.find(id);
     if (found == checks.end()) throw std::out_of_range("the rubric has no entry for check " + id);

@@ -29,6 +29,17 @@ struct Rubric {
     const RubricEntry& entry(const std::string& id) const;
 };
 
+/// A check's result as the rubric scores what it measured, the same in the grader
+/// (grader/grade/check_score.h) and in `raystep grade` (public_check_run.h): the check's names,
+/// its points and visibility from `entry`, its score and outcome from the `measured` outcome and
+/// `fraction`. A stage that did not compile or is still a stub earns nothing, nor does a check
+/// that could not measure anything (`scorable` false); one that crashed or ran out of time
+/// partway keeps the cases it answered right. The caller fills in the rest (summary,
+/// counterexamples, metrics).
+CheckResult scored_check(std::string id, int stage, std::string kind, std::string name,
+                         const RubricEntry& entry, Outcome measured, double fraction,
+                         bool scorable = true);
+
 /// Reads a rubric file. Throws std::runtime_error naming the file and the problem (a missing
 /// field, a zero_at not below full_at, an unknown visibility).
 Rubric load_rubric(const std::filesystem::path& file);

@@ -11,6 +11,7 @@
 #include "app/grade/public_check_run.h"
 #include "app/grade/render_judge.h"
 #include "app/grade/rubric.h"
+#include "app/grade/value_judges.h"
 #include "app/probe/call_reply.h"
 #include "app/protocol/image_json.h"
 #include "grader/grade/checks/data_judged.h"
@@ -86,6 +87,34 @@ TEST_CASE("every public check the release writes reads back as written and is ju
         }
     }
     std::filesystem::remove_all(folder);
+}
+
+TEST_CASE("raystep grade scores a check by the grader's rule: full points read passed") {
+    // Nine of ten dot products right against a rubric that pays in full from 0.9: the grader calls
+    // that passed (scored_check), and so must a student's `raystep grade`.
+    PublicCheck check{"stage1.unit", 1, "unit", "vectors", {}};
+    for (int k = 0; k < 10; ++k) {
+        const double expected = k == 0 ? 1.0 : 32.0;
+        check.cases.push_back(
+            {"dot",
+             {"dot", probe::Json::array({probe::vec3({1, 2, 3}), probe::vec3({4, 5, 6})})},
+             near_number_judge(expected, 0.0),
+             ""});
+    }
+    Rubric rubric;
+    rubric.checks["stage1.unit"] = {3.0, 0.9, 0.5, Visibility::visible};
+    const CheckResult result =
+        run_public_check(check, rubric, probe::stage_calls(), RAYSTEP_SOURCE_DIR);
+    REQUIRE(result.outcome == Outcome::passed);
+    REQUIRE(result.score == 3.0);
+    REQUIRE(result.counterexamples.size() == 1);
+    // Paid in full only at 1.0, and nothing at 0.7, the same nine earn 2 of 3 points and fail.
+    rubric.checks["stage1.unit"].full_at = 1.0;
+    rubric.checks["stage1.unit"].zero_at = 0.7;
+    const CheckResult short_of_full =
+        run_public_check(check, rubric, probe::stage_calls(), RAYSTEP_SOURCE_DIR);
+    REQUIRE(short_of_full.outcome == Outcome::failed);
+    REQUIRE(short_of_full.score == Approx(2.0));
 }
 
 TEST_CASE("a public case file names the line of a case whose judge is unknown") {
