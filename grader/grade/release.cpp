@@ -112,6 +112,7 @@ ReleaseSummary make_release(const fs::path& source, const fs::path& output) {
                                   scene.height, *parse_view(furthest),
                                   scene.point_lights.size() + scene.directional_lights.size(),
                                   records);
+            ++summary.reference_traces;
         } catch (const std::exception& error) {
             summary.skipped.push_back(relative.string() + ": " + error.what());
         }

@@ -10,6 +10,7 @@ namespace raystep::grade {
 struct ReleaseSummary {
     std::size_t files = 0;             ///< copied from the repository
     std::size_t reference_images = 0;  ///< rendered into scenes/
+    std::size_t reference_traces = 0;  ///< one per scene rendered, for `raystep trace --compare`
     std::vector<std::string> skipped;  ///< scenes that could not be rendered, and why
     std::size_t public_checks = 0;     ///< case files written into grading/public/
 };

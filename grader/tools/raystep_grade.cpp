@@ -153,9 +153,10 @@ int grade_many(const BatchArguments& arguments) {
 int release(const std::string& output) {
     const ReleaseSummary summary = make_release(this_build_toolchain().source, output);
     std::printf(
-        "wrote the student release to %s: %zu files, %zu reference images, %zu public "
-        "case files\n",
-        output.c_str(), summary.files, summary.reference_images, summary.public_checks);
+        "wrote the student release to %s: %zu files, %zu reference images, %zu reference "
+        "traces, %zu public case files\n",
+        output.c_str(), summary.files, summary.reference_images, summary.reference_traces,
+        summary.public_checks);
     for (const std::string& skipped : summary.skipped)
         std::printf("  not rendered: %s\n", skipped.c_str());
     return 0;
