@@ -15,6 +15,17 @@ std::string full_text(const Vec3& v) {
     return "(" + full_text(v.x) + ", " + full_text(v.y) + ", " + full_text(v.z) + ")";
 }
 
+std::string matrix_text(const Mat4& m) {
+    std::string text;
+    for (int r = 0; r < 4; ++r) {
+        text += r == 0 ? "rows [" : "; [";
+        for (int c = 0; c < 4; ++c)
+            text += (c == 0 ? "" : ", ") + full_text(m[c][r]);
+        text += "]";
+    }
+    return text;
+}
+
 std::string ray_text(const Ray& r) {
     return "origin " + full_text(r.origin) + ", direction " + full_text(r.direction) + ", t in [" +
            full_text(r.t_min) + ", " + full_text(r.t_max) + "]";

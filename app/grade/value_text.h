@@ -17,6 +17,9 @@ std::string full_text(double x);
 /// `(1, 2.5, -3)`, each coordinate as full_text writes it.
 std::string full_text(const Vec3& v);
 
+/// A 4x4 matrix row by row: `rows [a, b, c, d]; [...]; [...]; [...]`.
+std::string matrix_text(const Mat4& m);
+
 /// `origin (...), direction (...), t in [t_min, t_max]`.
 std::string ray_text(const Ray& r);
 

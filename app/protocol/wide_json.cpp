@@ -30,4 +30,25 @@ WideVec wide_vec3_from(const Json& j) {
     return {wide_from(j[0]), wide_from(j[1]), wide_from(j[2])};
 }
 
+Json wide_mat4(const WideMat& m) {
+    Json entries = Json::array();
+    for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r)
+            entries.push_back(wide(m[c][r]));
+    }
+    return entries;
+}
+
+WideMat wide_mat4_from(const Json& j) {
+    if (!j.is_array() || j.size() != 16) {
+        throw std::invalid_argument("expected a long-double matrix as sixteen [hi, lo] pairs");
+    }
+    WideMat m;
+    for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r)
+            m[c][r] = wide_from(j[4 * c + r]);
+    }
+    return m;
+}
+
 }  // namespace raystep::probe

@@ -19,4 +19,8 @@ Wide wide_from(const Json& j);
 Json wide_vec3(const WideVec& v);
 WideVec wide_vec3_from(const Json& j);
 
+/// Sixteen such pairs, column by column, as mat4 writes a double matrix.
+Json wide_mat4(const WideMat& m);
+WideMat wide_mat4_from(const Json& j);
+
 }  // namespace raystep::probe

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include "base/math/types.h"
@@ -11,6 +12,7 @@ namespace raystep {
 // is far below the tolerances a check allows.
 using Wide = long double;
 using WideVec = glm::vec<3, Wide>;
+using WideMat = glm::mat<4, 4, Wide>;
 
 /// The unit roundoff of a double (2^-53) as a long double, for tolerances summed in long double.
 inline constexpr Wide kWideUnitRoundoff = 0x1p-53L;
@@ -23,6 +25,26 @@ inline WideVec widen(const Vec3& v) {
 /// The nearest double vector, each coordinate rounded once.
 inline Vec3 narrow(const WideVec& v) {
     return {static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)};
+}
+
+/// A double matrix, exactly.
+inline WideMat widen(const Mat4& m) {
+    WideMat w;
+    for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r)
+            w[c][r] = m[c][r];
+    }
+    return w;
+}
+
+/// The nearest double matrix, each entry rounded once.
+inline Mat4 narrow(const WideMat& w) {
+    Mat4 m;
+    for (int c = 0; c < 4; ++c) {
+        for (int r = 0; r < 4; ++r)
+            m[c][r] = static_cast<double>(w[c][r]);
+    }
+    return m;
 }
 
 }  // namespace raystep

@@ -34,24 +34,6 @@ Wide frobenius(const Mat4& m) {
 
 }  // namespace
 
-WideMat widen(const Mat4& m) {
-    WideMat w;
-    for (int c = 0; c < 4; ++c) {
-        for (int r = 0; r < 4; ++r)
-            w[c][r] = m[c][r];
-    }
-    return w;
-}
-
-Mat4 narrow(const WideMat& w) {
-    Mat4 m;
-    for (int c = 0; c < 4; ++c) {
-        for (int r = 0; r < 4; ++r)
-            m[c][r] = static_cast<double>(w[c][r]);
-    }
-    return m;
-}
-
 WideMat wide_translation(const WideVec& offset) {
     WideMat m(1.0L);
     m[3] = WideVec4(offset, 1.0L);

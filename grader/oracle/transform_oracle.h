@@ -18,13 +18,6 @@
 namespace raystep {
 
 using WideVec4 = glm::vec<4, Wide>;
-using WideMat = glm::mat<4, 4, Wide>;
-
-/// A double matrix, exactly.
-WideMat widen(const Mat4& m);
-
-/// The nearest double matrix, each entry rounded once.
-Mat4 narrow(const WideMat& w);
 
 /// The op matrices: T(offset), S(factors), and R(axis, degrees) by Rodrigues,
 /// c I + (1 - c) a a^T + s [a]x with a the unit axis (a long double squares an axis of 1e-200).

@@ -54,17 +54,6 @@ std::string ops_text(const std::vector<TransformOp>& ops) {
     return "[" + text + "]";
 }
 
-std::string matrix_text(const Mat4& m) {
-    std::string text;
-    for (int r = 0; r < 4; ++r) {
-        text += r == 0 ? "rows [" : "; [";
-        for (int c = 0; c < 4; ++c)
-            text += (c == 0 ? "" : ", ") + full_text(m[c][r]);
-        text += "]";
-    }
-    return text;
-}
-
 std::string transform_text(const Transform& t) {
     return "M " + matrix_text(t.matrix);
 }

@@ -36,9 +36,6 @@ std::string region_text(const ErrorBoundOrigin& region);
 /// A transform's ops in file order: `[translate (...), rotate (...) by 30, scale (...)]`.
 std::string ops_text(const std::vector<TransformOp>& ops);
 
-/// A 4x4 matrix row by row: `rows [a, b, c, d]; [...]; [...]; [...]`.
-std::string matrix_text(const Mat4& m);
-
 /// A transform by its matrix: `M rows [...]`.
 std::string transform_text(const Transform& t);
 

@@ -3,22 +3,26 @@
 // same products and roots computed in long double (grader/oracle/transform_oracle.h).
 //
 // Every call but compose gets its transform from here (matrix and inverse built from the ops in
-// long double), so that each function is judged on its own.
+// long double), so that each function is judged on its own. Every case is judged by a data judge
+// (app/grade/transform_judges.h, value_judges.h): the public ones go into the student release as
+// data, and the others are judged by the same code.
 
-#include <algorithm>
-#include <cmath>
+#include <array>
 #include <cstdint>
-#include <cstdlib>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "app/grade/transform_judges.h"
+#include "app/grade/value_judges.h"
 #include "base/math/portable_random.h"
 #include "base/math/unit_roundoff.h"
 #include "grader/grade/checks/cpp_literal.h"
+#include "grader/grade/checks/data_judged.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
 #include "grader/oracle/transform_oracle.h"
@@ -28,6 +32,12 @@ namespace raystep::grade {
 namespace {
 
 using probe::Json;
+
+// The stage's public and generated checks' names, shared by the grader's checks and the release's
+// case files.
+constexpr const char* kPublicName = "transform matrices, compose and frames on hand-worked values";
+constexpr const char* kOracleName =
+    "rotations, random op chains, rays, points, normals and ellipsoids against long double";
 
 const double kInf = std::numeric_limits<double>::infinity();
 
@@ -43,51 +53,27 @@ TransformOp scale_op(const Vec3& factors) {
     return {TransformOp::Kind::scale, factors, 0.0};
 }
 
-// Every entry within its tolerance; else the first that is not, and the whole matrix got.
-Judgement near_matrix(const Mat4& got, const WideMat& expected, const WideMat& tolerance,
-                      const std::string& name) {
-    for (int r = 0; r < 4; ++r) {
-        for (int c = 0; c < 4; ++c) {
-            if (!(std::abs(got[c][r] - expected[c][r]) <= tolerance[c][r])) {
-                const std::string entry =
-                    name + " row " + std::to_string(r) + " column " + std::to_string(c) + " ";
-                return wrong(entry + full_text(static_cast<double>(expected[c][r])) + " (within " +
-                                 full_text(static_cast<double>(tolerance[c][r])) + ")",
-                             entry + full_text(got[c][r]) + "; " + name + " " + matrix_text(got));
-            }
-        }
-    }
-    return right();
-}
-
-Judgement near_matrix(const ProbeAnswer& answer, const WideMat& expected,
-                      const WideMat& tolerance) {
-    if (answer.kind != ProbeAnswer::Kind::result) return wrong(matrix_text(narrow(expected)), "");
-    return near_matrix(probe::mat4_from(answer.value), expected, tolerance, "matrix");
-}
-
 // rotation(axis, degrees) against Rodrigues in long double.
-ProbeCase rotation_case(const Vec3& axis, double degrees) {
+PublicCase rotation_case(const Vec3& axis, double degrees) {
     const WideOp w = wide_op(rotate_op(axis, degrees));
-    const WideMat tolerance = 8 * kWideUnitRoundoff * w.size;
     return {"rotation(" + full_text(axis) + ", " + full_text(degrees) + ")",
             {"rotation", Json::array({probe::vec3(axis), probe::number(degrees)})},
-            [=](const ProbeAnswer& a) { return near_matrix(a, w.matrix, tolerance); },
+            near_wide_matrix_judge(w.matrix, 8 * kWideUnitRoundoff * w.size),
             "rotation(" + cpp(axis) + ", " + cpp(degrees) + ")"};
 }
 
 // translation and scaling have exact entries.
-ProbeCase exact_matrix_case(const std::string& call, const Vec3& v, const WideMat& expected) {
+PublicCase exact_matrix_case(const std::string& call, const Vec3& v, const WideMat& expected) {
     return {call + "(" + full_text(v) + ")",
             {call, Json::array({probe::vec3(v)})},
-            [=](const ProbeAnswer& a) { return near_matrix(a, expected, WideMat(0.0L)); },
+            near_wide_matrix_judge(expected, WideMat(0.0L)),
             call + "(" + cpp(v) + ")"};
 }
 
-ProbeCase invalid_axis_case(const Vec3& axis, double degrees) {
+PublicCase invalid_axis_case(const Vec3& axis, double degrees) {
     return {"rotation(" + full_text(axis) + ", " + full_text(degrees) + "): no axis",
             {"rotation", Json::array({probe::vec3(axis), probe::number(degrees)})},
-            [](const ProbeAnswer& a) { return threw(a, "invalid_argument"); },
+            threw_judge("invalid_argument"),
             "rotation(" + cpp(axis) + ", " + cpp(degrees) + ")"};
 }
 
@@ -106,37 +92,24 @@ std::string compose_code(const std::vector<TransformOp>& ops) {
     return "compose({" + code + "})";
 }
 
-Judgement judge_compose(const ProbeAnswer& answer, const WideTransform& expected,
-                        const WideMat& inverse_tolerance) {
-    if (answer.kind != ProbeAnswer::Kind::result) {
-        return wrong("matrix " + matrix_text(narrow(expected.matrix)), "");
-    }
-    const Transform got = probe::transform_from(answer.value);
-    const Judgement matrix =
-        near_matrix(got.matrix, expected.matrix, expected.matrix_tolerance, "matrix");
-    if (!matrix.passed) return matrix;
-    return near_matrix(got.inverse, expected.inverse, inverse_tolerance, "inverse");
-}
-
-ProbeCase compose_case(const std::vector<TransformOp>& ops) {
+PublicCase compose_case(const std::vector<TransformOp>& ops) {
     const WideTransform expected = wide_compose(ops);
     return {"compose(" + ops_text(ops) + ")",
             {"compose", ops_json(ops)},
-            [=](const ProbeAnswer& a) {
-                return judge_compose(a, expected, expected.inverse_tolerance);
-            },
+            near_wide_transform_judge(expected.matrix, expected.matrix_tolerance, expected.inverse,
+                                      expected.inverse_tolerance),
             compose_code(ops)};
 }
 
 // Where every op's inverse is exact in double (a negated offset, a reciprocal that rounds to
 // itself) and each entry of their product is a single product, exact too, the inverse must be
 // exact: built from the ops, never by inverting M, which divides by its determinant.
-ProbeCase exact_inverse_case(const std::vector<TransformOp>& ops) {
-    WideTransform expected = wide_compose(ops);
-    expected.inverse = widen(narrow(expected.inverse));
+PublicCase exact_inverse_case(const std::vector<TransformOp>& ops) {
+    const WideTransform expected = wide_compose(ops);
     return {"compose(" + ops_text(ops) + "): the inverse from the ops' exact inverses",
             {"compose", ops_json(ops)},
-            [=](const ProbeAnswer& a) { return judge_compose(a, expected, WideMat(0.0L)); },
+            near_wide_transform_judge(expected.matrix, expected.matrix_tolerance,
+                                      widen(narrow(expected.inverse)), WideMat(0.0L)),
             compose_code(ops)};
 }
 
@@ -144,117 +117,59 @@ ProbeCase exact_inverse_case(const std::vector<TransformOp>& ops) {
 // infinity on the zero axis's diagonal (NaN where a product meets it) rather than a finite
 // stand-in, which would pass for an inverse and be none. M itself and the other axes'
 // reciprocals are exact.
-ProbeCase singular_scale_case(const Vec3& factors) {
+PublicCase singular_scale_case(const Vec3& factors) {
     const std::vector<TransformOp> ops{scale_op(factors)};
-    const Mat4 matrix = narrow(wide_scaling(widen(factors)));
-    std::string diagonal;
+    std::array<std::optional<double>, 3> diagonal;
     for (int k = 0; k < 3; ++k) {
-        diagonal += (k == 0 ? "" : ", ") + (factors[k] == 0.0 ? std::string("not finite (1 / 0)")
-                                                              : full_text(1.0 / factors[k]));
+        if (factors[k] != 0.0) diagonal[k] = 1.0 / factors[k];
     }
-    const std::string text = "matrix " + matrix_text(matrix) + ", inverse diagonal " + diagonal;
     return {"compose(" + ops_text(ops) + "): a zero factor's reciprocal is infinite",
             {"compose", ops_json(ops)},
-            [=](const ProbeAnswer& a) {
-                if (a.kind != ProbeAnswer::Kind::result) return wrong(text, "");
-                const Transform got = probe::transform_from(a.value);
-                const Judgement m = near_matrix(got.matrix, widen(matrix), WideMat(0.0L), "matrix");
-                if (!m.passed) return m;
-                for (int k = 0; k < 3; ++k) {
-                    const double entry = got.inverse[k][k];
-                    const bool ok =
-                        factors[k] == 0.0 ? !std::isfinite(entry) : entry == 1.0 / factors[k];
-                    if (!ok) return wrong(text, "inverse " + matrix_text(got.inverse));
-                }
-                return right();
-            },
+            singular_transform_judge(narrow(wide_scaling(widen(factors))), diagonal),
             compose_code(ops)};
 }
 
 // The world ray in the object's frame: by M^-1, the direction not renormalized, t unchanged.
-ProbeCase ray_to_object_case(const std::string& name, const Transform& t, const Ray& ray) {
+PublicCase ray_to_object_case(const std::string& name, const Transform& t, const Ray& ray) {
     const WideProduct origin = wide_product(t.inverse, ray.origin, 1.0);
     const WideProduct direction = wide_product(t.inverse, ray.direction, 0.0);
-    const Ray expected{narrow(origin.value), narrow(direction.value), ray.t_min, ray.t_max};
     return {name + ": ray_to_object of " + ray_text(ray) + ", " + transform_text(t),
             {"ray_to_object", Json::array({probe::transform(t), probe::ray(ray)})},
-            [=](const ProbeAnswer& a) {
-                const std::string text =
-                    ray_text(expected) + " (within " +
-                    full_text(8 * kUnitRoundoff * narrow(origin.size)) + " and " +
-                    full_text(8 * kUnitRoundoff * narrow(direction.size)) + ")";
-                const auto accept = [&](const Ray& got) {
-                    return near(got.origin, origin.value, 8 * kWideUnitRoundoff * origin.size) &&
-                           near(got.direction, direction.value,
-                                8 * kWideUnitRoundoff * direction.size) &&
-                           got.t_min == ray.t_min && got.t_max == ray.t_max;
-                };
-                return judge_result(a, text, probe::ray_from, accept, ray_text);
-            },
+            near_wide_ray_judge(origin.value, 8 * kWideUnitRoundoff * origin.size, direction.value,
+                                8 * kWideUnitRoundoff * direction.size, ray.t_min, ray.t_max),
             "ray_to_object(" + cpp(t) + ", " + cpp(ray) + ")"};
 }
 
-ProbeCase point_to_world_case(const std::string& name, const Transform& t, const Vec3& p) {
+PublicCase point_to_world_case(const std::string& name, const Transform& t, const Vec3& p) {
     const WideProduct expected = wide_product(t.matrix, p, 1.0);
     const Vec3 tolerance = 8 * kUnitRoundoff * narrow(expected.size);
     return {name + ": point_to_world of " + full_text(p) + ", " + transform_text(t),
             {"point_to_world", Json::array({probe::transform(t), probe::vec3(p)})},
-            [=](const ProbeAnswer& a) {
-                const std::string text =
-                    full_text(narrow(expected.value)) + " (within " + full_text(tolerance) + ")";
-                return judge_result(
-                    a, text, probe::vec3_from,
-                    [&](const Vec3& got) { return near(got, expected.value, widen(tolerance)); },
-                    vec3_text);
-            },
+            near_wide_vec3_judge(expected.value, widen(tolerance)),
             "point_to_world(" + cpp(t) + ", " + cpp(p) + ")"};
 }
 
-ProbeCase normal_to_world_case(const std::string& name, const Transform& t, const Vec3& n) {
+PublicCase normal_to_world_case(const std::string& name, const Transform& t, const Vec3& n) {
     const WideNormal expected = wide_normal(t.inverse, widen(n));
     return {name + ": normal_to_world of " + full_text(n) + ", " + transform_text(t),
             {"normal_to_world", Json::array({probe::transform(t), probe::vec3(n)})},
-            [=](const ProbeAnswer& a) {
-                const std::string text = "unit " + full_text(narrow(expected.value)) + " (within " +
-                                         full_text(narrow(expected.tolerance)) + ")";
-                const auto accept = [&](const Vec3& got) {
-                    return near(got, expected.value, expected.tolerance) && unit_length(got);
-                };
-                return judge_result(a, text, probe::vec3_from, accept, vec3_text);
-            },
+            near_wide_vec3_judge(expected.value, expected.tolerance, true),
             "normal_to_world(" + cpp(t) + ", " + cpp(n) + ")"};
 }
 
-std::string hit_text(const std::optional<Hit>& h) {
-    if (!h) return "a miss";
-    return "t = " + full_text(h->t) + ", normal " + full_text(h->normal);
-}
-
-ProbeCase transformed_sphere_case(const std::string& name, const Ray& ray, const Sphere& sphere,
-                                  const Transform& t) {
+PublicCase transformed_sphere_case(const std::string& name, const Ray& ray, const Sphere& sphere,
+                                   const Transform& t) {
     const TransformedSphereHit e = wide_transformed_hit(ray, sphere, t);
-    const std::string text = e.hit ? "t = " + full_text(e.t) + " (within " +
-                                         full_text(e.t_tolerance) + "), unit normal " +
-                                         full_text(narrow(e.normal.value)) + " (within " +
-                                         full_text(narrow(e.normal.tolerance)) + ")"
-                                   : "a miss";
     return {name + ": " + ray_text(ray) + ", sphere centre " + full_text(sphere.center) +
                 " radius " + full_text(sphere.radius) + ", " + transform_text(t),
             {"intersect_transformed_sphere",
              Json::array({probe::ray(ray), probe::sphere(sphere), probe::transform(t)})},
-            [=](const ProbeAnswer& a) {
-                const auto accept = [&](const std::optional<Hit>& got) {
-                    if (!got || !e.hit) return got.has_value() == e.hit;
-                    return std::abs(got->t - e.t) <= e.t_tolerance &&
-                           near(got->normal, e.normal.value, e.normal.tolerance) &&
-                           unit_length(got->normal);
-                };
-                return judge_result(a, text, probe::hit_from, accept, hit_text);
-            },
+            e.hit ? near_wide_hit_judge(e.t, e.t_tolerance, e.normal.value, e.normal.tolerance)
+                  : wide_miss_judge(),
             "intersect_transformed_sphere(" + cpp(ray) + ", " + cpp(sphere) + ", " + cpp(t) + ")"};
 }
 
-std::vector<ProbeCase> public_cases() {
+std::vector<PublicCase> public_cases() {
     // M = T(1, 2, 3) S(2, 4, 0.5): object (1, 1, 2) goes to (2, 4, 1) + (1, 2, 3) = (3, 6, 4).
     const Transform moved_and_scaled =
         transform_of({translate_op({1, 2, 3}), scale_op({2, 4, 0.5})});
@@ -307,7 +222,7 @@ std::vector<ProbeCase> public_cases() {
 }
 
 // The hidden ones: the contract's edge cases a student's own tests may not reach.
-std::vector<ProbeCase> hidden_cases() {
+std::vector<PublicCase> hidden_cases() {
     const Transform turned_and_squashed =
         transform_of({translate_op({-2, 0.5, 7}), rotate_op({1, 1, 0}, 40), scale_op({0.5, 3, 1})});
     // A sphere of radius 0.5 at (1, 0, 0) under a uniform scale of 2: the world sphere of
@@ -364,8 +279,8 @@ std::vector<ProbeCase> hidden_cases() {
     };
 }
 
-// The oracle's cases, each drawn from its own generator (add_seeded_cases); the cases that share
-// an op chain (a ray, a point and a normal under it) from their first one's.
+// The grader's generated cases are drawn from kOracleSeed, a release's sample from kOracleSeed +
+// kSampleSeedOffset.
 constexpr std::uint64_t kOracleSeed = 0x5EED'0005;
 
 // A chain of 1 to 6 random ops: offsets up to 1e3, any axis and angle, scale factors from 1e-2
@@ -398,13 +313,13 @@ std::vector<TransformOp> random_ops(PortableRandom& random) {
     return ops;
 }
 
-ProbeCase random_rotation_case(PortableRandom& random) {
+PublicCase random_rotation_case(PortableRandom& random) {
     const Vec3 axis = random.unit_vector() * (0.01 + 10 * random.unit());
     return rotation_case(axis, random.uniform(-720, 720));
 }
 
 // A ray, a point and a normal under one op chain.
-std::vector<ProbeCase> random_frame_cases(PortableRandom& random) {
+std::vector<PublicCase> random_frame_cases(PortableRandom& random) {
     const std::vector<TransformOp> ops = random_ops(random);
     const Transform t = transform_of(ops);
     const std::string name = ops_text(ops);
@@ -421,7 +336,7 @@ std::vector<ProbeCase> random_frame_cases(PortableRandom& random) {
 // A sphere, a point on it and a ray from outside aimed at that point at least 17 degrees off
 // grazing (so that the point is where it enters); case k % 5 == 3 from inside, k % 5 == 4
 // passing by; every other one with a world direction that is not unit length.
-ProbeCase random_transformed_sphere_case(PortableRandom& random, int k) {
+PublicCase random_transformed_sphere_case(PortableRandom& random, int k) {
     const std::vector<TransformOp> ops = random_ops(random);
     const Transform t = transform_of(ops);
     const Vec3 center = random.point(1);
@@ -446,26 +361,58 @@ ProbeCase random_transformed_sphere_case(PortableRandom& random, int k) {
     return transformed_sphere_case(ops_text(ops), {world_origin, world_direction}, sphere, t);
 }
 
-std::vector<ProbeCase> oracle_cases() {
-    std::vector<ProbeCase> cases;
-    add_seeded_cases(cases, kOracleSeed, 100,
-                     [](PortableRandom& r, int) { return random_rotation_case(r); });
-    add_seeded_cases(cases, kOracleSeed, 200,
-                     [](PortableRandom& r, int) { return compose_case(random_ops(r)); });
-    add_seeded_case_groups(cases, kOracleSeed, 100,
-                           [](PortableRandom& r, int) { return random_frame_cases(r); });
-    add_seeded_cases(cases, kOracleSeed, 200, random_transformed_sphere_case);
+// How many of each kind of generated case.
+struct GeneratedCounts {
+    int rotations = 0;
+    int composes = 0;
+    int frame_groups = 0;
+    int transformed_spheres = 0;
+};
+
+// The generated cases, each drawn from PortableRandom(seed, i) with i the index it gets in the
+// list, so that `--case i` rebuilds it alone; the cases that share an op chain (a ray, a point and
+// a normal under it) from their first one's.
+std::vector<PublicCase> generated_cases(std::uint64_t seed, const GeneratedCounts& counts) {
+    std::vector<PublicCase> cases;
+    for (int k = 0; k < counts.rotations; ++k) {
+        PortableRandom random(seed, cases.size());
+        cases.push_back(random_rotation_case(random));
+    }
+    for (int k = 0; k < counts.composes; ++k) {
+        PortableRandom random(seed, cases.size());
+        cases.push_back(compose_case(random_ops(random)));
+    }
+    for (int k = 0; k < counts.frame_groups; ++k) {
+        PortableRandom random(seed, cases.size());
+        for (PublicCase& c : random_frame_cases(random))
+            cases.push_back(std::move(c));
+    }
+    for (int k = 0; k < counts.transformed_spheres; ++k) {
+        PortableRandom random(seed, cases.size());
+        cases.push_back(random_transformed_sphere_case(random, k));
+    }
     return cases;
 }
 
 }  // namespace
 
+PublicCheck stage5_public_check() {
+    return {"stage5.unit", 5, "unit", kPublicName, public_cases()};
+}
+
+PublicCheck stage5_sample_check() {
+    return sample_check(5, kOracleName,
+                        generated_cases(kOracleSeed + kSampleSeedOffset, {5, 10, 5, 10}));
+}
+
 std::vector<CheckDefinition> stage5_checks() {
     return stage_case_checks(
-        {5, "transform matrices, compose and frames on hand-worked values", public_cases,
-         "transforms on the contract's edge cases", hidden_cases,
-         "rotations, random op chains, rays, points, normals and ellipsoids against long double",
-         oracle_cases});
+        {5, kPublicName, [] { return data_judged_cases(public_cases()); },
+         "transforms on the contract's edge cases",
+         [] { return data_judged_cases(hidden_cases()); }, kOracleName,
+         [] {
+             return data_judged_cases(generated_cases(kOracleSeed, {100, 200, 100, 200}));
+         }});
 }
 
 }  // namespace raystep::grade

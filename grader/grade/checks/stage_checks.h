@@ -25,12 +25,14 @@ std::vector<CheckDefinition> render_checks();
 /// "stageN.unit" check runs, and what the student release's `raystep grade` runs.
 PublicCheck stage1_public_check();
 PublicCheck stage2_public_check();
+PublicCheck stage5_public_check();
 
 /// A sample of each stage's generated cases for the student release (kSampleKind,
 /// app/grade/public_case.h): a few of each kind the "stageN.oracle" check draws, decided by the
 /// same oracle, from its seeds plus kSampleSeedOffset (sample_check, data_judged.h).
 PublicCheck stage1_sample_check();
 PublicCheck stage2_sample_check();
+PublicCheck stage5_sample_check();
 
 /// The render checks as data, each with the reference's render at the grader's size, made from
 /// the scenes under `source`/scenes: the grader judges a render by the same rule
