@@ -3,6 +3,8 @@
 
 #include <cfloat>
 #include <cmath>
+#include <set>
+#include <string>
 
 #include <catch2/catch.hpp>
 
@@ -18,6 +20,17 @@ grade::ProbeAnswer result(const probe::Json& value) {
     answer.kind = grade::ProbeAnswer::Kind::result;
     answer.value = value;
     return answer;
+}
+
+TEST_CASE("every data judge this build registers has a name of its own") {
+    // build_judge takes the first judge of a name: a second, from another file, would be
+    // silently hidden, and a case file meant for it judged by the other.
+    std::set<std::string> names;
+    for (const grade::DataJudge& judge : grade::JudgeRegistry::entries()) {
+        INFO(judge.name);
+        CHECK(names.insert(judge.name).second);
+    }
+    CHECK(names.size() > 10);
 }
 
 TEST_CASE("a long double survives its [hi, lo] pair bit for bit") {
