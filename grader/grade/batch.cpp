@@ -1,13 +1,18 @@
 #include "grader/grade/batch.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <mutex>
+#include <optional>
+#include <thread>
 
 #include "grader/grade/merge_shards.h"
 #include "grader/grade/report_folders.h"
 #include "grader/grade/report_json.h"
+#include "grader/grade/speed_pass.h"
 #include "grader/grade/submission.h"
 #include "grader/grade/write_reports.h"
 #include "grader/sandbox/sandbox_paths.h"
@@ -94,40 +99,94 @@ BatchTally grade_class(const BatchOptions& options, const Rubric& rubric,
             record.students.push_back(entry.name);
         write_shard_record(record, options.output);
     }
-    BatchTally tally;
-    std::vector<GradeReport> reports;
+
+    // What each submission still needs: a report finished before (resumed) may lack only the
+    // speed checks, when a batch stopped between its passes.
+    std::vector<std::optional<GradeReport>> reports(mine.size());
+    std::vector<bool> failed(mine.size(), false);
+    std::vector<bool> resumed(mine.size(), false);
     for (std::size_t k = 0; k < mine.size(); ++k) {
+        reports[k] = finished_report(options.output / mine[k].name);
+        resumed[k] =
+            reports[k].has_value() && (options.skip_speed || !lacks_speed_checks(*reports[k]));
+    }
+    std::mutex mutex;  // the tally's stderr lines and the progress line
+    std::size_t done = 0;
+    const auto progress = [&](const char* pass, std::size_t total, const std::string& name) {
+        if (!options.progress) return;
+        const std::lock_guard<std::mutex> lock(mutex);
+        std::fprintf(stderr, "\r\033[K%s [%zu/%zu] %s", pass, ++done, total, name.c_str());
+    };
+    const auto grade = [&](std::size_t k, bool speed) {
         const ClassEntry& entry = mine[k];
-        const fs::path folder = options.output / entry.name;
-        if (options.progress) {
-            std::fprintf(stderr, "\r\033[K[%zu/%zu] %s", k + 1, mine.size(), entry.name.c_str());
-        }
-        if (std::optional<GradeReport> done = finished_report(folder)) {
-            reports.push_back(std::move(*done));
-            ++tally.resumed;
-            continue;
-        }
+        GradeOptions one;
+        one.submission = entry.submission;
+        one.output = options.output / entry.name;
+        one.jobs = 1;
+        one.skip_speed = !speed;
+        one.only_speed = speed;
+        one.reference_probe = options.reference_probe;
+        one.reproduce = "raystep-grade submission " + entry.submission.string();
         try {
-            GradeOptions one;
-            one.submission = entry.submission;
-            one.output = folder;
-            one.jobs = options.jobs;
-            one.skip_speed = options.skip_speed;
-            one.reference_probe = options.reference_probe;
-            one.reproduce = "raystep-grade submission " + entry.submission.string();
             GradeReport report = grade_submission(one, rubric, toolchain);
             report.student = entry.name;
-            write_reports(report, folder);
-            reports.push_back(std::move(report));
-            ++tally.graded;
+            if (speed) report = with_speed_checks(std::move(*reports[k]), report);
+            write_reports(report, one.output);
+            reports[k] = std::move(report);
         } catch (const std::exception& error) {
+            const std::lock_guard<std::mutex> lock(mutex);
             std::fprintf(stderr, "\nraystep-grade: %s: %s\n", entry.submission.string().c_str(),
                          error.what());
-            ++tally.failed;
+            failed[k] = true;
+            reports[k].reset();
+        }
+    };
+
+    // Pass 1: every check but speed, `jobs` submissions at a time, each with one compile or check
+    // at a time.
+    std::vector<std::size_t> first_pass;
+    for (std::size_t k = 0; k < mine.size(); ++k) {
+        if (!reports[k]) first_pass.push_back(k);
+    }
+    std::atomic<std::size_t> next{0};
+    std::vector<std::thread> workers;
+    for (int w = 0; w < std::max(1, options.jobs); ++w) {
+        workers.emplace_back([&] {
+            for (std::size_t i = next++; i < first_pass.size(); i = next++) {
+                progress("checks", first_pass.size(), mine[first_pass[i]].name);
+                grade(first_pass[i], false);
+            }
+        });
+    }
+    for (std::thread& worker : workers)
+        worker.join();
+
+    // Pass 2: the speed checks, one submission at a time, nothing else running, so that every
+    // submission's timings are taken alike on an otherwise idle machine.
+    if (!options.skip_speed) {
+        std::vector<std::size_t> second_pass;
+        for (std::size_t k = 0; k < mine.size(); ++k) {
+            if (reports[k] && lacks_speed_checks(*reports[k])) second_pass.push_back(k);
+        }
+        done = 0;
+        for (const std::size_t k : second_pass) {
+            progress("speed", second_pass.size(), mine[k].name);
+            grade(k, true);
         }
     }
     if (options.progress) std::fputs("\r\033[K", stderr);
-    write_grades_csv(reports, options.output);
+
+    BatchTally tally;
+    std::vector<GradeReport> class_reports;
+    for (std::size_t k = 0; k < mine.size(); ++k) {
+        if (failed[k]) {
+            ++tally.failed;
+            continue;
+        }
+        ++(resumed[k] ? tally.resumed : tally.graded);
+        class_reports.push_back(std::move(*reports[k]));
+    }
+    write_grades_csv(class_reports, options.output);
     return tally;
 }
 

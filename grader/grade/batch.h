@@ -12,7 +12,7 @@ namespace raystep::grade {
 struct BatchOptions {
     std::filesystem::path folder;  ///< one entry per student: a folder or a .zip
     std::filesystem::path output;  ///< OUT/<student>/ per student, OUT/grades.csv for the class
-    int jobs = 1;
+    int jobs = 1;  ///< submissions graded at once, each with one compile or check at a time
     bool progress = false;    ///< a progress line on stderr
     bool skip_speed = false;  ///< leave the speed checks out (--no-speed)
     Shard shard;              ///< grade only this slice of the class (--shard I/N)
@@ -31,16 +31,18 @@ struct ClassEntry {
 std::vector<ClassEntry> class_submissions(const std::filesystem::path& folder,
                                           const std::filesystem::path& skip);
 
-/// Grades every submission of the class, one after another, each with `jobs` compiles and checks
-/// at a time, and writes its reports to OUT/<name>/: a name made safe, so that nothing is
-/// written or removed outside OUT whatever a submission is called. Resumable: a submission whose
-/// report.json is already complete is not graded again, so a batch stopped halfway picks up where
-/// it stopped. A submission that breaks the grader itself (which should not happen) is reported on
-/// stderr and skipped, and the rest go on. Writes OUT/grades.csv: one row per student with the
-/// total and each stage's score. With a shard other than 1/1 it grades only the shard's
-/// submissions, and OUT/grades.csv has only theirs; OUT/shard.json says which they are, for
-/// `batch --merge` (merge_shards.h). Returns the number of submissions graded now, skipped
-/// (already done), and failed.
+/// Grades every submission of the class in two passes: every check but speed, `jobs` submissions
+/// at a time; then, unless skip_speed, the speed checks, one submission at a time with nothing
+/// else running, so that timings stay fair (speed_pass.h). Writes each submission's reports to
+/// OUT/<name>/ after each pass: a name made safe, so that nothing is written or removed outside
+/// OUT whatever a submission is called. Resumable: a submission whose report.json is already
+/// complete is not graded again, and one that lacks only its speed checks gets just those, so a
+/// batch stopped halfway picks up where it stopped. A submission that breaks the grader itself
+/// (which should not happen) is reported on stderr and skipped, and the rest go on. Writes
+/// OUT/grades.csv: one row per student with the total and each stage's score. With a shard other
+/// than 1/1 it grades only the shard's submissions, and OUT/grades.csv has only theirs;
+/// OUT/shard.json says which they are, for `batch --merge` (merge_shards.h). Returns the number of
+/// submissions graded now, skipped (already done), and failed.
 struct BatchTally {
     std::size_t graded = 0;
     std::size_t resumed = 0;

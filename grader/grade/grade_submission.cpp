@@ -29,7 +29,8 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// The checks this grade runs: all of them, narrowed by --check, --stage and --no-speed.
+// The checks this grade runs: all of them, narrowed by --check, --stage and --no-speed, or to the
+// speed checks alone.
 std::vector<CheckDefinition> checks_to_run(const GradeOptions& options, const Rubric& rubric) {
     std::vector<CheckDefinition> checks = all_checks();
     const auto keep_only = [&](const auto& keep) {
@@ -49,6 +50,7 @@ std::vector<CheckDefinition> checks_to_run(const GradeOptions& options, const Ru
         }
     }
     if (options.skip_speed) keep_only([](const CheckDefinition& c) { return c.kind != "speed"; });
+    if (options.only_speed) keep_only([](const CheckDefinition& c) { return c.kind == "speed"; });
     for (const CheckDefinition& check : checks)
         rubric.entry(check.id);  // every check is scored
     return checks;

@@ -20,6 +20,7 @@ struct GradeOptions {
     std::string only_check;  ///< run just this check (--check), for reproducing
     std::optional<int> only_stage;  ///< run just this stage's checks (--stage; 0: the pipeline)
     bool skip_speed = false;        ///< leave the speed checks out (--no-speed)
+    bool only_speed = false;        ///< run just the speed checks (a batch's second pass)
     std::optional<std::size_t> only_case;  ///< and of it just this case (--case)
     std::filesystem::path reference_probe;
     std::string reproduce;  ///< how a reproduce command starts: "raystep-grade submission PATH"

@@ -486,3 +486,66 @@ TEST_CASE(
     CHECK_THAT(read_text(root / "mixed.log"),
                Catch::Matchers::Contains("was graded with other checks or points than ana"));
 }
+
+TEST_CASE(
+    "a class graded several submissions at a time, speed checks in a second pass, gets one "
+    "submission at a time's grades, each report's checks in the grader's order",
+    "[corpus]") {
+    const fs::path root = kWork / "parallel-batch";
+    fs::remove_all(root);
+    const fs::path class_folder = root / "submissions";
+    // Submissions that need no build: every check, speed ones too, ends at once.
+    for (const std::string name : {"ana", "ben", "chloe", "dev"})
+        fs::create_directories(class_folder / name);
+    std::ofstream(class_folder / "essay.zip") << "My ray tracer is in my other folder.\n";
+    const auto run = [&](const std::string& arguments, const std::string& log) {
+        const std::string command = "cd " + shell_quoted(root) + " && " +
+                                    shell_quoted(RAYSTEP_GRADE_PROGRAM) + " batch " + arguments +
+                                    " > " + log + " 2>&1";
+        const int status = std::system(command.c_str());
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    };
+    REQUIRE(run("submissions -o one --jobs 1", "one.log") == 0);
+    REQUIRE(run("submissions -o three --jobs 3", "three.log") == 0);
+    const auto rows_without_seconds = [&](const fs::path& csv) {
+        std::vector<std::string> rows;
+        std::ifstream in(csv);
+        for (std::string line; std::getline(in, line);)
+            rows.push_back(line.substr(0, line.rfind(',')));
+        return rows;
+    };
+    CHECK(rows_without_seconds(root / "one/grades.csv").size() == 6);
+    CHECK(rows_without_seconds(root / "three/grades.csv") ==
+          rows_without_seconds(root / "one/grades.csv"));
+    const auto report_order = [&](const std::string& folder) {
+        const nlohmann::json report =
+            nlohmann::json::parse(read_text(root / folder / "ben" / "instructor" / "report.json"));
+        std::vector<std::string> ids;
+        for (const nlohmann::json& check : report.at("checks"))
+            ids.push_back(check.at("id").get<std::string>());
+        return ids;
+    };
+    // The grader's order: a submission graded on its own, every check in one pass.
+    const std::string single = "cd " + shell_quoted(root) + " && " +
+                               shell_quoted(RAYSTEP_GRADE_PROGRAM) +
+                               " submission submissions/ben -o single/ben > single.log 2>&1";
+    REQUIRE(std::system(single.c_str()) == 0);
+    const std::vector<std::string> grader_order = report_order("single");
+    CHECK(grader_order.size() > 40);
+    CHECK(report_order("three") == grader_order);
+    CHECK(report_order("one") == grader_order);
+
+    // A batch stopped between its passes: the reports lack their speed checks, and a second run
+    // adds just those.
+    REQUIRE(run("submissions -o first-pass --no-speed", "first-pass.log") == 0);
+    fs::copy(root / "first-pass", root / "resumed", fs::copy_options::recursive);
+    REQUIRE(run("submissions -o resumed --jobs 2", "resumed.log") == 0);
+    CHECK_THAT(read_text(root / "resumed.log"),
+               Catch::Matchers::Contains("graded 5 submissions, 0 already graded before"));
+    CHECK(report_order("resumed") == grader_order);
+    CHECK(rows_without_seconds(root / "resumed/grades.csv") ==
+          rows_without_seconds(root / "one/grades.csv"));
+    REQUIRE(run("submissions -o resumed --jobs 2", "again.log") == 0);
+    CHECK_THAT(read_text(root / "again.log"),
+               Catch::Matchers::Contains("graded 0 submissions, 5 already graded before"));
+}

@@ -206,7 +206,10 @@ int main(int argc, char** argv) {
     CLI::Option* class_folder = batch->add_option("folder", many.folder, "The class's submissions")
                                     ->check(CLI::ExistingDirectory);
     batch->add_option("-o,--output", many.output, "Where the reports go (default: grades)");
-    batch->add_option("--jobs", many.jobs, "Compiles and checks at a time (default: every core)")
+    batch
+        ->add_option("--jobs", many.jobs,
+                     "Submissions graded at once; their speed checks run after, one submission at "
+                     "a time (default: every core)")
         ->check(CLI::Range(1, 256));
     batch->add_option("--rubric", many.rubric, "The rubric (default: grader/rubric/rubric.json)")
         ->check(CLI::ExistingFile);
