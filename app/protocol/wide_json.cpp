@@ -16,7 +16,10 @@ Wide wide_from(const Json& j) {
     if (!j.is_array() || j.size() != 2) {
         throw std::invalid_argument("expected a long double as the pair [hi, lo]");
     }
-    return Wide(number_from(j[0])) + Wide(number_from(j[1]));
+    const double hi = number_from(j[0]);
+    const double lo = number_from(j[1]);
+    // -0 + 0 is +0: a zero rest adds nothing, and adding it would lose a negative zero's sign.
+    return lo == 0 ? Wide(hi) : Wide(hi) + Wide(lo);
 }
 
 Json wide_vec3(const WideVec& v) {

@@ -40,6 +40,7 @@ TEST_CASE("a long double survives its [hi, lo] pair bit for bit") {
     CHECK(probe::wide_from(probe::Json::parse(written.dump())) == third);
     CHECK(std::isinf(probe::wide_from(probe::wide(static_cast<Wide>(HUGE_VAL)))));
     CHECK(std::isnan(probe::wide_from(probe::wide(static_cast<Wide>(std::nan(""))))));
+    CHECK(std::signbit(probe::wide_from(probe::wide(-0.0L))));
     CHECK_THROWS_AS(probe::wide_from(probe::Json(0.5)), std::invalid_argument);
 }
 

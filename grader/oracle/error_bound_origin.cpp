@@ -24,11 +24,4 @@ ErrorBoundOrigin error_bound_origin(const SurfacePoint& point, const Vec3& direc
     return {widen(point.position), n, d, 4 * ulp};
 }
 
-bool within(const ErrorBoundOrigin& region, const Vec3& origin) {
-    const WideVec moved = widen(origin) - region.point;
-    const Wide along = glm::dot(moved, region.normal);
-    const Wide sideways = glm::length(moved - along * region.normal);
-    return along > region.offset && along <= region.offset + region.ulps && sideways <= region.ulps;
-}
-
 }  // namespace raystep

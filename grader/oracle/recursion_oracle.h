@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "app/grade/expected_ray.h"
 #include "base/math/wide_vec.h"
 #include "base/scene/ray_offset.h"
 #include "grader/oracle/error_bound_origin.h"
@@ -16,17 +17,8 @@
 
 namespace raystep {
 
-/// A ray as the judge expects it: each coordinate within its tolerance, the t range exact. Under
-/// the error-bound rule the origin is judged by its region instead (error_bound_origin.h).
-struct ExpectedRay {
-    WideVec origin;
-    Wide origin_tolerance;
-    WideVec direction;
-    Wide direction_tolerance;
-    double t_min;
-    double t_max;
-    std::optional<ErrorBoundOrigin> region;
-};
+/// A ray as stage 7's judges expect it (app/grade/expected_ray.h).
+using grade::ExpectedRay;
 
 /// The mirror ray at `p`: -V reflected about the shading normal, normalized, leaving by the
 /// offset's rule (stage 6's spawn_ray) with no upper bound: from the point itself, epsilon along

@@ -40,13 +40,6 @@ std::string offset_text(const RayOffset& o) {
            (o.rule == OffsetRule::error_bound ? "" : " epsilon " + full_text(o.epsilon));
 }
 
-std::string region_text(const ErrorBoundOrigin& region) {
-    const double d = static_cast<double>(region.offset);
-    return "origin more than " + full_text(d) + " and at most " + full_text(d + region.ulps) +
-           " along " + full_text(narrow(region.normal)) + " from the point " +
-           full_text(narrow(region.point)) + ", within " + full_text(region.ulps) + " of that line";
-}
-
 std::string ops_text(const std::vector<TransformOp>& ops) {
     std::string text;
     for (const TransformOp& op : ops)

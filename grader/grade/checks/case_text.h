@@ -8,7 +8,6 @@
 #include "base/math/types.h"
 #include "base/scene/ray_offset.h"
 #include "base/scene/scene.h"
-#include "grader/oracle/error_bound_origin.h"
 #include "stages/2_rays/ray.h"
 #include "stages/5_transforms/transform.h"
 #include "stages/6_shading/shading.h"
@@ -28,10 +27,6 @@ std::string point_text(const SurfacePoint& p);
 
 /// A ray offset: the rule's name, and its epsilon unless the rule is the error bound.
 std::string offset_text(const RayOffset& o);
-
-/// The region an error-bound origin may lie in: "origin more than d and at most ... along n
-/// from the point ..., within ... of that line".
-std::string region_text(const ErrorBoundOrigin& region);
 
 /// A transform's ops in file order: `[translate (...), rotate (...) by 30, scale (...)]`.
 std::string ops_text(const std::vector<TransformOp>& ops);

@@ -34,6 +34,10 @@ std::vector<PublicCheck> public_checks(const std::filesystem::path& source) {
                                        stage2_public_check(), stage2_sample_check()};
     checks.push_back(stage5_public_check());
     checks.push_back(stage5_sample_check());
+    checks.push_back(stage6_public_check());
+    checks.push_back(stage6_sample_check());
+    checks.push_back(stage7_public_check());
+    checks.push_back(stage7_sample_check());
     for (PublicCheck& check : render_public_checks(source))
         checks.push_back(std::move(check));
     return checks;

@@ -2,7 +2,9 @@
 // (public and hidden), and on random inputs against the same sums computed in long double
 // (grader/oracle/shading_oracle.h); for the error-bound rule, what the contract promises (an
 // origin strictly beyond the error box along the leaving side's normal, within a few ulps of it),
-// decided in long double (grader/oracle/error_bound_origin.h).
+// decided in long double (grader/oracle/error_bound_origin.h). Every case is judged by a data
+// judge (app/grade/shading_judges.h, app/grade/value_judges.h): the public ones go into the
+// student release as data, and the others are judged by the same code.
 
 #include <algorithm>
 #include <cmath>
@@ -13,9 +15,12 @@
 
 #include <glm/geometric.hpp>
 
+#include "app/grade/shading_judges.h"
+#include "app/grade/value_judges.h"
 #include "base/math/portable_random.h"
 #include "base/math/unit_roundoff.h"
 #include "grader/grade/checks/cpp_literal.h"
+#include "grader/grade/checks/data_judged.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
 #include "grader/oracle/error_bound_origin.h"
@@ -29,13 +34,13 @@ using probe::Json;
 
 const double kInf = std::numeric_limits<double>::infinity();
 
+// The stage's public name, shared by the grader's check and the release's case file.
+constexpr const char* kPublicName =
+    "lights, Blinn-Phong, the local model and ray offsets on hand-worked values";
+
 // A colour within its tolerance per channel.
-Judgement near_channels(const ProbeAnswer& answer, const WideColor& expected) {
-    const std::string text = full_text(narrow(expected.value)) + " (within " +
-                             full_text(narrow(expected.tolerance)) + ")";
-    return judge_result(
-        answer, text, probe::vec3_from,
-        [&](const Vec3& got) { return near(got, expected.value, expected.tolerance); }, vec3_text);
+Json near_channels(const WideColor& expected) {
+    return near_wide_vec3_judge(expected.value, expected.tolerance);
 }
 
 Material material(const Color& ambient, const Color& diffuse, const Color& specular,
@@ -60,103 +65,83 @@ std::string material_text(const Material& m) {
            full_text(m.shininess);
 }
 
-std::string light_text(const LightSample& l) {
-    return "light from " + full_text(l.direction) + " at " + full_text(l.distance) +
-           ", intensity " + full_text(l.intensity);
-}
-
 // --- Lights
 
-ProbeCase attenuation_case(const Attenuation& a, double distance) {
+PublicCase attenuation_case(const Attenuation& a, double distance) {
     // Every term is non-negative: the sum of three roundings or so of each.
     const Wide expected = wide_attenuation(a, distance);
     const double tolerance = static_cast<double>(6 * kUnitRoundoff * expected);
     return {"attenuation(" + full_text(Vec3(a.constant, a.linear, a.quadratic)) + ", " +
                 full_text(distance) + ")",
             {"attenuation", Json::array({probe::attenuation(a), probe::number(distance)})},
-            [=](const ProbeAnswer& answer) {
-                return near_number(answer, static_cast<double>(expected), tolerance);
-            },
+            near_number_judge(static_cast<double>(expected), tolerance),
             "attenuation(" + cpp(a) + ", " + cpp(distance) + ")"};
 }
 
 // The light sample's direction, distance and intensity, each within its tolerance, and an
 // exact distance where one is asked (infinity for a directional light).
-Judgement judge_sample(const ProbeAnswer& answer, const WideLightSample& expected) {
-    const WideVec& direction = expected.direction;
+Json sample_judge(const WideLightSample& expected) {
     const Wide distance = expected.distance;
-    const WideVec direction_tolerance(8 * kUnitRoundoff);
     const Wide distance_tolerance = std::isinf(distance) ? 0 : 8 * kUnitRoundoff * distance;
-    const std::string text = "direction " + full_text(narrow(direction)) + " (within " +
-                             full_text(8 * kUnitRoundoff) + "), distance " +
-                             full_text(static_cast<double>(distance)) + " (within " +
-                             full_text(static_cast<double>(distance_tolerance)) + "), intensity " +
-                             full_text(narrow(expected.intensity)) + " (within " +
-                             full_text(narrow(expected.intensity_tolerance)) + ")";
-    const auto accept = [&](const LightSample& got) {
-        const bool distance_ok = std::isinf(distance)
-                                     ? got.distance == kInf
-                                     : std::abs(got.distance - distance) <= distance_tolerance;
-        return distance_ok && near(got.direction, direction, direction_tolerance) &&
-               near(got.intensity, expected.intensity, expected.intensity_tolerance);
-    };
-    return judge_result(answer, text, probe::light_sample_from, accept, light_text);
+    return light_sample_judge(expected.direction, 8 * kUnitRoundoff, distance, distance_tolerance,
+                              expected.intensity, expected.intensity_tolerance);
 }
 
-ProbeCase point_light_case(const PointLight& light, const Vec3& point) {
+PublicCase point_light_case(const PointLight& light, const Vec3& point) {
     const WideLightSample expected = wide_point_light(light, point);
     const Attenuation& a = light.attenuation;
     return {"sample_light(point light at " + full_text(light.position) + ", colour " +
                 full_text(light.color) + ", attenuation " +
                 full_text(Vec3(a.constant, a.linear, a.quadratic)) + ") from " + full_text(point),
             {"sample_point_light", Json::array({probe::point_light(light), probe::vec3(point)})},
-            [=](const ProbeAnswer& answer) { return judge_sample(answer, expected); },
+            sample_judge(expected),
             "sample_light(" + cpp(light) + ", " + cpp(point) + ")"};
 }
 
-ProbeCase at_the_light_case(const PointLight& light) {
+PublicCase at_the_light_case(const PointLight& light) {
     return {"sample_light(point light at " + full_text(light.position) + ") from the light itself",
             {"sample_point_light",
              Json::array({probe::point_light(light), probe::vec3(light.position)})},
-            [](const ProbeAnswer& answer) { return threw(answer, "domain_error"); },
+            threw_judge("domain_error"),
             "sample_light(" + cpp(light) + ", " + cpp(light.position) + ")"};
 }
 
 // Never attenuated: the intensity is the colour itself, the distance infinite.
-ProbeCase directional_light_case(const DirectionalLight& light) {
+PublicCase directional_light_case(const DirectionalLight& light) {
     const WideLightSample expected = wide_directional_light(light);
     return {"sample_light(directional light towards " + full_text(light.direction) + ", colour " +
                 full_text(light.color) + ")",
             {"sample_directional_light", Json::array({probe::directional_light(light)})},
-            [=](const ProbeAnswer& answer) { return judge_sample(answer, expected); },
+            sample_judge(expected),
             "sample_light(" + cpp(light) + ")"};
 }
 
 // --- Blinn-Phong
 
-ProbeCase blinn_phong_case(const Material& m, const SurfacePoint& p, const LightSample& l) {
+PublicCase blinn_phong_case(const Material& m, const SurfacePoint& p, const LightSample& l) {
     const WideColor expected = wide_blinn_phong(m, p, l);
-    return {"blinn_phong(" + material_text(m) + "; " + point_text(p) + "; " + light_text(l) + ")",
+    return {"blinn_phong(" + material_text(m) + "; " + point_text(p) + "; " + light_sample_text(l) +
+                ")",
             {"blinn_phong",
              Json::array({probe::material(m), probe::surface_point(p), probe::light_sample(l)})},
-            [=](const ProbeAnswer& answer) { return near_channels(answer, expected); },
+            near_channels(expected),
             "blinn_phong(" + cpp(m) + ", " + cpp(p) + ", " + cpp(l) + ")"};
 }
 
-ProbeCase local_shading_case(const Material& m, const SurfacePoint& p,
-                             const std::vector<LightSample>& lights) {
+PublicCase local_shading_case(const Material& m, const SurfacePoint& p,
+                              const std::vector<LightSample>& lights) {
     const WideColor expected = wide_local_shading(m, p, lights);
     Json samples = Json::array();
     std::string text;
     std::string code;
     for (const LightSample& l : lights) {
         samples.push_back(probe::light_sample(l));
-        text += "; " + light_text(l);
+        text += "; " + light_sample_text(l);
         code += (code.empty() ? "" : ", ") + cpp(l);
     }
     return {"local_shading(" + material_text(m) + "; " + point_text(p) + text + ")",
             {"local_shading", Json::array({probe::material(m), probe::surface_point(p), samples})},
-            [=](const ProbeAnswer& answer) { return near_channels(answer, expected); },
+            near_channels(expected),
             "local_shading(" + cpp(m) + ", " + cpp(p) + ", {" + code + "})"};
 }
 
@@ -168,65 +153,43 @@ ProbeCase local_shading_case(const Material& m, const SurfacePoint& p,
 // - error_bound: the origin in the region error_bound_origin.h describes, t over [0, distance].
 // Every rule keeps the direction (a few ulps allowed for renormalizing a unit vector) and ends at
 // exactly `distance`.
-Judgement judge_spawned(const ProbeAnswer& answer, const SurfacePoint& p, const Vec3& direction,
-                        double distance, const RayOffset& offset) {
-    const WideVec n = leaving_normal(p, direction);
-    const ErrorBoundOrigin region = error_bound_origin(p, direction);
-    const WideVec along_normal = widen(p.position) + Wide(offset.epsilon) * n;
-    const WideVec along_normal_tolerance =
-        Wide(4 * kUnitRoundoff) *
-        (glm::abs(widen(p.position)) + glm::abs(Wide(offset.epsilon) * n));
-    std::string text;
+Json spawned_judge(const SurfacePoint& p, const Vec3& direction, double distance,
+                   const RayOffset& offset) {
+    const LeavingDirection end{direction, 8 * kUnitRoundoff, distance};
     switch (offset.rule) {
         case OffsetRule::along_ray:
-            text = "origin " + full_text(p.position) + ", t in [" + full_text(offset.epsilon);
-            break;
-        case OffsetRule::along_normal:
-            text = "origin " + full_text(narrow(along_normal)) + " (within " +
-                   full_text(narrow(along_normal_tolerance)) + "), t in [0";
-            break;
+            return along_ray_judge(p.position, offset.epsilon, end);
+        case OffsetRule::along_normal: {
+            const WideVec n = leaving_normal(p, direction);
+            const WideVec origin = widen(p.position) + Wide(offset.epsilon) * n;
+            const WideVec tolerance =
+                Wide(4 * kUnitRoundoff) *
+                (glm::abs(widen(p.position)) + glm::abs(Wide(offset.epsilon) * n));
+            return along_normal_judge(origin, tolerance, end);
+        }
         case OffsetRule::error_bound:
-            text = region_text(region) + ", t in [0";
             break;
     }
-    text += ", " + full_text(distance) + "], direction " + full_text(direction);
-    const auto accept = [&](const Ray& got) {
-        const bool kept = got.t_max == distance &&
-                          near(got.direction, widen(direction), WideVec(8 * kUnitRoundoff));
-        switch (offset.rule) {
-            case OffsetRule::along_ray:
-                return kept && got.origin == p.position && got.t_min == offset.epsilon;
-            case OffsetRule::along_normal:
-                return kept && near(got.origin, along_normal, along_normal_tolerance) &&
-                       got.t_min == 0.0;
-            case OffsetRule::error_bound:
-                break;
-        }
-        return kept && within(region, got.origin) && got.t_min == 0.0;
-    };
-    return judge_result(answer, text, probe::ray_from, accept, ray_text);
+    return error_bound_judge(error_bound_origin(p, direction), end);
 }
 
-ProbeCase spawn_case(const SurfacePoint& p, const Vec3& direction, double distance,
-                     const RayOffset& offset) {
+PublicCase spawn_case(const SurfacePoint& p, const Vec3& direction, double distance,
+                      const RayOffset& offset) {
     return {"spawn_ray(" + point_text(p) + "; direction " + full_text(direction) + ", distance " +
                 full_text(distance) + ", " + offset_text(offset) + ")",
             {"spawn_ray", Json::array({probe::surface_point(p), probe::vec3(direction),
                                        probe::number(distance), probe::ray_offset(offset)})},
-            [=](const ProbeAnswer& answer) {
-                return judge_spawned(answer, p, direction, distance, offset);
-            },
+            spawned_judge(p, direction, distance, offset),
             "spawn_ray(" + cpp(p) + ", " + cpp(direction) + ", " + cpp(distance) + ", " +
                 cpp(offset) + ")"};
 }
 
-ProbeCase shadow_case(const SurfacePoint& p, const LightSample& l, const RayOffset& offset) {
-    return {"shadow_ray(" + point_text(p) + "; " + light_text(l) + ", " + offset_text(offset) + ")",
+PublicCase shadow_case(const SurfacePoint& p, const LightSample& l, const RayOffset& offset) {
+    return {"shadow_ray(" + point_text(p) + "; " + light_sample_text(l) + ", " +
+                offset_text(offset) + ")",
             {"shadow_ray", Json::array({probe::surface_point(p), probe::light_sample(l),
                                         probe::ray_offset(offset)})},
-            [=](const ProbeAnswer& answer) {
-                return judge_spawned(answer, p, l.direction, l.distance, offset);
-            },
+            spawned_judge(p, l.direction, l.distance, offset),
             "shadow_ray(" + cpp(p) + ", " + cpp(l) + ", " + cpp(offset) + ")"};
 }
 
@@ -240,7 +203,7 @@ RayOffset along_normal(double epsilon) {
     return {OffsetRule::along_normal, epsilon};
 }
 
-std::vector<ProbeCase> public_cases() {
+std::vector<PublicCase> public_cases() {
     const Vec3 up{0, 1, 0};
     const Material no_light = material(Color(0.0), Color(0.0), Color(0.0), Color(0.0), 1.0);
     // On the plane x = -1, facing -x, whose x may be off by 2e-15 (9 ulps of 1).
@@ -307,7 +270,7 @@ std::vector<ProbeCase> public_cases() {
 }
 
 // The hidden ones: the contract's edge cases a student's own tests may not reach.
-std::vector<ProbeCase> hidden_cases() {
+std::vector<PublicCase> hidden_cases() {
     const Vec3 up{0, 1, 0};
     const Vec3 z{0, 0, 1};
     // N = (1, 0, 0), L = (0.6, 0.8, 0), V = (-0.6, 0, 0.8): L + V = (0, 0.8, 0.8), so N . H = 0
@@ -404,7 +367,8 @@ std::vector<ProbeCase> hidden_cases() {
     };
 }
 
-// The oracle's cases, each drawn from its own generator (add_seeded_cases).
+// The generated cases, each drawn from its own generator: the grader's from kOracleSeed, a
+// release's sample from kOracleSeed + kSampleSeedOffset.
 constexpr std::uint64_t kOracleSeed = 0x5EED'0006;
 
 // Each channel uniform in [0, high).
@@ -445,12 +409,12 @@ LitScene random_lit(PortableRandom& random) {
     }
 }
 
-ProbeCase random_attenuation_case(PortableRandom& random) {
+PublicCase random_attenuation_case(PortableRandom& random) {
     const Attenuation a{random.unit(), random.unit(), random.unit()};
     return attenuation_case(a, 100 * random.unit());
 }
 
-ProbeCase random_point_light_case(PortableRandom& random) {
+PublicCase random_point_light_case(PortableRandom& random) {
     const double scale = random.decade(-2, 4);
     const Vec3 light = random.point(scale);
     const Vec3 point = light + scale * random.uniform(0.01, 1) * random.unit_vector();
@@ -459,12 +423,12 @@ ProbeCase random_point_light_case(PortableRandom& random) {
     return point_light_case({light, colour, attenuation}, point);
 }
 
-ProbeCase random_blinn_phong_case(PortableRandom& random) {
+PublicCase random_blinn_phong_case(PortableRandom& random) {
     const LitScene s = random_lit(random);
     return blinn_phong_case(random_material(random), s.point, s.light);
 }
 
-ProbeCase random_local_shading_case(PortableRandom& random) {
+PublicCase random_local_shading_case(PortableRandom& random) {
     const LitScene s = random_lit(random);
     std::vector<LightSample> lights{s.light};
     const std::int64_t more = random.integer(0, 3);
@@ -484,7 +448,7 @@ ProbeCase random_local_shading_case(PortableRandom& random) {
 // Points at scales 1e-3 to 1e7, with errors from none to 1e4 ulps of their size (and to ulps of
 // a larger scene), directions at least 0.05 off the tangent plane; case k picks the rule and
 // whether it asks spawn_ray or shadow_ray.
-ProbeCase random_leaving_case(PortableRandom& random, int k) {
+PublicCase random_leaving_case(PortableRandom& random, int k) {
     const double scale = std::pow(10.0, static_cast<double>(random.integer(-3, 7)));
     SurfacePoint p;
     p.position = random.point(100 * scale);
@@ -505,26 +469,53 @@ ProbeCase random_leaving_case(PortableRandom& random, int k) {
                        k % 3 == 2 ? along_ray(1e-3 * scale) : offset);
 }
 
-std::vector<ProbeCase> oracle_cases() {
-    std::vector<ProbeCase> cases;
-    add_seeded_cases(cases, kOracleSeed, 50,
-                     [](PortableRandom& r, int) { return random_attenuation_case(r); });
-    add_seeded_cases(cases, kOracleSeed, 100,
-                     [](PortableRandom& r, int) { return random_point_light_case(r); });
-    add_seeded_cases(cases, kOracleSeed, 150,
-                     [](PortableRandom& r, int) { return random_blinn_phong_case(r); });
-    add_seeded_cases(cases, kOracleSeed, 100,
-                     [](PortableRandom& r, int) { return random_local_shading_case(r); });
-    add_seeded_cases(cases, kOracleSeed, 300, random_leaving_case);
+// Appends `count` cases, the k-th (k from 0) made by `make(random, k)` from
+// PortableRandom(seed, i), i the index the case gets in `cases`, so that `--case i` rebuilds
+// that case alone on any platform.
+template <typename Make>
+void add_seeded(std::vector<PublicCase>& cases, std::uint64_t seed, int count, Make make) {
+    for (int k = 0; k < count; ++k) {
+        PortableRandom random(seed, cases.size());
+        cases.push_back(make(random, k));
+    }
+}
+
+// The generated cases, drawn from `seed`: `count` attenuations, twice as many point lights and
+// local sums, three times as many Blinn-Phong terms, six times as many rays leaving a surface.
+std::vector<PublicCase> generated_cases(std::uint64_t seed, int count) {
+    std::vector<PublicCase> cases;
+    add_seeded(cases, seed, count,
+               [](PortableRandom& r, int) { return random_attenuation_case(r); });
+    add_seeded(cases, seed, 2 * count,
+               [](PortableRandom& r, int) { return random_point_light_case(r); });
+    add_seeded(cases, seed, 3 * count,
+               [](PortableRandom& r, int) { return random_blinn_phong_case(r); });
+    add_seeded(cases, seed, 2 * count,
+               [](PortableRandom& r, int) { return random_local_shading_case(r); });
+    add_seeded(cases, seed, 6 * count, random_leaving_case);
     return cases;
+}
+
+std::vector<ProbeCase> oracle_cases() {
+    return data_judged_cases(generated_cases(kOracleSeed, 50));
 }
 
 }  // namespace
 
+PublicCheck stage6_public_check() {
+    return {"stage6.unit", 6, "unit", kPublicName, public_cases()};
+}
+
+PublicCheck stage6_sample_check() {
+    return sample_check(6, "lights, shading and spawned rays on random inputs against long double",
+                        generated_cases(kOracleSeed + kSampleSeedOffset, 2));
+}
+
 std::vector<CheckDefinition> stage6_checks() {
     return stage_case_checks(
-        {6, "lights, Blinn-Phong, the local model and ray offsets on hand-worked values",
-         public_cases, "shading and ray offsets on the contract's edge cases", hidden_cases,
+        {6, kPublicName, [] { return data_judged_cases(public_cases()); },
+         "shading and ray offsets on the contract's edge cases",
+         [] { return data_judged_cases(hidden_cases()); },
          "lights, shading and spawned rays on random inputs against long double", oracle_cases});
 }
 

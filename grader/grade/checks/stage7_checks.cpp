@@ -2,7 +2,9 @@
 // probe's shade returns the script's hits in turn, then misses), so the grader knows every ray
 // the recursion should ask about, in order, and the colour it should add up: hand-worked chains
 // (public and hidden) and random ones, the sums and the reflections computed in long double
-// (grader/oracle/recursion_oracle.h).
+// (grader/oracle/recursion_oracle.h). Every case is judged by a data judge
+// (app/grade/recursion_judges.h): the public ones go into the student release as data, and the
+// others are judged by the same code.
 
 #include <algorithm>
 #include <cmath>
@@ -14,8 +16,10 @@
 
 #include <glm/geometric.hpp>
 
+#include "app/grade/recursion_judges.h"
 #include "base/math/portable_random.h"
 #include "grader/grade/checks/cpp_literal.h"
+#include "grader/grade/checks/data_judged.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
 #include "grader/oracle/recursion_oracle.h"
@@ -28,64 +32,22 @@ using probe::Json;
 
 const double kInf = std::numeric_limits<double>::infinity();
 
-std::string expected_text(const ExpectedRay& e) {
-    const std::string origin = e.region
-                                   ? region_text(*e.region)
-                                   : "origin " + full_text(narrow(e.origin)) + " (within " +
-                                         full_text(static_cast<double>(e.origin_tolerance)) + ")";
-    return origin + ", direction " + full_text(narrow(e.direction)) + " (within " +
-           full_text(static_cast<double>(e.direction_tolerance)) + "), t in [" +
-           full_text(e.t_min) + ", " + full_text(e.t_max) + "]";
-}
+// The stage's public name, shared by the grader's check and the release's case file.
+constexpr const char* kPublicName = "the mirror ray and the recursion over hand-worked chains";
 
-// t_max as the cases judge it: exact, except that an unbounded ray may end at the largest
-// double, which no finite t exceeds, so that it admits the same hits as infinity. The header's
-// promise of infinity itself is one case's (unbounded_case): a ray bounded in name only loses
-// that promise, not every case that follows a mirror ray.
-bool same_t_max(double got, double expected) {
-    if (expected == kInf) return got >= std::numeric_limits<double>::max();
-    return got == expected;
-}
-
-// Written so that a NaN anywhere fails.
-bool matches(const Ray& got, const ExpectedRay& e) {
-    bool ok = got.t_min == e.t_min && same_t_max(got.t_max, e.t_max);
-    for (int k = 0; k < 3; ++k) {
-        ok = ok && std::abs(got.direction[k] - e.direction[k]) <= e.direction_tolerance;
-        if (!e.region) ok = ok && std::abs(got.origin[k] - e.origin[k]) <= e.origin_tolerance;
-    }
-    return ok && (!e.region || within(*e.region, got.origin));
-}
-
-ProbeCase reflected_ray_case(const SurfacePoint& p, const RayOffset& offset) {
-    const ExpectedRay e = expected_reflection(p, offset);
+PublicCase reflected_ray_case(const SurfacePoint& p, const RayOffset& offset) {
     return {"reflected_ray(" + point_text(p) + ", " + offset_text(offset) + ")",
             {"reflected_ray", Json::array({probe::surface_point(p), probe::ray_offset(offset)})},
-            [=](const ProbeAnswer& answer) {
-                return judge_result(
-                    answer, expected_text(e), probe::ray_from,
-                    [&](const Ray& got) { return matches(got, e); }, ray_text);
-            },
+            mirror_ray_judge(expected_reflection(p, offset)),
             "reflected_ray(" + cpp(p) + ", " + cpp(offset) + ")"};
 }
 
 // The header's "unbounded": t_max is infinity, as for a directional light's shadow ray, not a
 // large finite number standing in for it.
-ProbeCase unbounded_case(const SurfacePoint& p, const RayOffset& offset) {
-    const std::string text = "t_max infinity (reflected_ray is unbounded)";
+PublicCase unbounded_case(const SurfacePoint& p, const RayOffset& offset) {
     return {"reflected_ray(" + point_text(p) + ", " + offset_text(offset) + "): unbounded",
             {"reflected_ray", Json::array({probe::surface_point(p), probe::ray_offset(offset)})},
-            [=](const ProbeAnswer& answer) {
-                if (answer.kind != ProbeAnswer::Kind::result) return wrong(text, "");
-                const Ray got = probe::ray_from(answer.value);
-                if (got.t_max == kInf) return right();
-                const std::string note =
-                    got.t_max == std::numeric_limits<double>::max()
-                        ? " (the largest double admits the same hits, but the header promises "
-                          "infinity; only this case asks for it)"
-                        : "";
-                return wrong(text, "t_max " + full_text(got.t_max) + note);
-            },
+            unbounded_ray_judge(),
             "reflected_ray(" + cpp(p) + ", " + cpp(offset) + ").t_max"};
 }
 
@@ -139,39 +101,16 @@ std::string radiance_code(const Script& script, const Ray& eye, int bounces,
            cpp(eye) + ", " + std::to_string(bounces) + ", " + cpp(offset) + ")";
 }
 
-ProbeCase radiance_case(const Script& script, const Ray& eye, int bounces,
-                        const RayOffset& offset) {
+PublicCase radiance_case(const Script& script, const Ray& eye, int bounces,
+                         const RayOffset& offset) {
     const ExpectedRadiance e = expected_radiance(script, eye, bounces, offset);
-    const std::string text = "colour " + full_text(narrow(e.colour)) + " (within " +
-                             full_text(narrow(e.colour_tolerance)) + ") after asking about " +
-                             std::to_string(e.rays.size()) + " ray(s)";
     return {"radiance(eye " + ray_text(eye) + ", bounces " + std::to_string(bounces) + ", " +
                 offset_text(offset) + ") over the scene " + script_text(script),
             {"radiance", Json{{"script", script_json(script)},
                               {"ray", probe::ray(eye)},
                               {"bounces", bounces},
                               {"offset", probe::ray_offset(offset)}}},
-            [=](const ProbeAnswer& answer) {
-                if (answer.kind != ProbeAnswer::Kind::result) return wrong(text, "");
-                const Vec3 colour = probe::vec3_from(answer.value.at("colour"));
-                const Json& rays = answer.value.at("rays");
-                const std::string got = "colour " + full_text(colour) + " after asking about " +
-                                        std::to_string(rays.size()) + " ray(s)";
-                for (int k = 0; k < 3; ++k) {
-                    if (!(std::abs(colour[k] - e.colour[k]) <= e.colour_tolerance[k])) {
-                        return wrong(text, got);
-                    }
-                }
-                if (rays.size() != e.rays.size()) return wrong(text, got);
-                for (std::size_t i = 0; i < rays.size(); ++i) {
-                    const Ray ray = probe::ray_from(rays[i]);
-                    if (!matches(ray, e.rays[i])) {
-                        return wrong("ray " + std::to_string(i) + ": " + expected_text(e.rays[i]),
-                                     "ray " + std::to_string(i) + ": " + ray_text(ray));
-                    }
-                }
-                return right();
-            },
+            radiance_judge(e.colour, e.colour_tolerance, e.rays),
             radiance_code(script, eye, bounces, offset)};
 }
 
@@ -185,7 +124,7 @@ SurfacePoint floor_point(const Vec3& position, const Vec3& to_eye,
 const Ray kEye{{0, 1, 0}, {1, -1, 0}, 0.0, kInf};
 const RayOffset kErrorBound{OffsetRule::error_bound, 0.0};
 
-std::vector<ProbeCase> public_cases() {
+std::vector<PublicCase> public_cases() {
     const RayOffset along_ray{OffsetRule::along_ray, 1e-4};
     const RayOffset along_normal{OffsetRule::along_normal, 1e-4};
     const SurfacePoint a = floor_point({1, 0, 0}, {-1, 1, 0});
@@ -213,7 +152,7 @@ std::vector<ProbeCase> public_cases() {
 }
 
 // The hidden ones: the contract's edges a student's own tests may not reach.
-std::vector<ProbeCase> hidden_cases() {
+std::vector<PublicCase> hidden_cases() {
     const RayOffset along_ray{OffsetRule::along_ray, 1e-3};
     const RayOffset along_normal{OffsetRule::along_normal, 1e-3};
     const SurfacePoint a = floor_point({1, 0, 0}, {-1, 1, 0});
@@ -257,7 +196,8 @@ std::vector<ProbeCase> hidden_cases() {
     };
 }
 
-// The oracle's cases, each drawn from its own generator (add_seeded_cases).
+// The generated cases, each drawn from its own generator: the grader's from kOracleSeed, a
+// release's sample from kOracleSeed + kSampleSeedOffset.
 constexpr std::uint64_t kOracleSeed = 7177;
 
 // A mirror anywhere from the origin to 1e4 away, its rounding error from none to 1e3 ulps of its
@@ -283,7 +223,7 @@ SurfacePoint random_mirror_point(PortableRandom& random) {
 
 // A random chain of up to six mirrors with random bounces (some fewer than the chain, some more),
 // reflectances (some black) and each offset rule in turn.
-ProbeCase random_radiance_case(PortableRandom& random, int k) {
+PublicCase random_radiance_case(PortableRandom& random, int k) {
     Script script;
     const std::int64_t length = random.integer(0, 6);
     for (std::int64_t i = 0; i < length; ++i) {
@@ -302,18 +242,38 @@ ProbeCase random_radiance_case(PortableRandom& random, int k) {
     return radiance_case(script, eye, bounces, offset);
 }
 
-std::vector<ProbeCase> oracle_cases() {
-    std::vector<ProbeCase> cases;
-    add_seeded_cases(cases, kOracleSeed, 300, random_radiance_case);
+// `count` radiance cases drawn from `seed`, case k from PortableRandom(seed, k), so that
+// `--case k` rebuilds that case alone on any platform.
+std::vector<PublicCase> generated_cases(std::uint64_t seed, int count) {
+    std::vector<PublicCase> cases;
+    for (int k = 0; k < count; ++k) {
+        PortableRandom random(seed, k);
+        cases.push_back(random_radiance_case(random, k));
+    }
     return cases;
+}
+
+std::vector<ProbeCase> oracle_cases() {
+    return data_judged_cases(generated_cases(kOracleSeed, 300));
 }
 
 }  // namespace
 
+PublicCheck stage7_public_check() {
+    return {"stage7.unit", 7, "unit", kPublicName, public_cases()};
+}
+
+PublicCheck stage7_sample_check() {
+    return sample_check(7,
+                        "random mirror chains: every ray asked and the colour, against long double",
+                        generated_cases(kOracleSeed + kSampleSeedOffset, 15));
+}
+
 std::vector<CheckDefinition> stage7_checks() {
     return stage_case_checks(
-        {7, "the mirror ray and the recursion over hand-worked chains", public_cases,
-         "black mirrors, no bounces, bent shading normals and deep chains", hidden_cases,
+        {7, kPublicName, [] { return data_judged_cases(public_cases()); },
+         "black mirrors, no bounces, bent shading normals and deep chains",
+         [] { return data_judged_cases(hidden_cases()); },
          "random mirror chains: every ray asked and the colour, against long double",
          oracle_cases});
 }

@@ -26,6 +26,8 @@ std::vector<CheckDefinition> render_checks();
 PublicCheck stage1_public_check();
 PublicCheck stage2_public_check();
 PublicCheck stage5_public_check();
+PublicCheck stage6_public_check();
+PublicCheck stage7_public_check();
 
 /// A sample of each stage's generated cases for the student release (kSampleKind,
 /// app/grade/public_case.h): a few of each kind the "stageN.oracle" check draws, decided by the
@@ -33,6 +35,8 @@ PublicCheck stage5_public_check();
 PublicCheck stage1_sample_check();
 PublicCheck stage2_sample_check();
 PublicCheck stage5_sample_check();
+PublicCheck stage6_sample_check();
+PublicCheck stage7_sample_check();
 
 /// The render checks as data, each with the reference's render at the grader's size, made from
 /// the scenes under `source`/scenes: the grader judges a render by the same rule

@@ -1,0 +1,130 @@
+// Stage 7's data judges: the mirror ray, its unbounded end, and radiance's colour and every ray it
+// asked about, each failed by an answer just outside what the contract promises.
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <catch2/catch.hpp>
+
+#include "app/grade/data_judge.h"
+#include "app/grade/recursion_judges.h"
+
+namespace raystep {
+namespace {
+
+using grade::build_judge;
+using grade::ExpectedRay;
+
+const double kInf = std::numeric_limits<double>::infinity();
+const double kNaN = std::numeric_limits<double>::quiet_NaN();
+const double kMax = std::numeric_limits<double>::max();
+
+grade::ProbeAnswer result(const probe::Json& value) {
+    grade::ProbeAnswer answer;
+    answer.kind = grade::ProbeAnswer::Kind::result;
+    answer.value = value;
+    return answer;
+}
+
+grade::ProbeAnswer ray(const Ray& r) {
+    return result(probe::ray(r));
+}
+
+grade::ProbeAnswer radiance(const Vec3& colour, const std::vector<Ray>& rays) {
+    probe::Json list = probe::Json::array();
+    for (const Ray& r : rays)
+        list.push_back(probe::ray(r));
+    return result({{"colour", probe::vec3(colour)}, {"rays", list}});
+}
+
+// From (1, 0, 0) on the floor y = 0 towards (1, 1, 0) / sqrt 2, along_normal's origin 1e-4 up.
+const Vec3 kUp{std::sqrt(0.5), std::sqrt(0.5), 0};
+const ExpectedRay kMirror{
+    {1.0L, 1e-4L, 0.0L}, 1e-15L, {std::sqrt(0.5L), std::sqrt(0.5L), 0.0L}, 1e-15L, 0.0, kInf, {}};
+// The floor's error-bound origin: more than 2^-60 above (1, 0, 0), 2^-50 beyond that at most.
+const ExpectedRay kBounded{
+    {},
+    0,
+    {std::sqrt(0.5L), std::sqrt(0.5L), 0.0L},
+    1e-15L,
+    0.0,
+    kInf,
+    grade::ErrorBoundOrigin{{1.0L, 0.0L, 0.0L}, {0.0L, 1.0L, 0.0L}, 0x1p-60L, 0x1p-50}};
+
+TEST_CASE("mirror_ray: every coordinate within its tolerance, an unbounded end, NaN fails") {
+    const grade::Judge judge = build_judge(grade::mirror_ray_judge(kMirror));
+    CHECK(judge(ray({{1, 1e-4, 0}, kUp, 0, kInf})).passed);
+    // The largest double admits the same hits as infinity: only unbounded_ray asks for infinity.
+    CHECK(judge(ray({{1, 1e-4, 0}, kUp, 0, kMax})).passed);
+    CHECK_FALSE(judge(ray({{1, 1e-4, 0}, kUp, 0, 1e300})).passed);
+    CHECK_FALSE(judge(ray({{1, 1e-4 + 2e-15, 0}, kUp, 0, kInf})).passed);
+    CHECK_FALSE(judge(ray({{1, 1e-4, 0}, {kUp.x, kUp.y + 2e-15, 0}, 0, kInf})).passed);
+    CHECK_FALSE(judge(ray({{1, 1e-4, 0}, {kUp.x, kNaN, 0}, 0, kInf})).passed);
+    CHECK_FALSE(judge(ray({{1, 1e-4, 0}, kUp, 1e-4, kInf})).passed);
+    const grade::Verdict off = judge(ray({{1, 1e-4, kNaN}, kUp, 0, kInf}));
+    CHECK_FALSE(off.passed);
+    CHECK(off.expected ==
+          "origin (1, 0.0001, 0) (within 1.0000000000000001e-15), direction "
+          "(0.70710678118654757, 0.70710678118654757, 0) (within "
+          "1.0000000000000001e-15), t in [0, inf]");
+}
+
+TEST_CASE("mirror_ray: an error-bound origin strictly beyond d, never on the floor's far side") {
+    const grade::Judge judge = build_judge(grade::mirror_ray_judge(kBounded));
+    CHECK(judge(ray({{1, 0x1p-55, 0}, kUp, 0, kInf})).passed);
+    CHECK_FALSE(judge(ray({{1, 0x1p-60, 0}, kUp, 0, kInf})).passed);
+    CHECK_FALSE(judge(ray({{1, -0x1p-55, 0}, kUp, 0, kInf})).passed);
+    CHECK_FALSE(judge(ray({{1, 0x1p-48, 0}, kUp, 0, kInf})).passed);
+    CHECK(judge(ray({{1, -0x1p-55, 0}, kUp, 0, kInf})).expected.rfind("origin more than ", 0) == 0);
+}
+
+TEST_CASE("unbounded_ray: infinity itself, and the largest double named as not it") {
+    const grade::Judge judge = build_judge(grade::unbounded_ray_judge());
+    CHECK(judge(ray({{1, 1e-4, 0}, kUp, 0, kInf})).passed);
+    const grade::Verdict largest = judge(ray({{1, 1e-4, 0}, kUp, 0, kMax}));
+    CHECK_FALSE(largest.passed);
+    CHECK(largest.got.find("the header promises infinity") != std::string::npos);
+    CHECK_FALSE(judge(ray({{1, 1e-4, 0}, kUp, 0, kNaN})).passed);
+}
+
+TEST_CASE("radiance: the colour within its tolerance and every ray asked, no more, no fewer") {
+    const ExpectedRay eye{{0.0L, 1.0L, 0.0L}, 0, {1.0L, 0.0L, 0.0L}, 0, 0.0, kInf, {}};
+    const grade::Judge judge =
+        build_judge(grade::radiance_judge({0.5L, 0.25L, 1.0L}, WideVec(1e-12L), {eye, kMirror}));
+    const Ray eye_ray{{0, 1, 0}, {1, 0, 0}, 0, kInf};
+    const Ray mirror_ray{{1, 1e-4, 0}, kUp, 0, kInf};
+    CHECK(judge(radiance({0.5, 0.25, 1}, {eye_ray, mirror_ray})).passed);
+    CHECK_FALSE(judge(radiance({0.5, 0.25 + 1.1e-12, 1}, {eye_ray, mirror_ray})).passed);
+    CHECK_FALSE(judge(radiance({0.5, kNaN, 1}, {eye_ray, mirror_ray})).passed);
+    CHECK_FALSE(judge(radiance({0.5, 0.25, 1}, {eye_ray})).passed);
+    CHECK_FALSE(judge(radiance({0.5, 0.25, 1}, {eye_ray, mirror_ray, mirror_ray})).passed);
+    // The eye ray is asked exactly as given: a moved eye is a wrong first ray.
+    CHECK_FALSE(
+        judge(radiance({0.5, 0.25, 1}, {{{0, 1, 1e-300}, {1, 0, 0}, 0, kInf}, mirror_ray})).passed);
+    const grade::Verdict second =
+        judge(radiance({0.5, 0.25, 1}, {eye_ray, {{1, 0, 0}, kUp, 0, kInf}}));
+    CHECK_FALSE(second.passed);
+    CHECK(second.expected.rfind("ray 1: origin (1, 0.0001, 0)", 0) == 0);
+    CHECK(second.got.rfind("ray 1: origin (1, 0, 0)", 0) == 0);
+    const grade::Verdict fewer = judge(radiance({0.5, 0.25, 1}, {eye_ray}));
+    CHECK(fewer.expected ==
+          "colour (0.5, 0.25, 1) (within (9.9999999999999998e-13, 9.9999999999999998e-13, "
+          "9.9999999999999998e-13)) after asking about 2 ray(s)");
+    CHECK(fewer.got == "colour (0.5, 0.25, 1) after asking about 1 ray(s)");
+}
+
+TEST_CASE("radiance: a judge whose rays are no list, or whose ray lacks its origin, throws") {
+    probe::Json no_list = grade::radiance_judge(WideVec(0.0L), WideVec(0.0L), {kMirror});
+    no_list["rays"] = probe::Json::object();
+    CHECK_THROWS_AS(build_judge(no_list), std::invalid_argument);
+    probe::Json no_origin = grade::radiance_judge(WideVec(0.0L), WideVec(0.0L), {kMirror});
+    no_origin["rays"][0].erase("origin");
+    CHECK_THROWS(build_judge(no_origin));
+    probe::Json no_colour = grade::radiance_judge(WideVec(0.0L), WideVec(0.0L), {kMirror});
+    no_colour.erase("colour");
+    CHECK_THROWS(build_judge(no_colour));
+}
+
+}  // namespace
+}  // namespace raystep
