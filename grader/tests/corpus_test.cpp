@@ -218,6 +218,24 @@ void require_honest_zero(const Graded& stubs) {
     CHECK(stubs.report->score() == 0.0);
 }
 
+// `raystep-grade batch ARGUMENTS` run in `root`, its output in root/LOG: the exit code.
+int run_batch(const fs::path& root, const std::string& arguments, const std::string& log) {
+    const std::string command = "cd " + shell_quoted(root) + " && " +
+                                shell_quoted(RAYSTEP_GRADE_PROGRAM) + " batch " + arguments +
+                                " > " + log + " 2>&1";
+    const int status = std::system(command.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// A class's grades.csv, each row without its last field, the seconds it took.
+std::vector<std::string> rows_without_seconds(const fs::path& csv) {
+    std::vector<std::string> rows;
+    std::ifstream in(csv);
+    for (std::string line; std::getline(in, line);)
+        rows.push_back(line.substr(0, line.rfind(',')));
+    return rows;
+}
+
 }  // namespace
 
 TEST_CASE("a submission of only the stubs scores 0 on every check and passes none", "[corpus]") {
@@ -446,11 +464,7 @@ TEST_CASE(
         fs::create_directories(class_folder / name);
     std::ofstream(class_folder / "essay.zip") << "My ray tracer is in my other folder.\n";
     const auto run = [&](const std::string& arguments, const std::string& log) {
-        const std::string command = "cd " + shell_quoted(root) + " && " +
-                                    shell_quoted(RAYSTEP_GRADE_PROGRAM) + " batch " + arguments +
-                                    " > " + log + " 2>&1";
-        const int status = std::system(command.c_str());
-        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        return run_batch(root, arguments, log);
     };
     REQUIRE(run("submissions -o whole --no-speed", "whole.log") == 0);
     for (int shard = 1; shard <= 3; ++shard) {
@@ -465,14 +479,7 @@ TEST_CASE(
     const int merged = run("--merge shard1 shard2 shard3 -o merged", "merged.log");
     INFO(read_text(root / "merged.log"));
     CHECK(merged == 0);
-    // The same rows as one batch's, but for the last field, the seconds each took.
-    const auto rows_without_seconds = [&](const fs::path& csv) {
-        std::vector<std::string> rows;
-        std::ifstream in(csv);
-        for (std::string line; std::getline(in, line);)
-            rows.push_back(line.substr(0, line.rfind(',')));
-        return rows;
-    };
+    // The same rows as one batch's, but for the seconds each took.
     const std::vector<std::string> whole = rows_without_seconds(root / "whole/grades.csv");
     CHECK(whole.size() == 7);
     CHECK(rows_without_seconds(root / "merged/grades.csv") == whole);
@@ -499,21 +506,10 @@ TEST_CASE(
         fs::create_directories(class_folder / name);
     std::ofstream(class_folder / "essay.zip") << "My ray tracer is in my other folder.\n";
     const auto run = [&](const std::string& arguments, const std::string& log) {
-        const std::string command = "cd " + shell_quoted(root) + " && " +
-                                    shell_quoted(RAYSTEP_GRADE_PROGRAM) + " batch " + arguments +
-                                    " > " + log + " 2>&1";
-        const int status = std::system(command.c_str());
-        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        return run_batch(root, arguments, log);
     };
     REQUIRE(run("submissions -o one --jobs 1", "one.log") == 0);
     REQUIRE(run("submissions -o three --jobs 3", "three.log") == 0);
-    const auto rows_without_seconds = [&](const fs::path& csv) {
-        std::vector<std::string> rows;
-        std::ifstream in(csv);
-        for (std::string line; std::getline(in, line);)
-            rows.push_back(line.substr(0, line.rfind(',')));
-        return rows;
-    };
     CHECK(rows_without_seconds(root / "one/grades.csv").size() == 6);
     CHECK(rows_without_seconds(root / "three/grades.csv") ==
           rows_without_seconds(root / "one/grades.csv"));
