@@ -7,6 +7,7 @@ CallTable stage_calls() {
     add_vector_calls(table);
     add_ray_calls(table);
     add_intersect_calls(table);
+    add_accel_calls(table);
     add_transform_calls(table);
     add_shading_calls(table);
     add_recursion_calls(table);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "app/protocol/probe_json.h"
+#include "stages/4_accel/bvh.h"
 
 namespace raystep::probe {
 
@@ -19,14 +20,19 @@ using CallTable = std::map<std::string, Call>;
 void add_vector_calls(CallTable& table);     ///< stage 1
 void add_ray_calls(CallTable& table);        ///< stage 2
 void add_intersect_calls(CallTable& table);  ///< stage 3
+void add_accel_calls(CallTable& table);      ///< stage 4: a structure's answers, no work counted
 void add_transform_calls(CallTable& table);  ///< stage 5
 void add_shading_calls(CallTable& table);    ///< stage 6
 void add_recursion_calls(CallTable& table);  ///< stage 7
 void add_render_calls(CallTable& table);     ///< whole images, through every stage a view needs
 
-/// Every call above: what `raystep grade` answers a public case with. Stage 4's calls count the
-/// primitive tests through the linker (grader/probe/stage3_test_count.h), so only the grader's
-/// probe, linked for that, has them (grader/probe/accel_calls.h).
+/// The BVH split a stage-4 query names, "sah" or "median"; throws std::invalid_argument for
+/// anything else.
+BvhSplit bvh_split_from(const Json& j);
+
+/// Every call above: what `raystep grade` answers a public case with. The stage-4 calls that
+/// count a structure's primitive tests need the linker's help (grader/probe/stage3_test_count.h),
+/// so only the grader's probe, linked for that, has them (grader/probe/accel_work_calls.h).
 CallTable stage_calls();
 
 }  // namespace raystep::probe

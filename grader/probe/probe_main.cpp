@@ -12,7 +12,7 @@
 #include <unistd.h>
 
 #include "app/probe/call_reply.h"
-#include "grader/probe/accel_calls.h"
+#include "grader/probe/accel_work_calls.h"
 
 using namespace raystep;
 using namespace raystep::probe;
@@ -21,7 +21,7 @@ namespace {
 
 CallTable all_calls() {
     CallTable table = stage_calls();
-    add_accel_calls(table);
+    add_accel_work_calls(table);
     return table;
 }
 

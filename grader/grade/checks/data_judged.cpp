@@ -30,14 +30,13 @@ PublicCheck sample_check(int stage, std::string name, std::vector<PublicCase> ca
 }
 
 std::vector<PublicCheck> public_checks(const std::filesystem::path& source) {
-    std::vector<PublicCheck> checks = {stage1_public_check(), stage1_sample_check(),
-                                       stage2_public_check(), stage2_sample_check()};
-    checks.push_back(stage5_public_check());
-    checks.push_back(stage5_sample_check());
-    checks.push_back(stage6_public_check());
-    checks.push_back(stage6_sample_check());
-    checks.push_back(stage7_public_check());
-    checks.push_back(stage7_sample_check());
+    std::vector<PublicCheck> checks = {
+        stage1_public_check(), stage1_sample_check(),      stage2_public_check(),
+        stage2_sample_check(), stage4_slab_public_check(), stage4_grid_resolution_public_check(),
+        stage4_sample_check(), stage5_public_check(),      stage5_sample_check(),
+        stage6_public_check(), stage6_sample_check(),      stage7_public_check(),
+        stage7_sample_check(),
+    };
     for (PublicCheck& check : render_public_checks(source))
         checks.push_back(std::move(check));
     return checks;

@@ -1,8 +1,10 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "app/grade/public_case.h"
 #include "grader/grade/check_definition.h"
 #include "stages/3_intersect/intersect.h"
 
@@ -12,12 +14,17 @@ namespace raystep::grade {
 
 /// intersect_aabb's entry and exit against the exact interval (stage4_slab_cases.cpp): origins
 /// inside the box, on a face and outside it, rays through edges and corners, t_min > 0 and finite
-/// t_max, the 0 * inf planes, empty and point boxes.
-std::vector<ProbeCase> slab_cases();
+/// t_max, the 0 * inf planes, empty and point boxes. Each case a public one, judged by
+/// slab_interval_judge (app/grade/accel_judges.h).
+std::vector<PublicCase> slab_cases();
 
 /// grid_resolution against the handout's rule, thin and flat boxes included
-/// (stage4_grid_resolution_cases.cpp).
-std::vector<ProbeCase> grid_resolution_cases();
+/// (stage4_grid_resolution_cases.cpp). Each case a public one, judged by grid_cells_judge.
+std::vector<PublicCase> grid_resolution_cases();
+
+/// What a structure must answer (stage4_checks.cpp): closest_hit over the list's spheres and
+/// triangles, its planes left out, as the reference's brute force finds it.
+std::optional<PrimitiveHit> structure_answer(const Ray& ray, const PrimitiveList& primitives);
 
 /// What a structure must do less of than brute force (stage4_work.cpp): a scene, fresh rays, and
 /// which structure and query answers them.

@@ -7,14 +7,16 @@
 // tests the structure makes (stage4_work.cpp): one that is right but does brute force's work
 // earns nothing. The slab test's entry and exit against the exact interval
 // (stage4_slab_cases.cpp); grid_resolution against the handout's rule
-// (stage4_grid_resolution_cases.cpp). Speed: the submission's structure against the reference's
-// on the same rays, timed from outside the probe.
+// (stage4_grid_resolution_cases.cpp), both public: each case is judged by a data judge, which the
+// student release runs on the same data. Speed: the submission's structure against the
+// reference's on the same rays, timed from outside the probe.
 
 #include <chrono>
 #include <cmath>
 
 #include "base/math/portable_random.h"
 #include "grader/grade/checks/cpp_literal.h"
+#include "grader/grade/checks/data_judged.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage4_cases.h"
 #include "grader/grade/checks/stage_checks.h"
@@ -258,14 +260,6 @@ std::vector<AccelScene> scenes() {
             walls_an_ulp_apart(0xB0DE), nothing_to_hold(false), nothing_to_hold(true)};
 }
 
-// What a structure answers: closest_hit over the list's spheres and triangles, its planes left
-// out.
-std::optional<PrimitiveHit> structure_answer(const Ray& ray, const PrimitiveList& primitives) {
-    PrimitiveList held = primitives;
-    held.planes.clear();
-    return closest_hit(ray, held);
-}
-
 std::string hit_text(const std::optional<PrimitiveHit>& h) {
     if (!h) return "a miss";
     return std::string(h->kind == PrimitiveKind::sphere     ? "sphere"
@@ -463,7 +457,27 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
     return measure;
 }
 
+// The names of the unit checks, shared by the grader's check and the release's case file.
+constexpr const char* kSlabName =
+    "intersect_aabb's entry and exit against the exact interval, edges and corners included";
+constexpr const char* kGridResolutionName =
+    "grid_resolution against the handout's rule, thin and flat boxes included";
+
 }  // namespace
+
+std::optional<PrimitiveHit> structure_answer(const Ray& ray, const PrimitiveList& primitives) {
+    PrimitiveList held = primitives;
+    held.planes.clear();
+    return closest_hit(ray, held);
+}
+
+PublicCheck stage4_slab_public_check() {
+    return {"stage4.unit.slab", 4, "unit", kSlabName, slab_cases()};
+}
+
+PublicCheck stage4_grid_resolution_public_check() {
+    return {"stage4.unit.grid_resolution", 4, "unit", kGridResolutionName, grid_resolution_cases()};
+}
 
 std::vector<CheckDefinition> stage4_checks() {
     const auto structure = [](const std::string& id, const std::string& name,
@@ -474,15 +488,14 @@ std::vector<CheckDefinition> stage4_checks() {
             }};
     };
     return {
-        {"stage4.unit.slab", 4, "unit",
-         "intersect_aabb's entry and exit against the exact interval, edges and corners included",
+        {"stage4.unit.slab", 4, "unit", kSlabName,
          [](const GradingContext& c, const BuiltProbe& p) {
-             return run_cases(c, "stage4.unit.slab", p, slab_cases());
+             return run_cases(c, "stage4.unit.slab", p, data_judged_cases(slab_cases()));
          }},
-        {"stage4.unit.grid_resolution", 4, "unit",
-         "grid_resolution against the handout's rule, thin and flat boxes included",
+        {"stage4.unit.grid_resolution", 4, "unit", kGridResolutionName,
          [](const GradingContext& c, const BuiltProbe& p) {
-             return run_cases(c, "stage4.unit.grid_resolution", p, grid_resolution_cases());
+             return run_cases(c, "stage4.unit.grid_resolution", p,
+                              data_judged_cases(grid_resolution_cases()));
          }},
         structure(
             "stage4.oracle.bvh_sah",

@@ -4,9 +4,11 @@
 // that e k < 1, gets one cell and leaves the others to share the rest. Cases where the rule's
 // answer is within rounding of a different one (an e k within 1e-9 of a half, or of the thin
 // threshold 1) are not generated: the handout fixes no order of operations that would settle them.
+// Each case's cells are judged by grid_cells_judge (app/grade/accel_judges.h).
 
 #include <cmath>
 
+#include "app/grade/accel_judges.h"
 #include "base/math/portable_random.h"
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
@@ -117,37 +119,21 @@ std::vector<ResolutionCase> generated_cases() {
     return cases;
 }
 
-std::string cells_text(const glm::ivec3& cells) {
-    return std::to_string(cells.x) + " x " + std::to_string(cells.y) + " x " +
-           std::to_string(cells.z);
-}
-
 }  // namespace
 
-std::vector<ProbeCase> grid_resolution_cases() {
+std::vector<PublicCase> grid_resolution_cases() {
     std::vector<ResolutionCase> all = named_cases();
     for (const ResolutionCase& c : generated_cases())
         all.push_back(c);
-    std::vector<ProbeCase> cases;
+    std::vector<PublicCase> cases;
     for (const ResolutionCase& c : all) {
-        const glm::ivec3 expected = handout_rule(c).cells;
-        cases.push_back(
-            {c.what + ": box " + full_text(c.min) + " to " + full_text(c.max) +
-                 ", n = " + std::to_string(c.n),
-             {"grid_resolution",
-              {{"min", probe::vec3(c.min)}, {"max", probe::vec3(c.max)}, {"n", c.n}}},
-             [expected](const ProbeAnswer& answer) {
-                 if (answer.kind != ProbeAnswer::Kind::result)
-                     return wrong(cells_text(expected), "");
-                 const Json& v = answer.value;
-                 const bool cells = v.is_array() && v.size() == 3 && v[0].is_number_integer() &&
-                                    v[1].is_number_integer() && v[2].is_number_integer();
-                 if (!cells) return wrong(cells_text(expected), v.dump());
-                 const glm::ivec3 got(v[0].get<int>(), v[1].get<int>(), v[2].get<int>());
-                 return got == expected ? right() : wrong(cells_text(expected), cells_text(got));
-             },
-             "grid_resolution(Aabb{Vec3" + cpp(c.min) + ", Vec3" + cpp(c.max) + "}, " +
-                 std::to_string(c.n) + ")"});
+        cases.push_back({c.what + ": box " + full_text(c.min) + " to " + full_text(c.max) +
+                             ", n = " + std::to_string(c.n),
+                         {"grid_resolution",
+                          {{"min", probe::vec3(c.min)}, {"max", probe::vec3(c.max)}, {"n", c.n}}},
+                         grid_cells_judge(handout_rule(c).cells),
+                         "grid_resolution(Aabb{Vec3" + cpp(c.min) + ", Vec3" + cpp(c.max) + "}, " +
+                             std::to_string(c.n) + ")"});
     }
     return cases;
 }

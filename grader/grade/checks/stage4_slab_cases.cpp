@@ -1,5 +1,6 @@
 // intersect_aabb judged by its values, not only hit or miss: the entry and exit it returns against
-// the exact interval of the ray's [t_min, t_max] inside the closed box, worked out in long double.
+// the exact interval of the ray's [t_min, t_max] inside the closed box, worked out in long double
+// and written into each case's data judge (slab_interval_judge, app/grade/accel_judges.h).
 //
 // Tolerances. A slab's t = (b - o) * (1 / d) in double rounds three times (the difference, the
 // reciprocal, the product): within 3u of the exact t, u = 2^-53. The exit may be widened by
@@ -19,6 +20,7 @@
 
 #include <cmath>
 
+#include "app/grade/accel_judges.h"
 #include "base/math/portable_random.h"
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
@@ -38,17 +40,8 @@ struct SlabCase {
 };
 
 // The exact interval, and how near each end a double computation may come out.
-struct ExactInterval {
-    bool must_hit = false;
-    bool must_miss = false;
-    Wide enter = 0;
-    Wide exit = 0;
-    Wide enter_tolerance = 0;
-    Wide exit_tolerance = 0;
-};
-
-ExactInterval exact_interval(const SlabCase& c) {
-    ExactInterval exact;
+SlabInterval exact_interval(const SlabCase& c) {
+    SlabInterval exact;
     const bool empty = !(c.min.x <= c.max.x && c.min.y <= c.max.y && c.min.z <= c.max.z);
     if (empty) {
         exact.must_miss = true;
@@ -100,38 +93,6 @@ ExactInterval exact_interval(const SlabCase& c) {
     exact.must_hit = exit - enter >= -wide_rounding;
     exact.must_miss = enter - exit > exact.enter_tolerance + exact.exit_tolerance;
     return exact;
-}
-
-std::string interval_text(Wide enter, Wide exit) {
-    return "[" + full_text(static_cast<double>(enter)) + ", " +
-           full_text(static_cast<double>(exit)) + "]";
-}
-
-std::string expected_text(const ExactInterval& exact) {
-    if (exact.must_miss) return "a miss";
-    const std::string interval = "t in " + interval_text(exact.enter, exact.exit) + " (within " +
-                                 full_text(static_cast<double>(exact.enter_tolerance)) + " and " +
-                                 full_text(static_cast<double>(exact.exit_tolerance)) + ")";
-    return exact.must_hit ? interval : interval + " or a miss (the ray passes within rounding)";
-}
-
-bool within(double got, Wide expected, Wide tolerance) {
-    if (std::isinf(expected)) return static_cast<Wide>(got) == expected;
-    return std::fabs(static_cast<Wide>(got) - expected) <= tolerance;  // false for NaN
-}
-
-Judgement judge_slab(const ProbeAnswer& answer, const ExactInterval& exact) {
-    const std::string expected = expected_text(exact);
-    if (answer.kind != ProbeAnswer::Kind::result) return wrong(expected, "");
-    if (answer.value.is_null()) return exact.must_hit ? wrong(expected, "a miss") : right();
-    const double enter = probe::number_from(answer.value.at("enter"));
-    const double exit = probe::number_from(answer.value.at("exit"));
-    const std::string got = "t in " + interval_text(enter, exit);
-    if (exact.must_miss) return wrong(expected, got);
-    if (!(enter <= exit)) return wrong(expected, got + ", which is empty");
-    const bool ok = within(enter, exact.enter, exact.enter_tolerance) &&
-                    within(exit, exact.exit, exact.exit_tolerance);
-    return ok ? right() : wrong(expected, got);
 }
 
 // Boxes of every size and place, each side at least 0.1 long.
@@ -351,13 +312,13 @@ std::vector<SlabCase> named_cases() {
 
 }  // namespace
 
-std::vector<ProbeCase> slab_cases() {
+std::vector<PublicCase> slab_cases() {
     std::vector<SlabCase> all = named_cases();
     for (const SlabCase& c : generated_cases())
         all.push_back(c);
     for (const SlabCase& c : face_plane_cases())
         all.push_back(c);
-    std::vector<ProbeCase> cases;
+    std::vector<PublicCase> cases;
     for (const SlabCase& c : all) {
         cases.push_back({c.what + ": " + ray_text(c.ray) + ", box " + full_text(c.min) + " to " +
                              full_text(c.max),
@@ -365,9 +326,7 @@ std::vector<ProbeCase> slab_cases() {
                           {{"ray", probe::ray(c.ray)},
                            {"min", probe::vec3(c.min)},
                            {"max", probe::vec3(c.max)}}},
-                         [exact = exact_interval(c)](const ProbeAnswer& answer) {
-                             return judge_slab(answer, exact);
-                         },
+                         slab_interval_judge(exact_interval(c)),
                          "intersect_aabb(" + cpp(c.ray) + ", 1.0 / Vec3" + cpp(c.ray.direction) +
                              ", Aabb{" + cpp(c.min) + ", " + cpp(c.max) + "})"});
     }

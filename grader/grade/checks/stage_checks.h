@@ -25,6 +25,9 @@ std::vector<CheckDefinition> render_checks();
 /// "stageN.unit" check runs, and what the student release's `raystep grade` runs.
 PublicCheck stage1_public_check();
 PublicCheck stage2_public_check();
+/// Stage 4's two unit checks, "stage4.unit.slab" and "stage4.unit.grid_resolution".
+PublicCheck stage4_slab_public_check();
+PublicCheck stage4_grid_resolution_public_check();
 PublicCheck stage5_public_check();
 PublicCheck stage6_public_check();
 PublicCheck stage7_public_check();
@@ -34,6 +37,9 @@ PublicCheck stage7_public_check();
 /// same oracle, from its seeds plus kSampleSeedOffset (sample_check, data_judged.h).
 PublicCheck stage1_sample_check();
 PublicCheck stage2_sample_check();
+/// Stage 4's: structure queries judged against brute force's closest hit, without the work count
+/// the grader's "stage4.oracle" checks add (a release cannot count primitive tests).
+PublicCheck stage4_sample_check();
 PublicCheck stage5_sample_check();
 PublicCheck stage6_sample_check();
 PublicCheck stage7_sample_check();
