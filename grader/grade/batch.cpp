@@ -122,7 +122,9 @@ BatchTally grade_class(const BatchOptions& options, const Rubric& rubric,
         GradeOptions one;
         one.submission = entry.submission;
         one.output = options.output / entry.name;
-        one.jobs = 1;
+        // The first pass shares the cores among submissions; the second has them all to build
+        // with, and times its checks alone whatever `jobs` is (grade_submission.h).
+        one.jobs = speed ? options.jobs : 1;
         one.skip_speed = !speed;
         one.only_speed = speed;
         one.reference_probe = options.reference_probe;
