@@ -6,26 +6,20 @@
 #include "app/grade/data_judge.h"
 #include "app/grade/value_text.h"
 #include "app/protocol/wide_json.h"
+#include "app/render/render_scene.h"
 
 namespace raystep::grade {
+
+std::string primitive_hit_text(const std::optional<PrimitiveHit>& h) {
+    if (!h) return "a miss";
+    return std::string(kind_name(h->kind)) + " " + std::to_string(h->index) +
+           " at t = " + full_text(h->hit.t);
+}
 
 namespace {
 
 using probe::Json;
 using Kind = ProbeAnswer::Kind;
-
-Verdict right() {
-    Verdict verdict;
-    verdict.passed = true;
-    return verdict;
-}
-
-Verdict wrong(std::string expected, std::string got) {
-    Verdict verdict;
-    verdict.expected = std::move(expected);
-    verdict.got = std::move(got);
-    return verdict;
-}
 
 std::string interval_text(Wide enter, Wide exit) {
     return "[" + full_text(static_cast<double>(enter)) + ", " +
@@ -57,17 +51,17 @@ const JudgeRegistry::Registration slab_interval_registration{
          exact.exit_tolerance = probe::wide_from(p.at("exit_tolerance"));
          const std::string expected = expected_text(exact);
          return [=](const ProbeAnswer& answer) {
-             if (answer.kind != Kind::result) return wrong(expected, "");
+             if (answer.kind != Kind::result) return verdict_wrong(expected, "");
              if (answer.value.is_null())
-                 return exact.must_hit ? wrong(expected, "a miss") : right();
+                 return exact.must_hit ? verdict_wrong(expected, "a miss") : verdict_right();
              const double enter = probe::number_from(answer.value.at("enter"));
              const double exit = probe::number_from(answer.value.at("exit"));
              const std::string got = "t in " + interval_text(enter, exit);
-             if (exact.must_miss) return wrong(expected, got);
-             if (!(enter <= exit)) return wrong(expected, got + ", which is empty");
+             if (exact.must_miss) return verdict_wrong(expected, got);
+             if (!(enter <= exit)) return verdict_wrong(expected, got + ", which is empty");
              const bool ok = within(enter, exact.enter, exact.enter_tolerance) &&
                              within(exit, exact.exit, exact.exit_tolerance);
-             return ok ? right() : wrong(expected, got);
+             return ok ? verdict_right() : verdict_wrong(expected, got);
          };
      }}};
 
@@ -81,23 +75,16 @@ const JudgeRegistry::Registration grid_cells_registration{
          const Json& e = p.at("expected");
          const glm::ivec3 expected(e.at(0).get<int>(), e.at(1).get<int>(), e.at(2).get<int>());
          return [=](const ProbeAnswer& answer) {
-             if (answer.kind != Kind::result) return wrong(cells_text(expected), "");
+             if (answer.kind != Kind::result) return verdict_wrong(cells_text(expected), "");
              const Json& v = answer.value;
              const bool cells = v.is_array() && v.size() == 3 && v[0].is_number_integer() &&
                                 v[1].is_number_integer() && v[2].is_number_integer();
-             if (!cells) return wrong(cells_text(expected), v.dump());
+             if (!cells) return verdict_wrong(cells_text(expected), v.dump());
              const glm::ivec3 got(v[0].get<int>(), v[1].get<int>(), v[2].get<int>());
-             return got == expected ? right() : wrong(cells_text(expected), cells_text(got));
+             return got == expected ? verdict_right()
+                                    : verdict_wrong(cells_text(expected), cells_text(got));
          };
      }}};
-
-std::string hit_text(const std::optional<PrimitiveHit>& h) {
-    if (!h) return "a miss";
-    return std::string(h->kind == PrimitiveKind::sphere     ? "sphere"
-                       : h->kind == PrimitiveKind::triangle ? "triangle"
-                                                            : "plane") +
-           " " + std::to_string(h->index) + " at t = " + full_text(h->hit.t);
-}
 
 // The one answer of a list of one ray, or nothing when the result is not such a list.
 const Json* only_answer(const ProbeAnswer& answer) {
@@ -116,18 +103,18 @@ const JudgeRegistry::Registration structure_hit_registration{
          const std::optional<PrimitiveHit> expected = probe::primitive_hit_from(p.at("expected"));
          const double tolerance = probe::number_from(p.at("t_tolerance"));
          const std::string text =
-             hit_text(expected) +
+             primitive_hit_text(expected) +
              (expected && tolerance > 0 ? " (within " + full_text(tolerance) + ")" : "");
          return [=](const ProbeAnswer& answer) {
              const Json* const one = only_answer(answer);
-             if (!one) return wrong(text, got_text(answer));
+             if (!one) return verdict_wrong(text, got_text(answer));
              const std::optional<PrimitiveHit> got = probe::primitive_hit_from(*one);
              // Written so that a NaN t fails
              const bool same =
                  got.has_value() == expected.has_value() &&
                  (!got || (got->kind == expected->kind && got->index == expected->index &&
                            std::fabs(got->hit.t - expected->hit.t) <= tolerance));
-             return same ? right() : wrong(text, hit_text(got));
+             return same ? verdict_right() : verdict_wrong(text, primitive_hit_text(got));
          };
      }}};
 
@@ -137,10 +124,11 @@ const JudgeRegistry::Registration structure_occluded_registration{
          const std::string text = expected ? "occluded" : "not occluded";
          return [=](const ProbeAnswer& answer) {
              const Json* const one = only_answer(answer);
-             if (!one) return wrong(text, got_text(answer));
-             if (!one->is_boolean()) return wrong(text, "not a boolean");
+             if (!one) return verdict_wrong(text, got_text(answer));
+             if (!one->is_boolean()) return verdict_wrong(text, "not a boolean");
              const bool got = one->get<bool>();
-             return got == expected ? right() : wrong(text, got ? "occluded" : "not occluded");
+             return got == expected ? verdict_right()
+                                    : verdict_wrong(text, got ? "occluded" : "not occluded");
          };
      }}};
 

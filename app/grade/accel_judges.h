@@ -1,6 +1,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 
 #include <glm/vec3.hpp>
 
@@ -40,6 +41,9 @@ probe::Json grid_cells_judge(const glm::ivec3& expected);
 /// same primitive (kind and index) with its t within `t_tolerance` of expected's (0: bit for bit);
 /// a NaN fails.
 probe::Json structure_hit_judge(const std::optional<PrimitiveHit>& expected, double t_tolerance);
+
+/// A structure's answer as a report writes it: "a miss", or "triangle 3 at t = 2.5".
+std::string primitive_hit_text(const std::optional<PrimitiveHit>& h);
 
 /// "structure_occluded": a structure's occluded answer to a list of one ray, `expected`.
 probe::Json structure_occluded_judge(bool expected);

@@ -35,6 +35,12 @@ struct Verdict {
     std::string place_reproduce;
 };
 
+/// A right answer's verdict.
+Verdict verdict_right();
+
+/// A wrong answer's: what was expected, and what was got ("" where the answer itself says it).
+Verdict verdict_wrong(std::string expected, std::string got);
+
 using Judge = std::function<Verdict(const ProbeAnswer&)>;
 
 /// A named judge and how it is built from its parameters (the judge's JSON object, "judge"

@@ -19,19 +19,6 @@ using Kind = ProbeAnswer::Kind;
 
 const double kInf = std::numeric_limits<double>::infinity();
 
-Verdict right() {
-    Verdict verdict;
-    verdict.passed = true;
-    return verdict;
-}
-
-Verdict wrong(std::string expected, std::string got) {
-    Verdict verdict;
-    verdict.expected = std::move(expected);
-    verdict.got = std::move(got);
-    return verdict;
-}
-
 Json ray_json(const ExpectedRay& e) {
     Json j = {{"direction", probe::wide_vec3(e.direction)},
               {"direction_tolerance", probe::wide(e.direction_tolerance)},
@@ -96,10 +83,10 @@ const JudgeRegistry::Registration mirror_ray_registration{
          const ExpectedRay expected = ray_from(p.at("ray"));
          const std::string text = expected_text(expected);
          return [=](const ProbeAnswer& answer) {
-             if (answer.kind != Kind::result) return wrong(text, "");
+             if (answer.kind != Kind::result) return verdict_wrong(text, "");
              const Ray got = probe::ray_from(answer.value);
-             if (matches(got, expected)) return right();
-             return wrong(text, ray_text(got));
+             if (matches(got, expected)) return verdict_right();
+             return verdict_wrong(text, ray_text(got));
          };
      }}};
 
@@ -107,15 +94,15 @@ const JudgeRegistry::Registration unbounded_ray_registration{
     {"unbounded_ray", [](const Json&) -> Judge {
          return [](const ProbeAnswer& answer) {
              const std::string text = "t_max infinity (reflected_ray is unbounded)";
-             if (answer.kind != Kind::result) return wrong(text, "");
+             if (answer.kind != Kind::result) return verdict_wrong(text, "");
              const Ray got = probe::ray_from(answer.value);
-             if (got.t_max == kInf) return right();
+             if (got.t_max == kInf) return verdict_right();
              const std::string note =
                  got.t_max == std::numeric_limits<double>::max()
                      ? " (the largest double admits the same hits, but the header promises "
                        "infinity; only this case asks for it)"
                      : "";
-             return wrong(text, "t_max " + full_text(got.t_max) + note);
+             return verdict_wrong(text, "t_max " + full_text(got.t_max) + note);
          };
      }}};
 
@@ -132,7 +119,7 @@ const JudgeRegistry::Registration radiance_registration{
                                   full_text(narrow(tolerance)) + ") after asking about " +
                                   std::to_string(rays.size()) + " ray(s)";
          return [=](const ProbeAnswer& answer) {
-             if (answer.kind != Kind::result) return wrong(text, "");
+             if (answer.kind != Kind::result) return verdict_wrong(text, "");
              const Vec3 got_colour = probe::vec3_from(answer.value.at("colour"));
              const Json& got_rays = answer.value.at("rays");
              const std::string got = "colour " + full_text(got_colour) + " after asking about " +
@@ -140,18 +127,19 @@ const JudgeRegistry::Registration radiance_registration{
              // Written so that a NaN fails
              for (int k = 0; k < 3; ++k) {
                  if (!(std::abs(got_colour[k] - colour[k]) <= tolerance[k])) {
-                     return wrong(text, got);
+                     return verdict_wrong(text, got);
                  }
              }
-             if (got_rays.size() != rays.size()) return wrong(text, got);
+             if (got_rays.size() != rays.size()) return verdict_wrong(text, got);
              for (std::size_t i = 0; i < rays.size(); ++i) {
                  const Ray ray = probe::ray_from(got_rays[i]);
                  if (!matches(ray, rays[i])) {
-                     return wrong("ray " + std::to_string(i) + ": " + expected_text(rays[i]),
-                                  "ray " + std::to_string(i) + ": " + ray_text(ray));
+                     return verdict_wrong(
+                         "ray " + std::to_string(i) + ": " + expected_text(rays[i]),
+                         "ray " + std::to_string(i) + ": " + ray_text(ray));
                  }
              }
-             return right();
+             return verdict_right();
          };
      }}};
 

@@ -18,27 +18,6 @@ using Kind = ProbeAnswer::Kind;
 
 const double kInf = std::numeric_limits<double>::infinity();
 
-Verdict right() {
-    Verdict verdict;
-    verdict.passed = true;
-    return verdict;
-}
-
-Verdict wrong(std::string expected, std::string got) {
-    Verdict verdict;
-    verdict.expected = std::move(expected);
-    verdict.got = std::move(got);
-    return verdict;
-}
-
-// Each coordinate within its own tolerance, in long double; written so that a NaN fails.
-bool near(const Vec3& got, const WideVec& expected, const WideVec& tolerance) {
-    for (int k = 0; k < 3; ++k) {
-        if (!(std::abs(got[k] - expected[k]) <= tolerance[k])) return false;
-    }
-    return true;
-}
-
 const JudgeRegistry::Registration light_sample_registration{
     {"light_sample", [](const Json& p) -> Judge {
          const WideVec direction = probe::wide_vec3_from(p.at("direction"));
@@ -54,18 +33,18 @@ const JudgeRegistry::Registration light_sample_registration{
                                   "), intensity " + full_text(narrow(intensity)) + " (within " +
                                   full_text(narrow(intensity_tolerance)) + ")";
          return [=](const ProbeAnswer& answer) {
-             if (answer.kind != Kind::result) return wrong(text, "");
+             if (answer.kind != Kind::result) return verdict_wrong(text, "");
              const LightSample got = probe::light_sample_from(answer.value);
              // An infinite distance is asked exactly; a finite one within its tolerance, written
              // so that a NaN fails.
              const bool distance_ok = std::isinf(distance)
                                           ? got.distance == kInf
                                           : std::abs(got.distance - distance) <= distance_tolerance;
-             if (distance_ok && near(got.direction, direction, WideVec(direction_tolerance)) &&
-                 near(got.intensity, intensity, intensity_tolerance)) {
-                 return right();
+             if (distance_ok && near_wide(got.direction, direction, WideVec(direction_tolerance)) &&
+                 near_wide(got.intensity, intensity, intensity_tolerance)) {
+                 return verdict_right();
              }
-             return wrong(text, light_sample_text(got));
+             return verdict_wrong(text, light_sample_text(got));
          };
      }}};
 
@@ -86,7 +65,7 @@ OriginRule origin_rule(const Json& p) {
         const WideVec tolerance = probe::wide_vec3_from(p.at("origin_tolerance"));
         return {"origin " + full_text(narrow(origin)) + " (within " + full_text(narrow(tolerance)) +
                     ")",
-                [origin, tolerance](const Vec3& got) { return near(got, origin, tolerance); }};
+                [origin, tolerance](const Vec3& got) { return near_wide(got, origin, tolerance); }};
     }
     if (rule == "error_bound") {
         const ErrorBoundOrigin region = region_from(p.at("region"));
@@ -105,14 +84,14 @@ const JudgeRegistry::Registration leaving_ray_registration{
          const std::string text = origin.text + ", t in [" + full_text(t_min) + ", " +
                                   full_text(t_max) + "], direction " + full_text(direction);
          return [=](const ProbeAnswer& answer) {
-             if (answer.kind != Kind::result) return wrong(text, "");
+             if (answer.kind != Kind::result) return verdict_wrong(text, "");
              const Ray got = probe::ray_from(answer.value);
              if (got.t_max == t_max && got.t_min == t_min &&
-                 near(got.direction, widen(direction), direction_tolerance) &&
+                 near_wide(got.direction, widen(direction), direction_tolerance) &&
                  origin.accept(got.origin)) {
-                 return right();
+                 return verdict_right();
              }
-             return wrong(text, ray_text(got));
+             return verdict_wrong(text, ray_text(got));
          };
      }}};
 

@@ -18,19 +18,6 @@ using Kind = ProbeAnswer::Kind;
 // How singular_transform writes an inverse's entry that must not be finite.
 constexpr const char* kNotFinite = "not finite";
 
-Verdict right() {
-    Verdict verdict;
-    verdict.passed = true;
-    return verdict;
-}
-
-Verdict wrong(std::string expected, std::string got) {
-    Verdict verdict;
-    verdict.expected = std::move(expected);
-    verdict.got = std::move(got);
-    return verdict;
-}
-
 // Every entry within its tolerance; else the first that is not, and the whole matrix got, which
 // the report calls `name`. Written so that a NaN fails.
 Verdict near_matrix(const Mat4& got, const WideMat& expected, const WideMat& tolerance,
@@ -40,21 +27,14 @@ Verdict near_matrix(const Mat4& got, const WideMat& expected, const WideMat& tol
             if (!(std::abs(Wide(got[c][r]) - expected[c][r]) <= tolerance[c][r])) {
                 const std::string entry =
                     name + " row " + std::to_string(r) + " column " + std::to_string(c) + " ";
-                return wrong(entry + full_text(static_cast<double>(expected[c][r])) + " (within " +
-                                 full_text(static_cast<double>(tolerance[c][r])) + ")",
-                             entry + full_text(got[c][r]) + "; " + name + " " + matrix_text(got));
+                return verdict_wrong(
+                    entry + full_text(static_cast<double>(expected[c][r])) + " (within " +
+                        full_text(static_cast<double>(tolerance[c][r])) + ")",
+                    entry + full_text(got[c][r]) + "; " + name + " " + matrix_text(got));
             }
         }
     }
-    return right();
-}
-
-// Each coordinate within its own tolerance, in long double; written so that a NaN fails.
-bool near_wide(const Vec3& got, const WideVec& expected, const WideVec& tolerance) {
-    for (int k = 0; k < 3; ++k) {
-        if (!(std::abs(Wide(got[k]) - expected[k]) <= tolerance[k])) return false;
-    }
-    return true;
+    return verdict_right();
 }
 
 std::string hit_text(const std::optional<Hit>& h) {
@@ -73,7 +53,8 @@ const JudgeRegistry::Registration near_wide_matrix_registration{
          const WideMat expected = probe::wide_mat4_from(p.at("expected"));
          const WideMat tolerance = probe::wide_mat4_from(p.at("tolerance"));
          return [=](const ProbeAnswer& answer) {
-             if (answer.kind != Kind::result) return wrong(matrix_text(narrow(expected)), "");
+             if (answer.kind != Kind::result)
+                 return verdict_wrong(matrix_text(narrow(expected)), "");
              return near_matrix(probe::mat4_from(answer.value), expected, tolerance, "matrix");
          };
      }}};
@@ -86,7 +67,7 @@ const JudgeRegistry::Registration near_wide_transform_registration{
          const WideMat inverse_tolerance = probe::wide_mat4_from(p.at("inverse_tolerance"));
          return [=](const ProbeAnswer& answer) {
              if (answer.kind != Kind::result) {
-                 return wrong("matrix " + matrix_text(narrow(matrix)), "");
+                 return verdict_wrong("matrix " + matrix_text(narrow(matrix)), "");
              }
              const Transform got = probe::transform_from(answer.value);
              const Verdict m = near_matrix(got.matrix, matrix, matrix_tolerance, "matrix");
@@ -112,16 +93,16 @@ const JudgeRegistry::Registration singular_transform_registration{
          const std::string text =
              "matrix " + matrix_text(matrix) + ", inverse diagonal " + diagonal_text;
          return [=](const ProbeAnswer& answer) {
-             if (answer.kind != Kind::result) return wrong(text, "");
+             if (answer.kind != Kind::result) return verdict_wrong(text, "");
              const Transform got = probe::transform_from(answer.value);
              const Verdict m = near_matrix(got.matrix, widen(matrix), WideMat(0.0L), "matrix");
              if (!m.passed) return m;
              for (int k = 0; k < 3; ++k) {
                  const double entry = got.inverse[k][k];
                  const bool ok = diagonal[k] ? entry == *diagonal[k] : !std::isfinite(entry);
-                 if (!ok) return wrong(text, "inverse " + matrix_text(got.inverse));
+                 if (!ok) return verdict_wrong(text, "inverse " + matrix_text(got.inverse));
              }
-             return right();
+             return verdict_right();
          };
      }}};
 
@@ -137,14 +118,14 @@ const JudgeRegistry::Registration near_wide_ray_registration{
                                   " (within " + full_text(narrow(origin_tolerance)) + " and " +
                                   full_text(narrow(direction_tolerance)) + ")";
          return [=](const ProbeAnswer& answer) {
-             if (answer.kind != Kind::result) return wrong(text, "");
+             if (answer.kind != Kind::result) return verdict_wrong(text, "");
              const Ray got = probe::ray_from(answer.value);
              if (near_wide(got.origin, origin, origin_tolerance) &&
                  near_wide(got.direction, direction, direction_tolerance) && got.t_min == t_min &&
                  got.t_max == t_max) {
-                 return right();
+                 return verdict_right();
              }
-             return wrong(text, ray_text(got));
+             return verdict_wrong(text, ray_text(got));
          };
      }}};
 
@@ -167,13 +148,13 @@ const JudgeRegistry::Registration near_wide_hit_registration{
                     full_text(narrow(normal_tolerance)) + ")";
          }
          return [=](const ProbeAnswer& answer) {
-             if (answer.kind != Kind::result) return wrong(text, "");
+             if (answer.kind != Kind::result) return verdict_wrong(text, "");
              const std::optional<Hit> got = probe::hit_from(answer.value);
              const bool ok = !got || !hit ? got.has_value() == hit
                                           : std::abs(got->t - t) <= t_tolerance &&
                                                 near_wide(got->normal, normal, normal_tolerance) &&
                                                 unit_length(got->normal);
-             return ok ? right() : wrong(text, hit_text(got));
+             return ok ? verdict_right() : verdict_wrong(text, hit_text(got));
          };
      }}};
 

@@ -13,19 +13,6 @@ namespace {
 using probe::Json;
 using Kind = ProbeAnswer::Kind;
 
-Verdict right() {
-    Verdict verdict;
-    verdict.passed = true;
-    return verdict;
-}
-
-Verdict wrong(std::string expected, std::string got) {
-    Verdict verdict;
-    verdict.expected = std::move(expected);
-    verdict.got = std::move(got);
-    return verdict;
-}
-
 std::string within(const std::string& expected, double tolerance) {
     return expected + " (within " + full_text(tolerance) + ")";
 }
@@ -43,10 +30,10 @@ const JudgeRegistry::Registration near_number_registration{
          const double expected = probe::number_from(p.at("expected"));
          const double tolerance = probe::number_from(p.at("tolerance"));
          return [=](const ProbeAnswer& answer) {
-             if (answer.kind != Kind::result) return wrong(full_text(expected), "");
+             if (answer.kind != Kind::result) return verdict_wrong(full_text(expected), "");
              const double got = probe::number_from(answer.value);
-             if (std::abs(got - expected) <= tolerance) return right();
-             return wrong(within(full_text(expected), tolerance), full_text(got));
+             if (std::abs(got - expected) <= tolerance) return verdict_right();
+             return verdict_wrong(within(full_text(expected), tolerance), full_text(got));
          };
      }}};
 
@@ -55,20 +42,12 @@ const JudgeRegistry::Registration near_vec3_registration{
          const Vec3 expected = probe::vec3_from(p.at("expected"));
          const double tolerance = probe::number_from(p.at("tolerance"));
          return [=](const ProbeAnswer& answer) {
-             if (answer.kind != Kind::result) return wrong(full_text(expected), "");
+             if (answer.kind != Kind::result) return verdict_wrong(full_text(expected), "");
              const Vec3 got = probe::vec3_from(answer.value);
-             if (near_vec(got, expected, tolerance)) return right();
-             return wrong(within(full_text(expected), tolerance), full_text(got));
+             if (near_vec(got, expected, tolerance)) return verdict_right();
+             return verdict_wrong(within(full_text(expected), tolerance), full_text(got));
          };
      }}};
-
-// In long double, written so that a NaN fails.
-bool near_wide(const Vec3& got, const WideVec& expected, const WideVec& tolerance) {
-    for (int k = 0; k < 3; ++k) {
-        if (!(std::abs(Wide(got[k]) - expected[k]) <= tolerance[k])) return false;
-    }
-    return true;
-}
 
 const JudgeRegistry::Registration near_wide_number_registration{
     {"near_wide_number", [](const Json& p) -> Judge {
@@ -77,10 +56,10 @@ const JudgeRegistry::Registration near_wide_number_registration{
          const std::string text =
              within(full_text(static_cast<double>(expected)), static_cast<double>(tolerance));
          return [=](const ProbeAnswer& answer) {
-             if (answer.kind != Kind::result) return wrong(text, "");
+             if (answer.kind != Kind::result) return verdict_wrong(text, "");
              const double got = probe::number_from(answer.value);
-             if (std::abs(Wide(got) - expected) <= tolerance) return right();
-             return wrong(text, full_text(got));
+             if (std::abs(Wide(got) - expected) <= tolerance) return verdict_right();
+             return verdict_wrong(text, full_text(got));
          };
      }}};
 
@@ -92,10 +71,11 @@ const JudgeRegistry::Registration near_wide_vec3_registration{
          const std::string text = std::string(unit ? "unit " : "") + full_text(narrow(expected)) +
                                   " (within " + full_text(narrow(tolerance)) + ")";
          return [=](const ProbeAnswer& answer) {
-             if (answer.kind != Kind::result) return wrong(text, "");
+             if (answer.kind != Kind::result) return verdict_wrong(text, "");
              const Vec3 got = probe::vec3_from(answer.value);
-             if (near_wide(got, expected, tolerance) && (!unit || unit_length(got))) return right();
-             return wrong(text, full_text(got));
+             if (near_wide(got, expected, tolerance) && (!unit || unit_length(got)))
+                 return verdict_right();
+             return verdict_wrong(text, full_text(got));
          };
      }}};
 
@@ -103,8 +83,9 @@ const JudgeRegistry::Registration threw_registration{
     {"threw", [](const Json& p) -> Judge {
          const std::string type = p.at("type").get<std::string>();
          return [=](const ProbeAnswer& answer) {
-             if (answer.kind == Kind::threw && answer.exception_type == type) return right();
-             return wrong("std::" + type + " thrown", "");
+             if (answer.kind == Kind::threw && answer.exception_type == type)
+                 return verdict_right();
+             return verdict_wrong("std::" + type + " thrown", "");
          };
      }}};
 
@@ -115,15 +96,15 @@ const JudgeRegistry::Registration frame_registration{
          const Vec3 w = probe::vec3_from(p.at("w"));
          const double tolerance = probe::number_from(p.at("tolerance"));
          return [=](const ProbeAnswer& answer) {
-             if (answer.kind != Kind::result) return wrong("a frame", "");
+             if (answer.kind != Kind::result) return verdict_wrong("a frame", "");
              const Vec3 got[3] = {probe::vec3_from(answer.value.at("u")),
                                   probe::vec3_from(answer.value.at("v")),
                                   probe::vec3_from(answer.value.at("w"))};
              if (near_vec(got[0], u, tolerance) && near_vec(got[1], v, tolerance) &&
                  near_vec(got[2], w, tolerance)) {
-                 return right();
+                 return verdict_right();
              }
-             return wrong(
+             return verdict_wrong(
                  within("u " + full_text(u) + " v " + full_text(v) + " w " + full_text(w),
                         tolerance),
                  "u " + full_text(got[0]) + " v " + full_text(got[1]) + " w " + full_text(got[2]));

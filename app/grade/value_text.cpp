@@ -39,4 +39,11 @@ bool unit_length(const Vec3& v) {
     return std::abs(std::sqrt(x * x + y * y + z * z) - 1) <= kUnitLength;
 }
 
+bool near_wide(const Vec3& got, const WideVec& expected, const WideVec& tolerance) {
+    for (int k = 0; k < 3; ++k) {
+        if (!(std::abs(Wide(got[k]) - expected[k]) <= tolerance[k])) return false;
+    }
+    return true;
+}
+
 }  // namespace raystep::grade

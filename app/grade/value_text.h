@@ -3,6 +3,7 @@
 #include <string>
 
 #include "base/math/types.h"
+#include "base/math/wide_vec.h"
 #include "stages/2_rays/ray.h"
 
 namespace raystep::grade {
@@ -27,5 +28,9 @@ std::string ray_text(const Ray& r);
 /// double, within 4 ulps of 1 (2^-52 each), since every normalization a student may write (stage
 /// 1's, glm's, v / |v|) lands within 3. Written so that a NaN fails.
 bool unit_length(const Vec3& v);
+
+/// Each coordinate of `got` within its own tolerance of the long-double expectation's, compared
+/// in long double (a grader's oracle decided both). Written so that a NaN fails.
+bool near_wide(const Vec3& got, const WideVec& expected, const WideVec& tolerance);
 
 }  // namespace raystep::grade

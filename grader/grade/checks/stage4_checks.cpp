@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "app/grade/accel_judges.h"
 #include "base/math/portable_random.h"
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/data_judged.h"
@@ -260,14 +261,6 @@ std::vector<AccelScene> scenes() {
             walls_an_ulp_apart(0xB0DE), nothing_to_hold(false), nothing_to_hold(true)};
 }
 
-std::string hit_text(const std::optional<PrimitiveHit>& h) {
-    if (!h) return "a miss";
-    return std::string(h->kind == PrimitiveKind::sphere     ? "sphere"
-                       : h->kind == PrimitiveKind::triangle ? "triangle"
-                                                            : "plane") +
-           " " + std::to_string(h->index) + " at t = " + full_text(h->hit.t);
-}
-
 // How a student builds the scene in a test of their own, or what it is where it is not written
 // out.
 std::string scene_code(const AccelScene& scene) {
@@ -304,7 +297,8 @@ Judgement judge_ray(const ProbeAnswer& answer, const AccelScene& scene, std::siz
                (!got || (got->kind == expected->kind && got->index == expected->index &&
                          got->hit.t == expected->hit.t));
     };
-    return judge_result(answer, hit_text(expected), probe::primitive_hit_from, same, hit_text);
+    return judge_result(answer, primitive_hit_text(expected), probe::primitive_hit_from, same,
+                        primitive_hit_text);
 }
 
 // One structure over every scene: each ray's answer must be exactly the reference's. The
