@@ -66,8 +66,10 @@ fs::path executable_path() {
 
 Opened open_module(const fs::path& path) {
     // Loaded for the rest of the process (never dlclose'd): OpenImageIO keeps threads and caches
-    // that outlive any one call. RTLD_NOW reports a missing dependency here, not mid-render.
-    void* module = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    // that outlive any one call. Bound lazily, as a program that links OpenImageIO binds it:
+    // binding every function of its libraries up front (RTLD_NOW) slows each render's first
+    // image measurably (docs/measurements/startup.md). A missing library still fails here.
+    void* module = dlopen(path.c_str(), RTLD_LAZY | RTLD_LOCAL);
     if (!module) return {nullptr, dlerror()};
     void* symbol = dlsym(module, RAYSTEP_IMAGE_LIBRARY_SYMBOL);
     if (!symbol) return {nullptr, dlerror()};
