@@ -70,7 +70,13 @@ Opened open_module(const fs::path& path) {
     // binding every function of its libraries up front (RTLD_NOW) slows each render's first
     // image measurably (docs/measurements/startup.md). A missing library still fails here.
     void* module = dlopen(path.c_str(), RTLD_LAZY | RTLD_LOCAL);
-    if (!module) return {nullptr, dlerror()};
+    if (!module) {
+        // glibc names the file in some of its messages; the caller names it once already
+        std::string reason = dlerror();
+        const std::string named = path.string() + ": ";
+        if (reason.compare(0, named.size(), named) == 0) reason.erase(0, named.size());
+        return {nullptr, reason};
+    }
     void* symbol = dlsym(module, RAYSTEP_IMAGE_LIBRARY_SYMBOL);
     if (!symbol) return {nullptr, dlerror()};
     return {reinterpret_cast<RaystepImageLibraryEntry>(symbol), {}};
