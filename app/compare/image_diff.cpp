@@ -3,18 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
+#include "base/image/image_library_loader.h"
 
 namespace raystep {
 
 namespace {
-
-OIIO::ImageBuf buffer(const Image& image) {
-    OIIO::ImageBuf buf(OIIO::ImageSpec(image.width(), image.height(), 3, OIIO::TypeDesc::FLOAT));
-    buf.set_pixels(OIIO::ROI::All(), OIIO::TypeDesc::FLOAT, image.data());
-    return buf;
-}
 
 // The largest of a pixel's channel differences; NaN when any channel's is (std::max would drop
 // a NaN that is not first).
@@ -78,14 +71,15 @@ ImageDiff compare_images(const Image& reference, const Image& student, float thr
         diff.mean_error = diff.rms_error = diff.max_error = HUGE_VAL;
         return diff;
     }
-    const OIIO::ImageBuf a = buffer(reference);
-    const OIIO::ImageBuf b = buffer(student);
-    const OIIO::ImageBufAlgo::CompareResults numbers =
-        OIIO::ImageBufAlgo::compare(a, b, threshold, threshold);
-    diff.mean_error = numbers.meanerror;
+    RaystepImageComparison numbers{};
+    throw_on_image_failure(
+        image_library().compare_rgb(reference.width(), reference.height(), reference.data(),
+                                    student.data(), threshold, &numbers),
+        "");
+    diff.mean_error = numbers.mean_error;
     diff.rms_error = numbers.rms_error;
-    diff.psnr = numbers.PSNR;
-    diff.max_error = numbers.maxerror;
+    diff.psnr = numbers.psnr;
+    diff.max_error = numbers.max_error;
     // compare counts channel values; a pixel is over when any of its channels is. A NaN in the
     // student's image is a difference, whatever the threshold: both tests are written to count
     // a NaN.

@@ -30,7 +30,8 @@ struct ImageDiff {
 /// Application 19(2); Sharma 2003, Digital Color Imaging Handbook, section 1.7).
 constexpr double kJustNoticeableDeltaE = 2.3;
 
-/// Compares two images of the same size; a different size is a difference of every pixel.
+/// Compares two images of the same size; a different size is a difference of every pixel. Throws
+/// std::runtime_error when the image library cannot be loaded (base/image/image_library_loader.h).
 ImageDiff compare_images(const Image& reference, const Image& student, float threshold);
 
 /// The difference as a heat map: black where the images agree, through red and yellow to white

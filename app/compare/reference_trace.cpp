@@ -5,12 +5,13 @@
 #include <cstdint>
 #include <cstring>
 #include <initializer_list>
+#include <iterator>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
-#include <OpenImageIO/imageio.h>
-
 #include "base/errors/input_error.h"
+#include "base/image/image_library_loader.h"
 
 namespace raystep {
 
@@ -306,75 +307,82 @@ void write_reference_trace(const fs::path& path, int width, int height, View vie
         to_residuals(bits, static_cast<std::size_t>(width), count, c);
     }
 
-    OIIO::ImageSpec spec(width, height, static_cast<int>(count), OIIO::TypeDesc::UINT32);
-    spec.channelnames.clear();
+    std::vector<const char*> names;
     for (const Channel& channel : channels)
-        spec.channelnames.push_back(channel.name);
-    spec.attribute("compression", "zip");
-    spec.attribute(kFormatAttribute, kFormatVersion);
-    spec.attribute(kViewAttribute, std::string(view_name(view)));
-    spec.attribute(kLightsAttribute, static_cast<int>(lights));
-    spec.attribute(kFullIsLocalAttribute, full_is_local ? 1 : 0);
+        names.push_back(channel.name.c_str());
+    const std::string view_text(view_name(view));
+    const RaystepIntAttribute ints[] = {{kFormatAttribute, kFormatVersion},
+                                        {kLightsAttribute, static_cast<int>(lights)},
+                                        {kFullIsLocalAttribute, full_is_local ? 1 : 0}};
+    const RaystepStringAttribute strings[] = {{kViewAttribute, view_text.c_str()}};
+    const RaystepChannelImage image = {width,           height,      static_cast<int>(count),
+                                       names.data(),    bits.data(), ints,
+                                       std::size(ints), strings,     std::size(strings)};
 
     fs::create_directories(path.parent_path().empty() ? fs::path(".") : path.parent_path());
-    auto out = OIIO::ImageOutput::create(path.string());
-    if (!out) throw std::runtime_error(path.string() + ": cannot write: " + OIIO::geterror());
-    if (!out->open(path.string(), spec) || !out->write_image(OIIO::TypeDesc::UINT32, bits.data()) ||
-        !out->close()) {
-        throw std::runtime_error(path.string() + ": cannot write: " + out->geterror());
-    }
+    throw_on_image_failure(image_library().write_channels(path.string().c_str(), &image),
+                           path.string() + ": cannot write: ");
 }
 
 ReferenceTrace read_reference_trace(const fs::path& path) {
     const std::string file = path.string();
-    auto in = OIIO::ImageInput::open(file);
-    if (!in) throw InputError(file, 0, "cannot read it: " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
-    if (spec.get_int_attribute(kFormatAttribute, 0) != kFormatVersion) {
+    const RaystepImageLibraryTable& library = image_library();
+    RaystepImageInput* opened = nullptr;
+    if (const char* failure = library.open_input(file.c_str(), &opened)) {
+        throw InputError(file, 0, "cannot read it: " + std::string(failure));
+    }
+    const std::unique_ptr<RaystepImageInput, void (*)(RaystepImageInput*)> in(opened,
+                                                                              library.close_input);
+    int width = 0;
+    int height = 0;
+    int channel_count = 0;
+    int all_uint32 = 0;
+    library.input_shape(in.get(), &width, &height, &channel_count, &all_uint32);
+    if (library.input_int_attribute(in.get(), kFormatAttribute, 0) != kFormatVersion) {
         throw InputError(file, 0,
                          "not a raystep reference trace (no " + std::string(kFormatAttribute) +
                              " " + std::to_string(kFormatVersion) + " attribute)");
     }
-    const std::optional<View> view = parse_view(spec.get_string_attribute(kViewAttribute));
-    const int lights = spec.get_int_attribute(kLightsAttribute, -1);
-    if (!view || lights < 0 || spec.width <= 0 || spec.height <= 0) {
+    const std::optional<View> view =
+        parse_view(library.input_string_attribute(in.get(), kViewAttribute));
+    const int lights = library.input_int_attribute(in.get(), kLightsAttribute, -1);
+    if (!view || lights < 0 || width <= 0 || height <= 0) {
         throw InputError(file, 0, "its view, light count or size is missing or wrong");
     }
     const PipelineReach reach = pipeline_reach(*view);
-    const bool full_is_local = spec.get_int_attribute(kFullIsLocalAttribute, 0) != 0;
+    const bool full_is_local = library.input_int_attribute(in.get(), kFullIsLocalAttribute, 0) != 0;
     const std::vector<Channel> channels =
         layout(reach, static_cast<std::size_t>(lights), full_is_local);
+    std::vector<std::string> names;
+    for (int c = 0; c < channel_count; ++c)
+        names.emplace_back(library.input_channel_name(in.get(), c));
     std::vector<int> position;
     for (const Channel& channel : channels) {
-        const auto found =
-            std::find(spec.channelnames.begin(), spec.channelnames.end(), channel.name);
-        if (found == spec.channelnames.end()) {
-            throw InputError(file, 0, "it has no channel " + channel.name);
-        }
-        position.push_back(static_cast<int>(found - spec.channelnames.begin()));
+        const auto found = std::find(names.begin(), names.end(), channel.name);
+        if (found == names.end()) throw InputError(file, 0, "it has no channel " + channel.name);
+        position.push_back(static_cast<int>(found - names.begin()));
     }
 
-    const std::size_t stride = static_cast<std::size_t>(spec.nchannels);
-    const std::size_t size =
-        static_cast<std::size_t>(spec.width) * static_cast<std::size_t>(spec.height);
+    const std::size_t stride = static_cast<std::size_t>(channel_count);
+    const std::size_t size = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
     std::vector<std::uint32_t> bits(size * stride);
-    if (spec.format != OIIO::TypeDesc::UINT32 || !spec.channelformats.empty()) {
+    if (!all_uint32) {
         throw InputError(file, 0, "not a raystep reference trace (its channels are not uint32)");
     }
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT32, bits.data())) {
-        throw InputError(file, 0, "cannot read its pixels (truncated?): " + in->geterror());
+    if (const char* failure = library.read_channels(in.get(), bits.data())) {
+        throw InputError(file, 0, "cannot read its pixels (truncated?): " + std::string(failure));
     }
     std::vector<float> values(size * stride);
     for (const int at : position) {
         const std::size_t channel = static_cast<std::size_t>(at);
-        from_residuals(bits, static_cast<std::size_t>(spec.width), stride, channel);
+        from_residuals(bits, static_cast<std::size_t>(width), stride, channel);
         for (std::size_t p = 0; p < size; ++p)
             std::memcpy(&values[p * stride + channel], &bits[p * stride + channel], sizeof(float));
     }
 
     ReferenceTrace trace;
-    trace.width = spec.width;
-    trace.height = spec.height;
+    trace.width = width;
+    trace.height = height;
     trace.view = *view;
     trace.lights = static_cast<std::size_t>(lights);
     trace.pixels.reserve(size);
@@ -383,7 +391,7 @@ ReferenceTrace read_reference_trace(const fs::path& path) {
         for (std::size_t c = 0; c < channels.size(); ++c)
             ordered[c] = values[p * stride + static_cast<std::size_t>(position[c])];
         trace.pixels.push_back(
-            decode(ordered.data(), reach, trace.lights, full_is_local, file, p, spec.width));
+            decode(ordered.data(), reach, trace.lights, full_is_local, file, p, width));
     }
     return trace;
 }

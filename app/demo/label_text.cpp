@@ -4,8 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
+#include "base/image/image_library_loader.h"
 
 namespace raystep {
 
@@ -26,12 +25,19 @@ constexpr std::array<const char*, 7> kFonts = {
 // The smallest size a label shrinks to before it is drawn cut off: below it nobody reads it.
 constexpr int kSmallestTextSize = 9;
 
-// True when OpenImageIO can open the font; a failed attempt leaves an error message in
-// OpenImageIO, taken here so that it is not printed later.
+// True when OpenImageIO can open the font.
 bool can_open(const char* font) {
-    if (OIIO::ImageBufAlgo::text_size("M", 12, font).defined()) return true;
-    OIIO::geterror();
-    return false;
+    int width = 0;
+    return image_library().text_width("M", 12, font, &width) == nullptr;
+}
+
+// The width of the text drawn `size` pixels high with the font.
+int text_width(const std::string& text, int size, const LabelFont& font) {
+    int width = 0;
+    throw_on_image_failure(
+        image_library().text_width(text.c_str(), size, font.name.c_str(), &width),
+        "cannot draw the label '" + text + "': ");
+    return width;
 }
 
 }  // namespace
@@ -70,24 +76,18 @@ void draw_text(Image& image, const LabelFont& font, std::string_view text, int x
     }
 
     // Shrink until the text fits
+    const std::string line(text);
     int fitted = size;
-    while (fitted > kSmallestTextSize &&
-           OIIO::ImageBufAlgo::text_size(text, fitted, font.name).width() > max_width) {
+    while (fitted > kSmallestTextSize && text_width(line, fitted, font) > max_width)
         --fitted;
-    }
 
-    // Draw straight into the image's pixels: an ImageBuf over our buffer copies nothing
-    const OIIO::ImageSpec spec(image.width(), image.height(), 3, OIIO::TypeDesc::FLOAT);
-    OIIO::ImageBuf buffer(spec, image.data());
+    // Draw straight into the image's pixels
     const float rgb[3] = {static_cast<float>(colour.r), static_cast<float>(colour.g),
                           static_cast<float>(colour.b)};
-    const auto align_x = align == TextAlign::centre ? OIIO::ImageBufAlgo::TextAlignX::Center
-                                                    : OIIO::ImageBufAlgo::TextAlignX::Left;
-    if (!OIIO::ImageBufAlgo::render_text(buffer, x, y, text, fitted, font.name, rgb, align_x,
-                                         OIIO::ImageBufAlgo::TextAlignY::Center)) {
-        throw std::runtime_error("cannot draw the label '" + std::string(text) + "' with " +
-                                 font.name + ": " + buffer.geterror());
-    }
+    throw_on_image_failure(
+        image_library().draw_text(image.data(), image.width(), image.height(), x, y, line.c_str(),
+                                  fitted, font.name.c_str(), rgb, align == TextAlign::centre),
+        "cannot draw the label '" + line + "' with " + font.name + ": ");
 }
 
 }  // namespace raystep

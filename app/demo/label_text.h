@@ -20,7 +20,8 @@ struct LabelFont {
 
 /// The first font of the list below that OpenImageIO can open: DejaVu Sans by its paths on Linux
 /// distributions (Debian's fonts-dejavu-core), then names that OpenImageIO finds in the font
-/// folders of macOS and Windows. nullopt when none opens.
+/// folders of macOS and Windows. nullopt when none opens; std::runtime_error when the image
+/// library cannot be loaded (base/image/image_library_loader.h).
 std::optional<LabelFont> find_label_font();
 
 /// The fonts find_label_font tries, comma-separated, for the message when none is found.

@@ -1,0 +1,28 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "base/image/image_library_table.h"
+
+namespace raystep {
+
+/// The image library's table, the module loaded on the first call: from the path the build
+/// compiled in, else from beside the running executable. Later calls return the same table.
+/// Throws std::runtime_error naming each path tried and the system loader's message when the
+/// module cannot be loaded, has no table or was built for another table version; the next call
+/// tries again.
+const RaystepImageLibraryTable& image_library();
+
+/// The table of the first of `candidates` that loads as the image library module. Throws
+/// std::runtime_error naming every candidate and the system loader's reason it did not load. A
+/// module loaded stays loaded for the rest of the process.
+const RaystepImageLibraryTable& load_image_library(
+    const std::vector<std::filesystem::path>& candidates);
+
+/// Throws std::runtime_error(`what` + library's message) when `failure`, the result of one of
+/// the table's functions, is not nullptr.
+void throw_on_image_failure(const char* failure, const std::string& what);
+
+}  // namespace raystep
