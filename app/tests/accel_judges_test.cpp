@@ -8,6 +8,7 @@
 
 #include "app/grade/accel_judges.h"
 #include "app/grade/data_judge.h"
+#include "app/tests/probe_answers.h"
 
 namespace raystep {
 namespace {
@@ -15,13 +16,6 @@ namespace {
 using grade::ProbeAnswer;
 using grade::Verdict;
 using probe::Json;
-
-ProbeAnswer result(const Json& value) {
-    ProbeAnswer answer;
-    answer.kind = ProbeAnswer::Kind::result;
-    answer.value = value;
-    return answer;
-}
 
 Json interval(double enter, double exit) {
     return {{"enter", probe::number(enter)}, {"exit", probe::number(exit)}};
@@ -40,17 +34,17 @@ TEST_CASE("slab_interval: a ray that must hit passes only an interval within tol
     exact.enter_tolerance = 1e-12L;
     exact.exit_tolerance = 1e-12L;
     const grade::Judge judge = judge_from(grade::slab_interval_judge(exact));
-    CHECK(judge(result(interval(4, 6))).passed);
-    CHECK(judge(result(interval(4 + 1e-13, 6 - 1e-13))).passed);
-    CHECK_FALSE(judge(result(interval(4, 6 + 1e-9))).passed);
-    CHECK_FALSE(judge(result(interval(4 - 1e-9, 6))).passed);
-    CHECK_FALSE(judge(result(interval(std::nan(""), 6))).passed);
-    const Verdict miss = judge(result(nullptr));
+    CHECK(judge(testing::result_answer(interval(4, 6))).passed);
+    CHECK(judge(testing::result_answer(interval(4 + 1e-13, 6 - 1e-13))).passed);
+    CHECK_FALSE(judge(testing::result_answer(interval(4, 6 + 1e-9))).passed);
+    CHECK_FALSE(judge(testing::result_answer(interval(4 - 1e-9, 6))).passed);
+    CHECK_FALSE(judge(testing::result_answer(interval(std::nan(""), 6))).passed);
+    const Verdict miss = judge(testing::result_answer(nullptr));
     CHECK_FALSE(miss.passed);
     CHECK(miss.got == "a miss");
     CHECK(miss.expected ==
           "t in [4, 6] (within 9.9999999999999998e-13 and 9.9999999999999998e-13)");
-    const Verdict reversed = judge(result(interval(6, 4)));
+    const Verdict reversed = judge(testing::result_answer(interval(6, 4)));
     CHECK_FALSE(reversed.passed);
     CHECK(reversed.got == "t in [6, 4], which is empty");
     ProbeAnswer threw;
@@ -62,8 +56,8 @@ TEST_CASE("slab_interval: a ray that must miss passes only a miss; within roundi
     grade::SlabInterval miss;
     miss.must_miss = true;
     const grade::Judge must_miss = judge_from(grade::slab_interval_judge(miss));
-    CHECK(must_miss(result(nullptr)).passed);
-    const Verdict hit = must_miss(result(interval(1, 2)));
+    CHECK(must_miss(testing::result_answer(nullptr)).passed);
+    const Verdict hit = must_miss(testing::result_answer(interval(1, 2)));
     CHECK_FALSE(hit.passed);
     CHECK(hit.expected == "a miss");
 
@@ -73,10 +67,11 @@ TEST_CASE("slab_interval: a ray that must miss passes only a miss; within roundi
     touch.enter_tolerance = 1e-15L;
     touch.exit_tolerance = 1e-15L;
     const grade::Judge either = judge_from(grade::slab_interval_judge(touch));
-    CHECK(either(result(nullptr)).passed);
-    CHECK(either(result(interval(1, 1))).passed);
-    CHECK_FALSE(either(result(interval(1, 1.5))).passed);
-    CHECK(either(result(interval(1, 1.5))).expected.find("or a miss") != std::string::npos);
+    CHECK(either(testing::result_answer(nullptr)).passed);
+    CHECK(either(testing::result_answer(interval(1, 1))).passed);
+    CHECK_FALSE(either(testing::result_answer(interval(1, 1.5))).passed);
+    CHECK(either(testing::result_answer(interval(1, 1.5))).expected.find("or a miss") !=
+          std::string::npos);
 }
 
 TEST_CASE("slab_interval: an infinite end must come out infinite, a finite end in long double") {
@@ -86,8 +81,8 @@ TEST_CASE("slab_interval: an infinite end must come out infinite, a finite end i
     open.exit = HUGE_VAL;
     open.enter_tolerance = 1e-15L;
     const grade::Judge judge = judge_from(grade::slab_interval_judge(open));
-    CHECK(judge(result(interval(0, HUGE_VAL))).passed);
-    CHECK_FALSE(judge(result(interval(0, 1e308))).passed);
+    CHECK(judge(testing::result_answer(interval(0, HUGE_VAL))).passed);
+    CHECK_FALSE(judge(testing::result_answer(interval(0, 1e308))).passed);
     if (LDBL_MANT_DIG < 64) {
         WARN("long double is a double here: nothing below a double to keep");
         return;
@@ -99,18 +94,19 @@ TEST_CASE("slab_interval: an infinite end must come out infinite, a finite end i
     fine.exit = 2;
     fine.enter_tolerance = 0x1p-62L;
     fine.exit_tolerance = 0x1p-62L;
-    CHECK_FALSE(judge_from(grade::slab_interval_judge(fine))(result(interval(1, 2))).passed);
+    CHECK_FALSE(judge_from(grade::slab_interval_judge(fine))(testing::result_answer(interval(1, 2)))
+                    .passed);
 }
 
 TEST_CASE("grid_cells: exactly the expected three integers") {
     const grade::Judge judge = judge_from(grade::grid_cells_judge({2, 3, 4}));
-    CHECK(judge(result(Json::array({2, 3, 4}))).passed);
-    const Verdict off = judge(result(Json::array({2, 3, 5})));
+    CHECK(judge(testing::result_answer(Json::array({2, 3, 4}))).passed);
+    const Verdict off = judge(testing::result_answer(Json::array({2, 3, 5})));
     CHECK_FALSE(off.passed);
     CHECK(off.expected == "2 x 3 x 4");
     CHECK(off.got == "2 x 3 x 5");
-    CHECK_FALSE(judge(result(Json::array({2.0, 3, 4}))).passed);
-    CHECK_FALSE(judge(result(Json::array({2, 3}))).passed);
+    CHECK_FALSE(judge(testing::result_answer(Json::array({2.0, 3, 4}))).passed);
+    CHECK_FALSE(judge(testing::result_answer(Json::array({2, 3}))).passed);
 }
 
 TEST_CASE("structure_hit: the same primitive at the same t, bit for bit, in a list of one") {
@@ -118,7 +114,7 @@ TEST_CASE("structure_hit: the same primitive at the same t, bit for bit, in a li
     const PrimitiveHit expected{hit, PrimitiveKind::triangle, 3};
     const grade::Judge judge = judge_from(grade::structure_hit_judge(expected, 0.0));
     const auto one = [](const std::optional<PrimitiveHit>& h) {
-        return result(Json::array({probe::primitive_hit(h)}));
+        return testing::result_answer(Json::array({probe::primitive_hit(h)}));
     };
     CHECK(judge(one(expected)).passed);
     PrimitiveHit later = expected;
@@ -133,10 +129,10 @@ TEST_CASE("structure_hit: the same primitive at the same t, bit for bit, in a li
     CHECK_FALSE(miss.passed);
     CHECK(miss.got == "a miss");
     // The hit itself, or two answers, is not the answer to a list of one ray
-    CHECK_FALSE(judge(result(probe::primitive_hit(expected))).passed);
-    CHECK_FALSE(
-        judge(result(Json::array({probe::primitive_hit(expected), probe::primitive_hit(expected)})))
-            .passed);
+    CHECK_FALSE(judge(testing::result_answer(probe::primitive_hit(expected))).passed);
+    CHECK_FALSE(judge(testing::result_answer(Json::array(
+                          {probe::primitive_hit(expected), probe::primitive_hit(expected)})))
+                    .passed);
 
     const grade::Judge nothing = judge_from(grade::structure_hit_judge(std::nullopt, 0.0));
     CHECK(nothing(one(std::nullopt)).passed);
@@ -150,7 +146,7 @@ TEST_CASE("structure_hit: with a tolerance, t within it on the same primitive; a
         PrimitiveHit got = expected;
         got.hit.t = t;
         got.index = index;
-        return result(Json::array({probe::primitive_hit(got)}));
+        return testing::result_answer(Json::array({probe::primitive_hit(got)}));
     };
     CHECK(judge(at(0.99999999999999978, 1)).passed);
     CHECK(judge(at(1.0 + 5e-10, 1)).passed);
@@ -163,14 +159,16 @@ TEST_CASE("structure_hit: with a tolerance, t within it on the same primitive; a
 
 TEST_CASE("structure_occluded: the expected boolean in a list of one") {
     const grade::Judge judge = judge_from(grade::structure_occluded_judge(true));
-    CHECK(judge(result(Json::array({true}))).passed);
-    const Verdict wrong = judge(result(Json::array({false})));
+    CHECK(judge(testing::result_answer(Json::array({true}))).passed);
+    const Verdict wrong = judge(testing::result_answer(Json::array({false})));
     CHECK_FALSE(wrong.passed);
     CHECK(wrong.expected == "occluded");
     CHECK(wrong.got == "not occluded");
-    CHECK(judge(result(Json::array({1}))).got == "not a boolean");
-    CHECK_FALSE(judge(result(true)).passed);
-    CHECK(judge_from(grade::structure_occluded_judge(false))(result(Json::array({false}))).passed);
+    CHECK(judge(testing::result_answer(Json::array({1}))).got == "not a boolean");
+    CHECK_FALSE(judge(testing::result_answer(true)).passed);
+    CHECK(judge_from(grade::structure_occluded_judge(false))(
+              testing::result_answer(Json::array({false})))
+              .passed);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include "app/grade/data_judge.h"
 #include "app/grade/recursion_judges.h"
+#include "app/tests/probe_answers.h"
 
 namespace raystep {
 namespace {
@@ -20,22 +21,15 @@ const double kInf = std::numeric_limits<double>::infinity();
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 const double kMax = std::numeric_limits<double>::max();
 
-grade::ProbeAnswer result(const probe::Json& value) {
-    grade::ProbeAnswer answer;
-    answer.kind = grade::ProbeAnswer::Kind::result;
-    answer.value = value;
-    return answer;
-}
-
 grade::ProbeAnswer ray(const Ray& r) {
-    return result(probe::ray(r));
+    return testing::result_answer(probe::ray(r));
 }
 
 grade::ProbeAnswer radiance(const Vec3& colour, const std::vector<Ray>& rays) {
     probe::Json list = probe::Json::array();
     for (const Ray& r : rays)
         list.push_back(probe::ray(r));
-    return result({{"colour", probe::vec3(colour)}, {"rays", list}});
+    return testing::result_answer({{"colour", probe::vec3(colour)}, {"rays", list}});
 }
 
 // From (1, 0, 0) on the floor y = 0 towards (1, 1, 0) / sqrt 2, along_normal's origin 1e-4 up.

@@ -8,6 +8,7 @@
 
 #include "app/grade/data_judge.h"
 #include "app/grade/shading_judges.h"
+#include "app/tests/probe_answers.h"
 
 namespace raystep {
 namespace {
@@ -19,19 +20,12 @@ using grade::LeavingDirection;
 const double kInf = std::numeric_limits<double>::infinity();
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-grade::ProbeAnswer result(const probe::Json& value) {
-    grade::ProbeAnswer answer;
-    answer.kind = grade::ProbeAnswer::Kind::result;
-    answer.value = value;
-    return answer;
-}
-
 grade::ProbeAnswer sample(const Vec3& direction, double distance, const Vec3& intensity) {
-    return result(probe::light_sample({direction, distance, intensity}));
+    return testing::result_answer(probe::light_sample({direction, distance, intensity}));
 }
 
 grade::ProbeAnswer ray(const Vec3& origin, const Vec3& direction, double t_min, double t_max) {
-    return result(probe::ray({origin, direction, t_min, t_max}));
+    return testing::result_answer(probe::ray({origin, direction, t_min, t_max}));
 }
 
 TEST_CASE("light_sample: a distance or intensity just outside its tolerance fails, NaN too") {

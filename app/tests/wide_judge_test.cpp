@@ -11,16 +11,10 @@
 #include "app/grade/data_judge.h"
 #include "app/grade/value_judges.h"
 #include "app/protocol/wide_json.h"
+#include "app/tests/probe_answers.h"
 
 namespace raystep {
 namespace {
-
-grade::ProbeAnswer result(const probe::Json& value) {
-    grade::ProbeAnswer answer;
-    answer.kind = grade::ProbeAnswer::Kind::result;
-    answer.value = value;
-    return answer;
-}
 
 TEST_CASE("every data judge this build registers has a name of its own") {
     // build_judge takes the first judge of a name: a second, from another file, would be
@@ -53,9 +47,9 @@ TEST_CASE("a wide judge compares in long double, the bits below a double's inclu
     const Wide expected = 1.0L + 0x1p-60L;
     const grade::Judge number =
         grade::build_judge(grade::near_wide_number_judge(expected, 0x1p-62L));
-    CHECK_FALSE(number(result(probe::number(1.0))).passed);
+    CHECK_FALSE(number(testing::result_answer(probe::number(1.0))).passed);
     CHECK(grade::build_judge(grade::near_wide_number_judge(expected, 0x1p-59L))(
-              result(probe::number(1.0)))
+              testing::result_answer(probe::number(1.0)))
               .passed);
 }
 
@@ -64,16 +58,17 @@ TEST_CASE("a wide vector judge fails a NaN, a component out of tolerance and a n
     const WideVec tolerance{1e-15L, 1e-15L, 1e-15L};
     const grade::Judge unit =
         grade::build_judge(grade::near_wide_vec3_judge(expected, tolerance, true));
-    CHECK(unit(result(probe::vec3({0.6, 0.8, 0.0}))).passed);
-    CHECK_FALSE(unit(result(probe::vec3({0.6, 0.8, std::nan("")}))).passed);
-    CHECK_FALSE(unit(result(probe::vec3({0.6, 0.81, 0.0}))).passed);
+    CHECK(unit(testing::result_answer(probe::vec3({0.6, 0.8, 0.0}))).passed);
+    CHECK_FALSE(unit(testing::result_answer(probe::vec3({0.6, 0.8, std::nan("")}))).passed);
+    CHECK_FALSE(unit(testing::result_answer(probe::vec3({0.6, 0.81, 0.0}))).passed);
     const grade::Judge loose =
         grade::build_judge(grade::near_wide_vec3_judge(expected, {0.1L, 0.1L, 0.1L}, true));
-    const grade::Verdict long_normal = loose(result(probe::vec3({0.65, 0.85, 0.0})));
+    const grade::Verdict long_normal =
+        loose(testing::result_answer(probe::vec3({0.65, 0.85, 0.0})));
     CHECK_FALSE(long_normal.passed);
     CHECK(long_normal.expected.rfind("unit (", 0) == 0);
     CHECK(grade::build_judge(grade::near_wide_vec3_judge(expected, {0.1L, 0.1L, 0.1L}))(
-              result(probe::vec3({0.65, 0.85, 0.0})))
+              testing::result_answer(probe::vec3({0.65, 0.85, 0.0})))
               .passed);
 }
 

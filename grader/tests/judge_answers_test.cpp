@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
+#include "app/tests/probe_answers.h"
 #include "base/testing/catch.h"
 #include "grader/grade/check_definition.h"
-#include "probe_answers.h"
 
 using namespace raystep::grade;
 using raystep::testing::result_answer;

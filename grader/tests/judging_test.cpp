@@ -5,10 +5,10 @@
 #include <string>
 #include <vector>
 
+#include "app/tests/probe_answers.h"
 #include "base/math/portable_random.h"
 #include "base/testing/catch.h"
 #include "grader/grade/checks/judging.h"
-#include "probe_answers.h"
 
 using namespace raystep;
 using namespace raystep::grade;

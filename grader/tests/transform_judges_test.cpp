@@ -11,28 +11,22 @@
 #include "app/grade/data_judge.h"
 #include "app/grade/transform_judges.h"
 #include "app/protocol/wide_json.h"
+#include "app/tests/probe_answers.h"
 
 namespace raystep::grade {
 namespace {
 
 const double kInf = std::numeric_limits<double>::infinity();
 
-ProbeAnswer result(const probe::Json& value) {
-    ProbeAnswer answer;
-    answer.kind = ProbeAnswer::Kind::result;
-    answer.value = value;
-    return answer;
-}
-
 ProbeAnswer transform_answer(const Mat4& matrix, const Mat4& inverse) {
-    return result(probe::transform({matrix, inverse}));
+    return testing::result_answer(probe::transform({matrix, inverse}));
 }
 
 ProbeAnswer hit_answer(double t, const Vec3& normal) {
     Hit hit;
     hit.t = t;
     hit.normal = normal;
-    return result(probe::hit(hit));
+    return testing::result_answer(probe::hit(hit));
 }
 
 double next_up(double x) {
@@ -54,16 +48,16 @@ Mat4 inverse_translation() {
 
 TEST_CASE("a matrix judge with zero tolerance fails an entry one ulp off, and a NaN") {
     const Judge judge = build_judge(near_wide_matrix_judge(widen(translation()), WideMat(0.0L)));
-    CHECK(judge(result(probe::mat4(translation()))).passed);
+    CHECK(judge(testing::result_answer(probe::mat4(translation()))).passed);
     Mat4 off = translation();
     off[3][1] = next_up(2.0);
-    const Verdict one_ulp = judge(result(probe::mat4(off)));
+    const Verdict one_ulp = judge(testing::result_answer(probe::mat4(off)));
     CHECK_FALSE(one_ulp.passed);
     CHECK(one_ulp.expected == "matrix row 1 column 3 2 (within 0)");
     CHECK(one_ulp.got.rfind("matrix row 1 column 3 2.0000000000000004; matrix rows [", 0) == 0);
     Mat4 nan = translation();
     nan[0][0] = std::nan("");
-    CHECK_FALSE(judge(result(probe::mat4(nan))).passed);
+    CHECK_FALSE(judge(testing::result_answer(probe::mat4(nan))).passed);
     ProbeAnswer threw;
     threw.kind = ProbeAnswer::Kind::threw;
     CHECK_FALSE(judge(threw).passed);
@@ -80,11 +74,12 @@ TEST_CASE("a matrix judge compares in long double, the bits below a double's inc
     expected[0][0] = 1.0L + 0x1p-60L;
     WideMat tolerance(0.0L);
     tolerance[0][0] = 0x1p-62L;
-    CHECK_FALSE(
-        build_judge(near_wide_matrix_judge(expected, tolerance))(result(probe::mat4(Mat4(1.0))))
-            .passed);
+    CHECK_FALSE(build_judge(near_wide_matrix_judge(expected, tolerance))(
+                    testing::result_answer(probe::mat4(Mat4(1.0))))
+                    .passed);
     tolerance[0][0] = 0x1p-59L;
-    CHECK(build_judge(near_wide_matrix_judge(expected, tolerance))(result(probe::mat4(Mat4(1.0))))
+    CHECK(build_judge(near_wide_matrix_judge(expected, tolerance))(
+              testing::result_answer(probe::mat4(Mat4(1.0))))
               .passed);
 }
 
@@ -142,25 +137,31 @@ TEST_CASE("a ray judge holds origin and direction to their tolerances and t to t
     const WideVec tolerance(1e-15L);
     const Judge judge =
         build_judge(near_wide_ray_judge({1, 1, 2}, tolerance, {0, 2, 2}, tolerance, 0.25, kInf));
-    CHECK(judge(result(probe::ray({{1, 1, 2}, {0, 2, 2}, 0.25, kInf}))).passed);
+    CHECK(judge(testing::result_answer(probe::ray({{1, 1, 2}, {0, 2, 2}, 0.25, kInf}))).passed);
     // The direction normalized: the object-frame ray must keep M^-1 D's length.
-    const Verdict normalized =
-        judge(result(probe::ray({{1, 1, 2}, {0, std::sqrt(0.5), std::sqrt(0.5)}, 0.25, kInf})));
+    const Verdict normalized = judge(testing::result_answer(
+        probe::ray({{1, 1, 2}, {0, std::sqrt(0.5), std::sqrt(0.5)}, 0.25, kInf})));
     CHECK_FALSE(normalized.passed);
     CHECK(normalized.expected ==
           "origin (1, 1, 2), direction (0, 2, 2), t in [0.25, inf] (within "
           "(1.0000000000000001e-15, 1.0000000000000001e-15, "
           "1.0000000000000001e-15) and (1.0000000000000001e-15, "
           "1.0000000000000001e-15, 1.0000000000000001e-15))");
-    CHECK_FALSE(judge(result(probe::ray({{1, 1, 2}, {0, 2, 2}, next_up(0.25), kInf}))).passed);
-    CHECK_FALSE(judge(result(probe::ray({{1, 1, 2}, {0, 2, 2}, 0.25, 1e300}))).passed);
-    CHECK_FALSE(judge(result(probe::ray({{1, 1, 2.01}, {0, 2, 2}, 0.25, kInf}))).passed);
-    CHECK_FALSE(judge(result(probe::ray({{std::nan(""), 1, 2}, {0, 2, 2}, 0.25, kInf}))).passed);
+    CHECK_FALSE(
+        judge(testing::result_answer(probe::ray({{1, 1, 2}, {0, 2, 2}, next_up(0.25), kInf})))
+            .passed);
+    CHECK_FALSE(
+        judge(testing::result_answer(probe::ray({{1, 1, 2}, {0, 2, 2}, 0.25, 1e300}))).passed);
+    CHECK_FALSE(
+        judge(testing::result_answer(probe::ray({{1, 1, 2.01}, {0, 2, 2}, 0.25, kInf}))).passed);
+    CHECK_FALSE(
+        judge(testing::result_answer(probe::ray({{std::nan(""), 1, 2}, {0, 2, 2}, 0.25, kInf})))
+            .passed);
 }
 
 TEST_CASE("a hit judge fails a hit where a miss is due, a miss where a hit is, and a bad hit") {
     const Judge miss = build_judge(wide_miss_judge());
-    CHECK(miss(result(probe::hit(std::nullopt))).passed);
+    CHECK(miss(testing::result_answer(probe::hit(std::nullopt))).passed);
     const Verdict false_hit = miss(hit_answer(8, {0, 1, 0}));
     CHECK_FALSE(false_hit.passed);
     CHECK(false_hit.expected == "a miss");
@@ -168,7 +169,7 @@ TEST_CASE("a hit judge fails a hit where a miss is due, a miss where a hit is, a
 
     const Judge hit = build_judge(near_wide_hit_judge(8, 1e-14, {0, 1, 0}, WideVec(1e-15L)));
     CHECK(hit(hit_answer(8, {0, 1, 0})).passed);
-    const Verdict false_miss = hit(result(probe::hit(std::nullopt)));
+    const Verdict false_miss = hit(testing::result_answer(probe::hit(std::nullopt)));
     CHECK_FALSE(false_miss.passed);
     CHECK(false_miss.expected ==
           "t = 8 (within 1e-14), unit normal (0, 1, 0) (within (1.0000000000000001e-15, "
