@@ -29,10 +29,12 @@ double search_limit(double t) {
 
 // Where the ray leaves the scene's box, clipped to [t_min, t_max] in double, widened so that it is
 // never before the exact exit; nullopt when the ray misses the box in that range: a ray that
-// misses everything costs this and nothing more.
+// misses everything costs this and nothing more. The clip is at t_max widened by the slack, as
+// the pruning is: a shadow ray ends exactly at the t of the surface it aims at, and that
+// primitive's box can be entered a few ulps after its own t.
 inline std::optional<double> root_exit(const Bvh::Impl& bvh, const Ray& ray, const Vec3& inverse) {
     double entry = ray.t_min;
-    double exit = ray.t_max;
+    double exit = search_limit(ray.t_max);
     for (int axis = 0; axis < 3; ++axis) {
         clip_to_slab(ray.origin[axis], inverse[axis], bvh.root_box.min[axis],
                      bvh.root_box.max[axis], entry, exit);
