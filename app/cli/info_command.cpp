@@ -64,16 +64,17 @@ int run_info(const InfoArguments& arguments) {
     row("meshes", f.meshes == 0 ? "none"
                                 : counted(f.meshes, "mesh", "meshes") + " with " +
                                       counted(f.mesh_triangles, "triangle", "triangles"));
-    row("transforms",
-        f.uses_transforms()
-            ? counted(f.transformed_objects, "object", "objects") + " under " +
-                  counted(f.transforms, "transform", "transforms") +
-                  (f.transformed_spheres > 0
-                       ? "; " + counted(f.transformed_spheres, "ellipsoid", "ellipsoids") +
-                             " (spheres under a transform, each intersected in "
-                             "the sphere's own frame, outside the BVH)"
-                       : "")
-            : "none");
+    if (f.mesh_definitions > 0) {
+        row("defined meshes", counted(f.mesh_definitions, "definition", "definitions") +
+                                  ", placed by " +
+                                  counted(f.mesh_instances, "instance", "instances") + ": " +
+                                  counted(f.instanced_triangles, "triangle", "triangles") +
+                                  " in the image, each definition's kept once");
+    }
+    row("transforms", f.uses_transforms()
+                          ? counted(f.transformed_objects, "object", "objects") + " under " +
+                                counted(f.transforms, "transform", "transforms")
+                          : "none");
     row("lights", f.uses_lights()
                       ? counted(f.point_lights, "point light", "point lights") + ", " +
                             counted(f.directional_lights, "directional light", "directional lights")
@@ -90,6 +91,16 @@ int run_info(const InfoArguments& arguments) {
                   " on; docs/stage4.md, \"When a structure pays\")"
             : "none: " + counted(bounded, "sphere or triangle", "spheres and triangles") +
                   ", tested one by one (a BVH from " + std::to_string(kBvhFromPrimitives) + " on)");
+    if (f.instances > 0) {
+        row("instances",
+            counted(f.instances, "instance", "instances") +
+                ", each intersected in its own frame (docs/scene-format.md, \"Instances\"): " +
+                (f.instances >= kBvhFromPrimitives ? "under a BVH of their world boxes"
+                                                   : "tested one by one") +
+                "; the largest holds " +
+                counted(f.largest_instance, "sphere or triangle", "spheres and triangles") +
+                (f.largest_instance >= kBvhFromPrimitives ? ", under a BVH of its own" : ""));
+    }
     row("ray offset",
         std::string(offset_rule_name(scene.ray_offset.rule)) +
             (uses_epsilon(scene.ray_offset.rule) ? ", epsilon " + to_text(scene.ray_offset.epsilon)

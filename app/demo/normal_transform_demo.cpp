@@ -29,15 +29,13 @@ Image normal_image(const RenderScene& render_scene, NormalToWorld to_world) {
         const std::optional<PrimitiveHit> hit = scene_closest_hit(render_scene, ray, nullptr);
         if (!hit) return Color(0.0);
         Vec3 normal = hit->hit.normal;
-        if (hit->kind == PrimitiveKind::sphere &&
-            scene.spheres[hit->index].attributes.transform != 0) {
+        const Instance* instance = instance_of(render_scene, hit->kind, hit->index);
+        if (hit->kind == PrimitiveKind::sphere && instance && instance->transform) {
             // Stage 5's recipe up to the normal: the sphere's own normal where the object-frame
             // ray meets it, then `to_world`
-            const TransformedSphere& s =
-                render_scene.transformed_spheres[render_scene.sphere_slot[hit->index]];
-            const std::optional<Hit> object_hit =
-                intersect_sphere(ray_to_object(s.transform, ray), s.sphere);
-            if (object_hit) normal = to_world(s.transform, object_hit->normal);
+            const std::optional<Hit> object_hit = intersect_sphere(
+                ray_to_object(*instance->transform, ray), scene.spheres[hit->index].shape);
+            if (object_hit) normal = to_world(*instance->transform, object_hit->normal);
         }
         return 0.5 * (normal + Vec3(1.0));
     };

@@ -49,30 +49,70 @@ void trace_each(const RenderScene& render_scene, const Ray& ray, PrimitiveKind k
     }
 }
 
-// A sphere under a transform, with the ray in its own frame: where stage 5 goes wrong, the
-// object-frame ray shows it.
-void trace_ellipsoids(const RenderScene& render_scene, const Ray& ray, TraceLog& trace) {
-    for (const TransformedSphere& s : render_scene.transformed_spheres) {
-        const Ray object = ray_to_object(s.transform, ray);
-        const std::optional<Hit> hit = intersect_transformed_sphere(ray, s.sphere, s.transform);
-        trace.add("sphere " + std::to_string(s.index) + " (line " +
-                  std::to_string(render_scene.scene->spheres[s.index].attributes.line) +
-                  ", under a transform): object-frame ray origin " + to_text(object.origin) +
-                  " direction " + to_text(object.direction) + ": " +
-                  (hit ? describe(*hit) : "miss"));
+// What an instance holds, for a trace: "sphere 3 (line 12)" for a transformed sphere alone,
+// else its counts and the line of its first member.
+std::string instance_label(const RenderScene& render_scene, std::size_t k) {
+    const Scene& scene = *render_scene.scene;
+    if (k >= render_scene.first_mesh_instance) {
+        const MeshInstance& mesh = scene.mesh_instances[k - render_scene.first_mesh_instance];
+        return "mesh instance of '" + scene.mesh_definitions[mesh.definition].name + "' (line " +
+               std::to_string(mesh.attributes.line) + ")";
+    }
+    const InstanceGeometry& geometry =
+        render_scene.instance_geometries[render_scene.instances[k].geometry];
+    const PrimitiveKind kind =
+        geometry.sphere_ids.empty() ? PrimitiveKind::triangle : PrimitiveKind::sphere;
+    const std::size_t first =
+        geometry.sphere_ids.empty() ? geometry.triangle_ids[0] : geometry.sphere_ids[0];
+    const std::size_t count = geometry.sphere_ids.size() + geometry.triangle_ids.size();
+    const std::string line =
+        "line " + std::to_string(attributes_of(render_scene, kind, first).line);
+    if (count == 1)
+        return std::string(kind_name(kind)) + " " + std::to_string(first) + " (" + line + ")";
+    return std::to_string(count) + " primitives under one transform (the first at " + line + ")";
+}
+
+// Each instance, with the ray in its own frame: where stage 5 goes wrong, the object-frame ray
+// shows it.
+void trace_instances(const RenderScene& render_scene, const Ray& ray, TraceLog& trace) {
+    const std::vector<Instance>& instances = render_scene.instances;
+    const bool list_all = instances.size() <= kTraceEveryPrimitiveUpTo;
+    std::size_t misses = 0;
+    for (std::size_t k = 0; k < instances.size(); ++k) {
+        const Instance& instance = instances[k];
+        const std::optional<PrimitiveHit> hit = instance_closest_hit(
+            instance, render_scene.instance_geometries[instance.geometry], ray, nullptr);
+        if (!hit) ++misses;
+        if (!hit && !list_all) continue;
+        const Ray object = instance.transform ? ray_to_object(*instance.transform, ray) : ray;
+        std::string text =
+            instance_label(render_scene, k) + ", under a transform: " + "object-frame ray origin " +
+            to_text(object.origin) + " direction " + to_text(object.direction) + ": ";
+        if (hit) {
+            text += std::string(kind_name(hit->kind)) + " " + std::to_string(hit->index) + " " +
+                    describe(hit->hit);
+        } else {
+            text += "miss";
+        }
+        trace.add(text);
+    }
+    if (!list_all && misses > 0) {
+        trace.add(std::to_string(misses) + " other instances: miss");
     }
 }
 
 void trace_primitives(const RenderScene& render_scene, const Ray& ray, TraceLog& trace) {
     const PrimitiveList& list = render_scene.primitives;
-    const auto same = [](std::size_t k) { return k; };
     trace_each(
         render_scene, ray, PrimitiveKind::sphere, list.spheres, intersect_sphere,
         [&](std::size_t k) { return render_scene.sphere_index[k]; }, trace);
-    trace_ellipsoids(render_scene, ray, trace);
-    trace_each(render_scene, ray, PrimitiveKind::triangle, list.triangles, intersect_triangle, same,
-               trace);
-    trace_each(render_scene, ray, PrimitiveKind::plane, list.planes, intersect_plane, same, trace);
+    trace_each(
+        render_scene, ray, PrimitiveKind::triangle, list.triangles, intersect_triangle,
+        [&](std::size_t k) { return render_scene.triangle_index[k]; }, trace);
+    trace_each(
+        render_scene, ray, PrimitiveKind::plane, list.planes, intersect_plane,
+        [](std::size_t k) { return k; }, trace);
+    trace_instances(render_scene, ray, trace);
 }
 
 Color direction_color(const Vec3& direction) {
@@ -131,7 +171,7 @@ Color render_pixel(const RenderScene& render_scene, View view, int i, int j, Tra
         record->hit = closest;
     }
     if (trace) {
-        if (render_scene.bvh) {
+        if (render_scene.bvh || render_scene.instance_bvh) {
             trace->add("BVH: " + std::to_string(cost.nodes) + " nodes visited, " +
                        std::to_string(cost.primitive_tests) + " primitives tested");
         }

@@ -3,18 +3,24 @@
 namespace raystep {
 
 std::size_t bvh_primitives(const SceneFeatures& features) {
-    return features.spheres - features.transformed_spheres + features.triangles;
+    return features.spheres - features.transformed_spheres + features.triangles -
+           features.transformed_triangles;
 }
 
 bool uses_bvh(const SceneFeatures& features) {
     return bvh_primitives(features) >= kBvhFromPrimitives;
 }
 
+bool uses_instance_bvh(const SceneFeatures& features) {
+    return features.instances >= kBvhFromPrimitives ||
+           features.largest_instance >= kBvhFromPrimitives;
+}
+
 std::vector<int> stages_for_view(const SceneFeatures& features, View view) {
     std::vector<int> stages = {1, 2};
     if (view == View::rays) return stages;
     stages.push_back(3);
-    if (uses_bvh(features)) stages.push_back(4);
+    if (uses_bvh(features) || uses_instance_bvh(features)) stages.push_back(4);
     if (features.uses_transforms()) stages.push_back(5);
     if (view != View::shaded && view != View::full) return stages;
     stages.push_back(6);

@@ -16,12 +16,17 @@ namespace raystep {
 /// always tested one by one.
 inline constexpr std::size_t kBvhFromPrimitives = 16;
 
-/// The primitives a BVH would hold: spheres and triangles, but not the spheres under a transform
-/// (ellipsoids, intersected one by one in their own frame) nor planes (unbounded).
+/// The primitives the world's BVH would hold: spheres and triangles without a transform. Those
+/// under one are instances, each in its own frame, and planes are unbounded.
 std::size_t bvh_primitives(const SceneFeatures& features);
 
-/// True when the renderer builds a BVH for a scene with these features.
+/// True when the renderer builds a BVH over the world's spheres and triangles.
 bool uses_bvh(const SceneFeatures& features);
+
+/// True when the renderer builds a BVH over the instances' world boxes (from kBvhFromPrimitives
+/// instances on, for the same reason), or within an instance over its own primitives: then a
+/// render runs stage 4 too.
+bool uses_instance_bvh(const SceneFeatures& features);
 
 /// The stages whose code renders this view of a scene with these features, in lecture order:
 /// what a render of it exercises, and so what its image can grade. Only what the scene uses

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <unordered_map>
 
 #include "app/render/render_plan.h"
 #include "base/scene/scene_features.h"
@@ -11,65 +12,120 @@ namespace raystep {
 
 namespace {
 
-// The transform of a node, composed by stage 5 the first time an object under it is met.
-const Transform& transform_of(const Scene& scene, std::uint32_t node,
-                              std::unordered_map<std::uint32_t, Transform>& transforms) {
-    auto found = transforms.find(node);
-    if (found == transforms.end()) {
-        found = transforms.emplace(node, compose(transform_ops(scene, node))).first;
-    }
-    return found->second;
-}
+// Builds and places the instances: one per transform that spheres or triangles are written
+// under, holding all of them (a cube of twelve `tri` under one `translate` is one instance), and
+// one per mesh instance, sharing its definition's geometry. Spheres and triangles without a
+// transform go to the world's list.
+class InstanceGatherer {
+  public:
+    InstanceGatherer(const Scene& scene, RenderScene& render_scene)
+        : scene_(scene), render_(render_scene) {}
 
-double inverse_residual(const Transform& transform) {
-    const Mat4 product = transform.inverse * transform.matrix;
-    double largest = 0.0;
-    for (int column = 0; column < 4; ++column) {
-        for (int row = 0; row < 4; ++row) {
-            const double expected = row == column ? 1.0 : 0.0;
-            largest = std::max(largest, std::abs(product[column][row] - expected));
+    void gather() {
+        PrimitiveList& world = render_.primitives;
+        for (std::size_t k = 0; k < scene_.spheres.size(); ++k) {
+            const SceneSphere& s = scene_.spheres[k];
+            if (s.attributes.transform == 0) {
+                render_.sphere_instance.push_back(kNoInstance);
+                render_.sphere_index.push_back(k);
+                world.spheres.push_back(s.shape);
+                continue;
+            }
+            const std::uint32_t instance = group_of(s.attributes.transform);
+            render_.sphere_instance.push_back(instance);
+            InstanceGeometry& geometry = geometry_of(instance);
+            geometry.primitives.spheres.push_back(s.shape);
+            geometry.sphere_ids.push_back(k);
+        }
+        for (std::size_t k = 0; k < scene_.triangles.size(); ++k) {
+            const SceneTriangle& t = scene_.triangles[k];
+            if (t.attributes.transform == 0) {
+                render_.triangle_instance.push_back(kNoInstance);
+                render_.triangle_index.push_back(k);
+                world.triangles.push_back(t.shape);
+                continue;
+            }
+            const std::uint32_t instance = group_of(t.attributes.transform);
+            render_.triangle_instance.push_back(instance);
+            InstanceGeometry& geometry = geometry_of(instance);
+            geometry.primitives.triangles.push_back(t.shape);
+            geometry.triangle_ids.push_back(k);
+        }
+        gather_mesh_instances();
+        for (InstanceGeometry& geometry : render_.instance_geometries)
+            finish_geometry(geometry);
+        for (Instance& instance : render_.instances)
+            place_instance(instance, render_.instance_geometries[instance.geometry]);
+        world.planes.reserve(scene_.planes.size());
+        for (const ScenePlane& p : scene_.planes) {
+            if (p.attributes.transform == 0) {
+                world.planes.push_back(p.shape);
+                continue;
+            }
+            const Transform& m = transform_of(p.attributes.transform);
+            world.planes.push_back(
+                {point_to_world(m, p.shape.point), normal_to_world(m, p.shape.normal)});
         }
     }
-    return largest;
-}
 
-void gather_primitives(const Scene& scene, RenderScene& render_scene) {
-    PrimitiveList& list = render_scene.primitives;
-    for (std::size_t k = 0; k < scene.spheres.size(); ++k) {
-        const SceneSphere& s = scene.spheres[k];
-        if (s.attributes.transform == 0) {
-            render_scene.sphere_slot.push_back(list.spheres.size());
-            list.spheres.push_back(s.shape);
-            render_scene.sphere_index.push_back(k);
-            continue;
+  private:
+    // The transform of a node, composed by stage 5 the first time an object under it is met.
+    const Transform& transform_of(std::uint32_t node) {
+        auto found = transforms_.find(node);
+        if (found == transforms_.end()) {
+            found = transforms_.emplace(node, compose(transform_ops(scene_, node))).first;
         }
-        render_scene.sphere_slot.push_back(render_scene.transformed_spheres.size());
-        const Transform& t = transform_of(scene, s.attributes.transform, render_scene.transforms);
-        render_scene.transformed_spheres.push_back({s.shape, t, k, inverse_residual(t)});
+        return found->second;
     }
-    // Flat primitives stay flat under any transform: moved into the world once, they need no
-    // matrix per ray and go into the BVH with the rest.
-    list.triangles.reserve(scene.triangles.size());
-    for (const SceneTriangle& t : scene.triangles) {
-        if (t.attributes.transform == 0) {
-            list.triangles.push_back(t.shape);
-            continue;
+
+    std::uint32_t group_of(std::uint32_t node) {
+        const auto found = groups_.find(node);
+        if (found != groups_.end()) return found->second;
+        const auto instance = static_cast<std::uint32_t>(render_.instances.size());
+        Instance placed;
+        placed.geometry = render_.instance_geometries.size();
+        placed.transform = transform_of(node);
+        render_.instance_geometries.emplace_back();
+        render_.instances.push_back(placed);
+        groups_.emplace(node, instance);
+        return instance;
+    }
+
+    InstanceGeometry& geometry_of(std::uint32_t instance) {
+        return render_.instance_geometries[render_.instances[instance].geometry];
+    }
+
+    // Every instance of a definition points at one geometry, built the first time it is placed.
+    void gather_mesh_instances() {
+        render_.first_mesh_instance = render_.instances.size();
+        std::unordered_map<std::uint32_t, std::size_t> geometry_of_definition;
+        std::size_t first_triangle = scene_.triangles.size();
+        for (const MeshInstance& mesh : scene_.mesh_instances) {
+            auto found = geometry_of_definition.find(mesh.definition);
+            if (found == geometry_of_definition.end()) {
+                InstanceGeometry geometry;
+                geometry.primitives.triangles = scene_.mesh_definitions[mesh.definition].triangles;
+                render_.instance_geometries.push_back(std::move(geometry));
+                found = geometry_of_definition
+                            .emplace(mesh.definition, render_.instance_geometries.size() - 1)
+                            .first;
+            }
+            Instance placed;
+            placed.geometry = found->second;
+            if (mesh.attributes.transform != 0) {
+                placed.transform = transform_of(mesh.attributes.transform);
+            }
+            placed.first_triangle = first_triangle;
+            first_triangle += scene_.mesh_definitions[mesh.definition].triangles.size();
+            render_.instances.push_back(placed);
         }
-        const Transform& m = transform_of(scene, t.attributes.transform, render_scene.transforms);
-        list.triangles.push_back({point_to_world(m, t.shape.p0), point_to_world(m, t.shape.p1),
-                                  point_to_world(m, t.shape.p2)});
     }
-    list.planes.reserve(scene.planes.size());
-    for (const ScenePlane& p : scene.planes) {
-        if (p.attributes.transform == 0) {
-            list.planes.push_back(p.shape);
-            continue;
-        }
-        const Transform& m = transform_of(scene, p.attributes.transform, render_scene.transforms);
-        list.planes.push_back(
-            {point_to_world(m, p.shape.point), normal_to_world(m, p.shape.normal)});
-    }
-}
+
+    const Scene& scene_;
+    RenderScene& render_;
+    std::unordered_map<std::uint32_t, Transform> transforms_;
+    std::unordered_map<std::uint32_t, std::uint32_t> groups_;
+};
 
 // `candidate` replaces `best` when closest_hit would have picked it.
 void keep_nearer(std::optional<PrimitiveHit>& best, const std::optional<PrimitiveHit>& candidate) {
@@ -83,10 +139,35 @@ Ray cut_at(const Ray& ray, const std::optional<PrimitiveHit>& best) {
     return cut;
 }
 
-std::optional<PrimitiveHit> transformed_sphere_hit(const TransformedSphere& s, const Ray& ray) {
-    const std::optional<Hit> hit = intersect_transformed_sphere(ray, s.sphere, s.transform);
-    if (!hit) return std::nullopt;
-    return PrimitiveHit{*hit, PrimitiveKind::sphere, s.index};
+// Each instance in turn, below kBvhFromPrimitives instances.
+std::optional<PrimitiveHit> instances_closest_hit(const RenderScene& render_scene, const Ray& ray,
+                                                  std::optional<PrimitiveHit> best,
+                                                  TraversalStats* stats) {
+    if (render_scene.instance_bvh) {
+        keep_nearer(best, render_scene.instance_bvh->closest_hit(render_scene.instances,
+                                                                 render_scene.instance_geometries,
+                                                                 cut_at(ray, best), stats));
+        return best;
+    }
+    for (const Instance& instance : render_scene.instances) {
+        keep_nearer(best, instance_closest_hit(instance,
+                                               render_scene.instance_geometries[instance.geometry],
+                                               cut_at(ray, best), stats));
+    }
+    return best;
+}
+
+// The mesh instance (its number in Scene::mesh_instances) that holds triangle `index` of the
+// scene's numbering, one past Scene::triangles.
+std::size_t mesh_instance_at(const RenderScene& render_scene, std::size_t index) {
+    const auto first = render_scene.instances.begin() +
+                       static_cast<std::ptrdiff_t>(render_scene.first_mesh_instance);
+    const auto after = std::upper_bound(first, render_scene.instances.end(), index,
+                                        [](std::size_t wanted, const Instance& instance) {
+                                            return wanted < instance.first_triangle;
+                                        });
+    if (after == first) throw std::out_of_range("no mesh instance holds this triangle");
+    return static_cast<std::size_t>(after - first) - 1;
 }
 
 }  // namespace
@@ -105,11 +186,14 @@ RenderScene prepare_render_scene(const Scene& scene) {
     RenderScene render_scene;
     render_scene.scene = &scene;
     render_scene.camera = make_scene_camera(scene);
-    gather_primitives(scene, render_scene);
+    InstanceGatherer(scene, render_scene).gather();
     const SceneFeatures features = scene_features(scene);
     if (uses_bvh(features)) {
         render_scene.bvh.emplace(render_scene.primitives, BvhSplit::sah);
         render_scene.planes.planes = render_scene.primitives.planes;
+    }
+    if (render_scene.instances.size() >= kBvhFromPrimitives) {
+        render_scene.instance_bvh.emplace(render_scene.instances);
     }
     render_scene.ray_offset = scene.ray_offset;
     render_scene.bounces = features.uses_reflection() ? scene.max_depth : 0;
@@ -128,16 +212,14 @@ std::optional<PrimitiveHit> scene_closest_hit(const RenderScene& render_scene, c
     }
     if (best && best->kind == PrimitiveKind::sphere) {
         best->index = render_scene.sphere_index[best->index];
+    } else if (best && best->kind == PrimitiveKind::triangle) {
+        best->index = render_scene.triangle_index[best->index];
     }
     if (render_scene.bvh) {
         keep_nearer(best, closest_hit(cut_at(ray, best), render_scene.planes));
     }
-    for (const TransformedSphere& s : render_scene.transformed_spheres) {
-        keep_nearer(best, transformed_sphere_hit(s, cut_at(ray, best)));
-    }
-    if (stats)
-        stats->primitive_tests += list.planes.size() + render_scene.transformed_spheres.size();
-    return best;
+    if (stats) stats->primitive_tests += list.planes.size();
+    return instances_closest_hit(render_scene, ray, best, stats);
 }
 
 bool scene_occluded(const RenderScene& render_scene, const Ray& ray) {
@@ -147,8 +229,13 @@ bool scene_occluded(const RenderScene& render_scene, const Ray& ray) {
     } else if (closest_hit(ray, render_scene.primitives)) {
         return true;
     }
-    for (const TransformedSphere& s : render_scene.transformed_spheres) {
-        if (intersect_transformed_sphere(ray, s.sphere, s.transform)) return true;
+    if (render_scene.instance_bvh) {
+        return render_scene.instance_bvh->occluded(render_scene.instances,
+                                                   render_scene.instance_geometries, ray);
+    }
+    for (const Instance& instance : render_scene.instances) {
+        if (instance_occluded(instance, render_scene.instance_geometries[instance.geometry], ray))
+            return true;
     }
     return false;
 }
@@ -174,11 +261,38 @@ const ObjectAttributes& attributes_of(const RenderScene& render_scene, Primitive
         case PrimitiveKind::sphere:
             return scene.spheres.at(index).attributes;
         case PrimitiveKind::triangle:
-            return scene.triangles.at(index).attributes;
+            if (index < scene.triangles.size()) return scene.triangles[index].attributes;
+            return scene.mesh_instances.at(mesh_instance_at(render_scene, index)).attributes;
         case PrimitiveKind::plane:
             return scene.planes.at(index).attributes;
     }
     throw std::logic_error("attributes_of: unknown primitive kind");
+}
+
+const Instance* instance_of(const RenderScene& render_scene, PrimitiveKind kind,
+                            std::size_t index) {
+    const Scene& scene = *render_scene.scene;
+    std::uint32_t instance = kNoInstance;
+    if (kind == PrimitiveKind::sphere) {
+        instance = render_scene.sphere_instance.at(index);
+    } else if (kind == PrimitiveKind::triangle) {
+        if (index >= scene.triangles.size()) {
+            return &render_scene.instances[render_scene.first_mesh_instance +
+                                           mesh_instance_at(render_scene, index)];
+        }
+        instance = render_scene.triangle_instance[index];
+    }
+    return instance == kNoInstance ? nullptr : &render_scene.instances[instance];
+}
+
+const Triangle& triangle_shape(const RenderScene& render_scene, std::size_t index) {
+    const Scene& scene = *render_scene.scene;
+    if (index < scene.triangles.size()) return scene.triangles[index].shape;
+    const std::size_t mesh = mesh_instance_at(render_scene, index);
+    const Instance& instance = render_scene.instances[render_scene.first_mesh_instance + mesh];
+    const MeshDefinition& definition =
+        scene.mesh_definitions[scene.mesh_instances[mesh].definition];
+    return definition.triangles.at(index - instance.first_triangle);
 }
 
 const char* kind_name(PrimitiveKind kind) {

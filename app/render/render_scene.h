@@ -4,10 +4,11 @@
 #include <cstdint>
 #include <limits>
 #include <optional>
-#include <unordered_map>
 #include <variant>
 #include <vector>
 
+#include "app/render/instance.h"
+#include "app/render/instance_bvh.h"
 #include "base/scene/scene.h"
 #include "stages/2_rays/camera.h"
 #include "stages/3_intersect/intersect.h"
@@ -19,37 +20,37 @@ namespace raystep {
 /// The camera of a scene, perspective or orthographic, as stage 2 builds it.
 using SceneCamera = std::variant<PerspectiveCamera, OrthographicCamera>;
 
-/// A sphere under a transform: an ellipsoid, intersected in its own frame by stage 5.
-struct TransformedSphere {
-    Sphere sphere;  ///< as written, in its object frame
-    Transform transform;
-    std::size_t index;  ///< in Scene::spheres
-    /// The largest entry of M^-1 M - I as computed: how far the frame the intersection sees
-    /// (through M^-1) and the one points come back through (M) disagree, for error bounds.
-    double inverse_residual;
-};
+/// The instance of a primitive without one.
+inline constexpr std::uint32_t kNoInstance = 0xffffffffu;
 
 /// The scene as the renderer uses it, built once per render by the stages: the camera from
-/// stage 2, the primitives in world coordinates for stage 3 (those under a transform moved there
-/// by stage 5, except spheres, which become ellipsoids), and a BVH from stage 4 when the scene is
-/// big enough to gain from one. `scene` keeps materials and lights.
+/// stage 2; the spheres and triangles without a transform in the world for stage 3, under a BVH
+/// from stage 4 when there are enough to gain from one; those under a transform as instances
+/// (instance.h), grouped by transform, and each mesh instance, in their own frame for stage 5,
+/// under a BVH of their own when there are enough of them; and the planes, moved into the world
+/// by stage 5 (flat and unbounded, they need no frame of their own). `scene` keeps materials and
+/// lights.
 struct RenderScene {
     const Scene* scene = nullptr;
     SceneCamera camera;
-    /// Spheres without a transform, every triangle and plane, in Scene order: index k of
-    /// triangles and planes is Scene's k-th, of spheres sphere_index[k].
+    /// The world's spheres and triangles, in Scene order, and every plane: index k of planes is
+    /// Scene's k-th, of spheres sphere_index[k], of triangles triangle_index[k].
     PrimitiveList primitives;
     std::vector<std::size_t> sphere_index;
-    std::vector<TransformedSphere> transformed_spheres;
-    /// For each of Scene's spheres, its place in primitives.spheres or, under a transform, in
-    /// transformed_spheres.
-    std::vector<std::size_t> sphere_slot;
-    /// The transforms in use, by node of Scene::transforms; none for objects without one.
-    std::unordered_map<std::uint32_t, Transform> transforms;
+    std::vector<std::size_t> triangle_index;
     std::optional<Bvh> bvh;  ///< over `primitives`' spheres and triangles, when uses_bvh
     PrimitiveList planes;    ///< the planes alone, tested one by one beside the BVH
-    RayOffset ray_offset;    ///< how shadow and mirror rays leave a surface
-    int bounces = 0;         ///< mirror bounces: maxdepth when something reflects, else 0
+    std::vector<InstanceGeometry> instance_geometries;
+    /// The groups of spheres and triangles under one transform, in the order their first member
+    /// is written, then the mesh instances, from first_mesh_instance on, in Scene order.
+    std::vector<Instance> instances;
+    std::size_t first_mesh_instance = 0;
+    std::optional<InstanceBvh> instance_bvh;  ///< from kBvhFromPrimitives instances on
+    /// The instance of each of Scene::spheres and Scene::triangles, kNoInstance in the world.
+    std::vector<std::uint32_t> sphere_instance;
+    std::vector<std::uint32_t> triangle_instance;
+    RayOffset ray_offset;  ///< how shadow and mirror rays leave a surface
+    int bounces = 0;       ///< mirror bounces: maxdepth when something reflects, else 0
     /// The part of each camera ray a render looks at, a near and a far clip: stage 2's rays run
     /// over [0, inf), and the grader narrows them to see that stage 4 keeps to [t_min, t_max].
     double camera_t_min = 0.0;
@@ -64,11 +65,12 @@ SceneCamera make_scene_camera(const Scene& scene);
 /// primitives, moved into the world by stage 5 where a transform places them.
 RenderScene prepare_render_scene(const Scene& scene);
 
-/// The nearest hit of the ray in the scene, as stage 3's closest_hit over every primitive
-/// defines it (ties to the earlier primitive, spheres before triangles before planes), with
-/// `index` into Scene's list of its kind: through the BVH, the planes and the ellipsoids when
-/// there is a BVH, else closest_hit itself and the ellipsoids. Adds the BVH's nodes and all tests
-/// to `stats` when it is given.
+/// The nearest hit of the ray in the scene, as stage 3's closest_hit over every primitive, each in
+/// its own frame, defines it (ties to the earlier primitive, spheres before triangles before
+/// planes), with `index` into Scene's list of its kind (for triangles, the numbering of
+/// triangle_count): through the world's BVH and the planes when there is a BVH, else closest_hit
+/// itself, then the instances, through their BVH when they have one. Adds the BVHs' nodes and all
+/// tests to `stats` when it is given.
 std::optional<PrimitiveHit> scene_closest_hit(const RenderScene& render_scene, const Ray& ray,
                                               TraversalStats* stats);
 
@@ -83,6 +85,13 @@ Ray camera_ray(const RenderScene& render_scene, int i, int j);
 /// The scene's record of a primitive the renderer hit.
 const ObjectAttributes& attributes_of(const RenderScene& render_scene, PrimitiveKind kind,
                                       std::size_t index);
+
+/// The instance that places a sphere or triangle the renderer hit, nullptr for one in the world
+/// (and for planes).
+const Instance* instance_of(const RenderScene& render_scene, PrimitiveKind kind, std::size_t index);
+
+/// Triangle `index` of the scene's numbering (triangle_count) as written, in its object frame.
+const Triangle& triangle_shape(const RenderScene& render_scene, std::size_t index);
 
 /// "sphere", "triangle", "plane".
 const char* kind_name(PrimitiveKind kind);

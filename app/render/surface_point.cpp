@@ -64,19 +64,17 @@ PlacedPoint on_plane(const Plane& plane, const Vec3& near_point) {
     return {position, error};
 }
 
-// The object-frame point, on the sphere, taken to the world by M. The product adds gamma(4) of
-// its terms' sizes and carries the object-frame error through |M|. One more term: the
-// intersection tests see the world through M^-1, and M^-1 M differs from I by the residual, so
-// the point as those tests see it is off by up to residual (|q|_1 + 1) in the object frame.
-PlacedPoint on_ellipsoid(const TransformedSphere& ellipsoid, const Ray& ray, double t) {
-    const PlacedPoint local =
-        on_sphere(ellipsoid.sphere, ray_to_object(ellipsoid.transform, ray).at(t));
-    const Mat4& m = ellipsoid.transform.matrix;
+// An object-frame point taken to the world by M. The product adds gamma(4) of its terms' sizes
+// and carries the object-frame error through |M|. One more term: the intersection tests see the
+// world through M^-1, and M^-1 M differs from I by the residual, so the point as those tests see
+// it is off by up to residual (|q|_1 + 1) in the object frame.
+PlacedPoint to_world(const Instance& instance, const PlacedPoint& local) {
+    const Mat4& m = instance.transform->matrix;
     Vec3 size(0.0);
     Vec3 carried(0.0);
     const Vec3 q = local.position;
     const double mismatch =
-        ellipsoid.inverse_residual * (std::abs(q.x) + std::abs(q.y) + std::abs(q.z) + 1.0);
+        instance.inverse_residual * (std::abs(q.x) + std::abs(q.y) + std::abs(q.z) + 1.0);
     for (int row = 0; row < 3; ++row) {
         size[row] = std::abs(m[3][row]);
         for (int column = 0; column < 3; ++column) {
@@ -84,39 +82,44 @@ PlacedPoint on_ellipsoid(const TransformedSphere& ellipsoid, const Ray& ray, dou
             carried[row] += std::abs(m[column][row]) * (local.error[column] + 2.0 * mismatch);
         }
     }
-    return {point_to_world(ellipsoid.transform, q),
+    return {point_to_world(*instance.transform, q),
             rounding_gamma(4) * size + (1.0 + rounding_gamma(4)) * carried};
 }
 
-PlacedPoint place(const RenderScene& render_scene, const Ray& ray, const PrimitiveHit& hit) {
-    const Scene& scene = *render_scene.scene;
+// The point on the primitive in its own frame: for an instance's, the object-frame ray's.
+PlacedPoint place_in_object_frame(const RenderScene& render_scene, const Ray& object_ray,
+                                  const PrimitiveHit& hit) {
     switch (hit.kind) {
         case PrimitiveKind::triangle:
-            return on_triangle(render_scene.primitives.triangles[hit.index], hit.hit.beta,
+            return on_triangle(triangle_shape(render_scene, hit.index), hit.hit.beta,
                                hit.hit.gamma);
         case PrimitiveKind::plane:
-            return on_plane(render_scene.primitives.planes[hit.index], ray.at(hit.hit.t));
+            return on_plane(render_scene.primitives.planes[hit.index], object_ray.at(hit.hit.t));
         case PrimitiveKind::sphere:
-            if (scene.spheres[hit.index].attributes.transform == 0) {
-                return on_sphere(scene.spheres[hit.index].shape, ray.at(hit.hit.t));
-            }
-            return on_ellipsoid(
-                render_scene.transformed_spheres[render_scene.sphere_slot[hit.index]], ray,
-                hit.hit.t);
+            return on_sphere(render_scene.scene->spheres[hit.index].shape,
+                             object_ray.at(hit.hit.t));
     }
     throw std::logic_error("surface_point: unknown primitive kind");
 }
 
+PlacedPoint place(const RenderScene& render_scene, const Ray& ray, const PrimitiveHit& hit) {
+    const Instance* instance = instance_of(render_scene, hit.kind, hit.index);
+    if (!instance || !instance->transform) return place_in_object_frame(render_scene, ray, hit);
+    const Ray object_ray = ray_to_object(*instance->transform, ray);
+    return to_world(*instance, place_in_object_frame(render_scene, object_ray, hit));
+}
+
 // A `trinormal` triangle's normal at the hit: its vertex normals, each made unit, weighted by
 // the barycentric coordinates, and taken to the world by M^-T when a transform places it.
-Vec3 interpolated_normal(const RenderScene& render_scene, const SceneTriangle& triangle,
-                         const Hit& hit) {
+Vec3 interpolated_normal(const RenderScene& render_scene, std::size_t index, const Hit& hit) {
+    const SceneTriangle& triangle = render_scene.scene->triangles[index];
     const VertexNormals& n =
         render_scene.scene->vertex_normals[static_cast<std::size_t>(triangle.vertex_normals)];
     const Vec3 blended = (1.0 - hit.beta - hit.gamma) * glm::normalize(n.n0) +
                          hit.beta * glm::normalize(n.n1) + hit.gamma * glm::normalize(n.n2);
-    if (triangle.attributes.transform == 0) return glm::normalize(blended);
-    return normal_to_world(render_scene.transforms.at(triangle.attributes.transform), blended);
+    const Instance* instance = instance_of(render_scene, PrimitiveKind::triangle, index);
+    if (!instance || !instance->transform) return glm::normalize(blended);
+    return normal_to_world(*instance->transform, blended);
 }
 
 // The bound handed to shading. A point's own error along the normal is not enough: intersection
@@ -146,10 +149,10 @@ SurfacePoint surface_point(const RenderScene& render_scene, const Ray& ray,
     point.to_eye = -glm::normalize(ray.direction);
     point.normal = glm::dot(hit.hit.normal, point.to_eye) < 0.0 ? -hit.hit.normal : hit.hit.normal;
     point.shading_normal = point.normal;
-    if (hit.kind == PrimitiveKind::triangle) {
-        const SceneTriangle& triangle = render_scene.scene->triangles[hit.index];
-        if (triangle.vertex_normals >= 0) {
-            const Vec3 smooth = interpolated_normal(render_scene, triangle, hit.hit);
+    const Scene& scene = *render_scene.scene;
+    if (hit.kind == PrimitiveKind::triangle && hit.index < scene.triangles.size()) {
+        if (scene.triangles[hit.index].vertex_normals >= 0) {
+            const Vec3 smooth = interpolated_normal(render_scene, hit.index, hit.hit);
             point.shading_normal = glm::dot(smooth, point.normal) < 0.0 ? -smooth : smooth;
         }
     }

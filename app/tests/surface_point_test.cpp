@@ -122,9 +122,9 @@ std::optional<Hit> hits_itself(const RenderScene& render_scene, const PrimitiveH
             if (render_scene.scene->spheres[hit.index].attributes.transform == 0) {
                 return intersect_sphere(ray, render_scene.scene->spheres[hit.index].shape);
             }
-            const TransformedSphere& s =
-                render_scene.transformed_spheres[render_scene.sphere_slot[hit.index]];
-            return intersect_transformed_sphere(ray, s.sphere, s.transform);
+            const Instance* instance = instance_of(render_scene, hit.kind, hit.index);
+            return intersect_transformed_sphere(ray, render_scene.scene->spheres[hit.index].shape,
+                                                *instance->transform);
     }
     return std::nullopt;
 }

@@ -4,6 +4,14 @@
 
 namespace raystep {
 
+std::size_t triangle_count(const Scene& scene) {
+    std::size_t count = scene.triangles.size();
+    for (const MeshInstance& instance : scene.mesh_instances) {
+        count += scene.mesh_definitions[instance.definition].triangles.size();
+    }
+    return count;
+}
+
 std::vector<TransformOp> transform_ops(const Scene& scene, std::uint32_t node) {
     std::vector<TransformOp> ops;
     while (node != 0) {

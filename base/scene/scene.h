@@ -92,6 +92,22 @@ struct SceneMesh {
     std::uint32_t line = 0;
 };
 
+/// `define NAME FILE`: a mesh loaded once under a name, in its own (object) coordinates. It
+/// draws nothing until `instance NAME` places it.
+struct MeshDefinition {
+    std::string name;
+    std::string path;  ///< as resolved against the scene file's folder
+    std::vector<Triangle> triangles;
+    std::uint32_t line = 0;
+};
+
+/// `instance NAME`: a defined mesh placed under the transform and material in force. Its
+/// triangles are not copied; every instance of a definition shares them.
+struct MeshInstance {
+    std::uint32_t definition = 0;  ///< index into Scene::mesh_definitions
+    ObjectAttributes attributes;
+};
+
 /// Light falls off as 1 / (constant + linear d + quadratic d^2) with distance d.
 struct Attenuation {
     double constant = 1.0;
@@ -151,10 +167,16 @@ struct Scene {
     std::vector<ScenePlane> planes;
     std::vector<SceneMesh> meshes;
     std::vector<VertexNormals> vertex_normals;
+    std::vector<MeshDefinition> mesh_definitions;
+    std::vector<MeshInstance> mesh_instances;
 
     std::vector<PointLight> point_lights;
     std::vector<DirectionalLight> directional_lights;
 };
+
+/// Every triangle of the scene in one numbering, the one hits use: Scene::triangles first, then
+/// the triangles of each mesh instance, instance after instance in the order they were written.
+std::size_t triangle_count(const Scene& scene);
 
 /// The ops of a transform node, root first: the order they were written in the file.
 std::vector<TransformOp> transform_ops(const Scene& scene, std::uint32_t node);

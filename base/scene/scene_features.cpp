@@ -1,5 +1,7 @@
 #include "base/scene/scene_features.h"
 
+#include <algorithm>
+#include <unordered_map>
 #include <unordered_set>
 
 namespace raystep {
@@ -35,9 +37,33 @@ SceneFeatures scene_features(const Scene& scene) {
     count_objects(scene, scene.spheres, features, transforms);
     count_objects(scene, scene.triangles, features, transforms);
     count_objects(scene, scene.planes, features, transforms);
+    count_objects(scene, scene.mesh_instances, features, transforms);
     features.transforms = transforms.size();
+
+    // The renderer's instances: spheres and triangles grouped by their transform, then each
+    // mesh instance.
+    std::unordered_map<std::uint32_t, std::size_t> group_sizes;
     for (const SceneSphere& sphere : scene.spheres) {
-        if (sphere.attributes.transform != 0) ++features.transformed_spheres;
+        if (sphere.attributes.transform == 0) continue;
+        ++features.transformed_spheres;
+        ++group_sizes[sphere.attributes.transform];
+    }
+    for (const SceneTriangle& triangle : scene.triangles) {
+        if (triangle.attributes.transform == 0) continue;
+        ++features.transformed_triangles;
+        ++group_sizes[triangle.attributes.transform];
+    }
+    features.instances = group_sizes.size();
+    for (const auto& [node, size] : group_sizes)
+        features.largest_instance = std::max(features.largest_instance, size);
+
+    features.mesh_definitions = scene.mesh_definitions.size();
+    features.mesh_instances = scene.mesh_instances.size();
+    features.instances += scene.mesh_instances.size();
+    for (const MeshInstance& instance : scene.mesh_instances) {
+        const std::size_t size = scene.mesh_definitions[instance.definition].triangles.size();
+        features.instanced_triangles += size;
+        features.largest_instance = std::max(features.largest_instance, size);
     }
     return features;
 }

@@ -14,9 +14,18 @@ struct SceneFeatures {
     std::size_t mesh_triangles = 0;
     std::size_t meshes = 0;
     std::size_t planes = 0;
-    std::size_t transforms = 0;           ///< distinct non-identity transforms in use
-    std::size_t transformed_objects = 0;  ///< primitives under one of them
-    std::size_t transformed_spheres = 0;  ///< of those, spheres: ellipsoids, outside the BVH
+    std::size_t transforms = 0;             ///< distinct non-identity transforms in use
+    std::size_t transformed_objects = 0;    ///< primitives under one of them
+    std::size_t transformed_spheres = 0;    ///< of those, spheres: ellipsoids
+    std::size_t transformed_triangles = 0;  ///< of those, triangles
+    std::size_t mesh_definitions = 0;       ///< `define`
+    std::size_t mesh_instances = 0;         ///< `instance`
+    std::size_t instanced_triangles = 0;    ///< the triangles they place, counted per instance
+    /// Objects intersected in their own frame: the spheres and triangles under one transform
+    /// together, and each mesh instance.
+    std::size_t instances = 0;
+    /// Spheres and triangles of the largest of those.
+    std::size_t largest_instance = 0;
     std::size_t point_lights = 0;
     std::size_t directional_lights = 0;
     std::size_t reflective_objects = 0;  ///< specular > 0 with maxdepth > 0: mirrors

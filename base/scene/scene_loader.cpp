@@ -130,6 +130,8 @@ class SceneParser {
             {"tri", "v0 v1 v2", &SceneParser::tri},
             {"trinormal", "v0 v1 v2", &SceneParser::trinormal},
             {"mesh", "file", &SceneParser::mesh},
+            {"define", "name file", &SceneParser::define},
+            {"instance", "name", &SceneParser::instance},
             {"translate", "x y z", &SceneParser::translate},
             {"rotate", "axisx axisy axisz degrees", &SceneParser::rotate},
             {"scale", "x y z", &SceneParser::scale},
@@ -408,12 +410,14 @@ class SceneParser {
         scene_.triangles.push_back(triangle);
     }
 
-    void mesh() {
-        std::filesystem::path file{std::string(fields_[1])};
+    // The mesh file named by field k, resolved against the scene's folder; its errors become
+    // this line's.
+    std::pair<std::filesystem::path, TriangleMesh> mesh_file(std::size_t k) const {
+        std::filesystem::path file{std::string(fields_[k])};
         if (file.is_relative()) file = folder_ / file;
         std::error_code error;
         if (!std::filesystem::exists(file, error)) {
-            fail("mesh file " + quoted_field(fields_[1]) + " not found (looked for " +
+            fail("mesh file " + quoted_field(fields_[k]) + " not found (looked for " +
                  quoted_field(file.string()) + ")");
         }
         TriangleMesh loaded;
@@ -422,6 +426,11 @@ class SceneParser {
         } catch (const InputError& mesh_error) {
             fail(std::string("in mesh: ") + mesh_error.what());
         }
+        return {file, std::move(loaded)};
+    }
+
+    void mesh() {
+        const auto [file, loaded] = mesh_file(1);
 
         SceneMesh record;
         record.path = file.string();
@@ -441,6 +450,43 @@ class SceneParser {
             triangle.mesh = mesh_id;
             scene_.triangles.push_back(triangle);
         }
+    }
+
+    // A mesh named once and placed by `instance` as often as wanted: its triangles are kept once,
+    // in its own coordinates, so a thousand placements cost a thousand transforms, not a thousand
+    // copies.
+    void define() {
+        const std::string name(fields_[1]);
+        for (const MeshDefinition& defined : scene_.mesh_definitions) {
+            if (defined.name == name) {
+                fail("a mesh named " + quoted_field(name) + " is already defined, at line " +
+                     std::to_string(defined.line));
+            }
+        }
+        const auto [file, loaded] = mesh_file(2);
+        MeshDefinition definition;
+        definition.name = name;
+        definition.path = file.string();
+        definition.line = static_cast<std::uint32_t>(line_);
+        definition.triangles.reserve(loaded.faces.size());
+        for (const auto& face : loaded.faces) {
+            definition.triangles.push_back(
+                {loaded.positions[face[0]], loaded.positions[face[1]], loaded.positions[face[2]]});
+        }
+        scene_.mesh_definitions.push_back(std::move(definition));
+    }
+
+    void instance() {
+        const std::vector<MeshDefinition>& defined = scene_.mesh_definitions;
+        const auto found =
+            std::find_if(defined.begin(), defined.end(),
+                         [&](const MeshDefinition& d) { return d.name == fields_[1]; });
+        if (found == defined.end()) {
+            fail("no mesh named " + quoted_field(fields_[1]) +
+                 " is defined above this line; 'define NAME FILE' names one");
+        }
+        scene_.mesh_instances.push_back(
+            {static_cast<std::uint32_t>(found - defined.begin()), attributes()});
     }
 
     // The transform stack. Each op becomes a tree node under the node in force: the OpenGL
