@@ -6,11 +6,11 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <random>
 #include <string>
 
 #include <glm/ext/matrix_transform.hpp>
 
+#include "base/math/portable_random.h"
 #include "base/scene/mesh_loader.h"
 #include "base/testing/catch.h"
 #include "grader/families/closed_mesh.h"
@@ -87,16 +87,14 @@ TEST_CASE("accel: rays through the edges and vertices of a closed mesh 1e5 away"
     const Bvh sah(list, BvhSplit::sah);
     const Bvh median(list, BvhSplit::median);
     const UniformGrid grid(list);
-    std::mt19937_64 rng(78);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    std::uniform_real_distribution<double> along(0.0, 1.0);
     int hits = 0;
     for (int k = 0; k < 4000; ++k) {
+        PortableRandom random(78, static_cast<std::uint64_t>(k));
         const ClosedMesh::Edge& edge = mesh.edges[static_cast<std::size_t>(k) % mesh.edges.size()];
         const Vec3 target =
             k % 4 == 0 ? vertices[edge.a]
-                       : vertices[edge.a] + along(rng) * (vertices[edge.b] - vertices[edge.a]);
-        const Vec3 origin = centre + 10.0 * Vec3(u(rng), u(rng), u(rng));
+                       : vertices[edge.a] + random.unit() * (vertices[edge.b] - vertices[edge.a]);
+        const Vec3 origin = centre + random.point(10.0);
         const Ray ray{origin, target - origin};
         CAPTURE(k);
         const std::optional<PrimitiveHit> expected = closest_hit(ray, list);
@@ -124,15 +122,14 @@ TEST_CASE("accel: the BVHs and the grid give closest_hit's answer on three real 
         list.triangles = mesh_triangles(mesh);
         const Aabb box = bench_bounds(list);
         std::vector<Ray> rays = incoherent_rays(box, 100, 79);
-        std::mt19937_64 rng(80);
-        std::uniform_real_distribution<double> u(-1.0, 1.0);
         const double size = glm::length(box.extent());
         for (std::size_t k = 0; k < 200; ++k) {
+            PortableRandom random(80, k);
             const auto& face = mesh.faces[k * (mesh.faces.size() / 200)];
             const Vec3 a = mesh.positions[face[0]];
             const Vec3 b = mesh.positions[face[1]];
-            const Vec3 target = k % 3 == 0 ? a : a + 0.5 * (u(rng) + 1.0) * (b - a);
-            const Vec3 origin = box.center() + size * Vec3(u(rng), u(rng), u(rng));
+            const Vec3 target = k % 3 == 0 ? a : a + random.unit() * (b - a);
+            const Vec3 origin = box.center() + size * random.point(1.0);
             rays.push_back({origin, target - origin});
         }
 
@@ -157,15 +154,15 @@ TEST_CASE("accel: the BVHs and the grid give closest_hit's answer on three real 
 #ifdef RAYSTEP_BVH_SSE2
 TEST_CASE("accel: the BVH's SSE2 node test computes what the plain one does, bit for bit",
           "[accel]") {
-    std::mt19937_64 rng(79);
-    std::uniform_real_distribution<float> coordinate(-10.0f, 10.0f);
-    std::uniform_real_distribution<double> direction(-1.0, 1.0);
     for (int k = 0; k < 20000; ++k) {
+        PortableRandom random(79, static_cast<std::uint64_t>(k));
+        const auto coordinate = [&] { return static_cast<float>(random.uniform(-10.0, 10.0)); };
+        const auto direction = [&] { return random.uniform(-1.0, 1.0); };
         BvhNode node{};
         for (int c = 0; c < BvhNode::kWidth; ++c) {
             for (int axis = 0; axis < 3; ++axis) {
-                const float a = coordinate(rng);
-                const float b = coordinate(rng);
+                const float a = coordinate();
+                const float b = coordinate();
                 node.planes[2 * axis][c] = std::min(a, b);
                 node.planes[2 * axis + 1][c] = std::max(a, b);
             }
@@ -178,8 +175,8 @@ TEST_CASE("accel: the BVH's SSE2 node test computes what the plain one does, bit
                 node.planes[2 * axis + 1][kUnused] = -std::numeric_limits<float>::infinity();
             }
         }
-        Vec3 d{direction(rng), direction(rng), direction(rng)};
-        Vec3 o{coordinate(rng), coordinate(rng), coordinate(rng)};
+        Vec3 d{direction(), direction(), direction()};
+        Vec3 o{coordinate(), coordinate(), coordinate()};
         // Zero components (the stand-in scale), some with the origin exactly on a plane.
         if (k % 3 == 0) d[k % 3] = 0.0;
         if (k % 6 == 0) o[k % 3] = node.planes[k % 2][0];
@@ -209,12 +206,11 @@ TEST_CASE(
     // other ray is scaled down, in a scene a millionth the size, with a direction 2^-45 long and
     // t up to 10^8: there the drift added for a zero component (node_test.h) is what keeps the
     // box.
-    std::mt19937_64 rng(80);
-    std::uniform_int_distribution<int> eighths(-40, 40);
-    std::uniform_int_distribution<int> sizes(0, 8);
-    const auto eighth = [&] { return eighths(rng) / 8.0; };
     int zero_components = 0;
     for (int k = 0; k < 20000; ++k) {
+        PortableRandom random(80, static_cast<std::uint64_t>(k));
+        const auto eighth = [&] { return static_cast<double>(random.integer(-40, 40)) / 8.0; };
+        const auto size = [&] { return static_cast<double>(random.integer(0, 8)); };
         const bool small = k % 2 == 1;
         const double length = small ? 0x1p-20 : 1.0;
         const double speed = small ? 0x1p-45 : 1.0;
@@ -238,8 +234,8 @@ TEST_CASE(
         // Child 0 holds p, with a side of zero now and then; child 1 lies behind the origin,
         // along the direction's largest component, where the ray never goes.
         for (int axis = 0; axis < 3; ++axis) {
-            node.planes[2 * axis][0] = static_cast<float>(p[axis] - length * sizes(rng) / 8.0);
-            node.planes[2 * axis + 1][0] = static_cast<float>(p[axis] + length * sizes(rng) / 8.0);
+            node.planes[2 * axis][0] = static_cast<float>(p[axis] - length * size() / 8.0);
+            node.planes[2 * axis + 1][0] = static_cast<float>(p[axis] + length * size() / 8.0);
             const double behind = o[axis] - d[axis] * (0.5 * length / largest);
             node.planes[2 * axis][1] = static_cast<float>(behind - 0.125 * length);
             node.planes[2 * axis + 1][1] = static_cast<float>(behind + 0.125 * length);
@@ -264,12 +260,11 @@ TEST_CASE("accel: axis-parallel rays prune the BVH as well as tilted ones", "[ac
     // boxes the ray passes beside, or an orthographic view would walk the whole tree.
     const PrimitiveList list = mesh_primitives(icosphere(4));
     const Bvh bvh(list, BvhSplit::sah);
-    std::mt19937_64 rng(81);
-    std::uniform_real_distribution<double> across(-0.6, 0.6);
     TraversalStats straight;
     TraversalStats tilted;
     for (int k = 0; k < 1000; ++k) {
-        const Vec3 origin{across(rng), across(rng), -3.0};
+        PortableRandom random(81, static_cast<std::uint64_t>(k));
+        const Vec3 origin{random.uniform(-0.6, 0.6), random.uniform(-0.6, 0.6), -3.0};
         const Ray axis_ray{origin, Vec3(0, 0, 1)};
         const Ray tilted_ray{origin, Vec3(1e-3, -1e-3, 1)};
         const std::optional<PrimitiveHit> hit = bvh.closest_hit(axis_ray, &straight);
