@@ -19,12 +19,17 @@ class OffLines {
 
     /// The next line's fields; throws when the file ends before `what`.
     const std::vector<std::string_view>& next(std::string_view what) {
-        while (std::getline(in_, text_)) {
-            ++line_;
-            split_fields(text_, fields_);
-            if (!fields_.empty()) return fields_;
-        }
+        if (advance()) return fields_;
         throw InputError(file_, line_, "the file ends before " + std::string(what));
+    }
+
+    /// The next line's fields, record `k` of `total` of a `kind` ("vertex", "face"). The message
+    /// is only built when the file ends: a mesh has a hundred thousand records.
+    const std::vector<std::string_view>& next_record(std::string_view kind, long k, long total) {
+        if (advance()) return fields_;
+        throw InputError(file_, line_,
+                         "the file ends before " + std::string(kind) + " " + std::to_string(k) +
+                             " of " + std::to_string(total));
     }
 
     /// Requires at least `count` fields on the current line.
@@ -48,6 +53,15 @@ class OffLines {
     }
 
   private:
+    bool advance() {
+        while (std::getline(in_, text_)) {
+            ++line_;
+            split_fields(text_, fields_);
+            if (!fields_.empty()) return true;
+        }
+        return false;
+    }
+
     std::istream& in_;
     const std::string& file_;
     std::string text_;
@@ -99,7 +113,7 @@ TriangleMesh load_off_mesh(const std::filesystem::path& path) {
     TriangleMesh mesh;
     mesh.positions.reserve(static_cast<std::size_t>(vertex_count));
     for (long v = 0; v < vertex_count; ++v) {
-        lines.next("vertex " + std::to_string(v) + " of " + std::to_string(vertex_count));
+        lines.next_record("vertex", v, vertex_count);
         lines.require(3, "a vertex");
         mesh.positions.push_back({lines.number(0, "a vertex coordinate"),
                                   lines.number(1, "a vertex coordinate"),
@@ -110,7 +124,7 @@ TriangleMesh load_off_mesh(const std::filesystem::path& path) {
     mesh.faces.reserve(static_cast<std::size_t>(face_count));
     std::vector<std::uint32_t> polygon;
     for (long f = 0; f < face_count; ++f) {
-        fields = lines.next("face " + std::to_string(f) + " of " + std::to_string(face_count));
+        fields = lines.next_record("face", f, face_count);
         const long corners = lines.count(0, "a face's vertex count");
         if (corners < 3) {
             lines.fail("a face needs at least 3 vertices, this one has " + std::to_string(corners));
