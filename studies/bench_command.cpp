@@ -12,6 +12,7 @@
 #include "studies/common/machine_description.h"
 #include "studies/common/number_text.h"
 #include "studies/epsilon/epsilon_measure.h"
+#include "studies/scale/scene_scale.h"
 #include "studies/speed_error/pareto_registry.h"
 #include "studies/structures/baseline_registry.h"
 #include "studies/structures/bench_scenes.h"
@@ -222,6 +223,10 @@ CLI::App* add_bench_command(CLI::App& app, BenchArguments& arguments) {
         ->add_option("--chart", arguments.chart,
                      "With --epsilon: also draw the study as an SVG chart into this file")
         ->needs(epsilon);
+    command->add_flag("--scale", arguments.scale,
+                      "The scale bars on scenes/scale/: a thousand transformed spheres against a "
+                      "127,408-triangle scene, a thousand instanced bunnies against one "
+                      "(docs/measurements/scale.md)");
     CLI::Option* pareto = command->add_flag(
         "--pareto", arguments.pareto,
         "The speed-against-error study: every triangle, sphere and plane test in double and "
@@ -230,6 +235,7 @@ CLI::App* add_bench_command(CLI::App& app, BenchArguments& arguments) {
     pareto->excludes("--workload")
         ->excludes("--growth")
         ->excludes("--threshold")
+        ->excludes("--scale")
         ->excludes(epsilon);
     command
         ->add_option("--cases", arguments.cases,
@@ -289,7 +295,7 @@ int run_bench(const BenchArguments& arguments) {
 
     // Nothing named: every workload, the growth table and the threshold
     const bool everything = arguments.workloads.empty() && !arguments.growth &&
-                            !arguments.threshold && !arguments.epsilon;
+                            !arguments.threshold && !arguments.epsilon && !arguments.scale;
     bool agreed = true;
     if (everything || !arguments.workloads.empty()) {
         for (const std::string& name : bench_scene_names()) {
@@ -304,6 +310,12 @@ int run_bench(const BenchArguments& arguments) {
     }
     if (everything || arguments.threshold) run_threshold(arguments);
     if (everything || arguments.epsilon) run_epsilon(arguments);
+    if (everything || arguments.scale) {
+        ProgressLine().show("the scale bars");
+        run_scale_bars(std::filesystem::path(RAYSTEP_SOURCE_DIR) / "scenes/scale", options.threads,
+                       arguments.quick);
+        ProgressLine().clear();
+    }
 
     if (!agreed) {
         std::printf("\nStructures disagree (the WARNING lines above): one of them has a bug.\n");

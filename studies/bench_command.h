@@ -21,6 +21,7 @@ struct BenchArguments {
     std::string out;                     ///< where its charts and JSON go
     int threads = 0;         ///< the all-threads columns' threads; 0: every hardware thread
     std::string embree_isa;  ///< the instruction set Embree is held to; empty: its best
+    bool scale = false;      ///< the scale bars on scenes/scale/
     bool quick = false;      ///< an eighth of the rays, for smoke tests
 };
 
