@@ -42,10 +42,11 @@ struct StageCases {
 /// kind "oracle", each a case_check.
 std::vector<CheckDefinition> stage_case_checks(const StageCases& cases);
 
-/// A workload timed from outside the probe: the best of three runs minus the same run with no
-/// passes (starting, reading the input, building), and the checksum the passes answered.
+/// A workload timed from outside the probe: the best of its rounds' runs minus the same run with
+/// no passes (starting, reading the input, building), and the checksum the passes answered.
 struct WorkloadTime {
     double seconds = 0.0;
+    int rounds = 0;  ///< the rounds timed_workloads ran, all programs alike
     probe::Json checksum;
     bool answered = true;  ///< false when a run ended without an answer (a stub, crash or timeout)
     std::string not_implemented;  ///< a stub's message, when a stub was why
@@ -62,9 +63,11 @@ struct WorkloadRun {
     probe::Json args;
 };
 
-/// The same for several programs, timed in turn: each of the three rounds runs every program
-/// once, so that a load that comes and goes (another job on the machine) slows them alike and
-/// their ratio holds; timed one after the other, a load during one program's runs alone skews it.
+/// The same for several programs, timed in turn: each round runs every program once, so that a
+/// load that comes and goes (another job on the machine) slows them alike and their ratio holds;
+/// timed one after the other, a load during one program's runs alone skews it. Two rounds at
+/// least; then another, up to kMostTimedRounds, until two rounds in a row give every program's
+/// time against the first's within kRoundAgreement of each other (judging.cpp says why).
 std::vector<WorkloadTime> timed_workloads(const std::vector<WorkloadRun>& runs,
                                           const std::string& call, int repeat);
 

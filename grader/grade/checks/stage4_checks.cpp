@@ -439,13 +439,14 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
     measure.metrics = {{"speed against the reference", ratio},
                        {"speed against brute force", brute_force_ratio},
                        {"reference seconds", reference.seconds},
-                       {"submission seconds", student.seconds}};
-    char text[200];
+                       {"submission seconds", student.seconds},
+                       {"timed rounds", static_cast<double>(student.rounds)}};
+    char text[240];
     std::snprintf(text, sizeof text,
                   " traced %d rays through %zu primitives %d times at %.2f times the reference's "
-                  "speed and %.0f times brute force's",
+                  "speed (best of %d rounds) and %.0f times brute force's",
                   kRays, scene.primitives.triangles.size() + scene.primitives.spheres.size(),
-                  kPasses, ratio, brute_force_ratio);
+                  kPasses, ratio, student.rounds, brute_force_ratio);
     measure.summary = "the " + structure + text;
     measure.outcome = Outcome::passed;
     return measure;
