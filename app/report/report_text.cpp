@@ -1,5 +1,6 @@
 #include "app/report/report_text.h"
 
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <utility>
@@ -121,7 +122,13 @@ std::string score_text(double score) {
 }
 
 std::string score_out_of(double score, double max_score) {
-    return score_text(score) + " / " + score_text(max_score);
+    // A check is passed only at full points (scored_check, app/grade/rubric.h): a score short of
+    // its maximum that two decimals would round up to it is cut to two decimals instead, so that
+    // a failed 0.998 reads "0.99 / 1", never "failed 1 / 1".
+    const std::string maximum = score_text(max_score);
+    std::string shown = score_text(score);
+    if (score < max_score && shown == maximum) shown = score_text(std::floor(score * 100) / 100);
+    return shown + " / " + maximum;
 }
 
 std::string metric_text(double value) {

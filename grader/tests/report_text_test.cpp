@@ -85,6 +85,11 @@ TEST_CASE("score_text, metric_text, stage_label: numbers as every report prints 
     CHECK(score_text(0.999) == "1");
     CHECK(score_text(-0.001) == "0");
     CHECK(score_out_of(1.5, 5) == "1.5 / 5");
+    // A check short of full points has failed (scored_check): its score must not read as full
+    CHECK(score_out_of(0.998, 1) == "0.99 / 1");
+    CHECK(score_out_of(20.998, 21) == "20.99 / 21");
+    CHECK(score_out_of(1, 1) == "1 / 1");
+    CHECK(score_out_of(0.994, 2) == "0.99 / 2");
     CHECK(metric_text(34.1234) == "34.12");
     CHECK(metric_text(0.001234) == "0.001234");
     CHECK(metric_text(1.5e6) == "1.5e+06");

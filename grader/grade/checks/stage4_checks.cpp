@@ -1,12 +1,12 @@
 // Stage 4 checks: the BVH (both splits) and the grid must return exactly closest_hit's answer
 // (same primitive, same t) on seeded scenes made to break them: random soups, shared edges met by
 // axis-parallel rays, coincident primitives (ties), flat and degenerate ones, lists of one kind,
-// empty lists and lists of planes only; rays with t_min > 0 and finite t_max in each; occluded
-// must agree with the closest hit over the same interval. The expected answers come from the
-// reference closest_hit, run here in the grader. Each structure check also counts the primitive
-// tests the structure makes (stage4_work.cpp): one that is right but does brute force's work
-// earns nothing. The slab test's entry and exit against the exact interval
-// (stage4_slab_cases.cpp); grid_resolution against the handout's rule
+// empty lists and lists of planes only; rays with t_min > 0 and finite t_max in each, and shadow
+// rays that end exactly at their hit; occluded must agree with the closest hit over the same
+// interval. The expected answers come from the reference closest_hit, run here in the grader.
+// Each structure check also counts the primitive tests the structure makes (stage4_work.cpp): one
+// that is right but does brute force's work earns nothing. The slab test's entry and exit against
+// the exact interval (stage4_slab_cases.cpp); grid_resolution against the handout's rule
 // (stage4_grid_resolution_cases.cpp), both public: each case is judged by a data judge, which the
 // student release runs on the same data. Speed: the submission's structure against the
 // reference's on the same rays, timed from outside the probe.
@@ -233,6 +233,114 @@ AccelScene walls_an_ulp_apart(std::uint64_t seed) {
     return s;
 }
 
+// A point with whole coordinates in [0, n]^3.
+Vec3 lattice_point(PortableRandom& random, int n) {
+    return Vec3(static_cast<double>(random.integer(0, n)),
+                static_cast<double>(random.integer(0, n)),
+                static_cast<double>(random.integer(0, n)));
+}
+
+// A point of the triangle at quarter steps of its edges: a vertex, a point of an edge or inside.
+Vec3 quarter_point(PortableRandom& random, const Triangle& triangle) {
+    const double a = static_cast<double>(random.integer(0, 4)) / 4.0;
+    const double b =
+        static_cast<double>(random.integer(0, static_cast<std::int64_t>(4 - 4 * a))) / 4.0;
+    return triangle.p0 + a * (triangle.p1 - triangle.p0) + b * (triangle.p2 - triangle.p0);
+}
+
+// A shadow ray from `origin` aimed at `target` on a surface: it ends exactly at the t of the first
+// hit, t_max = that t, as a renderer's ray to a point it has found does. Nothing when it has no
+// direction, hits nothing, or hits at t_min (a ray of no length).
+void add_ray_ending_at_its_hit(AccelScene& scene, const Vec3& origin, const Vec3& target) {
+    Ray ray{origin, target - origin};
+    if (ray.direction == Vec3(0.0)) return;
+    const std::optional<PrimitiveHit> first = structure_answer(ray, scene.primitives);
+    if (!first || first->hit.t == ray.t_min) return;
+    ray.t_max = first->hit.t;
+    scene.rays.push_back(ray);
+}
+
+// Walls lying in the planes between a grid's cells, met by shadow rays that end exactly at their
+// hit. Two small triangles in opposite corners set the box to [0, n]^3 and 78 walls with lattice
+// vertices lie in the planes x, y or z = 0, n / 2 or n: 80 primitives, 6 cells a side by the
+// handout's rule, so n / 2 is the plane between cells 3 and 4 however a grid grows its box by a
+// margin both ways. A wall in that plane touches the cells on both sides only at the plane; the
+// ray's crossing of it can round an ulp after the hit, and a walk that stops there (the ray ends
+// at the hit) finds the wall only if it is listed on the near side too: a grid that lists each
+// primitive in the cells of its exact box misses it.
+AccelScene walls_on_cell_planes(std::uint64_t seed, int n) {
+    PortableRandom random(seed);
+    const double size = n;
+    AccelScene s{"walls on the planes between cells, rays that end at their hit", {}, {}, ""};
+    s.primitives.triangles = {
+        {{0, 0, 0}, {0.5, 0, 0}, {0, 0.5, 0}},
+        {{size, size, size}, {size - 0.5, size, size}, {size, size - 0.5, size}}};
+    for (int k = 0; k < 78; ++k) {
+        const int axis = static_cast<int>(random.integer(0, 2));
+        const double plane = static_cast<double>(n / 2 * random.integer(0, 2));
+        Vec3 p0 = lattice_point(random, n), p1 = lattice_point(random, n),
+             p2 = lattice_point(random, n);
+        p0[axis] = p1[axis] = p2[axis] = plane;
+        s.primitives.triangles.push_back({p0, p1, p2});
+    }
+    for (int k = 0; k < 100; ++k) {
+        const Triangle& wall =
+            s.primitives.triangles[static_cast<std::size_t>(random.integer(2, 79))];
+        const Vec3 target = quarter_point(random, wall);
+        const double offset = static_cast<double>(random.integer(-2, 2));
+        const Vec3 corner = lattice_point(random, n);
+        add_ray_ending_at_its_hit(s, corner + Vec3(offset), target);
+    }
+    return s;
+}
+
+// Axis-aligned triangles and spheres on a lattice, scene `scene` of the public test "Bvh: a ray
+// that ends exactly at its hit" (its seeds and lattice size), met by shadow rays that end exactly
+// at their hit: rays to the triangles' vertices and edges, and rays along an axis grazing a sphere
+// where its box touches it. A triangle's t and its box's entry round separately, so the box can
+// seem to start just after t_max: a BVH that clips its walk at t_max itself, or at t_max widened
+// by the slab test's rounding alone, misses the hit (scene 37 has such a ray).
+AccelScene lattice_shadow_rays(int scene) {
+    const int n = 4 + scene % 13;
+    PortableRandom build(static_cast<std::uint64_t>(1000 + scene));
+    AccelScene s{"lattice triangles and spheres, rays that end at their hit", {}, {}, ""};
+    for (int k = 0; k < 60; ++k) {
+        const int axis = static_cast<int>(build.integer(0, 2));
+        Vec3 p0 = lattice_point(build, n), p1 = lattice_point(build, n),
+             p2 = lattice_point(build, n);
+        p1[axis] = p0[axis];
+        p2[axis] = p0[axis];
+        s.primitives.triangles.push_back({p0, p1, p2});
+    }
+    for (int k = 0; k < 20; ++k)
+        s.primitives.spheres.push_back(
+            {0.37 * lattice_point(build, n), 0.1 * static_cast<double>(build.integer(1, 9))});
+    PortableRandom random(static_cast<std::uint64_t>(2000 + scene));
+    for (int k = 0; k < 400; ++k) {
+        if (k % 2 == 0) {
+            const Triangle& triangle =
+                s.primitives.triangles[static_cast<std::size_t>(random.integer(0, 59))];
+            const Vec3 target = quarter_point(random, triangle);
+            // The offset is drawn before the corner, as g++ evaluates the public test's
+            // lattice(random) + Vec3(random.integer(-2, 2)): the same rays
+            const double offset = static_cast<double>(random.integer(-2, 2));
+            const Vec3 corner = lattice_point(random, n);
+            add_ray_ending_at_its_hit(s, corner + Vec3(offset), target);
+            continue;
+        }
+        const Sphere& sphere =
+            s.primitives.spheres[static_cast<std::size_t>(random.integer(0, 19))];
+        const int axis = static_cast<int>(random.integer(0, 2));
+        Vec3 side(0.0);
+        side[axis] = random.integer(0, 1) ? sphere.radius : -sphere.radius;
+        Vec3 along(0.0);
+        along[(axis + 1 + static_cast<int>(random.integer(0, 1))) % 3] = 1.0;
+        const Vec3 target = sphere.center + side;
+        add_ray_ending_at_its_hit(s, target - 3.0 * along, target);
+    }
+    return s;
+}
+
 // Nothing to build over: no primitives at all, or only planes, which stay outside the structure.
 // Every ray misses. Asked last: a structure that crashes here loses these rays' cases, not the
 // others'.
@@ -256,9 +364,20 @@ AccelScene nothing_to_hold(bool planes) {
 }
 
 std::vector<AccelScene> scenes() {
-    return {random_soup(0xB7A1),        shared_edges(),         ties_and_degenerates(0x7135),
-            one_kind(0x5F1, true),      one_kind(0x7A1, false), tie_across_a_cell_boundary(),
-            walls_an_ulp_apart(0xB0DE), nothing_to_hold(false), nothing_to_hold(true)};
+    return {random_soup(0xB7A1),
+            shared_edges(),
+            ties_and_degenerates(0x7135),
+            one_kind(0x5F1, true),
+            one_kind(0x7A1, false),
+            tie_across_a_cell_boundary(),
+            walls_an_ulp_apart(0xB0DE),
+            walls_on_cell_planes(0xCE11, 12),
+            walls_on_cell_planes(0xCE12, 16),
+            walls_on_cell_planes(0xCE13, 24),
+            lattice_shadow_rays(37),
+            lattice_shadow_rays(38),
+            nothing_to_hold(false),
+            nothing_to_hold(true)};
 }
 
 // How a student builds the scene in a test of their own, or what it is where it is not written
