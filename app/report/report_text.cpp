@@ -121,14 +121,19 @@ std::string score_text(double score) {
     return text;
 }
 
-std::string score_out_of(double score, double max_score) {
+std::string score_below_max_text(double score, double max_score) {
     // A check is passed only at full points (scored_check, app/grade/rubric.h): a score short of
     // its maximum that two decimals would round up to it is cut to two decimals instead, so that
-    // a failed 0.998 reads "0.99 / 1", never "failed 1 / 1".
-    const std::string maximum = score_text(max_score);
-    std::string shown = score_text(score);
-    if (score < max_score && shown == maximum) shown = score_text(std::floor(score * 100) / 100);
-    return shown + " / " + maximum;
+    // a failed 0.998 reads "0.99 / 1", never "failed 1 / 1", and a total of 20.998 never "21".
+    const std::string shown = score_text(score);
+    if (score < max_score && shown == score_text(max_score)) {
+        return score_text(std::floor(score * 100) / 100);
+    }
+    return shown;
+}
+
+std::string score_out_of(double score, double max_score) {
+    return score_below_max_text(score, max_score) + " / " + score_text(max_score);
 }
 
 std::string metric_text(double value) {

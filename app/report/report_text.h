@@ -32,8 +32,11 @@ std::string clipped_text(std::string_view text, std::size_t max_bytes);
 /// A score with at most two decimals and no trailing zeros: "2.5", "10", "0.33".
 std::string score_text(double score);
 
-/// "2.5 / 10": a score out of its maximum, each as score_text writes it, except that a score
-/// below the maximum never reads as it: 0.998 out of 1 is "0.99 / 1".
+/// score_text of a score, except that a score below its maximum never reads as the maximum:
+/// 0.998 out of 1 is "0.99".
+std::string score_below_max_text(double score, double max_score);
+
+/// "2.5 / 10": score_below_max_text of the score, out of score_text of the maximum.
 std::string score_out_of(double score, double max_score);
 
 /// A metric with four significant digits: "34.12", "0.001234", "1.5e+06", "inf", "nan".

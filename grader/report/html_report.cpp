@@ -89,7 +89,8 @@ std::string page_head(const GradeReport& seen, const HtmlReportOptions& options)
     html += "<div class=\"submission\">raystep grade report, " +
             std::string(options.audience == Audience::instructor ? "instructor's view"
                                                                  : "student's view") +
-            "</div></div>\n<div class=\"total\">" + h(score_text(seen.score())) + " <small>/ " +
+            "</div></div>\n<div class=\"total\">" +
+            h(score_below_max_text(seen.score(), seen.max_score())) + " <small>/ " +
             h(score_text(seen.max_score())) + " points (" +
             percent(seen.score(), seen.max_score()) + "%)</small></div>\n</div></header>\n<main>\n";
     return html;

@@ -90,6 +90,9 @@ TEST_CASE("score_text, metric_text, stage_label: numbers as every report prints 
     CHECK(score_out_of(20.998, 21) == "20.99 / 21");
     CHECK(score_out_of(1, 1) == "1 / 1");
     CHECK(score_out_of(0.994, 2) == "0.99 / 2");
+    // The HTML page's large total, alone
+    CHECK(score_below_max_text(20.998, 21) == "20.99");
+    CHECK(score_below_max_text(21, 21) == "21");
     CHECK(metric_text(34.1234) == "34.12");
     CHECK(metric_text(0.001234) == "0.001234");
     CHECK(metric_text(1.5e6) == "1.5e+06");
