@@ -63,6 +63,12 @@ void finish_geometry(InstanceGeometry& geometry) {
 }
 
 void place_instance(Instance& instance, const InstanceGeometry& geometry) {
+    if (geometry.bounds.empty()) {
+        // A mesh of no faces: nothing to hit, and its infinite corners would make NaN through M.
+        instance.inverse_residual = 0.0;
+        instance.world_bounds = Aabb{};
+        return;
+    }
     if (!instance.transform) {
         instance.inverse_residual = 0.0;
         instance.world_bounds = widened(geometry.bounds, 0.0);

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <array>
-#include <numeric>
+#include <cmath>
 
 namespace raystep {
 
@@ -33,12 +33,15 @@ Ray cut_at(const Ray& ray, const std::optional<PrimitiveHit>& best) {
 
 }  // namespace
 
-InstanceBvh::InstanceBvh(const std::vector<Instance>& instances) : order_(instances.size()) {
-    if (instances.empty()) return;
-    std::iota(order_.begin(), order_.end(), 0u);
-    nodes_.reserve(2 * instances.size() + 1);
+InstanceBvh::InstanceBvh(const std::vector<Instance>& instances) {
+    // Instances with nothing in them (a mesh of no faces) have an empty box and stay out.
+    for (std::uint32_t k = 0; k < instances.size(); ++k) {
+        if (!instances[k].world_bounds.empty()) order_.push_back(k);
+    }
+    if (order_.empty()) return;
+    nodes_.reserve(2 * order_.size() + 1);
     nodes_.emplace_back();
-    build_node(instances, 0, 0, static_cast<std::uint32_t>(instances.size()));
+    build_node(instances, 0, 0, static_cast<std::uint32_t>(order_.size()));
 }
 
 void InstanceBvh::build_node(const std::vector<Instance>& instances, std::uint32_t node,
@@ -59,11 +62,14 @@ void InstanceBvh::build_node(const std::vector<Instance>& instances, std::uint32
     const int axis =
         extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
     const std::uint32_t middle = begin + (end - begin) / 2;
+    // A box reaching to infinity on both sides (coordinates that overflowed) has a NaN centre:
+    // ordered as 0, so that the order stays strict and weak.
+    const auto centre = [&](std::uint32_t k) {
+        const double c = instances[k].world_bounds.center()[axis];
+        return std::isnan(c) ? 0.0 : c;
+    };
     std::nth_element(order_.begin() + begin, order_.begin() + middle, order_.begin() + end,
-                     [&](std::uint32_t a, std::uint32_t b) {
-                         return instances[a].world_bounds.center()[axis] <
-                                instances[b].world_bounds.center()[axis];
-                     });
+                     [&](std::uint32_t a, std::uint32_t b) { return centre(a) < centre(b); });
     const auto left = static_cast<std::uint32_t>(nodes_.size());
     nodes_.emplace_back();
     nodes_.emplace_back();

@@ -84,10 +84,13 @@ void trace_instances(const RenderScene& render_scene, const Ray& ray, TraceLog& 
             instance, render_scene.instance_geometries[instance.geometry], ray, nullptr);
         if (!hit) ++misses;
         if (!hit && !list_all) continue;
-        const Ray object = instance.transform ? ray_to_object(*instance.transform, ray) : ray;
-        std::string text =
-            instance_label(render_scene, k) + ", under a transform: " + "object-frame ray origin " +
-            to_text(object.origin) + " direction " + to_text(object.direction) + ": ";
+        std::string text = instance_label(render_scene, k);
+        if (instance.transform) {
+            const Ray object = ray_to_object(*instance.transform, ray);
+            text += ", under a transform: object-frame ray origin " + to_text(object.origin) +
+                    " direction " + to_text(object.direction);
+        }
+        text += ": ";
         if (hit) {
             text += std::string(kind_name(hit->kind)) + " " + std::to_string(hit->index) + " " +
                     describe(hit->hit);

@@ -96,6 +96,9 @@ std::string vec(const Vec3& v) {
 // grid mesh, each under its own rotation, non-uniform scale and translation.
 std::string instanced_scene(PortableRandom& random, int spheres, int meshes) {
     std::string text = "camera 0 0 30 0 0 0 0 1 0 45\ndefine grid grid.off\n";
+    // A mesh of no faces, turned: nothing to hit, and no box to spoil the others'
+    text +=
+        "define empty empty.off\npushTransform\nrotate 1 2 3 40\ninstance empty\npopTransform\n";
     text += "vertex -1 -1 0\nvertex 1 -1 0\nvertex 0 1 0\n";
     for (int k = 0; k < spheres + meshes; ++k) {
         text += "pushTransform\ntranslate " + vec(random.point(8.0)) + "\n";
@@ -131,6 +134,7 @@ TEST_CASE("instances: the instance BVH finds brute force's hits on spheres, tria
           "[app]") {
     testing::ScratchFolder folder("instances");
     write_grid_mesh(folder.path() / "grid.off", 4);  // 32 triangles: a BVH of their own
+    std::ofstream(folder.path() / "empty.off") << "OFF\n0 0 0\n";
     for (const int spheres : {5, 60}) {
         CAPTURE(spheres);
         PortableRandom random(static_cast<std::uint64_t>(spheres));

@@ -61,3 +61,21 @@ TEST_CASE("trace: a miss says so", "[app]") {
         trace("size 3 3\ncamera 0 0 5 0 0 0 0 1 0 45\nsphere 9 9 9 1\n", View::depth, 0, 0);
     CHECK(lines.back() == "closest_hit: miss");
 }
+
+TEST_CASE("trace: an instance names its mesh and line, with the object-frame ray when moved",
+          "[app]") {
+    // The unit square of meshes/square.off placed as it is at z = 0, and again pushed back and
+    // grown: the ray meets both, the first at t = 5.
+    const std::vector<std::string> lines = trace(
+        "size 3 3\ncamera 0.5 0.5 5 0.5 0.5 0 0 1 0 45\ndefine square meshes/square.off\n"
+        "instance square\ntranslate 0 0 -1\nscale 2 2 2\ninstance square\n",
+        View::depth, 1, 1);
+    REQUIRE(lines.size() == 4);
+    CHECK_THAT(lines[1], Catch::Matchers::StartsWith("mesh instance of 'square' (line 4): "
+                                                     "triangle 0 hit t=5 "));
+    CHECK_THAT(lines[2],
+               Catch::Matchers::StartsWith(
+                   "mesh instance of 'square' (line 7), under a transform: object-frame ray "
+                   "origin (0.25, 0.25, 3) direction (0, 0, -0.5): triangle "));
+    CHECK(lines[3].rfind("closest_hit: triangle 0 at t=5 ", 0) == 0);
+}
