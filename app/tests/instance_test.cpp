@@ -42,7 +42,7 @@ std::optional<Transform> transform_at(const Scene& scene, std::uint32_t node) {
 }
 
 // One object in its own frame, as brute force sees it.
-std::optional<Hit> hit_in_frame(const std::optional<Transform>& transform, const Ray& ray,
+std::optional<Hit> hit_in_frame(const std::optional<Transform>& transform,
                                 const std::optional<Hit>& object_hit) {
     if (!object_hit || !transform) return object_hit;
     Hit hit = *object_hit;
@@ -63,14 +63,13 @@ std::optional<PrimitiveHit> brute_force(const Scene& scene, const Ray& ray) {
     for (std::size_t k = 0; k < scene.spheres.size(); ++k) {
         const auto transform = transform_at(scene, scene.spheres[k].attributes.transform);
         const Ray local = transform ? ray_to_object(*transform, ray) : ray;
-        keep(best, hit_in_frame(transform, ray, intersect_sphere(local, scene.spheres[k].shape)),
+        keep(best, hit_in_frame(transform, intersect_sphere(local, scene.spheres[k].shape)),
              PrimitiveKind::sphere, k);
     }
     for (std::size_t k = 0; k < scene.triangles.size(); ++k) {
         const auto transform = transform_at(scene, scene.triangles[k].attributes.transform);
         const Ray local = transform ? ray_to_object(*transform, ray) : ray;
-        keep(best,
-             hit_in_frame(transform, ray, intersect_triangle(local, scene.triangles[k].shape)),
+        keep(best, hit_in_frame(transform, intersect_triangle(local, scene.triangles[k].shape)),
              PrimitiveKind::triangle, k);
     }
     std::size_t number = scene.triangles.size();
@@ -78,7 +77,7 @@ std::optional<PrimitiveHit> brute_force(const Scene& scene, const Ray& ray) {
         const auto transform = transform_at(scene, instance.attributes.transform);
         const Ray local = transform ? ray_to_object(*transform, ray) : ray;
         for (const Triangle& triangle : scene.mesh_definitions[instance.definition].triangles) {
-            keep(best, hit_in_frame(transform, ray, intersect_triangle(local, triangle)),
+            keep(best, hit_in_frame(transform, intersect_triangle(local, triangle)),
                  PrimitiveKind::triangle, number++);
         }
     }
