@@ -409,6 +409,65 @@ TEST_CASE(
     CHECK(stats.primitive_tests == 0);
 }
 
+TEST_CASE("UniformGrid: a ray that ends exactly at a wall between cells still finds it",
+          "[stage4]") {
+    INFO(
+        "A shadow ray to a point on a surface ends at t_max = that point's t. Walls lie in the "
+        "planes between cells (x, y or z = n / 2 of a 6-cell grid); the ray's crossing of such a "
+        "plane can round an ulp after the hit, so a walk that stops at t_max finds the wall only "
+        "if the wall is listed in the cells on both sides of it: list each primitive in every "
+        "cell its box, grown by the margin, overlaps (docs/stage4.md, \"Uniform grids\").");
+    int asked = 0;
+    for (const int n : {12, 16, 24}) {
+        for (std::uint64_t seed = 0; seed < 10; ++seed) {
+            PortableRandom random(seed, static_cast<std::uint64_t>(n));
+            const auto lattice = [&] {
+                const double x = static_cast<double>(random.integer(0, n));
+                const double y = static_cast<double>(random.integer(0, n));
+                const double z = static_cast<double>(random.integer(0, n));
+                return Vec3(x, y, z);
+            };
+            // Two small triangles in opposite corners set the box to [0, n]^3: 80 primitives,
+            // 6 cells a side, and n / 2 the plane between cells 3 and 4.
+            const double size = n;
+            PrimitiveList list;
+            list.triangles.push_back({{0, 0, 0}, {0.5, 0, 0}, {0, 0.5, 0}});
+            list.triangles.push_back(
+                {{size, size, size}, {size - 0.5, size, size}, {size, size - 0.5, size}});
+            for (int k = 0; k < 78; ++k) {
+                const int axis = static_cast<int>(random.integer(0, 2));
+                const double plane = static_cast<double>(n / 2 * random.integer(0, 2));
+                Vec3 p0 = lattice();
+                Vec3 p1 = lattice();
+                Vec3 p2 = lattice();
+                p0[axis] = p1[axis] = p2[axis] = plane;
+                list.triangles.push_back({p0, p1, p2});
+            }
+            const UniformGrid grid(list);
+            for (int r = 0; r < 100; ++r) {
+                const Triangle& wall = list.triangles[random.integer(2, 79)];
+                const double a = static_cast<double>(random.integer(0, 4)) / 4.0;
+                const double b =
+                    static_cast<double>(random.integer(0, static_cast<std::int64_t>(4 - 4 * a))) /
+                    4.0;
+                const Vec3 target = wall.p0 + a * (wall.p1 - wall.p0) + b * (wall.p2 - wall.p0);
+                Ray ray{lattice(), Vec3(0.0)};
+                ray.direction = target - ray.origin;
+                if (ray.direction == Vec3(0.0)) continue;
+                const std::optional<PrimitiveHit> first = closest_hit(ray, list);
+                if (!first || first->hit.t == ray.t_min) continue;
+                ray.t_max = first->hit.t;
+                ++asked;
+                CAPTURE(n, seed, r);
+                check_same(ray, grid.closest_hit(ray), first);
+                INFO(text(ray));
+                CHECK(grid.occluded(ray));
+            }
+        }
+    }
+    CHECK(asked > 2000);
+}
+
 TEST_CASE("UniformGrid::occluded: a grid of no primitives occludes nothing", "[stage4]") {
     const bool occluded = UniformGrid(PrimitiveList{}).occluded({{0, 0, 5}, {0, 0, -1}});
     CHECK_FALSE(occluded);
