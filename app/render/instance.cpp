@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/matrix.hpp>
+
 #include "app/render/render_plan.h"
 
 namespace raystep {
@@ -75,6 +77,7 @@ void place_instance(Instance& instance, const InstanceGeometry& geometry) {
         return;
     }
     instance.inverse_residual = largest_residual(*instance.transform);
+    instance.mirrors = glm::determinant(glm::dmat3(instance.transform->matrix)) < 0.0;
     Aabb world;
     for (int corner = 0; corner < 8; ++corner) {
         const Vec3 p((corner & 1) ? geometry.bounds.max.x : geometry.bounds.min.x,
@@ -101,7 +104,14 @@ std::optional<PrimitiveHit> instance_closest_hit(const Instance& instance,
     }
     if (!hit) return std::nullopt;
     hit->index = scene_id(instance, geometry, *hit);
-    if (instance.transform) hit->hit.normal = normal_to_world(*instance.transform, hit->hit.normal);
+    if (instance.transform) {
+        hit->hit.normal = normal_to_world(*instance.transform, hit->hit.normal);
+        // A triangle's normal follows its vertices' winding, which a mirror turns over; a
+        // sphere's points outward either way.
+        if (instance.mirrors && hit->kind == PrimitiveKind::triangle) {
+            hit->hit.normal = -hit->hit.normal;
+        }
+    }
     return hit;
 }
 

@@ -40,6 +40,9 @@ struct Instance {
     /// The largest entry of M^-1 M - I as computed: how far the frame the intersection sees
     /// (through M^-1) and the one points come back through (M) disagree, for error bounds.
     double inverse_residual = 0.0;
+    /// det M < 0: M mirrors, and a triangle's normal M^-T n points against the winding of its
+    /// world vertices M p, whose (p1 - p0) x (p2 - p0) the scene format calls its normal.
+    bool mirrors = false;
     std::size_t first_triangle = 0;  ///< for a mesh definition: the scene's number of triangle 0
     /// The geometry's bounds carried to the world by M, widened to hold every point an object-frame
     /// test can report (instance.cpp says by how much).

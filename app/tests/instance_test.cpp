@@ -5,6 +5,8 @@
 #include <fstream>
 #include <string>
 
+#include <glm/geometric.hpp>
+
 #include "app/render/render_scene.h"
 #include "base/math/portable_random.h"
 #include "base/math/to_text.h"
@@ -50,6 +52,18 @@ std::optional<Hit> hit_in_frame(const std::optional<Transform>& transform,
     return hit;
 }
 
+// A triangle's normal as the scene format defines it: along (p1 - p0) x (p2 - p0) of its world
+// vertices M p, which a mirroring M turns against M^-T n.
+std::optional<Hit> along_world_winding(const std::optional<Transform>& transform,
+                                       const Triangle& triangle, std::optional<Hit> hit) {
+    if (!hit || !transform) return hit;
+    const Vec3 p0 = point_to_world(*transform, triangle.p0);
+    const Vec3 winding = glm::cross(point_to_world(*transform, triangle.p1) - p0,
+                                    point_to_world(*transform, triangle.p2) - p0);
+    if (glm::dot(hit->normal, winding) < 0.0) hit->normal = -hit->normal;
+    return hit;
+}
+
 void keep(std::optional<PrimitiveHit>& best, const std::optional<Hit>& hit, PrimitiveKind kind,
           std::size_t index) {
     if (!hit) return;
@@ -69,7 +83,10 @@ std::optional<PrimitiveHit> brute_force(const Scene& scene, const Ray& ray) {
     for (std::size_t k = 0; k < scene.triangles.size(); ++k) {
         const auto transform = transform_at(scene, scene.triangles[k].attributes.transform);
         const Ray local = transform ? ray_to_object(*transform, ray) : ray;
-        keep(best, hit_in_frame(transform, intersect_triangle(local, scene.triangles[k].shape)),
+        const Triangle& triangle = scene.triangles[k].shape;
+        keep(best,
+             along_world_winding(transform, triangle,
+                                 hit_in_frame(transform, intersect_triangle(local, triangle))),
              PrimitiveKind::triangle, k);
     }
     std::size_t number = scene.triangles.size();
@@ -77,7 +94,9 @@ std::optional<PrimitiveHit> brute_force(const Scene& scene, const Ray& ray) {
         const auto transform = transform_at(scene, instance.attributes.transform);
         const Ray local = transform ? ray_to_object(*transform, ray) : ray;
         for (const Triangle& triangle : scene.mesh_definitions[instance.definition].triangles) {
-            keep(best, hit_in_frame(transform, intersect_triangle(local, triangle)),
+            keep(best,
+                 along_world_winding(transform, triangle,
+                                     hit_in_frame(transform, intersect_triangle(local, triangle))),
                  PrimitiveKind::triangle, number++);
         }
     }
@@ -103,7 +122,14 @@ std::string instanced_scene(PortableRandom& random, int spheres, int meshes) {
         text += "pushTransform\ntranslate " + vec(random.point(8.0)) + "\n";
         text +=
             "rotate " + vec(random.unit_vector()) + " " + to_text(random.uniform(0, 360)) + "\n";
-        const Vec3 factors(random.uniform(0.2, 2), random.uniform(0.2, 2), random.uniform(0.2, 2));
+        // Factors of either sign: a mirror turns a triangle's winding over
+        const auto factor = [&] {
+            const double size = random.uniform(0.2, 2);
+            return random.integer(0, 3) == 0 ? -size : size;
+        };
+        const double fx = factor();
+        const double fy = factor();
+        const Vec3 factors(fx, fy, factor());
         text += "scale " + vec(factors) + "\n";
         if (k < spheres) {
             text +=
