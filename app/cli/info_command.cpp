@@ -84,13 +84,16 @@ int run_info(const InfoArguments& arguments) {
                                 ", up to " + std::to_string(scene.max_depth) + " bounces"
                           : "none");
     const std::size_t bounded = bvh_primitives(f);
-    row("structure",
-        uses_bvh(f)
-            ? "a BVH (SAH) over the " + std::to_string(bounded) + " spheres and triangles (from " +
-                  std::to_string(kBvhFromPrimitives) +
-                  " on; docs/stage4.md, \"When a structure pays\")"
-            : "none: " + counted(bounded, "sphere or triangle", "spheres and triangles") +
-                  ", tested one by one (a BVH from " + std::to_string(kBvhFromPrimitives) + " on)");
+    row("structure", uses_bvh(f)
+                         ? "a BVH (SAH) over the " + std::to_string(bounded) +
+                               " spheres and triangles without a transform (from " +
+                               std::to_string(kBvhFromPrimitives) +
+                               " on; docs/stage4.md, \"When a structure pays\")"
+                         : "none over the " +
+                               counted(bounded, "sphere or triangle", "spheres and triangles") +
+                               " without a transform, tested one by one (a BVH from " +
+                               std::to_string(kBvhFromPrimitives) + " on)" +
+                               (f.instances > 0 ? "; the instances, below, have their own" : ""));
     if (f.instances > 0) {
         row("instances",
             counted(f.instances, "instance", "instances") +

@@ -75,8 +75,9 @@ int run_render(const RenderArguments& arguments) {
     const unsigned threads = arguments.threads > 0
                                  ? static_cast<unsigned>(arguments.threads)
                                  : std::max(1u, std::thread::hardware_concurrency());
-    std::printf("wrote %s (%d x %d, view %s, %.2f s on %u threads)\n", output.string().c_str(),
-                image.width(), image.height(), arguments.view.c_str(), seconds, threads);
+    std::printf("wrote %s (%d x %d, view %s, %.2f s on %u thread%s)\n", output.string().c_str(),
+                image.width(), image.height(), arguments.view.c_str(), seconds, threads,
+                threads == 1 ? "" : "s");
 
     if (!arguments.trace_data.empty()) {
         write_reference_trace(arguments.trace_data, scene.width, scene.height, view,

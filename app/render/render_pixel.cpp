@@ -92,7 +92,10 @@ void trace_instances(const RenderScene& render_scene, const Ray& ray, TraceLog& 
         }
         text += ": ";
         if (hit) {
-            text += std::string(kind_name(hit->kind)) + " " + std::to_string(hit->index) + " " +
+            // The primitive's own line: an instance may hold many
+            text += std::string(kind_name(hit->kind)) + " " + std::to_string(hit->index) +
+                    " (line " +
+                    std::to_string(attributes_of(render_scene, hit->kind, hit->index).line) + ") " +
                     describe(hit->hit);
         } else {
             text += "miss";

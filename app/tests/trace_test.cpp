@@ -72,10 +72,24 @@ TEST_CASE("trace: an instance names its mesh and line, with the object-frame ray
         View::depth, 1, 1);
     REQUIRE(lines.size() == 4);
     CHECK_THAT(lines[1], Catch::Matchers::StartsWith("mesh instance of 'square' (line 4): "
-                                                     "triangle 0 hit t=5 "));
+                                                     "triangle 0 (line 4) hit t=5 "));
     CHECK_THAT(lines[2],
                Catch::Matchers::StartsWith(
                    "mesh instance of 'square' (line 7), under a transform: object-frame ray "
                    "origin (0.25, 0.25, 3) direction (0, 0, -0.5): triangle "));
     CHECK(lines[3].rfind("closest_hit: triangle 0 at t=5 ", 0) == 0);
+}
+
+TEST_CASE("trace: each primitive under a shared transform is named with its own line", "[app]") {
+    // Two spheres and a triangle under one translate: one instance, three lines.
+    const std::vector<std::string> lines = trace(
+        "size 3 3\ncamera 0 0 5 0 0 0 0 1 0 45\ntranslate 0 0 -1\nsphere 3 0 0 0.5\n"
+        "vertex -9 -9 -5\nvertex 9 -9 -5\nvertex 0 9 -5\ntri 0 1 2\nsphere 0 0 0 1\n",
+        View::depth, 1, 1);
+    REQUIRE(lines.size() == 3);
+    CHECK_THAT(lines[1], Catch::Matchers::StartsWith(
+                             "3 primitives under one transform (the first at line 4), under a "
+                             "transform: object-frame ray origin (0, 0, 6) direction (0, 0, -1): "
+                             "sphere 1 (line 9) hit t=5 "));
+    CHECK(lines[2].rfind("closest_hit: sphere 1 at t=5 ", 0) == 0);
 }

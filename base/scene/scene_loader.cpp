@@ -426,6 +426,15 @@ class SceneParser {
         } catch (const InputError& mesh_error) {
             fail(std::string("in mesh: ") + mesh_error.what());
         }
+        // The scene's own domain holds for the mesh's coordinates too.
+        for (std::size_t v = 0; v < loaded.positions.size(); ++v) {
+            if (largest_magnitude(loaded.positions[v]) > kLargestNumber) {
+                fail("in mesh " + quoted_field(fields_[k]) + ": vertex " + std::to_string(v) + " " +
+                     to_text(loaded.positions[v]) +
+                     " has a coordinate beyond 1e100, the range in which the renderer computes "
+                     "reliably");
+            }
+        }
         return {file, std::move(loaded)};
     }
 
@@ -497,8 +506,32 @@ class SceneParser {
         node.parent = transform_stack_.back();
         node.op = op;
         node.identity = scene_.transforms[node.parent].identity && is_identity(op);
+        ScaleRange range = scale_ranges_[node.parent];
+        if (op.kind == TransformOp::Kind::scale) range = scaled(range, op.vector);
+        scale_ranges_.push_back(range);
         scene_.transforms.push_back(node);
         transform_stack_.back() = static_cast<std::uint32_t>(scene_.transforms.size() - 1);
+    }
+
+    // How much the transform in force can stretch or shrink: between the products of the smallest
+    // and of the largest factor of each scale in the chain (a rotation or translation changes
+    // neither). Each factor alone is in range, but their product can leave it, and then M, M^-1
+    // and the object-frame ray overflow or underflow as a single bad factor would.
+    struct ScaleRange {
+        double smallest = 1.0;
+        double largest = 1.0;
+    };
+
+    ScaleRange scaled(ScaleRange range, const Vec3& factors) const {
+        const Vec3 sizes = glm::abs(factors);
+        range.smallest *= std::min({sizes.x, sizes.y, sizes.z});
+        range.largest *= std::max({sizes.x, sizes.y, sizes.z});
+        if (range.smallest < kSmallestDirection || range.largest > kLargestDirection) {
+            fail("the scales in force multiply to factors between " + to_text(range.smallest) +
+                 " and " + to_text(range.largest) + ", beyond 1e-150 to 1e150, where the inverse " +
+                 "transform and the object-frame ray overflow or underflow");
+        }
+        return range;
     }
 
     void translate() { add_op({TransformOp::Kind::translate, vec3(1, "the offset"), 0.0}); }
@@ -592,7 +625,8 @@ class SceneParser {
     Material material_;
     std::uint32_t material_id_ = kUnregistered;
     Attenuation attenuation_;
-    std::vector<std::uint32_t> transform_stack_{0};  // tree nodes; the root is the identity
+    std::vector<std::uint32_t> transform_stack_{0};       // tree nodes; the root is the identity
+    std::vector<ScaleRange> scale_ranges_{ScaleRange{}};  // per node of scene_.transforms
 
     long max_vertices_ = -1;
     long max_normal_vertices_ = -1;
