@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "app/render/nearest_hit.h"
+
 namespace raystep {
 
 namespace {
@@ -20,16 +22,6 @@ struct Pending {
     std::uint32_t node;
     double enter;
 };
-
-Vec3 inverse_of(const Vec3& direction) {
-    return {1.0 / direction.x, 1.0 / direction.y, 1.0 / direction.z};
-}
-
-Ray cut_at(const Ray& ray, const std::optional<PrimitiveHit>& best) {
-    Ray cut = ray;
-    if (best) cut.t_max = best->hit.t;
-    return cut;
-}
 
 }  // namespace
 
@@ -84,7 +76,7 @@ std::optional<PrimitiveHit> InstanceBvh::closest_hit(
     const Ray& ray, TraversalStats* stats) const {
     std::optional<PrimitiveHit> best;
     if (nodes_.empty()) return best;
-    const Vec3 inverse = inverse_of(ray.direction);
+    const Vec3 inverse = 1.0 / ray.direction;
     const std::optional<Interval> root = intersect_aabb(ray, inverse, nodes_[0].box);
     if (!root) return best;
     std::array<Pending, kStackSize> stack;
@@ -98,9 +90,8 @@ std::optional<PrimitiveHit> InstanceBvh::closest_hit(
         if (node.count > 0) {
             for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
                 const Instance& instance = instances[order_[k]];
-                const std::optional<PrimitiveHit> hit = instance_closest_hit(
-                    instance, geometries[instance.geometry], cut_at(ray, best), stats);
-                if (hit && (!best || comes_before(*hit, *best))) best = hit;
+                keep_nearer(best, instance_closest_hit(instance, geometries[instance.geometry],
+                                                       cut_at(ray, best), stats));
             }
             continue;
         }
@@ -127,7 +118,7 @@ std::optional<PrimitiveHit> InstanceBvh::closest_hit(
 bool InstanceBvh::occluded(const std::vector<Instance>& instances,
                            const std::vector<InstanceGeometry>& geometries, const Ray& ray) const {
     if (nodes_.empty()) return false;
-    const Vec3 inverse = inverse_of(ray.direction);
+    const Vec3 inverse = 1.0 / ray.direction;
     std::array<std::uint32_t, kStackSize> stack;
     std::size_t size = 0;
     stack[size++] = 0;

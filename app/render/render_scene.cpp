@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "app/render/nearest_hit.h"
 #include "app/render/render_plan.h"
 #include "base/scene/scene_features.h"
 
@@ -23,34 +24,10 @@ class InstanceGatherer {
 
     void gather() {
         PrimitiveList& world = render_.primitives;
-        for (std::size_t k = 0; k < scene_.spheres.size(); ++k) {
-            const SceneSphere& s = scene_.spheres[k];
-            if (s.attributes.transform == 0) {
-                render_.sphere_instance.push_back(kNoInstance);
-                render_.sphere_index.push_back(k);
-                world.spheres.push_back(s.shape);
-                continue;
-            }
-            const std::uint32_t instance = group_of(s.attributes.transform);
-            render_.sphere_instance.push_back(instance);
-            InstanceGeometry& geometry = geometry_of(instance);
-            geometry.primitives.spheres.push_back(s.shape);
-            geometry.sphere_ids.push_back(k);
-        }
-        for (std::size_t k = 0; k < scene_.triangles.size(); ++k) {
-            const SceneTriangle& t = scene_.triangles[k];
-            if (t.attributes.transform == 0) {
-                render_.triangle_instance.push_back(kNoInstance);
-                render_.triangle_index.push_back(k);
-                world.triangles.push_back(t.shape);
-                continue;
-            }
-            const std::uint32_t instance = group_of(t.attributes.transform);
-            render_.triangle_instance.push_back(instance);
-            InstanceGeometry& geometry = geometry_of(instance);
-            geometry.primitives.triangles.push_back(t.shape);
-            geometry.triangle_ids.push_back(k);
-        }
+        gather_kind(scene_.spheres, &PrimitiveList::spheres, &InstanceGeometry::sphere_ids,
+                    render_.sphere_instance, render_.sphere_index);
+        gather_kind(scene_.triangles, &PrimitiveList::triangles, &InstanceGeometry::triangle_ids,
+                    render_.triangle_instance, render_.triangle_index);
         gather_mesh_instances();
         for (InstanceGeometry& geometry : render_.instance_geometries)
             finish_geometry(geometry);
@@ -69,6 +46,30 @@ class InstanceGatherer {
     }
 
   private:
+    // The objects of one kind, in Scene order: each without a transform to the world's list (and
+    // its number to `world_index`), each under one to the instance of its transform (and its
+    // number to that geometry's `ids`); `instance_of` gets each one's instance, or kNoInstance.
+    template <class Object, class Shape>
+    void gather_kind(const std::vector<Object>& objects, std::vector<Shape> PrimitiveList::*shapes,
+                     std::vector<std::size_t> InstanceGeometry::*ids,
+                     std::vector<std::uint32_t>& instance_of,
+                     std::vector<std::size_t>& world_index) {
+        for (std::size_t k = 0; k < objects.size(); ++k) {
+            const Object& object = objects[k];
+            if (object.attributes.transform == 0) {
+                instance_of.push_back(kNoInstance);
+                world_index.push_back(k);
+                (render_.primitives.*shapes).push_back(object.shape);
+                continue;
+            }
+            const std::uint32_t instance = group_of(object.attributes.transform);
+            instance_of.push_back(instance);
+            InstanceGeometry& geometry = geometry_of(instance);
+            (geometry.primitives.*shapes).push_back(object.shape);
+            (geometry.*ids).push_back(k);
+        }
+    }
+
     // The transform of a node, composed by stage 5 the first time an object under it is met.
     const Transform& transform_of(std::uint32_t node) {
         auto found = transforms_.find(node);
@@ -126,18 +127,6 @@ class InstanceGatherer {
     std::unordered_map<std::uint32_t, Transform> transforms_;
     std::unordered_map<std::uint32_t, std::uint32_t> groups_;
 };
-
-// `candidate` replaces `best` when closest_hit would have picked it.
-void keep_nearer(std::optional<PrimitiveHit>& best, const std::optional<PrimitiveHit>& candidate) {
-    if (candidate && (!best || comes_before(*candidate, *best))) best = candidate;
-}
-
-// The ray cut at the best hit so far: nothing beyond it can win.
-Ray cut_at(const Ray& ray, const std::optional<PrimitiveHit>& best) {
-    Ray cut = ray;
-    if (best) cut.t_max = best->hit.t;
-    return cut;
-}
 
 // Each instance in turn, below kBvhFromPrimitives instances.
 std::optional<PrimitiveHit> instances_closest_hit(const RenderScene& render_scene, const Ray& ray,
