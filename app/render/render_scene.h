@@ -61,8 +61,9 @@ struct RenderScene {
 /// errors and stubs propagate.
 SceneCamera make_scene_camera(const Scene& scene);
 
-/// Builds the camera with stage 2 (whose errors and stubs propagate) and gathers the
-/// primitives, moved into the world by stage 5 where a transform places them.
+/// Builds the camera with stage 2 (whose errors and stubs propagate), gathers the primitives into
+/// the world's list and the instances (composing their transforms with stage 5), and builds the
+/// BVHs with stage 4, where there are enough primitives or instances to gain from one.
 RenderScene prepare_render_scene(const Scene& scene);
 
 /// The nearest hit of the ray in the scene, as stage 3's closest_hit over every primitive, each in

@@ -14,8 +14,9 @@ namespace raystep {
 /// acne comes from. Instead the point is rebuilt from the primitive, so that its distance to the
 /// surface is a few ulps of the primitive's own coordinates (pbrt-v4, "Managing Rounding Error"):
 /// on a triangle the barycentric combination of its vertices, on a sphere the hit pushed back
-/// onto the sphere along its radius, on a plane the hit projected onto it, on an ellipsoid the
-/// sphere's point in its own frame taken to the world by M. `error` bounds that distance, widened
+/// onto the sphere along its radius, on a plane the hit projected onto it; for a sphere or
+/// triangle of an instance, that point in the instance's own frame taken to the world by M.
+/// `error` bounds that distance, widened
 /// to cover the rounding of intersection tests near the point (surface_point.cpp says why).
 SurfacePoint surface_point(const RenderScene& render_scene, const Ray& ray,
                            const PrimitiveHit& hit);
