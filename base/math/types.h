@@ -11,6 +11,8 @@ namespace raystep {
 // wrong answer is a wrong formula, not rounding. Float variants live in solutions/ where a
 // speed-versus-error study needs them.
 
+/// A point in the plane: a sample in [0, 1)^2, a position on the film in pixels.
+using Vec2 = glm::dvec2;
 /// A point, a direction or a normal in 3D.
 using Vec3 = glm::dvec3;
 /// Homogeneous coordinates, for transforms.

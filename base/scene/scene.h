@@ -16,17 +16,21 @@ namespace raystep {
 // scene needs from it. docs/scene-format.md gives the commands.
 
 /// Surface properties of the CSE167 local model, I = A + E + sum of lights (D, S, shininess),
-/// with S also the mirror reflectance.
+/// with S also the mirror reflectance; a material with a transmission colour is the surface of a
+/// dielectric solid of index `index` (stage 9).
 struct Material {
     Color ambient{0.2, 0.2, 0.2};
     Color diffuse{0.0, 0.0, 0.0};
     Color specular{0.0, 0.0, 0.0};
     Color emission{0.0, 0.0, 0.0};
     double shininess = 0.0;
+    Color transmission{0.0, 0.0, 0.0};  ///< `transmission`: Kt, black for an opaque surface
+    double index = 1.0;                 ///< `ior`: index of refraction of the solid inside
 
     bool operator==(const Material& other) const {
         return ambient == other.ambient && diffuse == other.diffuse && specular == other.specular &&
-               emission == other.emission && shininess == other.shininess;
+               emission == other.emission && shininess == other.shininess &&
+               transmission == other.transmission && index == other.index;
     }
 };
 
@@ -131,6 +135,37 @@ struct DirectionalLight {
     std::uint32_t line = 0;
 };
 
+/// `spot x y z dx dy dz cutoff exponent r g b`: a point light shining along (dx, dy, dz), with
+/// the attenuation in force, whose colour is scaled by cos(angle)^exponent within `cutoff`
+/// degrees of its axis and is zero beyond.
+struct SpotLight {
+    Vec3 position;
+    Vec3 direction;
+    double cutoff_degrees = 0;
+    double exponent = 0;
+    Color color;
+    Attenuation attenuation;
+    std::uint32_t line = 0;
+};
+
+/// `quadLight ax ay az abx aby abz acx acy acz r g b` (the CSE168 command): the parallelogram
+/// a + s ab + t ac, s and t in [0, 1], emitting radiance `radiance` from its side that
+/// ac x ab points to. In world coordinates; it lights the scene but is not itself seen.
+struct QuadLight {
+    Vec3 corner;  ///< a
+    Vec3 edge1;   ///< ab
+    Vec3 edge2;   ///< ac
+    Color radiance;
+    std::uint32_t line = 0;
+};
+
+/// How the samples of a pixel are placed (`pixelsampling`, `raystep render --pixel-sampling`).
+enum class SamplePattern {
+    jittered,  ///< one random point in each of n x n strata (spp = n^2)
+    regular,   ///< the centres of the n x n strata: supersampling, no noise, still aliased
+    random,    ///< spp points uniform over the pixel
+};
+
 /// The view window of `ortho l r b t`, in the camera's (u, v) plane.
 struct OrthoWindow {
     double left;
@@ -172,6 +207,16 @@ struct Scene {
 
     std::vector<PointLight> point_lights;
     std::vector<DirectionalLight> directional_lights;
+    std::vector<SpotLight> spot_lights;
+    std::vector<QuadLight> quad_lights;
+
+    Color background{0.0, 0.0, 0.0};  ///< `background`: what a ray that leaves the scene sees
+    int samples_per_pixel = 1;        ///< `spp`
+    SamplePattern pixel_sampling = SamplePattern::jittered;  ///< `pixelsampling`
+    int light_samples = 1;                                   ///< `lightsamples`, per quad light
+    bool light_stratify = false;                             ///< `lightstratify on`
+    std::uint64_t seed = 0;                                  ///< `seed`: the render's random seed
+    bool schlick_fresnel = false;  ///< `fresnel schlick`; exact by default
 };
 
 /// Every triangle of the scene in one numbering, the one hits use: Scene::triangles first, then

@@ -28,12 +28,20 @@ struct SceneFeatures {
     std::size_t largest_instance = 0;
     std::size_t point_lights = 0;
     std::size_t directional_lights = 0;
-    std::size_t reflective_objects = 0;  ///< specular > 0 with maxdepth > 0: mirrors
+    std::size_t spot_lights = 0;
+    std::size_t quad_lights = 0;           ///< area lights: soft shadows, stage 8
+    int samples_per_pixel = 1;             ///< `spp`; above 1, antialiasing by stage 8
+    std::size_t reflective_objects = 0;    ///< specular > 0 with maxdepth > 0: mirrors
+    std::size_t transmissive_objects = 0;  ///< transmission > 0 with maxdepth > 0: stage 9
 
     std::size_t primitives() const { return spheres + triangles + planes; }
     bool uses_transforms() const { return transformed_objects > 0; }
-    bool uses_lights() const { return point_lights + directional_lights > 0; }
+    bool uses_lights() const {
+        return point_lights + directional_lights + spot_lights + quad_lights > 0;
+    }
     bool uses_reflection() const { return reflective_objects > 0; }
+    bool uses_sampling() const { return samples_per_pixel > 1 || quad_lights > 0; }
+    bool uses_refraction() const { return transmissive_objects > 0; }
 };
 
 SceneFeatures scene_features(const Scene& scene);
