@@ -27,6 +27,16 @@ int side_of_square(int count, const char* pattern) {
     return n;
 }
 
+// (a + u) / n for u in [0, 1), kept below the stratum's upper edge (a + 1) / n: u < 1, but the
+// sum a + u rounds to a + 1 when u is within half an ulp of a + 1 below 1 (a = 1,
+// u = 1 - 2^-53 gives 2 exactly), which would put the point in the next stratum, or at 1,
+// outside the square.
+double in_stratum(int a, double u, int n) {
+    const double upper = static_cast<double>(a + 1) / n;
+    const double x = (a + u) / n;
+    return x < upper ? x : std::nextafter(upper, 0.0);
+}
+
 }  // namespace
 
 std::vector<Vec2> jittered_samples(int strata_per_side, RandomStream& random) {
@@ -36,11 +46,8 @@ std::vector<Vec2> jittered_samples(int strata_per_side, RandomStream& random) {
     points.reserve(static_cast<std::size_t>(n) * n);
     for (int b = 0; b < n; ++b) {
         for (int a = 0; a < n; ++a) {
-            // (a + u) / n < 1 for u < 1 when a <= n - 1: the sum a + u rounds to at most
-            // a + 1 - 2^-53 (a + 1), which divided by n stays below (a + 1) / n, so no point
-            // leaves its stratum, nor the square.
             const Vec2 u = random.next2();
-            points.push_back({(a + u.x) / n, (b + u.y) / n});
+            points.push_back({in_stratum(a, u.x, n), in_stratum(b, u.y, n)});
         }
     }
     return points;
