@@ -25,6 +25,10 @@ namespace {
 
 constexpr std::uint64_t kSeed = 2026;
 
+// RandomStream(0, this)'s first number is 1 - 2^-53, the largest next() gives: found by running
+// SplitMix64's finalizer backwards (each of its steps is invertible) from the bits 2^53 - 1.
+constexpr std::uint64_t kStreamStartingBelowOne = 0xad3729fa17bb46b2;
+
 std::string text(const Vec2& p) {
     char buffer[64];
     std::snprintf(buffer, sizeof buffer, "(%.17g, %.17g)", p.x, p.y);
@@ -81,6 +85,29 @@ TEST_CASE("jittered_samples: n x n points, exactly one in each stratum, all insi
                 CHECK(per_stratum[static_cast<std::size_t>(s)] == 1);
             }
         }
+    }
+}
+
+TEST_CASE("jittered_samples: a u of 1 - 2^-53, the largest a stream gives, stays in its stratum",
+          "[stage8]") {
+    INFO(
+        "The first number of this stream is 1 - 2^-53. In doubles a + u rounds up to a + 1 (1 + "
+        "(1 - 2^-53) is a tie, and ties go to the even 2), so (a + u) / n lands on the next "
+        "stratum's edge, or on 1, outside the square. Whichever stratum and coordinate it goes "
+        "to, with n = 2 or 3, the point must stay below its stratum's far edge.");
+    for (int n : {2, 3}) {
+        CAPTURE(n);
+        RandomStream random(0, kStreamStartingBelowOne);
+        const std::vector<Vec2> points = jittered_samples(n, random);
+        REQUIRE(RandomStream(0, kStreamStartingBelowOne).next() == 1.0 - 0x1p-53);
+        REQUIRE(points.size() == static_cast<std::size_t>(n * n));
+        std::vector<int> per_stratum(static_cast<std::size_t>(n * n), 0);
+        for (const Vec2& p : points) {
+            INFO("point " << text(p));
+            CHECK(in_unit_square(p));
+            ++per_stratum[static_cast<std::size_t>(stratum_of(p.y, n) * n + stratum_of(p.x, n))];
+        }
+        CHECK(per_stratum == std::vector<int>(static_cast<std::size_t>(n * n), 1));
     }
 }
 
