@@ -65,7 +65,7 @@ bool in_unit_square(const Vec2& p) {
 
 }  // namespace
 
-TEST_CASE("jittered_samples: n x n points, exactly one in each stratum, all inside [0, 1)^2",
+TEST_CASE("jittered_samples: n x n points, exactly one in each stratum, all in the unit square",
           "[stage8]") {
     for (int n : {1, 2, 3, 4, 7}) {
         for (std::uint64_t stream = 0; stream < 50; ++stream) {
@@ -174,7 +174,8 @@ TEST_CASE("regular_samples: the centres of the n x n strata, exactly", "[stage8]
     CHECK_THROWS_AS(regular_samples(0), std::domain_error);
 }
 
-TEST_CASE("random_samples: count points, uniform over [0, 1)^2 (chi-square, 64 bins)", "[stage8]") {
+TEST_CASE("random_samples: count points, uniform over the unit square (chi-square, 64 bins)",
+          "[stage8]") {
     INFO(
         "1000 streams of 64 points, binned into 8 x 8 cells of the square: about 1000 in each. "
         "Points all in one corner, or x = y, fail.");
