@@ -101,8 +101,8 @@ check_command() {
 }
 check_command "scripts/test.sh 1 runs stage 1's public tests, every one failing at a stub" 8 \
     "0% tests passed, [0-9]+ tests failed out of [0-9]+" "$release/scripts/test.sh" 1
-check_command "scripts/test.sh of a stage that does not exist exits 2" 2 "no stage '9'" \
-    "$release/scripts/test.sh" 9
+check_command "scripts/test.sh of a stage that does not exist exits 2" 2 "no stage '10'" \
+    "$release/scripts/test.sh" 10
 check_command "raystep render names the stub" 1 "^raystep: $stub_message" \
     "$bin/raystep" render "$scene" --view normal -o "$release/normal.png"
 check_command "raystep trace stops at the stub" 1 "^stopped: $stub_message" \

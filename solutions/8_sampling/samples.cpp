@@ -27,14 +27,13 @@ int side_of_square(int count, const char* pattern) {
     return n;
 }
 
-// (a + u) / n for u in [0, 1), kept below the stratum's upper edge (a + 1) / n: u < 1, but the
-// sum a + u rounds to a + 1 when u is within half an ulp of a + 1 below 1 (a = 1,
-// u = 1 - 2^-53 gives 2 exactly), which would put the point in the next stratum, or at 1,
-// outside the square.
-double in_stratum(int a, double u, int n) {
-    const double upper = static_cast<double>(a + 1) / n;
-    const double x = (a + u) / n;
-    return x < upper ? x : std::nextafter(upper, 0.0);
+// A coordinate of stratum [a/n, (a+1)/n), given the far edge (a+1)/n: (a + u) / n is below it in
+// exact arithmetic, but not always in doubles. With u within a few ulps of 1, a + u rounds up to
+// a + 1 (1 + (1 - 2^-53) is a tie, and ties go to the even 2), and the division can round up onto
+// the edge: the point lands in the next stratum, or on 1 outside the square. Such a point moves
+// to the last double below the edge.
+double inside_stratum(double coordinate, double far_edge) {
+    return coordinate < far_edge ? coordinate : std::nextafter(far_edge, 0.0);
 }
 
 }  // namespace
@@ -47,7 +46,8 @@ std::vector<Vec2> jittered_samples(int strata_per_side, RandomStream& random) {
     for (int b = 0; b < n; ++b) {
         for (int a = 0; a < n; ++a) {
             const Vec2 u = random.next2();
-            points.push_back({in_stratum(a, u.x, n), in_stratum(b, u.y, n)});
+            points.push_back({inside_stratum((a + u.x) / n, (a + 1.0) / n),
+                              inside_stratum((b + u.y) / n, (b + 1.0) / n)});
         }
     }
     return points;

@@ -10,6 +10,8 @@ namespace raystep {
 std::vector<Vec2> jittered_samples(int strata_per_side, RandomStream& random) {
     // For each stratum (a, b) of the n x n grid, one point ((a + u.x) / n, (b + u.y) / n) with
     // u = random.next2(): every stratum gets exactly one sample, placed at random inside it.
+    // Keep it below the stratum's far edge (a + 1) / n: in doubles, a u within an ulp of 1 makes
+    // a + u round up to a + 1.
     RAYSTEP_TODO(8, "jittered_samples", "Jittered samples");
 }
 

@@ -15,7 +15,12 @@ std::optional<Ray> refracted_ray(const SurfacePoint& point, double n1, double n2
 
 Color radiance_with_refraction(const MediumShadeFunction& shade, const Ray& ray, int bounces_left,
                                const MediumStack& inside, bool schlick, const RayOffset& offset) {
-    // I = local + (Ks + Kt F) I(reflected) + Kt (1 - F) I(refracted), as the header says.
+    // hit = shade(ray): black on a miss, local alone when no bounce is left. Where Kt is not
+    // black: beyond = after_crossing(inside, solid, entering), n1 and n2 the indices of inside
+    // and beyond, F (Schlick's or exact) of cos1 = V . N, and the refracted ray; when there is
+    // none (total internal reflection), F = 1. Then
+    //   I = local + (Ks + Kt F) I(reflected ray, in inside) + Kt (1 - F) I(refracted, in beyond),
+    // each with bounces_left - 1, and no ray traced where its weight is exactly black.
     RAYSTEP_TODO(9, "radiance_with_refraction", "Radiance through glass");
 }
 
