@@ -187,8 +187,14 @@ Color camera_ray_colour(const RenderScene& render_scene, View view, const Ray& r
             if (!closest) return render_scene.scene->background;
             return shade_hit(render_scene, ray, *closest, light_random, trace, record).local;
         case View::full: {
-            const Color colour =
-                full_colour(render_scene, ray, closest, light_random, trace, record);
+            // Without bounces there is nothing to follow: the local colour, with no recursion
+            // to set up (most scenes of stages 2 to 6 take this way on every pixel).
+            Color colour = render_scene.scene->background;
+            if (render_scene.bounces > 0) {
+                colour = full_colour(render_scene, ray, closest, light_random, trace, record);
+            } else if (closest) {
+                colour = shade_hit(render_scene, ray, *closest, light_random, trace, record).local;
+            }
             if (record) record->full = colour;
             return colour;
         }
