@@ -59,8 +59,8 @@ using MediumStack = std::vector<Medium>;
 double current_index(const MediumStack& inside);
 
 /// The stack after the ray crosses the surface of `solid`: entering adds it at the end; leaving
-/// removes it from wherever it is (overlapping solids are left in any order), and leaving a
-/// solid the stack does not hold (a ray that started inside it) changes nothing.
+/// removes its latest entry from wherever it is (overlapping solids are left in any order), and
+/// leaving a solid the stack does not hold (a ray that started inside it) changes nothing.
 MediumStack after_crossing(const MediumStack& inside, const Medium& solid, bool entering);
 
 /// The refracted ray at a hit: refract(-V, N, n1 / n2) with N the shading normal, leaving the
@@ -85,7 +85,8 @@ using MediumShadeFunction = std::function<std::optional<MediumHit>(const Ray&)>;
 /// I(ray) as above: black on a miss; at a hit, local plus, while bounces remain, the reflected
 /// ray (stage 7's reflected_ray) weighted Ks + Kt F and the refracted ray weighted Kt (1 - F),
 /// in the media after the crossing. F is fresnel_schlick when `schlick`, else fresnel_exact,
-/// with n1 the index the ray travels in and n2 the index beyond the surface. Reflected rays stay
+/// with n1 the index the ray travels in, n2 the index beyond the surface and cos(theta1) = V . N
+/// with N the shading normal, the normal refracted_ray bends about. Reflected rays stay
 /// in `inside`. A weight that is exactly black traces no ray.
 Color radiance_with_refraction(const MediumShadeFunction& shade, const Ray& ray, int bounces_left,
                                const MediumStack& inside, bool schlick, const RayOffset& offset);
