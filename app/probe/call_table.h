@@ -26,6 +26,9 @@ void add_shading_calls(CallTable& table);    ///< stage 6
 void add_recursion_calls(CallTable& table);  ///< stage 7
 void add_render_calls(CallTable& table);     ///< whole images, through every stage a view needs
 
+/// Stage 9: Snell's law, Fresnel, the media, the refracted ray, radiance through glass.
+void add_refraction_calls(CallTable& table);
+
 /// The BVH split a stage-4 query names, "sah" or "median"; throws std::invalid_argument for
 /// anything else.
 BvhSplit bvh_split_from(const Json& j);

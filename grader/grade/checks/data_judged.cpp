@@ -37,6 +37,8 @@ std::vector<PublicCheck> public_checks(const std::filesystem::path& source) {
         stage6_public_check(), stage6_sample_check(),      stage7_public_check(),
         stage7_sample_check(),
     };
+    checks.push_back(stage9_public_check());
+    checks.push_back(stage9_sample_check());
     for (PublicCheck& check : render_public_checks(source))
         checks.push_back(std::move(check));
     return checks;

@@ -19,6 +19,7 @@ std::vector<CheckDefinition> stage4_checks();
 std::vector<CheckDefinition> stage5_checks();
 std::vector<CheckDefinition> stage6_checks();
 std::vector<CheckDefinition> stage7_checks();
+std::vector<CheckDefinition> stage9_checks();
 std::vector<CheckDefinition> render_checks();
 
 /// The public checks of each stage as data (grader/grade/checks/data_judged.h): what the stage's
@@ -31,6 +32,7 @@ PublicCheck stage4_grid_resolution_public_check();
 PublicCheck stage5_public_check();
 PublicCheck stage6_public_check();
 PublicCheck stage7_public_check();
+PublicCheck stage9_public_check();
 
 /// A sample of each stage's generated cases for the student release (kSampleKind,
 /// app/grade/public_case.h): a few of each kind the "stageN.oracle" check draws, decided by the
@@ -43,6 +45,7 @@ PublicCheck stage4_sample_check();
 PublicCheck stage5_sample_check();
 PublicCheck stage6_sample_check();
 PublicCheck stage7_sample_check();
+PublicCheck stage9_sample_check();
 
 /// The render checks as data, each with the reference's render at the grader's size, made from
 /// the scenes under `source`/scenes: the grader judges a render by the same rule
