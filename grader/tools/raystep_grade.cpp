@@ -185,7 +185,7 @@ int main(int argc, char** argv) {
     submission->add_option("--check", one.check, "Run only this check, by id");
     submission
         ->add_option("--stage", one.stage, "Run only this stage's checks (0: the whole pipeline's)")
-        ->check(CLI::Range(0, 7));
+        ->check(CLI::Range(0, 9));
     submission->add_flag("--no-speed", one.no_speed,
                          "Leave out the speed checks (on a loaded machine, or to regrade quickly)");
     submission->add_option("--case", one.case_index, "With --check: only this case")
