@@ -4,11 +4,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
+#include <string>
 #include <thread>
 #include <vector>
 
 #include "app/compare/reference_trace.h"
 #include "app/render/pixel_record.h"
+#include "app/render/render_pixel.h"
 #include "app/render/render_scene.h"
 #include "app/render/terminal.h"
 #include "app/render/tile_renderer.h"
@@ -32,6 +34,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArguments& arguments) {
                      "What to show: the stage whose output you want to see")
         ->check(CLI::IsMember(view_names()));
     add_ray_offset_options(*command, arguments.ray_offset);
+    add_sampling_options(*command, arguments.sampling);
     command->add_option("--trace-data", arguments.trace_data,
                         "Also write every pixel's steps (camera ray, hit, lights, colours) to this "
                         "file, the reference trace `trace --compare` reads: a student release "
@@ -48,6 +51,7 @@ int run_render(const RenderArguments& arguments) {
     }
     Scene scene = load_scene(arguments.scene);
     apply_ray_offset(arguments.ray_offset, scene);
+    apply_sampling(arguments.sampling, scene);
     const View view = *parse_view(arguments.view);
 
     std::filesystem::path output = arguments.output;
@@ -75,9 +79,12 @@ int run_render(const RenderArguments& arguments) {
     const unsigned threads = arguments.threads > 0
                                  ? static_cast<unsigned>(arguments.threads)
                                  : std::max(1u, std::thread::hardware_concurrency());
-    std::printf("wrote %s (%d x %d, view %s, %.2f s on %u thread%s)\n", output.string().c_str(),
-                image.width(), image.height(), arguments.view.c_str(), seconds, threads,
-                threads == 1 ? "" : "s");
+    const std::string samples = averages_samples(view) && scene.samples_per_pixel > 1
+                                    ? ", " + std::to_string(scene.samples_per_pixel) + " spp"
+                                    : "";
+    std::printf("wrote %s (%d x %d, view %s%s, %.2f s on %u thread%s)\n", output.string().c_str(),
+                image.width(), image.height(), arguments.view.c_str(), samples.c_str(), seconds,
+                threads, threads == 1 ? "" : "s");
 
     if (!arguments.trace_data.empty()) {
         write_reference_trace(arguments.trace_data, scene.width, scene.height, view,

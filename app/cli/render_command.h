@@ -5,11 +5,12 @@
 #include <CLI/CLI.hpp>
 
 #include "app/cli/ray_offset_option.h"
+#include "app/cli/sampling_options.h"
 
 namespace raystep {
 
 /// `raystep render SCENE [-o FILE] [--threads N] [--view VIEW] [--ray-offset RULE [--epsilon E]]
-/// [--trace-data FILE]`
+/// [--spp N] [--pixel-sampling PATTERN] [--seed S] [--trace-data FILE]`
 struct RenderArguments {
     std::string scene;
     std::string output;
@@ -17,6 +18,7 @@ struct RenderArguments {
     int threads = 0;
     std::string view = "full";
     RayOffsetArguments ray_offset;
+    SamplingArguments sampling;
 };
 
 CLI::App* add_render_command(CLI::App& app, RenderArguments& arguments);

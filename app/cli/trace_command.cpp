@@ -28,6 +28,7 @@ struct TraceResult {
 TraceResult trace_pixel(const TraceArguments& arguments) {
     Scene scene = load_scene(arguments.scene);
     apply_ray_offset(arguments.ray_offset, scene);
+    apply_sampling(arguments.sampling, scene);
     if (arguments.x < 0 || arguments.x >= scene.width || arguments.y < 0 ||
         arguments.y >= scene.height) {
         throw std::invalid_argument("pixel (" + std::to_string(arguments.x) + ", " +
@@ -196,11 +197,21 @@ CLI::App* add_trace_command(CLI::App& app, TraceArguments& arguments) {
                       "beside the scene as reference/<scene>.trace.exr, and name the first that "
                       "differs");
     add_ray_offset_options(*command, arguments.ray_offset);
+    add_sampling_options(*command, arguments.sampling);
     return command;
 }
 
 int run_trace(const TraceArguments& arguments) {
-    if (arguments.compare) return compare_with_reference(arguments);
+    if (arguments.compare) {
+        // The reference trace holds the scene's own samples.
+        if (arguments.sampling.samples_per_pixel > 0 ||
+            !arguments.sampling.pixel_sampling.empty() || arguments.sampling.seed) {
+            throw std::invalid_argument(
+                "--compare holds the pixel against the scene's own samples: leave out --spp, "
+                "--pixel-sampling and --seed");
+        }
+        return compare_with_reference(arguments);
+    }
     const TraceResult ours = trace_pixel(arguments);
     for (const std::string& line : ours.lines)
         std::printf("%s\n", line.c_str());

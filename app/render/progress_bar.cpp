@@ -10,8 +10,10 @@ constexpr int kBarWidth = 30;
 
 }  // namespace
 
-ProgressBar::ProgressBar(std::string label, std::size_t total, bool enabled, std::FILE* out)
+ProgressBar::ProgressBar(std::string label, std::size_t total, bool enabled, std::FILE* out,
+                         std::string unit)
     : label_(std::move(label)),
+      unit_(std::move(unit)),
       total_(std::max<std::size_t>(total, 1)),
       enabled_(enabled),
       out_(out),
@@ -27,6 +29,9 @@ void ProgressBar::update(std::size_t done) {
     bar.append(static_cast<std::size_t>(kBarWidth - filled), '-');
     std::fprintf(out_, "\r%s [%s] %3d%%  %.1f s", label_.c_str(), bar.c_str(),
                  static_cast<int>(fraction * 100.0), seconds);
+    if (!unit_.empty()) {
+        std::fprintf(out_, "  %zu of %zu %s", std::min(done, total_), total_, unit_.c_str());
+    }
     std::fflush(out_);
 }
 

@@ -7,8 +7,11 @@
 #include <string>
 
 #include "app/render/heat_map.h"
+#include "app/render/ray_colour.h"
+#include "app/render/sample_streams.h"
 #include "app/render/shade_hit.h"
 #include "base/math/to_text.h"
+#include "stages/8_sampling/sampling.h"
 
 namespace raystep {
 
@@ -125,41 +128,18 @@ Color direction_color(const Vec3& direction) {
     return 0.5 * (direction + Vec3(1.0));
 }
 
-// The finished image: stage 6's colour, and where something reflects, stage 7's recursion over
-// it. The eye ray's hit is already known; every later ray is found and shaded here.
-// The record gets the eye ray's shading only: the steps a trace compares.
-Color full_colour(const RenderScene& render_scene, const Ray& eye_ray,
-                  const std::optional<PrimitiveHit>& eye_hit, TraceLog* trace,
-                  PixelRecord* record) {
-    if (render_scene.bounces == 0) {
-        return eye_hit ? shade_hit(render_scene, eye_ray, *eye_hit, trace, record).local
-                       : Color(0.0);
-    }
-    int rays = 0;
-    const ShadeFunction shade = [&](const Ray& ray) -> std::optional<ShadedHit> {
-        const std::optional<PrimitiveHit> hit =
-            rays++ == 0 ? eye_hit : scene_closest_hit(render_scene, ray, nullptr);
-        if (trace && rays > 1) {
-            trace->add("reflected ray " + std::to_string(rays - 1) + ": origin " +
-                       to_text(ray.origin) + " direction " + to_text(ray.direction) +
-                       (hit ? " hits " + std::string(kind_name(hit->kind)) + " " +
-                                  std::to_string(hit->index) + " at t=" + to_text(hit->hit.t)
-                            : std::string(" leaves the scene")));
-        }
-        if (!hit) return std::nullopt;
-        return shade_hit(render_scene, ray, *hit, trace, rays == 1 ? record : nullptr);
-    };
-    const Color colour = radiance(shade, eye_ray, render_scene.bounces, render_scene.ray_offset);
-    if (trace) trace->add("colour " + to_text(colour));
-    return colour;
-}
-
 }  // namespace
 
-Color render_pixel(const RenderScene& render_scene, View view, int i, int j, TraceLog* trace,
-                   PixelRecord* record) {
-    // Stage 2: the camera ray
-    const Ray ray = camera_ray(render_scene, i, j);
+bool averages_samples(View view) {
+    return view == View::shaded || view == View::full;
+}
+
+namespace {
+
+// Everything after the camera ray, for one ray: its closest hit and what the view makes of it.
+// Quad lights draw from `light_random`.
+Color camera_ray_colour(const RenderScene& render_scene, View view, const Ray& ray,
+                        RandomStream* light_random, TraceLog* trace, PixelRecord* record) {
     if (record) record->camera_ray = ray;
     if (trace) {
         trace->add("camera ray: origin " + to_text(ray.origin) + " direction " +
@@ -204,10 +184,11 @@ Color render_pixel(const RenderScene& render_scene, View view, int i, int j, Tra
             return {1.0 - closest->hit.beta - closest->hit.gamma, closest->hit.beta,
                     closest->hit.gamma};
         case View::shaded:
-            if (!closest) return Color(0.0);
-            return shade_hit(render_scene, ray, *closest, trace, record).local;
+            if (!closest) return render_scene.scene->background;
+            return shade_hit(render_scene, ray, *closest, light_random, trace, record).local;
         case View::full: {
-            const Color colour = full_colour(render_scene, ray, closest, trace, record);
+            const Color colour =
+                full_colour(render_scene, ray, closest, light_random, trace, record);
             if (record) record->full = colour;
             return colour;
         }
@@ -215,6 +196,57 @@ Color render_pixel(const RenderScene& render_scene, View view, int i, int j, Tra
             break;
     }
     return Color(0.0);
+}
+
+// Stage 8's antialiasing: the mean over the pixel's samples, each a camera ray through its own
+// film point with its own stream of light samples (sample_streams.h). A trace shows every step
+// of the first sample, then each sample's film point and colour, then the mean.
+Color sampled_pixel(const RenderScene& render_scene, View view, int i, int j, TraceLog* trace,
+                    PixelRecord* record) {
+    const Scene& scene = *render_scene.scene;
+    RandomStream film = film_random(scene, i, j);
+    int sample = 0;
+    const FilmRadiance radiance = [&](const Vec2& film_point) {
+        const bool first = sample == 0;
+        if (trace) {
+            trace->add("camera sample " + std::to_string(sample) + " through film point (" +
+                       to_text(film_point.x) + ", " + to_text(film_point.y) + ")" +
+                       (first ? ", every step:" : ""));
+        }
+        RandomStream lights = light_random(scene, i, j, sample);
+        const Color colour =
+            camera_ray_colour(render_scene, view, camera_ray_through(render_scene, film_point),
+                              &lights, first ? trace : nullptr, first ? record : nullptr);
+        if (trace && !first) trace->add("  colour " + to_text(colour));
+        ++sample;
+        return colour;
+    };
+    const Color colour =
+        pixel_colour(radiance, i, j, scene.pixel_sampling, scene.samples_per_pixel, film);
+    if (trace) {
+        trace->add("pixel colour: the mean of " + std::to_string(scene.samples_per_pixel) +
+                   " samples, " + to_text(colour));
+    }
+    if (record && view == View::full) record->full = colour;
+    return colour;
+}
+
+}  // namespace
+
+Color render_pixel(const RenderScene& render_scene, View view, int i, int j, TraceLog* trace,
+                   PixelRecord* record) {
+    const Scene& scene = *render_scene.scene;
+    if (averages_samples(view) && scene.samples_per_pixel > 1) {
+        return sampled_pixel(render_scene, view, i, j, trace, record);
+    }
+    // One ray through the pixel's centre, stage 2's: a scene without samples renders as it did
+    // before stage 8 existed, and its light samples (quad lights at spp 1) use sample 0's stream.
+    std::optional<RandomStream> lights;
+    if (!scene.quad_lights.empty() && averages_samples(view)) {
+        lights.emplace(light_random(scene, i, j, 0));
+    }
+    return camera_ray_colour(render_scene, view, camera_ray(render_scene, i, j),
+                             lights ? &*lights : nullptr, trace, record);
 }
 
 namespace {

@@ -9,12 +9,26 @@
 
 namespace raystep {
 
-/// Pixel (i, j) of the view. For the depth view the value is the hit's t in every channel
-/// (infinity on a miss), and for the cost view the nodes visited plus primitives tested, each
-/// turned into a colour by finish_view once the whole image is known; every
-/// other view gives its final colour. When `trace` is given, every step is added to it: the
-/// camera ray, each primitive tested and its result, and the closest hit. When `record` is given,
-/// the values of the steps the view takes are put in it as they are computed.
+/// True for the views that average a pixel's samples when the scene has more than one
+/// (`spp`): shaded and full, the views of the finished colour. The others show one ray through
+/// the pixel's centre whatever the scene's spp: a mean of depths, normals or barycentrics blends
+/// values that belong to different surfaces (a depth halfway between a sphere and the wall
+/// behind it is a depth of nothing), and those views are there to check stages 2 to 4 one ray
+/// at a time.
+bool averages_samples(View view);
+
+/// Pixel (i, j) of the view. Where the view averages samples and the scene has spp > 1, the
+/// colour is stage 8's pixel_colour over the scene's samples per pixel, placed by its
+/// `pixelsampling`, each sample a camera ray through its film point; else one camera ray through
+/// the pixel's centre (stage 2's). Random numbers come from the streams of sample_streams.h, so
+/// the pixel is the same whichever thread renders it. For the depth view the value is the hit's t
+/// in every channel (infinity on a miss), and for the cost view the nodes visited plus primitives
+/// tested, each turned into a colour by finish_view once the whole image is known; every other view
+/// gives its final colour. When `trace` is given, every step is added to it: the camera ray, each
+/// primitive tested and its result, and the closest hit; for a sampled pixel, every step of its
+/// first sample, then each sample's film point and colour, and the mean. When `record` is given,
+/// the values of the steps the view takes are put in it as they are computed: for a sampled pixel,
+/// its first sample's, with `full` the pixel's mean.
 Color render_pixel(const RenderScene& render_scene, View view, int i, int j, TraceLog* trace,
                    PixelRecord* record);
 

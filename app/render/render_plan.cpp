@@ -24,7 +24,12 @@ std::vector<int> stages_for_view(const SceneFeatures& features, View view) {
     if (features.uses_transforms()) stages.push_back(5);
     if (view != View::shaded && view != View::full) return stages;
     stages.push_back(6);
-    if (view == View::full && features.uses_reflection()) stages.push_back(7);
+    // Stage 9 reflects with stage 7's reflected_ray, so a transmitting scene runs stage 7 too.
+    if (view == View::full && (features.uses_reflection() || features.uses_refraction())) {
+        stages.push_back(7);
+    }
+    if (features.uses_sampling()) stages.push_back(8);
+    if (view == View::full && features.uses_refraction()) stages.push_back(9);
     return stages;
 }
 

@@ -32,7 +32,10 @@ bool uses_instance_bvh(const SceneFeatures& features);
 /// what a render of it exercises, and so what its image can grade. Only what the scene uses
 /// counts: acceleration (stage 4) only for scenes big enough to gain from it, transforms
 /// (stage 5) only when an object has one, reflection (stage 7) only when a material reflects and
-/// maxdepth allows a bounce.
+/// maxdepth allows a bounce; sampling (stage 8) in the shaded and full views of a scene with
+/// more than one sample per pixel or a quad light (the views that average samples,
+/// render_pixel.h); refraction (stage 9, and stage 7 whose reflected_ray it uses) in the full
+/// view of a scene where something transmits and maxdepth allows a bounce.
 std::vector<int> stages_for_view(const SceneFeatures& features, View view);
 
 }  // namespace raystep

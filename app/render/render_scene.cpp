@@ -8,6 +8,7 @@
 #include "app/render/nearest_hit.h"
 #include "app/render/render_plan.h"
 #include "base/scene/scene_features.h"
+#include "stages/8_sampling/sampling.h"
 
 namespace raystep {
 
@@ -185,7 +186,9 @@ RenderScene prepare_render_scene(const Scene& scene) {
         render_scene.instance_bvh.emplace(render_scene.instances);
     }
     render_scene.ray_offset = scene.ray_offset;
-    render_scene.bounces = features.uses_reflection() ? scene.max_depth : 0;
+    render_scene.refraction = features.uses_refraction();
+    render_scene.bounces =
+        features.uses_reflection() || features.uses_refraction() ? scene.max_depth : 0;
     return render_scene;
 }
 
@@ -238,6 +241,16 @@ Ray camera_ray(const SceneCamera& camera, int i, int j) {
 
 Ray camera_ray(const RenderScene& render_scene, int i, int j) {
     Ray ray = camera_ray(render_scene.camera, i, j);
+    ray.t_min = std::max(ray.t_min, render_scene.camera_t_min);
+    ray.t_max = std::min(ray.t_max, render_scene.camera_t_max);
+    return ray;
+}
+
+Ray camera_ray_through(const RenderScene& render_scene, const Vec2& film) {
+    const auto* perspective = std::get_if<PerspectiveCamera>(&render_scene.camera);
+    Ray ray = perspective ? perspective_ray_through(*perspective, film)
+                          : orthographic_ray_through(
+                                std::get<OrthographicCamera>(render_scene.camera), film);
     ray.t_min = std::max(ray.t_min, render_scene.camera_t_min);
     ray.t_max = std::min(ray.t_max, render_scene.camera_t_max);
     return ray;

@@ -50,7 +50,10 @@ struct RenderScene {
     std::vector<std::uint32_t> sphere_instance;
     std::vector<std::uint32_t> triangle_instance;
     RayOffset ray_offset;  ///< how shadow and mirror rays leave a surface
-    int bounces = 0;       ///< mirror bounces: maxdepth when something reflects, else 0
+    /// Bounces after the eye ray's hit: maxdepth when something reflects or transmits, else 0.
+    int bounces = 0;
+    /// Something transmits: the full view follows stage 9's radiance_with_refraction.
+    bool refraction = false;
     /// The part of each camera ray a render looks at, a near and a far clip: stage 2's rays run
     /// over [0, inf), and the grader narrows them to see that stage 4 keeps to [t_min, t_max].
     double camera_t_min = 0.0;
@@ -82,6 +85,10 @@ bool scene_occluded(const RenderScene& render_scene, const Ray& ray);
 /// camera_t_min and camera_t_max.
 Ray camera_ray(const SceneCamera& camera, int i, int j);
 Ray camera_ray(const RenderScene& render_scene, int i, int j);
+
+/// The camera ray through the point `film` of the image plane, in pixel coordinates (stage 8's
+/// perspective_ray_through or orthographic_ray_through), cut like camera_ray.
+Ray camera_ray_through(const RenderScene& render_scene, const Vec2& film);
 
 /// The scene's record of a primitive the renderer hit.
 const ObjectAttributes& attributes_of(const RenderScene& render_scene, PrimitiveKind kind,

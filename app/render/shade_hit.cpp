@@ -1,13 +1,16 @@
 #include "app/render/shade_hit.h"
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
+#include "app/render/spot_light.h"
 #include "app/render/surface_point.h"
 #include "base/math/to_text.h"
+#include "stages/8_sampling/sampling.h"
 
 namespace raystep {
 
@@ -65,10 +68,48 @@ void trace_terms(const Material& material, const SurfacePoint& point, const Ligh
               " specular " + to_text(blinn_phong(specular_only, point, light)));
 }
 
+// Stage 8 at the point: each quad light's soft shadow, its samples placed by the scene's
+// `lightstratify` (jittered n x n strata, or independent random points). A trace lists every
+// shadow ray the stage sends, each light sample that faces the surface.
+Color quad_lights_shading(const RenderScene& render_scene, const Material& material,
+                          const SurfacePoint& point, RandomStream* light_random, TraceLog* trace) {
+    const Scene& scene = *render_scene.scene;
+    Color sum(0.0);
+    if (scene.quad_lights.empty()) return sum;
+    if (!light_random) throw std::logic_error("shade_hit: quad lights need a random stream");
+    const SamplePattern pattern =
+        scene.light_stratify ? SamplePattern::jittered : SamplePattern::random;
+    for (const QuadLight& light : scene.quad_lights) {
+        int shadow_rays = 0;
+        const OccludedFunction occluded = [&](const Ray& shadow) {
+            const bool blocked = scene_occluded(render_scene, shadow);
+            if (trace) {
+                trace->add("  light sample " + std::to_string(shadow_rays) + ": shadow ray " +
+                           describe(shadow) + ": " + blocker(render_scene, shadow));
+            }
+            ++shadow_rays;
+            return blocked;
+        };
+        if (trace) {
+            trace->add(light_name("quad", light.line) + ": " + std::to_string(scene.light_samples) +
+                       " samples, " + (scene.light_stratify ? "jittered" : "random"));
+        }
+        const Color term = quad_light_shading(material, point, light, pattern, scene.light_samples,
+                                              *light_random, occluded, render_scene.ray_offset);
+        if (trace) {
+            trace->add("  " + light_name("quad", light.line) + " term " + to_text(term) + " (" +
+                       std::to_string(shadow_rays) + " shadow rays; samples behind the surface " +
+                       "send none)");
+        }
+        sum += term;
+    }
+    return sum;
+}
+
 }  // namespace
 
 ShadedHit shade_hit(const RenderScene& render_scene, const Ray& ray, const PrimitiveHit& hit,
-                    TraceLog* trace, PixelRecord* record) {
+                    RandomStream* light_random, TraceLog* trace, PixelRecord* record) {
     const Scene& scene = *render_scene.scene;
     const ObjectAttributes& attributes = attributes_of(render_scene, hit.kind, hit.index);
     const Material& material = scene.materials[attributes.material];
@@ -81,9 +122,10 @@ ShadedHit shade_hit(const RenderScene& render_scene, const Ray& ray, const Primi
 
     std::vector<LightSample> visible;
     std::vector<std::string> names;
-    const auto consider = [&](const LightSample& sample, const char* kind, std::uint32_t line) {
+    const auto consider = [&](const LightSample& sample, const char* kind, std::uint32_t line,
+                              bool recorded) {
         const LightReach reach = reach_of(render_scene, point, sample, kind, line, trace);
-        if (record) {
+        if (record && recorded) {
             record->lights.push_back({reach, reach == LightReach::reaches
                                                  ? blinn_phong(material, point, sample)
                                                  : Color(0.0)});
@@ -93,11 +135,20 @@ ShadedHit shade_hit(const RenderScene& render_scene, const Ray& ray, const Primi
         if (trace) names.push_back(light_name(kind, line));
     };
     for (const PointLight& light : scene.point_lights)
-        consider(sample_light(light, point.position), "point", light.line);
+        consider(sample_light(light, point.position), "point", light.line, true);
     for (const DirectionalLight& light : scene.directional_lights)
-        consider(sample_light(light), "directional", light.line);
+        consider(sample_light(light), "directional", light.line, true);
+    for (const SpotLight& light : scene.spot_lights) {
+        const LightSample sample = sample_spot_light(light, point.position);
+        if (sample.intensity == Color(0.0)) {
+            if (trace) trace->add(light_name("spot", light.line) + ": outside its cone");
+            continue;
+        }
+        consider(sample, "spot", light.line, false);
+    }
 
-    const Color local = local_shading(material, point, visible);
+    Color local = local_shading(material, point, visible);
+    local += quad_lights_shading(render_scene, material, point, light_random, trace);
     if (trace) {
         trace->add("shading: ambient " + to_text(material.ambient) + " emission " +
                    to_text(material.emission));

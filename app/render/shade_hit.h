@@ -3,16 +3,21 @@
 #include "app/render/pixel_record.h"
 #include "app/render/render_scene.h"
 #include "app/render/trace_log.h"
+#include "base/math/random_stream.h"
 #include "stages/7_recursion/recursion.h"
 
 namespace raystep {
 
-/// Stage 6 at one hit: the surface point (surface_point), every light sampled and, when it is in
-/// front of the surface, tested with a shadow ray; then the local model over the lights that
-/// reach the point. Lights behind the surface get no shadow ray: the surface itself blocks them.
-/// With a trace, every light, shadow ray and shading term is added to it; with a record, each
-/// light's reach and term and the local colour are put in it.
+/// Stage 6 at one hit: the surface point (surface_point), every point, directional and spot
+/// light (spot_light.h) sampled and, when it is in front of the surface, tested with a shadow
+/// ray; then the local model over the lights that reach the point. Lights behind the surface get
+/// no shadow ray: the surface itself blocks them, and a spot light sends none outside its cone.
+/// Then stage 8: each quad light's quad_light_shading, with the scene's `lightsamples` samples
+/// drawn from `light_random` (which may be nullptr only when the scene has no quad lights;
+/// sample_streams.h says which stream a render hands in). With a trace, every light, shadow ray
+/// and shading term is added to it; with a record, the point and directional lights' reach and
+/// term (the lights a reference trace stores) and the local colour are put in it.
 ShadedHit shade_hit(const RenderScene& render_scene, const Ray& ray, const PrimitiveHit& hit,
-                    TraceLog* trace, PixelRecord* record);
+                    RandomStream* light_random, TraceLog* trace, PixelRecord* record);
 
 }  // namespace raystep

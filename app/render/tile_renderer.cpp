@@ -97,9 +97,10 @@ void render_tiles(const PixelFunction& pixel, TileQueue& queue, Image& image) {
     queue.worker_finished();
 }
 
-// Every pixel on `threads` threads (0: one per hardware thread), with this thread drawing `bar`.
+// Every pixel on `threads` threads (0: one per hardware thread), with this thread drawing `bar`,
+// which counts `per_pixel` for each pixel done.
 Image render_tiles_in_pool(int width, int height, const PixelFunction& pixel, int threads,
-                           ProgressBar& bar) {
+                           ProgressBar& bar, std::size_t per_pixel) {
     Image image(width, height);
     TileQueue queue(width, height);
 
@@ -122,7 +123,7 @@ Image render_tiles_in_pool(int width, int height, const PixelFunction& pixel, in
         // This thread draws the progress bar until every worker is done.
         const int workers = static_cast<int>(pool.size());
         while (!queue.wait_for_workers(workers, std::chrono::milliseconds(100))) {
-            bar.update(queue.done());
+            bar.update(queue.done() * per_pixel);
         }
         for (std::thread& thread : pool)
             thread.join();
@@ -140,7 +141,7 @@ Image render_tiles_in_pool(int width, int height, const PixelFunction& pixel, in
 
 Image render_pixels(int width, int height, const PixelFunction& pixel, int threads) {
     ProgressBar no_bar("", 0, false);
-    return render_tiles_in_pool(width, height, pixel, threads, no_bar);
+    return render_tiles_in_pool(width, height, pixel, threads, no_bar, 1);
 }
 
 Image render_image(const RenderScene& render_scene, const RenderOptions& options) {
@@ -161,10 +162,19 @@ Image render_image(const RenderScene& render_scene, const RenderOptions& options
                 : nullptr;
         return render_pixel(render_scene, view, i, j, nullptr, record);
     };
-    ProgressBar bar(options.label,
-                    static_cast<std::size_t>(scene.width) * static_cast<std::size_t>(scene.height),
-                    options.progress);
-    Image image = render_tiles_in_pool(scene.width, scene.height, pixel, options.threads, bar);
+    // A sampled render counts its camera samples. A pixel takes all its samples at once (stage
+    // 8's pixel_colour needs the whole n x n set to place them in strata), so the count moves a
+    // pixel's samples at a time: no pass-by-pass image exists to show, and the bar does not
+    // pretend there is one.
+    const std::size_t pixels =
+        static_cast<std::size_t>(scene.width) * static_cast<std::size_t>(scene.height);
+    const bool sampled = averages_samples(view) && scene.samples_per_pixel > 1;
+    const std::size_t per_pixel =
+        sampled ? static_cast<std::size_t>(scene.samples_per_pixel) : std::size_t{1};
+    ProgressBar bar(options.label, pixels * per_pixel, options.progress, stderr,
+                    sampled ? "samples" : "");
+    Image image =
+        render_tiles_in_pool(scene.width, scene.height, pixel, options.threads, bar, per_pixel);
     finish_view(image, view);
     return image;
 }

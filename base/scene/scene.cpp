@@ -1,6 +1,7 @@
 #include "base/scene/scene.h"
 
 #include <algorithm>
+#include <string>
 
 namespace raystep {
 
@@ -20,6 +21,10 @@ std::vector<TransformOp> transform_ops(const Scene& scene, std::uint32_t node) {
     }
     std::reverse(ops.begin(), ops.end());
     return ops;
+}
+
+std::string warning_text(const Scene& scene, const SceneNote& note) {
+    return scene.path + ":" + std::to_string(note.line) + ": warning: " + note.text;
 }
 
 }  // namespace raystep

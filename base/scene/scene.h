@@ -166,6 +166,16 @@ enum class SamplePattern {
     random,    ///< spp points uniform over the pixel
 };
 
+/// A command that was read and checked but does not render as its author may expect: a setting
+/// of the CSE168 path tracer that raystep has no use for (`russianroulette on`: raystep traces
+/// no indirect paths), or one it adapted (a non-square `spp`, sampled at random). Nothing in a
+/// scene is skipped silently: the commands that load a scene show each note as a warning.
+struct SceneNote {
+    std::uint32_t line = 0;
+    std::string command;  ///< the command's name, as the file writes it
+    std::string text;     ///< what raystep does with it
+};
+
 /// The view window of `ortho l r b t`, in the camera's (u, v) plane.
 struct OrthoWindow {
     double left;
@@ -217,11 +227,16 @@ struct Scene {
     bool light_stratify = false;                             ///< `lightstratify on`
     std::uint64_t seed = 0;                                  ///< `seed`: the render's random seed
     bool schlick_fresnel = false;  ///< `fresnel schlick`; exact by default
+
+    std::vector<SceneNote> notes;  ///< in file order, one per command name at most
 };
 
 /// Every triangle of the scene in one numbering, the one hits use: Scene::triangles first, then
 /// the triangles of each mesh instance, instance after instance in the order they were written.
 std::size_t triangle_count(const Scene& scene);
+
+/// A note as a warning line, `file:line: warning: text`, for a terminal or a log.
+std::string warning_text(const Scene& scene, const SceneNote& note);
 
 /// The ops of a transform node, root first: the order they were written in the file.
 std::vector<TransformOp> transform_ops(const Scene& scene, std::uint32_t node);

@@ -17,7 +17,10 @@ void count_objects(const Scene& scene, const std::vector<Object>& objects, Scene
             transforms.insert(object.attributes.transform);
         }
         const Material& material = scene.materials[object.attributes.material];
-        if (scene.max_depth > 0 && material.specular != Color(0.0)) ++features.reflective_objects;
+        // Mirrors and dielectrics need a secondary ray, which maxdepth 0 turns off.
+        if (scene.max_depth == 0) continue;
+        if (material.specular != Color(0.0)) ++features.reflective_objects;
+        if (material.transmission != Color(0.0)) ++features.transmissive_objects;
     }
 }
 
@@ -33,6 +36,9 @@ SceneFeatures scene_features(const Scene& scene) {
     features.planes = scene.planes.size();
     features.point_lights = scene.point_lights.size();
     features.directional_lights = scene.directional_lights.size();
+    features.spot_lights = scene.spot_lights.size();
+    features.quad_lights = scene.quad_lights.size();
+    features.samples_per_pixel = scene.samples_per_pixel;
     std::unordered_set<std::uint32_t> transforms;
     count_objects(scene, scene.spheres, features, transforms);
     count_objects(scene, scene.triangles, features, transforms);

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <unordered_map>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -26,6 +27,9 @@ namespace {
 constexpr long kMaxImageSide = 32768;
 constexpr long kMaxImagePixels = 1L << 27;  // 128 Mpixels, 1.5 GiB of float RGB
 constexpr long kMaxDepth = 1000;
+// `spp` and `lightsamples`: each sample is at least a ray per pixel or per light and pixel, so
+// 2^16 of them at 640 x 480 is already 2 x 10^10 rays.
+constexpr long kMaxSamples = 1L << 16;
 
 // A direction (an up vector, a normal, an axis, a scale factor) must have its largest component
 // in this range: then |v|^2 neither overflows nor underflows, and normalizing or inverting it is
@@ -87,10 +91,13 @@ class SceneParser {
     }
 
     Scene finish() {
-        if (camera_line_ == 0) {
+        if (line_of("camera") == 0) {
             throw InputError(name_, 0, "the scene has no 'camera' command, so nothing can be seen");
         }
         scene_.camera.ortho = ortho_;
+        check_sample_grids();
+        std::stable_sort(scene_.notes.begin(), scene_.notes.end(),
+                         [](const SceneNote& a, const SceneNote& b) { return a.line < b.line; });
         return std::move(scene_);
     }
 
@@ -139,12 +146,30 @@ class SceneParser {
             {"popTransform", "", &SceneParser::pop_transform},
             {"directional", "x y z r g b", &SceneParser::directional},
             {"point", "x y z r g b", &SceneParser::point},
+            {"spot", "x y z dx dy dz cutoff exponent r g b", &SceneParser::spot},
+            {"quadLight", "ax ay az abx aby abz acx acy acz r g b", &SceneParser::quad_light},
             {"attenuation", "constant linear quadratic", &SceneParser::attenuation},
+            {"background", "r g b", &SceneParser::background},
             {"ambient", "r g b", &SceneParser::ambient},
             {"diffuse", "r g b", &SceneParser::diffuse},
             {"specular", "r g b", &SceneParser::specular},
             {"shininess", "s", &SceneParser::shininess},
             {"emission", "r g b", &SceneParser::emission},
+            {"transmission", "r g b", &SceneParser::transmission},
+            {"ior", "index", &SceneParser::ior},
+            {"fresnel", "exact|schlick", &SceneParser::fresnel},
+            {"spp", "count", &SceneParser::spp},
+            {"pixelsampling", "jittered|regular|random", &SceneParser::pixelsampling},
+            {"lightsamples", "count", &SceneParser::lightsamples},
+            {"lightstratify", "on|off", &SceneParser::lightstratify},
+            {"seed", "number", &SceneParser::seed},
+            {"integrator", "raytracer|direct|analyticdirect|pathtracer", &SceneParser::integrator},
+            {"nexteventestimation", "on|off|mis", &SceneParser::nexteventestimation},
+            {"russianroulette", "on|off", &SceneParser::russianroulette},
+            {"importancesampling", "hemisphere|cosine|brdf", &SceneParser::importancesampling},
+            {"brdf", "phong|ggx", &SceneParser::brdf},
+            {"roughness", "alpha", &SceneParser::roughness},
+            {"gamma", "gamma", &SceneParser::gamma},
         };
         return table;
     }
@@ -212,18 +237,55 @@ class SceneParser {
         return c;
     }
 
-    void once(std::uint32_t& seen_on_line, std::string_view command) {
-        if (seen_on_line != 0) {
-            fail("'" + std::string(command) + "' was already given on line " +
-                 std::to_string(seen_on_line));
+    // The value of field k, one of the words of `choices` ("on|off"): its position among them.
+    std::size_t keyword(std::size_t k, std::string_view choices) const {
+        std::vector<std::string_view> words;
+        std::size_t start = 0;
+        while (start <= choices.size()) {
+            const std::size_t bar = std::min(choices.find('|', start), choices.size());
+            words.push_back(choices.substr(start, bar - start));
+            start = bar + 1;
         }
-        seen_on_line = static_cast<std::uint32_t>(line_);
+        const auto found = std::find(words.begin(), words.end(), fields_[k]);
+        if (found != words.end()) return static_cast<std::size_t>(found - words.begin());
+        std::string listed;
+        for (std::size_t w = 0; w < words.size(); ++w) {
+            listed += (w == 0 ? "" : w + 1 == words.size() ? " or " : ", ") + std::string(words[w]);
+        }
+        fail("'" + std::string(fields_[0]) + "' takes " + listed + ", not " +
+             quoted_field(fields_[k]));
+    }
+
+    // A scene-wide setting (`size`, `camera`, `spp`, ...) is given at most once: a second one is
+    // an error, never a silent override.
+    void once() {
+        const auto [first, inserted] =
+            first_lines_.try_emplace(std::string(fields_[0]), static_cast<std::uint32_t>(line_));
+        if (!inserted) {
+            fail("'" + std::string(fields_[0]) + "' was already given on line " +
+                 std::to_string(first->second));
+        }
+    }
+
+    // The line of a once-only command, 0 when the file has none.
+    std::uint32_t line_of(const std::string& command) const {
+        const auto found = first_lines_.find(command);
+        return found == first_lines_.end() ? 0 : found->second;
+    }
+
+    // A note on this line for `scene_.notes`; a command that recurs (`brdf` in every material)
+    // is noted on its first line only.
+    void note(const std::string& text) {
+        for (const SceneNote& noted : scene_.notes) {
+            if (noted.command == fields_[0]) return;
+        }
+        scene_.notes.push_back({static_cast<std::uint32_t>(line_), std::string(fields_[0]), text});
     }
 
     // Image and camera
 
     void size() {
-        once(size_line_, "size");
+        once();
         const long width = count(1, "the width");
         const long height = count(2, "the height");
         if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide) {
@@ -239,7 +301,7 @@ class SceneParser {
     }
 
     void maxdepth() {
-        once(maxdepth_line_, "maxdepth");
+        once();
         const long depth = count(1, "the depth");
         if (depth > kMaxDepth) {
             fail("maxdepth " + std::to_string(depth) + " is above the limit of " +
@@ -249,12 +311,12 @@ class SceneParser {
     }
 
     void output() {
-        once(output_line_, "output");
+        once();
         scene_.output = std::string(fields_[1]);
     }
 
     void rayoffset() {
-        once(rayoffset_line_, "rayoffset");
+        once();
         const std::optional<OffsetRule> rule = parse_offset_rule(fields_[1]);
         if (!rule) {
             fail("unknown ray offset rule " + quoted_field(fields_[1]) +
@@ -274,7 +336,7 @@ class SceneParser {
     }
 
     void camera() {
-        once(camera_line_, "camera");
+        once();
         CameraSpec& c = scene_.camera;
         c.lookfrom = vec3(1, "lookfrom");
         c.lookat = vec3(4, "lookat");
@@ -306,7 +368,7 @@ class SceneParser {
     }
 
     void ortho() {
-        once(ortho_line_, "ortho");
+        once();
         const OrthoWindow window{number(1, "left"), number(2, "right"), number(3, "bottom"),
                                  number(4, "top")};
         if (!(window.left < window.right) || !(window.bottom < window.top)) {
@@ -577,6 +639,62 @@ class SceneParser {
             {vec3(1, "the position"), color(4), attenuation_, static_cast<std::uint32_t>(line_)});
     }
 
+    void spot() {
+        SpotLight light;
+        light.position = vec3(1, "the position");
+        light.direction = direction(4, "the spot light's axis");
+        light.cutoff_degrees = number(7, "the cutoff");
+        // Written so that a NaN fails too. Beyond 90 degrees the cone would light what is behind
+        // the spot light, which a spot light does not do.
+        if (!(light.cutoff_degrees > 0.0 && light.cutoff_degrees <= 90.0)) {
+            fail("cutoff " + std::string(fields_[7]) +
+                 " is out of range: the cone's half-angle must be above 0 and at most 90 degrees");
+        }
+        light.exponent = number(8, "the exponent");
+        if (!(light.exponent >= 0.0)) {
+            fail("exponent " + std::string(fields_[8]) + " must not be negative");
+        }
+        light.color = color(9);
+        light.attenuation = attenuation_;
+        light.line = static_cast<std::uint32_t>(line_);
+        scene_.spot_lights.push_back(light);
+    }
+
+    // The CSE168 area light: corner a and edges ab and ac. Sampling it divides by its area
+    // |ab x ac| and shades with its normal (ac x ab) / |ac x ab|, so that cross product must be a
+    // direction as `direction` requires one (neither zero nor beyond the range where its length
+    // is computed reliably), and ab and ac must not be parallel, by the camera's test.
+    void quad_light() {
+        QuadLight light;
+        light.corner = vec3(1, "the corner");
+        light.edge1 = vec3(4, "the edge ab");
+        light.edge2 = vec3(7, "the edge ac");
+        light.radiance = color(10);
+        light.line = static_cast<std::uint32_t>(line_);
+        const double ab_size = largest_magnitude(light.edge1);
+        const double ac_size = largest_magnitude(light.edge2);
+        if (ab_size == 0.0 || ac_size == 0.0) {
+            fail(std::string("the light's edge ") + (ab_size == 0.0 ? "ab" : "ac") +
+                 " is zero, so the light has no area");
+        }
+        // Scaled by their largest components, so that the products cannot overflow; written so
+        // that a NaN counts as parallel.
+        const Vec3 a = light.edge1 / ab_size;
+        const Vec3 b = light.edge2 / ac_size;
+        if (!(glm::length(glm::cross(a, b)) > kParallelSine * glm::length(a) * glm::length(b))) {
+            fail("the light's edges ab " + to_text(light.edge1) + " and ac " +
+                 to_text(light.edge2) + " are parallel, so the light has no area");
+        }
+        const double normal_size = largest_magnitude(glm::cross(light.edge1, light.edge2));
+        if (!(normal_size >= kSmallestDirection && normal_size <= kLargestDirection)) {
+            fail(
+                "the light's area |ab x ac| is too small or too large to compute reliably "
+                "(its largest component is " +
+                to_text(normal_size) + ", outside 1e-150 to 1e150); scale it towards 1");
+        }
+        scene_.quad_lights.push_back(light);
+    }
+
     void attenuation() {
         const Attenuation a{number(1, "the constant term"), number(2, "the linear term"),
                             number(3, "the quadratic term")};
@@ -608,18 +726,184 @@ class SceneParser {
         material_id_ = kUnregistered;
     }
 
+    // Dielectrics (stage 9): material state like the colours.
+
+    void transmission() { set_material(&Material::transmission); }
+
+    void ior() {
+        const double index = number(1, "the index of refraction");
+        if (!(index > 0.0))
+            fail("index of refraction " + std::string(fields_[1]) + " must be positive");
+        material_.index = index;
+        material_id_ = kUnregistered;
+    }
+
+    void fresnel() {
+        once();
+        scene_.schlick_fresnel = keyword(1, "exact|schlick") == 1;
+    }
+
+    // Sampling (stage 8). Jittered and regular patterns and stratified light samples need n x n
+    // samples; the commands may come in any order, so check_sample_grids checks at the end.
+
+    int sample_count(std::string_view what) const {
+        const long n = count(1, what);
+        if (n < 1) fail(std::string(what) + " must be at least 1");
+        if (n > kMaxSamples) {
+            fail(std::string(what) + " " + std::to_string(n) + " is above the limit of " +
+                 std::to_string(kMaxSamples) +
+                 ": at one ray each, a 640 x 480 render of more would not finish in a day");
+        }
+        return static_cast<int>(n);
+    }
+
+    void spp() {
+        once();
+        scene_.samples_per_pixel = sample_count("the sample count");
+    }
+
+    void pixelsampling() {
+        once();
+        constexpr std::array<SamplePattern, 3> patterns = {
+            SamplePattern::jittered, SamplePattern::regular, SamplePattern::random};
+        scene_.pixel_sampling = patterns[keyword(1, "jittered|regular|random")];
+    }
+
+    void lightsamples() {
+        once();
+        scene_.light_samples = sample_count("the sample count");
+    }
+
+    void lightstratify() {
+        once();
+        scene_.light_stratify = keyword(1, "on|off") == 0;
+    }
+
+    void seed() {
+        once();
+        scene_.seed = parse_unsigned64(fields_[1], {name_, line_}, "the seed");
+    }
+
+    static bool is_square(int n) {
+        const int root = static_cast<int>(std::lround(std::sqrt(static_cast<double>(n))));
+        return root * root == n;
+    }
+
+    // A non-square spp under the default pattern falls back to random sampling with a note,
+    // because the CSE168 course, whose scenes must load as written, allows any spp; once a file
+    // asks for jittered or regular sampling by name, it is an error.
+    void check_sample_grids() {
+        const int spp = scene_.samples_per_pixel;
+        if (!is_square(spp) && scene_.pixel_sampling != SamplePattern::random) {
+            const std::uint32_t pattern_line = line_of("pixelsampling");
+            if (pattern_line != 0) {
+                throw InputError(
+                    name_, static_cast<int>(line_of("spp")),
+                    "spp " + std::to_string(spp) + " is not a square, and 'pixelsampling " +
+                        (scene_.pixel_sampling == SamplePattern::jittered ? "jittered"
+                                                                          : "regular") +
+                        "' on line " + std::to_string(pattern_line) +
+                        " places n x n samples; give a square (4, 9, 16, ...) or 'pixelsampling "
+                        "random'");
+            }
+            scene_.pixel_sampling = SamplePattern::random;
+            scene_.notes.push_back(
+                {line_of("spp"), "spp",
+                 "spp " + std::to_string(spp) +
+                     " is not a square, so the samples are spread at random over each pixel "
+                     "rather than jittered in n x n strata; give a square for jittered sampling, "
+                     "or 'pixelsampling random' to choose random sampling"});
+        }
+        if (scene_.light_stratify && !is_square(scene_.light_samples)) {
+            throw InputError(name_, static_cast<int>(line_of("lightsamples")),
+                             "lightsamples " + std::to_string(scene_.light_samples) +
+                                 " is not a square, and 'lightstratify on' on line " +
+                                 std::to_string(line_of("lightstratify")) +
+                                 " places n x n samples on each light; give a square (4, 9, "
+                                 "16, ...) or 'lightstratify off'");
+        }
+    }
+
+    void background() {
+        once();
+        scene_.background = color(1);
+    }
+
+    // The CSE168 path tracer's settings. raystep renders direct light and mirrors (and stage 9's
+    // refraction), no indirect light: each of these is read and checked so that the course's
+    // scenes load, and noted where it changes nothing or renders otherwise than in the course.
+
+    void integrator() {
+        once();
+        switch (keyword(1, "raytracer|direct|analyticdirect|pathtracer")) {
+            case 2:
+                note(
+                    "'integrator analyticdirect': raystep samples each quad light "
+                    "('lightsamples') rather than integrating it exactly, so soft shadows are "
+                    "noisy where the course's are not");
+                break;
+            case 3:
+                note(
+                    "'integrator pathtracer': raystep renders direct light and mirror "
+                    "reflection only, no indirect light, so the image is darker than a path "
+                    "tracer's");
+                break;
+            default:
+                break;
+        }
+    }
+
+    void nexteventestimation() {
+        once();
+        keyword(1, "on|off|mis");
+        note(
+            "'nexteventestimation' has no effect: raystep traces no indirect paths and always "
+            "samples the lights");
+    }
+
+    void russianroulette() {
+        once();
+        keyword(1, "on|off");
+        note(
+            "'russianroulette' has no effect: raystep traces no indirect paths to end at "
+            "random; maxdepth bounds its mirror bounces");
+    }
+
+    void importancesampling() {
+        once();
+        keyword(1, "hemisphere|cosine|brdf");
+        note(
+            "'importancesampling' has no effect: raystep samples the lights, never directions "
+            "from a surface");
+    }
+
+    void brdf() {
+        keyword(1, "phong|ggx");
+        note(
+            "'brdf' has no effect: raystep shades every surface with the CSE167 local model "
+            "(docs/stage6.md)");
+    }
+
+    void roughness() {
+        const double alpha = number(1, "the roughness");
+        if (!(alpha >= 0.0)) fail("roughness " + std::string(fields_[1]) + " must not be negative");
+        note("'roughness' has no effect: raystep has no GGX surfaces");
+    }
+
+    void gamma() {
+        once();
+        const double g = number(1, "gamma");
+        if (!(g > 0.0)) fail("gamma " + std::string(fields_[1]) + " must be positive");
+        note("'gamma' has no effect: raystep writes colours as it computes them");
+    }
+
     std::string name_;
     std::filesystem::path folder_;
     int line_ = 0;
     std::vector<std::string_view> fields_;
     Scene scene_;
 
-    std::uint32_t size_line_ = 0;
-    std::uint32_t maxdepth_line_ = 0;
-    std::uint32_t output_line_ = 0;
-    std::uint32_t camera_line_ = 0;
-    std::uint32_t ortho_line_ = 0;
-    std::uint32_t rayoffset_line_ = 0;
+    std::unordered_map<std::string, std::uint32_t> first_lines_;  // of once-only commands
     std::optional<OrthoWindow> ortho_;
 
     Material material_;

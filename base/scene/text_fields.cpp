@@ -123,4 +123,19 @@ long parse_count(std::string_view token, const TextPosition& where, std::string_
     return value;
 }
 
+// from_chars reads digits only: no sign, no white space, no hexadecimal, so "-1" is refused rather
+// than wrapped to 2^64 - 1 as strtoull would.
+std::uint64_t parse_unsigned64(std::string_view token, const TextPosition& where,
+                               std::string_view what) {
+    std::uint64_t value = 0;
+    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), value);
+    if (error == std::errc::result_out_of_range) {
+        bad(where, what, token, "is above 18446744073709551615, the largest 64-bit number");
+    }
+    if (error != std::errc() || end != token.data() + token.size() || token.empty()) {
+        bad(where, what, token, "is not a whole number from 0 to 18446744073709551615");
+    }
+    return value;
+}
+
 }  // namespace raystep

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -33,5 +34,10 @@ double parse_finite_number(std::string_view token, const TextPosition& where,
 /// The non-negative whole number that the whole token spells; throws InputError like
 /// parse_finite_number, also for a negative value or one that does not fit in a long.
 long parse_count(std::string_view token, const TextPosition& where, std::string_view what);
+
+/// The unsigned 64-bit whole number (0 to 2^64 - 1) that the whole token spells, in decimal;
+/// throws InputError like parse_count, also for a sign or a value above 2^64 - 1.
+std::uint64_t parse_unsigned64(std::string_view token, const TextPosition& where,
+                               std::string_view what);
 
 }  // namespace raystep

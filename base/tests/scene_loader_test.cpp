@@ -280,3 +280,127 @@ TEST_CASE("parse_scene: a scene of 100,000 triangles loads whole", "[base]") {
     CHECK(scene.triangles.back().shape.p2 == Vec3(50001, 1, 0.5));
     CHECK(scene.triangles.back().attributes.line == 2 + 50002 + 100000);
 }
+
+TEST_CASE("parse_scene: quadLight is a corner, two edges and a radiance in world coordinates",
+          "[base]") {
+    const Scene scene = parse(kCamera +
+                              "translate 5 0 0\nscale 2 2 2\n"
+                              "quadLight -1 2 -1  2 0 0  0 0 2  10 8 6\n");
+    REQUIRE(scene.quad_lights.size() == 1);
+    const QuadLight& light = scene.quad_lights[0];
+    CHECK(light.corner == Vec3(-1, 2, -1));  // the transform in force moves no light
+    CHECK(light.edge1 == Vec3(2, 0, 0));
+    CHECK(light.edge2 == Vec3(0, 0, 2));
+    CHECK(light.radiance == Color(10, 8, 6));
+    CHECK(light.line == 4);
+}
+
+TEST_CASE("parse_scene: spot keeps its cone and the attenuation in force", "[base]") {
+    const Scene scene =
+        parse(kCamera + "attenuation 1 0 0.5\nspot 0 3 0  0 -1 0  30 4  1 0.5 0.25\n");
+    REQUIRE(scene.spot_lights.size() == 1);
+    const SpotLight& light = scene.spot_lights[0];
+    CHECK(light.position == Vec3(0, 3, 0));
+    CHECK(light.direction == Vec3(0, -1, 0));
+    CHECK(light.cutoff_degrees == 30.0);
+    CHECK(light.exponent == 4.0);
+    CHECK(light.color == Color(1, 0.5, 0.25));
+    CHECK(light.attenuation.quadratic == 0.5);
+    CHECK(light.line == 3);
+    CHECK(parse(kCamera + "spot 0 3 0 0 -1 0 90 0 1 1 1\n").spot_lights.at(0).cutoff_degrees ==
+          90.0);
+}
+
+TEST_CASE("parse_scene: transmission and ior are material state like specular", "[base]") {
+    const Scene scene = parse(kCamera +
+                              "sphere 0 0 0 1\ntransmission 0.9 0.8 0.7\nior 1.5\n"
+                              "sphere 1 0 0 1\nior 1.33\nsphere 2 0 0 1\n");
+    const auto material = [&](std::size_t k) {
+        return scene.materials.at(scene.spheres.at(k).attributes.material);
+    };
+    CHECK(material(0).transmission == Color(0.0));
+    CHECK(material(0).index == 1.0);
+    CHECK(material(1).transmission == Color(0.9, 0.8, 0.7));
+    CHECK(material(1).index == 1.5);
+    CHECK(material(2).transmission == Color(0.9, 0.8, 0.7));
+    CHECK(material(2).index == 1.33);
+}
+
+TEST_CASE("parse_scene: sampling settings and their defaults", "[base]") {
+    const Scene defaults = parse(kCamera);
+    CHECK(defaults.samples_per_pixel == 1);
+    CHECK(defaults.pixel_sampling == SamplePattern::jittered);
+    CHECK(defaults.light_samples == 1);
+    CHECK_FALSE(defaults.light_stratify);
+    CHECK(defaults.seed == 0);
+    CHECK(defaults.background == Color(0.0));
+    CHECK_FALSE(defaults.schlick_fresnel);
+    CHECK(defaults.notes.empty());
+
+    const Scene scene = parse(kCamera +
+                              "spp 16\npixelsampling regular\nlightsamples 9\nlightstratify on\n"
+                              "seed 18446744073709551615\nbackground 0.1 0.2 0.3\n"
+                              "fresnel schlick\n");
+    CHECK(scene.samples_per_pixel == 16);
+    CHECK(scene.pixel_sampling == SamplePattern::regular);
+    CHECK(scene.light_samples == 9);
+    CHECK(scene.light_stratify);
+    CHECK(scene.seed == 18446744073709551615ull);
+    CHECK(scene.background == Color(0.1, 0.2, 0.3));
+    CHECK(scene.schlick_fresnel);
+    CHECK(scene.notes.empty());
+
+    CHECK(parse(kCamera + "pixelsampling random\nspp 7\n").pixel_sampling == SamplePattern::random);
+    CHECK(parse(kCamera + "lightstratify off\nlightsamples 7\n").light_samples == 7);
+    CHECK(parse(kCamera + "spp 65536\n").samples_per_pixel == 65536);
+}
+
+TEST_CASE("parse_scene: a non-square spp under the default pattern is sampled at random, noted",
+          "[base]") {
+    // The CSE168 course takes any spp; raystep's default, jittered, needs n x n.
+    const Scene scene = parse(kCamera + "spp 8\n");
+    CHECK(scene.samples_per_pixel == 8);
+    CHECK(scene.pixel_sampling == SamplePattern::random);
+    REQUIRE(scene.notes.size() == 1);
+    CHECK(scene.notes[0].line == 2);
+    CHECK(scene.notes[0].command == "spp");
+    CHECK_THAT(scene.notes[0].text, Catch::Matchers::Contains("not a square"));
+    CHECK(warning_text(scene, scene.notes[0]).rfind("inline.test:2: warning: spp 8", 0) == 0);
+}
+
+TEST_CASE("parse_scene: CSE168 path tracer settings load, each noted once on its first line",
+          "[base]") {
+    const Scene scene = parse(kCamera +
+                              "integrator pathtracer\nnexteventestimation mis\n"
+                              "russianroulette on\nimportancesampling cosine\ngamma 2.2\n"
+                              "brdf ggx\nroughness 0.25\nsphere 0 0 0 1\nbrdf phong\n"
+                              "roughness 0\nsphere 1 0 0 1\n");
+    CHECK(scene.spheres.size() == 2);
+    std::vector<std::string> noted;
+    for (const SceneNote& note : scene.notes)
+        noted.push_back(note.command + "@" + std::to_string(note.line));
+    CHECK(noted == std::vector<std::string>{"integrator@2", "nexteventestimation@3",
+                                            "russianroulette@4", "importancesampling@5", "gamma@6",
+                                            "brdf@7", "roughness@8"});
+}
+
+TEST_CASE("parse_scene: integrator raytracer and direct are what raystep renders: no note",
+          "[base]") {
+    CHECK(parse(kCamera + "integrator raytracer\n").notes.empty());
+    CHECK(parse(kCamera + "integrator direct\n").notes.empty());
+    const Scene analytic = parse(kCamera + "integrator analyticdirect\n");
+    REQUIRE(analytic.notes.size() == 1);
+    CHECK_THAT(analytic.notes[0].text, Catch::Matchers::Contains("samples each quad light"));
+}
+
+TEST_CASE("load_scene: a CSE168 Cornell box lit by a quadLight loads as the course writes it",
+          "[base]") {
+    const Scene scene = load_scene(kData / "good" / "cornell_quadlight.test");
+    CHECK(scene.quad_lights.size() == 1);
+    CHECK(scene.samples_per_pixel == 4);
+    CHECK(scene.pixel_sampling == SamplePattern::jittered);
+    CHECK(scene.light_samples == 16);
+    CHECK(scene.light_stratify);
+    CHECK(scene.triangles.size() == 10);
+    CHECK(scene.notes.empty());  // integrator direct is what raystep renders
+}

@@ -1,0 +1,62 @@
+#include "app/cli/sampling_options.h"
+
+#include <stdexcept>
+
+namespace raystep {
+
+namespace {
+
+// The loader's ceiling on `spp` (docs/scene-format.md), so that the option cannot ask for more
+// than a scene may.
+constexpr int kMostSamplesPerPixel = 1 << 16;
+
+bool is_square(int count) {
+    int side = 1;
+    while (side * side < count)
+        ++side;
+    return side * side == count;
+}
+
+const char* pattern_name(SamplePattern pattern) {
+    switch (pattern) {
+        case SamplePattern::jittered:
+            return "jittered";
+        case SamplePattern::regular:
+            return "regular";
+        case SamplePattern::random:
+            return "random";
+    }
+    return "unknown";
+}
+
+}  // namespace
+
+void add_sampling_options(CLI::App& command, SamplingArguments& arguments) {
+    command
+        .add_option("--spp", arguments.samples_per_pixel,
+                    "Samples per pixel, in place of the scene's spp (a square for jittered and "
+                    "regular sampling)")
+        ->check(CLI::Range(1, kMostSamplesPerPixel));
+    command
+        .add_option("--pixel-sampling", arguments.pixel_sampling,
+                    "Where a pixel's samples go, in place of the scene's pixelsampling")
+        ->check(CLI::IsMember({"jittered", "regular", "random"}));
+    command.add_option("--seed", arguments.seed,
+                       "The random seed, in place of the scene's seed: another seed, other noise");
+}
+
+void apply_sampling(const SamplingArguments& arguments, Scene& scene) {
+    if (arguments.samples_per_pixel > 0) scene.samples_per_pixel = arguments.samples_per_pixel;
+    if (arguments.pixel_sampling == "jittered") scene.pixel_sampling = SamplePattern::jittered;
+    if (arguments.pixel_sampling == "regular") scene.pixel_sampling = SamplePattern::regular;
+    if (arguments.pixel_sampling == "random") scene.pixel_sampling = SamplePattern::random;
+    if (arguments.seed) scene.seed = *arguments.seed;
+    if (scene.pixel_sampling != SamplePattern::random && !is_square(scene.samples_per_pixel)) {
+        throw std::invalid_argument(
+            std::to_string(scene.samples_per_pixel) + " samples per pixel cannot be placed " +
+            pattern_name(scene.pixel_sampling) + ": it needs n x n strata (4, 9, 16, ...); " +
+            "use --spp with a square or --pixel-sampling random");
+    }
+}
+
+}  // namespace raystep
