@@ -124,6 +124,16 @@ PublicCase refracted_ray_case(const SurfacePoint& p, double n1, double n2,
             "refracted_ray(" + cpp(p) + ", " + cpp(n1) + ", " + cpp(n2) + ", " + cpp(offset) + ")"};
 }
 
+// The header's "unbounded": t_max is infinity, not a large finite number standing in for it. The
+// other cases accept the largest double there, which admits the same hits (recursion_judges.h).
+PublicCase unbounded_case(const SurfacePoint& p, double n1, double n2, const RayOffset& offset) {
+    PublicCase c = refracted_ray_case(p, n1, n2, offset);
+    c.input += ": unbounded";
+    c.judge = unbounded_ray_judge();
+    c.reproduce += "->t_max";
+    return c;
+}
+
 // A point on the floor y = 0 seen from `to_eye` (normalized here), the shading normal the
 // geometric one unless given.
 SurfacePoint floor_point(const Vec3& position, const Vec3& to_eye,
@@ -232,6 +242,7 @@ std::vector<PublicCase> hidden_cases() {
         refracted_ray_case(floor_point({1e6, 0, -1e6}, {0.3, 1, -0.2}), 1.0, 2.4, kErrorBound),
         refracted_ray_case(floor_point({3, 0, 3}, {-3, 1, 0}), 1.5, 1.0, kAlongNormal),
         refracted_ray_case(floor_point({3, 0, 3}, {1, 1, 1}), 1.0, 1.0, kAlongRay),
+        unbounded_case(floor_point({1, 0, 2}, {-1, 1, 0}), 1.0, 1.5, kAlongNormal),
     };
     for (PublicCase& c : stage9_hidden_radiance_cases())
         cases.push_back(std::move(c));
