@@ -21,7 +21,7 @@ namespace {
 
 // How near a ray must be to a hit's key to land on it. The grader's scenes keep keys from
 // different hits at least 10 apart in origin, and the two rays that leave one hit at least 0.1
-// apart in direction (app/grade's case makers, grader/grade/checks/stage9_checks.cpp), so a
+// apart in direction (grader/grade/checks/stage9_radiance_cases.cpp), so that a
 // right ray finds its own hit and nothing else; a wrong one within these bounds finds it too and
 // is judged wrong by its origin or direction, one beyond them misses.
 constexpr double kKeyOriginRadius = 1.0;
