@@ -145,6 +145,22 @@ const JudgeRegistry::Registration radiance_registration{
 
 }  // namespace
 
+Json expected_ray_json(const ExpectedRay& expected) {
+    return ray_json(expected);
+}
+
+ExpectedRay expected_ray_from(const Json& j) {
+    return ray_from(j);
+}
+
+bool ray_matches(const Ray& got, const ExpectedRay& expected) {
+    return matches(got, expected);
+}
+
+std::string expected_ray_text(const ExpectedRay& expected) {
+    return expected_text(expected);
+}
+
 Json mirror_ray_judge(const ExpectedRay& expected) {
     return {{"judge", "mirror_ray"}, {"ray", ray_json(expected)}};
 }

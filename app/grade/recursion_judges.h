@@ -1,5 +1,6 @@
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "app/grade/expected_ray.h"
@@ -24,5 +25,13 @@ probe::Json unbounded_ray_judge();
 /// channel and the rays asked about, in order, each as its ExpectedRay says and no more or fewer.
 probe::Json radiance_judge(const WideVec& colour, const WideVec& tolerance,
                            const std::vector<ExpectedRay>& rays);
+
+/// An expected ray as these judges write it and read it back (strictly), whether a ray matches
+/// it (a NaN anywhere fails), and how a report writes it: for other stages' judges of rays that
+/// leave a surface as the mirror ray does (stage 9's refracted ray).
+probe::Json expected_ray_json(const ExpectedRay& expected);
+ExpectedRay expected_ray_from(const probe::Json& j);
+bool ray_matches(const Ray& got, const ExpectedRay& expected);
+std::string expected_ray_text(const ExpectedRay& expected);
 
 }  // namespace raystep::grade

@@ -11,6 +11,8 @@ CallTable stage_calls() {
     add_transform_calls(table);
     add_shading_calls(table);
     add_recursion_calls(table);
+    add_sampling_calls(table);
+    add_refraction_calls(table);
     add_render_calls(table);
     return table;
 }

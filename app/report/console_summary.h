@@ -13,8 +13,8 @@ namespace raystep::grade {
 constexpr std::size_t kConsoleWidth = 80;
 
 /// The scores per stage in a small table, with the number of checks passed and the total, for
-/// the stages that have checks: 1 to 7, then the whole pipeline. Counts every check in the report
-/// given: pass seen_by(report, audience) for one audience's sums.
+/// the stages that have checks: 1 to kLastStage, then the whole pipeline. Counts every check in the
+/// report given: pass seen_by(report, audience) for one audience's sums.
 std::string stage_table(const GradeReport& report);
 
 /// The grade for a terminal: who, the intake problem if there was one

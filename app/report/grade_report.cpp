@@ -6,13 +6,6 @@
 
 namespace raystep::grade {
 
-namespace {
-
-// Stage 0 is the whole pipeline, 1 to 7 the lectures' stages (ARCHITECTURE.md, "How a check ends").
-constexpr int kLastStage = 7;
-
-}  // namespace
-
 std::string outcome_name(Outcome outcome) {
     switch (outcome) {
         case Outcome::passed:

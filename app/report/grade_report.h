@@ -48,7 +48,7 @@ struct RenderImages {
 
 struct CheckResult {
     std::string id;    ///< stable and unique: "stage3.oracle.shared-edges"
-    int stage = 0;     ///< 1 to 7; 0 for the whole pipeline
+    int stage = 0;     ///< 1 to kLastStage; 0 for the whole pipeline
     std::string kind;  ///< "unit", "oracle", "render" or "speed"
     std::string name;  ///< what it checks, in words
     Outcome outcome = Outcome::failed;
@@ -73,8 +73,13 @@ struct PhaseTimes {
     double reports = 0.0;
 };
 
-/// The order reports show the stages in: the lectures' 1 to 7, then the whole pipeline (0).
-inline constexpr int kStageReportOrder[] = {1, 2, 3, 4, 5, 6, 7, 0};
+/// The last lecture's stage: stage 0 is the whole pipeline, 1 to kLastStage the lectures'
+/// (ARCHITECTURE.md, "How a check ends").
+inline constexpr int kLastStage = 9;
+
+/// The order reports show the stages in: the lectures' 1 to kLastStage, then the whole pipeline
+/// (0).
+inline constexpr int kStageReportOrder[] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 0};
 
 /// One stage's line of a report's summary.
 struct StageTally {
@@ -97,7 +102,7 @@ struct GradeReport {
     PhaseTimes times;
     double score() const;
     double max_score() const;
-    /// Score and maximum per stage, 1 to 7 (index 0: the whole pipeline's checks).
+    /// Score and maximum per stage, 1 to kLastStage (index 0: the whole pipeline's checks).
     std::vector<std::pair<double, double>> stage_scores() const;
     /// The stages that have checks, in kStageReportOrder, each with its score and its checks
     /// passed.

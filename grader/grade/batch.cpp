@@ -64,7 +64,7 @@ std::vector<ClassEntry> class_submissions(const fs::path& folder, const fs::path
 
 std::string grades_csv(const std::vector<GradeReport>& reports) {
     std::string csv = "student,score,max_score";
-    for (int stage = 1; stage <= 7; ++stage)
+    for (int stage = 1; stage <= kLastStage; ++stage)
         csv += ",stage" + std::to_string(stage);
     csv += ",pipeline,checks_passed,checks,seconds\r\n";
     for (const GradeReport& r : reports) {
@@ -73,7 +73,7 @@ std::string grades_csv(const std::vector<GradeReport>& reports) {
             std::count_if(r.checks.begin(), r.checks.end(),
                           [](const CheckResult& c) { return c.outcome == Outcome::passed; }));
         csv += csv_field(r.student) + "," + number(r.score()) + "," + number(r.max_score());
-        for (int stage = 1; stage <= 7; ++stage) {
+        for (int stage = 1; stage <= kLastStage; ++stage) {
             csv += "," + (static_cast<std::size_t>(stage) < stages.size()
                               ? number(stages[static_cast<std::size_t>(stage)].first)
                               : "0.00");

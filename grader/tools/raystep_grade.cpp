@@ -3,6 +3,7 @@
 // Exit codes: 0 graded (whatever the score), 1 the grader itself failed, 2 a bad command line.
 
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -17,6 +18,7 @@
 #include "app/report/audience.h"
 #include "app/report/console_summary.h"
 #include "grader/grade/batch.h"
+#include "grader/grade/checks/statistics_seed.h"
 #include "grader/grade/grade_submission.h"
 #include "grader/grade/merge_shards.h"
 #include "grader/grade/release.h"
@@ -56,6 +58,7 @@ struct SubmissionArguments {
     bool instructor = false;
     std::string work;
     bool keep_work = false;
+    std::uint64_t seed = kDefaultStatisticsSeed;
 };
 
 int grade_one(const SubmissionArguments& arguments) {
@@ -76,6 +79,11 @@ int grade_one(const SubmissionArguments& arguments) {
         options.only_case = static_cast<std::size_t>(arguments.case_index);
     options.reference_probe = RAYSTEP_REFERENCE_PROBE;
     options.reproduce = "raystep-grade submission " + arguments.path;
+    // The statistical checks' seed is part of how a case is reproduced: a command for one of
+    // them names it unless it is the default.
+    set_statistics_seed(arguments.seed);
+    if (arguments.seed != kDefaultStatisticsSeed)
+        options.reproduce += " --seed " + std::to_string(arguments.seed);
     GradeReport report = grade_submission(options, load_rubric(fs::absolute(arguments.rubric)),
                                           this_build_toolchain());
     const auto reports_start = std::chrono::steady_clock::now();
@@ -185,7 +193,7 @@ int main(int argc, char** argv) {
     submission->add_option("--check", one.check, "Run only this check, by id");
     submission
         ->add_option("--stage", one.stage, "Run only this stage's checks (0: the whole pipeline's)")
-        ->check(CLI::Range(0, 7));
+        ->check(CLI::Range(0, 9));
     submission->add_flag("--no-speed", one.no_speed,
                          "Leave out the speed checks (on a loaded machine, or to regrade quickly)");
     submission->add_option("--case", one.case_index, "With --check: only this case")
@@ -197,6 +205,9 @@ int main(int argc, char** argv) {
     submission->add_option("--work", one.work,
                            "Where to build (default: beside the reports, or the system's temporary "
                            "folder where the sandbox's user cannot reach them)");
+    submission->add_option("--seed", one.seed,
+                           "The seed of the statistical checks (stage 8's random samples): a "
+                           "right submission passes at any seed at their stated false-fail rate");
     submission->add_flag("--keep-work", one.keep_work,
                          "Keep the build (the submission's files, objects, probes) to look into");
 

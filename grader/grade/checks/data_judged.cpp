@@ -35,8 +35,10 @@ std::vector<PublicCheck> public_checks(const std::filesystem::path& source) {
         stage2_sample_check(), stage4_slab_public_check(), stage4_grid_resolution_public_check(),
         stage4_sample_check(), stage5_public_check(),      stage5_sample_check(),
         stage6_public_check(), stage6_sample_check(),      stage7_public_check(),
-        stage7_sample_check(),
+        stage7_sample_check(), stage8_public_check(),      stage8_sample_check(),
     };
+    checks.push_back(stage9_public_check());
+    checks.push_back(stage9_sample_check());
     for (PublicCheck& check : render_public_checks(source))
         checks.push_back(std::move(check));
     return checks;

@@ -19,6 +19,12 @@ std::vector<CheckDefinition> stage4_checks();
 std::vector<CheckDefinition> stage5_checks();
 std::vector<CheckDefinition> stage6_checks();
 std::vector<CheckDefinition> stage7_checks();
+/// Stage 8's deterministic checks, "stage8.unit" and "stage8.oracle", then its statistical ones.
+std::vector<CheckDefinition> stage8_checks();
+/// Stage 8's checks of its random answers by their distributions, each with a stated false-fail
+/// rate, seeded by statistics_seed() (stage8_statistics.cpp).
+std::vector<CheckDefinition> stage8_statistical_checks();
+std::vector<CheckDefinition> stage9_checks();
 std::vector<CheckDefinition> render_checks();
 
 /// The public checks of each stage as data (grader/grade/checks/data_judged.h): what the stage's
@@ -31,6 +37,8 @@ PublicCheck stage4_grid_resolution_public_check();
 PublicCheck stage5_public_check();
 PublicCheck stage6_public_check();
 PublicCheck stage7_public_check();
+PublicCheck stage8_public_check();
+PublicCheck stage9_public_check();
 
 /// A sample of each stage's generated cases for the student release (kSampleKind,
 /// app/grade/public_case.h): a few of each kind the "stageN.oracle" check draws, decided by the
@@ -43,6 +51,8 @@ PublicCheck stage4_sample_check();
 PublicCheck stage5_sample_check();
 PublicCheck stage6_sample_check();
 PublicCheck stage7_sample_check();
+PublicCheck stage8_sample_check();
+PublicCheck stage9_sample_check();
 
 /// The render checks as data, each with the reference's render at the grader's size, made from
 /// the scenes under `source`/scenes: the grader judges a render by the same rule

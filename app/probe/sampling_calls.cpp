@@ -1,0 +1,229 @@
+// Stage 8 calls: sample patterns, rays through film points, a pixel's mean and a quad light's
+// soft shadow. The random calls take the render's seed and a list of stream numbers and answer
+// one result per stream, each from its own RandomStream(seed, stream): the grader asks for
+// hundreds of streams in one query and judges the distribution of what comes back, never the
+// values, since a student may consume a stream in any order. The film radiance and the occluder
+// are the probe's own, made from the query's parameters, so that the grader knows the exact
+// integral each mean estimates.
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include <glm/geometric.hpp>
+
+#include "app/probe/call_table.h"
+#include "stages/8_sampling/sampling.h"
+
+namespace raystep::probe {
+
+namespace {
+
+int integer(const Json& j) {
+    return j.get<int>();
+}
+
+Json point(const Vec2& p) {
+    return Json::array({number(p.x), number(p.y)});
+}
+
+Vec2 point_from(const Json& j) {
+    return {number_from(j.at(0)), number_from(j.at(1))};
+}
+
+Json points(const std::vector<Vec2>& list) {
+    Json all = Json::array();
+    for (const Vec2& p : list)
+        all.push_back(point(p));
+    return all;
+}
+
+SamplePattern pattern_from(const Json& j) {
+    const std::string name = j.get<std::string>();
+    if (name == "jittered") return SamplePattern::jittered;
+    if (name == "regular") return SamplePattern::regular;
+    if (name == "random") return SamplePattern::random;
+    throw std::invalid_argument("unknown sample pattern \"" + name + "\"");
+}
+
+QuadLight quad_light_from(const Json& j) {
+    QuadLight light;
+    light.corner = vec3_from(j.at("corner"));
+    light.edge1 = vec3_from(j.at("edge1"));
+    light.edge2 = vec3_from(j.at("edge2"));
+    light.radiance = vec3_from(j.at("radiance"));
+    return light;
+}
+
+// One answer per stream of "streams", each from RandomStream(seed, stream).
+template <class PerStream>
+Json per_stream(const Json& a, PerStream answer) {
+    const auto seed = a.at("seed").get<std::uint64_t>();
+    Json answers = Json::array();
+    for (const Json& stream : a.at("streams")) {
+        RandomStream random(seed, stream.get<std::uint64_t>());
+        answers.push_back(answer(random));
+    }
+    return answers;
+}
+
+// The film radiance a pixel_colour query names, all three channels alike:
+// - constant: `value` everywhere;
+// - edge: `bright` where (film - through) . normal >= 0, `dark` elsewhere;
+// - ramp: value + gradient . film.
+FilmRadiance film_radiance_from(const Json& j) {
+    const std::string kind = j.at("kind").get<std::string>();
+    if (kind == "constant") {
+        const double value = number_from(j.at("value"));
+        return [value](const Vec2&) { return Color(value); };
+    }
+    if (kind == "edge") {
+        const Vec2 through = point_from(j.at("through"));
+        const Vec2 normal = point_from(j.at("normal"));
+        const double bright = number_from(j.at("bright"));
+        const double dark = number_from(j.at("dark"));
+        return [=](const Vec2& film) {
+            const Vec2 d = film - through;
+            return Color(d.x * normal.x + d.y * normal.y >= 0.0 ? bright : dark);
+        };
+    }
+    if (kind == "ramp") {
+        const double value = number_from(j.at("value"));
+        const Vec2 gradient = point_from(j.at("gradient"));
+        return [=](const Vec2& film) {
+            return Color(value + gradient.x * film.x + gradient.y * film.y);
+        };
+    }
+    throw std::invalid_argument("unknown film radiance \"" + kind + "\"");
+}
+
+// A parallelogram in front of the light: a shadow ray is blocked when it meets it within its
+// [t_min, t_max]. Null: nothing blocks.
+OccludedFunction occluder_from(const Json& j) {
+    if (j.is_null()) return [](const Ray&) { return false; };
+    const Vec3 corner = vec3_from(j.at("corner"));
+    const Vec3 e1 = vec3_from(j.at("edge1"));
+    const Vec3 e2 = vec3_from(j.at("edge2"));
+    return [=](const Ray& ray) {
+        const Vec3 normal = glm::cross(e1, e2);
+        const double facing = glm::dot(ray.direction, normal);
+        if (facing == 0.0) return false;
+        const double t = glm::dot(corner - ray.origin, normal) / facing;
+        if (!(t >= ray.t_min && t <= ray.t_max)) return false;
+        // The point's coordinates along the two edges, by the dual basis of (e1, e2).
+        const Vec3 p = ray.origin + t * ray.direction - corner;
+        const double g11 = glm::dot(e1, e1), g12 = glm::dot(e1, e2), g22 = glm::dot(e2, e2);
+        const double det = g11 * g22 - g12 * g12;
+        const double s = (glm::dot(p, e1) * g22 - glm::dot(p, e2) * g12) / det;
+        const double r = (glm::dot(p, e2) * g11 - glm::dot(p, e1) * g12) / det;
+        return s >= 0.0 && s <= 1.0 && r >= 0.0 && r <= 1.0;
+    };
+}
+
+PerspectiveCamera perspective_camera_from(const Json& j) {
+    PerspectiveCamera c;
+    c.eye = vec3_from(j.at("eye"));
+    c.frame = {vec3_from(j.at("u")), vec3_from(j.at("v")), vec3_from(j.at("w"))};
+    c.half_width = number_from(j.at("half_width"));
+    c.half_height = number_from(j.at("half_height"));
+    c.width = integer(j.at("width"));
+    c.height = integer(j.at("height"));
+    return c;
+}
+
+OrthographicCamera orthographic_camera_from(const Json& j) {
+    OrthographicCamera c;
+    c.eye = vec3_from(j.at("eye"));
+    c.frame = {vec3_from(j.at("u")), vec3_from(j.at("v")), vec3_from(j.at("w"))};
+    c.left = number_from(j.at("left"));
+    c.right = number_from(j.at("right"));
+    c.bottom = number_from(j.at("bottom"));
+    c.top = number_from(j.at("top"));
+    c.width = integer(j.at("width"));
+    c.height = integer(j.at("height"));
+    return c;
+}
+
+template <class Camera, class RayThrough>
+Json rays_through(const Camera& camera, const Json& films, RayThrough through) {
+    Json rays = Json::array();
+    for (const Json& film : films)
+        rays.push_back(ray(through(camera, point_from(film))));
+    return rays;
+}
+
+}  // namespace
+
+void add_sampling_calls(CallTable& table) {
+    table["regular_samples"] = [](const Json& a) {
+        return points(regular_samples(integer(a.at("strata"))));
+    };
+    table["jittered_samples"] = [](const Json& a) {
+        const int strata = integer(a.at("strata"));
+        return per_stream(a, [&](RandomStream& r) { return points(jittered_samples(strata, r)); });
+    };
+    table["random_samples"] = [](const Json& a) {
+        const int count = integer(a.at("count"));
+        return per_stream(a, [&](RandomStream& r) { return points(random_samples(count, r)); });
+    };
+    table["samples"] = [](const Json& a) {
+        const SamplePattern pattern = pattern_from(a.at("pattern"));
+        const int count = integer(a.at("count"));
+        return per_stream(a, [&](RandomStream& r) { return points(samples(pattern, count, r)); });
+    };
+    table["perspective_ray_through"] = [](const Json& a) {
+        return rays_through(perspective_camera_from(a.at("camera")), a.at("films"),
+                            perspective_ray_through);
+    };
+    table["orthographic_ray_through"] = [](const Json& a) {
+        return rays_through(orthographic_camera_from(a.at("camera")), a.at("films"),
+                            orthographic_ray_through);
+    };
+    // Per stream the colour, how many times the radiance was asked, and how many of the film
+    // points asked lay outside the pixel [i, i + 1) x [j, j + 1).
+    table["pixel_colour"] = [](const Json& a) {
+        const FilmRadiance radiance = film_radiance_from(a.at("radiance"));
+        const int i = integer(a.at("i"));
+        const int j = integer(a.at("j"));
+        const SamplePattern pattern = pattern_from(a.at("pattern"));
+        const int count = integer(a.at("count"));
+        return per_stream(a, [&](RandomStream& r) {
+            int calls = 0;
+            int outside = 0;
+            const FilmRadiance counted = [&](const Vec2& film) {
+                ++calls;
+                if (!(film.x >= i && film.x < i + 1 && film.y >= j && film.y < j + 1)) ++outside;
+                return radiance(film);
+            };
+            const Color colour = pixel_colour(counted, i, j, pattern, count, r);
+            return Json{{"colour", vec3(colour)}, {"calls", calls}, {"outside", outside}};
+        });
+    };
+    table["sample_quad_light"] = [](const Json& a) {
+        return light_sample(sample_quad_light(quad_light_from(a.at("light")),
+                                              vec3_from(a.at("point")), point_from(a.at("u")),
+                                              integer(a.at("sample_count"))));
+    };
+    // Per stream the colour and the shadow rays traced.
+    table["quad_light_shading"] = [](const Json& a) {
+        const Material material = material_from(a.at("material"));
+        const SurfacePoint p = surface_point_from(a.at("point"));
+        const QuadLight light = quad_light_from(a.at("light"));
+        const SamplePattern pattern = pattern_from(a.at("pattern"));
+        const int count = integer(a.at("count"));
+        const OccludedFunction blocker = occluder_from(a.at("blocker"));
+        const RayOffset offset = ray_offset_from(a.at("offset"));
+        return per_stream(a, [&](RandomStream& r) {
+            int shadow_rays = 0;
+            const OccludedFunction counted = [&](const Ray& ray) {
+                ++shadow_rays;
+                return blocker(ray);
+            };
+            const Color colour =
+                quad_light_shading(material, p, light, pattern, count, r, counted, offset);
+            return Json{{"colour", vec3(colour)}, {"shadow_rays", shadow_rays}};
+        });
+    };
+}
+
+}  // namespace raystep::probe

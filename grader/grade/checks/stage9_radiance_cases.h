@@ -1,0 +1,27 @@
+#pragma once
+
+#include <vector>
+
+#include "app/grade/public_case.h"
+#include "base/math/portable_random.h"
+
+namespace raystep::grade {
+
+// Stage 9's radiance_with_refraction cases (stage9_radiance_cases.cpp): the recursion over fake
+// scenes played inside the probe, whose hits are keyed by the ray that should reach them
+// (app/probe/refraction_calls.cpp), each case's colour and rays decided in long double
+// (grader/oracle/refraction_oracle.h) and judged by "refraction_radiance"
+// (app/grade/refraction_judges.h).
+
+/// Hand-worked scenes: glass head-on, total internal reflection, a nested solid.
+std::vector<PublicCase> stage9_public_radiance_cases();
+
+/// The contract's edges: F applied once, the media passed down and kept for reflected rays,
+/// bounces cut, black weights tracing nothing, Schlick leaving glass.
+std::vector<PublicCase> stage9_hidden_radiance_cases();
+
+/// A random tree of glass and mirrors, drawn from `random`; `k` cycles the offset rules and the
+/// Fresnel form.
+PublicCase stage9_random_radiance_case(PortableRandom& random, int k);
+
+}  // namespace raystep::grade
