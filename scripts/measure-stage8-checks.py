@@ -6,7 +6,7 @@ at which a right submission failed. With --mutants, does the same for each stage
 every stage-8 check, which should fail at every seed.
 
     scripts/measure-stage8-checks.py [--count 100] [--first 1] [--jobs 2] [--mutants]
-        [--grader build/release/bin/raystep-grade]
+        [--checks stage8.render.] [--grader build/release/bin/raystep-grade]
 
 Prints one Markdown table per entry, for docs/measurements/stage8-checks.md.
 """
@@ -46,7 +46,7 @@ def sweep(grader, entry, args, work):
     name = "model" if entry is None else entry.stem
     folder = work / name
     probe = built_probe(grader, entry, folder)
-    prefix = "stage8." if args.mutants else "stage8.statistics."
+    prefix = args.checks or ("stage8." if args.mutants else "stage8.statistics.")
     table = subprocess.run([str(grader), "seeds", str(probe), "--checks", prefix, "--first",
                             str(args.first), "--count", str(args.count)],
                            capture_output=True, text=True, check=True).stdout
@@ -59,6 +59,8 @@ def main():
     parser.add_argument("--first", type=int, default=1)
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--mutants", action="store_true")
+    parser.add_argument("--checks", help="the checks whose id starts with this (default: "
+                        "stage8.statistics., or stage8. with --mutants)")
     parser.add_argument("--grader", default=str(ROOT / "build/release/bin/raystep-grade"))
     args = parser.parse_args()
 

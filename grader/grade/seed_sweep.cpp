@@ -1,14 +1,17 @@
 #include "grader/grade/seed_sweep.h"
 
 #include <stdexcept>
+#include <system_error>
+
+#include <unistd.h>
 
 #include "grader/grade/check_definition.h"
 #include "grader/grade/checks/statistics_seed.h"
 
 namespace raystep::grade {
 
-SeedSweep sweep_seeds(const std::filesystem::path& probe, const std::string& prefix,
-                      std::uint64_t first, int count) {
+SeedSweep sweep_seeds(const std::filesystem::path& probe, const std::filesystem::path& source,
+                      const std::string& prefix, std::uint64_t first, int count) {
     std::vector<CheckDefinition> checks;
     for (CheckDefinition& check : all_checks()) {
         if (check.id.rfind(prefix, 0) == 0) checks.push_back(std::move(check));
@@ -24,6 +27,9 @@ SeedSweep sweep_seeds(const std::filesystem::path& probe, const std::string& pre
     const BuiltProbe built{probe, ""};
     GradingContext context;
     context.reproduce = "raystep-grade seeds";
+    context.source = source;
+    context.report_folder =
+        std::filesystem::temp_directory_path() / ("raystep-seeds-" + std::to_string(::getpid()));
     for (int k = 0; k < count; ++k) {
         const std::uint64_t seed = first + static_cast<std::uint64_t>(k);
         set_statistics_seed(seed);
@@ -36,6 +42,8 @@ SeedSweep sweep_seeds(const std::filesystem::path& probe, const std::string& pre
         }
         if (any) sweep.any_failed.push_back(seed);
     }
+    std::error_code ignored;
+    std::filesystem::remove_all(context.report_folder, ignored);
     return sweep;
 }
 

@@ -22,10 +22,11 @@ struct SeedSweep {
 };
 
 /// Runs every check whose id starts with `prefix` on `probe` (a probe program built by
-/// raystep-grade, kept with --keep-work) at seeds first to first + count - 1. Throws
-/// std::invalid_argument when no check has that prefix.
-SeedSweep sweep_seeds(const std::filesystem::path& probe, const std::string& prefix,
-                      std::uint64_t first, int count);
+/// raystep-grade, kept with --keep-work) at seeds first to first + count - 1, render checks on the
+/// scenes under `source`/scenes, their images written into a temporary folder removed after.
+/// Throws std::invalid_argument when no check has that prefix.
+SeedSweep sweep_seeds(const std::filesystem::path& probe, const std::filesystem::path& source,
+                      const std::string& prefix, std::uint64_t first, int count);
 
 /// The sweep as a Markdown table, a row per check and one for any of them: the seeds failed and
 /// the first few of them.

@@ -293,7 +293,8 @@ int main(int argc, char** argv) {
         if (batch->parsed()) return grade_many(many);
         if (release_command->parsed()) return release(release_folder);
         if (seeds_command->parsed()) {
-            std::fputs(seed_sweep_text(sweep_seeds(fs::absolute(sweep_probe), sweep_prefix,
+            std::fputs(seed_sweep_text(sweep_seeds(fs::absolute(sweep_probe),
+                                                   this_build_toolchain().source, sweep_prefix,
                                                    sweep_first, sweep_count))
                            .c_str(),
                        stdout);
