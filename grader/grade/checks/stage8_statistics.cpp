@@ -398,8 +398,8 @@ std::string read_pixel_answers(const Json& answers, int count, std::vector<doubl
         const int outside = stream.at("outside").get<int>();
         if (outside != 0) {
             return std::to_string(outside) + " of the film points outside the pixel [" +
-                   std::to_string(kPixelI) + ", " + std::to_string(kPixelI + 1) + ") x [" +
-                   std::to_string(kPixelJ) + ", " + std::to_string(kPixelJ + 1) + ")";
+                   std::to_string(kPixelI) + ", " + std::to_string(kPixelI + 1) + "] x [" +
+                   std::to_string(kPixelJ) + ", " + std::to_string(kPixelJ + 1) + "]";
         }
         const Vec3 colour = probe::vec3_from(stream.at("colour"));
         if (!(colour.x == colour.y && colour.y == colour.z)) {
