@@ -1,20 +1,18 @@
 #!/usr/bin/env python3
-"""Measures the false-fail rate of stage 8's checks: grades stage 8 of the corpus's model and of
-each stage-8 alternative (grader/tests/submissions/alternatives/8-*.diff) at many statistical
-seeds (`raystep-grade submission --seed S`) and counts, per check, the seeds at which a right
-submission lost points. With --mutants, grades each stage-8 mutant the same way and counts the
-seeds at which it lost points in stage 8, which should be all of them.
+"""Measures how often stage 8's checks fail: builds the stage-8 probe of the corpus's model and of
+each stage-8 alternative (grader/tests/submissions/alternatives/8-*.diff) once, then runs the
+statistical checks on it at many seeds (`raystep-grade seeds`), which counts, per check, the seeds
+at which a right submission failed. With --mutants, does the same for each stage-8 mutant over
+every stage-8 check, which should fail at every seed.
 
-    scripts/measure-stage8-checks.py [--seeds 100] [--first 1] [--jobs 2] [--mutants]
-        [--grader build/release/bin/raystep-grade]
+    scripts/measure-stage8-checks.py [--count 100] [--first 1] [--jobs 2] [--mutants]
+        [--checks stage8.render.] [--grader build/release/bin/raystep-grade]
 
-Prints a Markdown table for docs/measurements/stage8-checks.md.
+Prints one Markdown table per entry, for docs/measurements/stage8-checks.md.
 """
 
 import argparse
-import collections
 import concurrent.futures
-import json
 import pathlib
 import shutil
 import subprocess
@@ -25,48 +23,44 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 CORPUS = ROOT / "grader/tests/submissions"
 
 
-def submission(entry, folder):
-    """The model's stage-8 files, with the entry's diff applied unless it is the model."""
+def built_probe(grader, entry, folder):
+    """The stage-8 probe of the model's files with the entry's diff applied (none: the model)."""
     stages = folder / "sub" / "stages"
     stages.mkdir(parents=True)
     shutil.copytree(CORPUS / "model/stages/8_sampling", stages / "8_sampling")
     if entry is not None:
         subprocess.run(["git", "apply", "-p1", str(entry)], cwd=folder / "sub", check=True)
-    return folder / "sub"
-
-
-def grade(grader, sub, seed, output):
-    """Each stage-8 check's (score, max_score) at this seed."""
-    subprocess.run([str(grader), "submission", str(sub), "--stage", "8", "--no-speed",
-                    "--jobs", "1", "--seed", str(seed), "-o", str(output)],
+    work = folder / "work"
+    work.mkdir()
+    subprocess.run([str(grader), "submission", str(folder / "sub"), "--stage", "8", "--no-speed",
+                    "--jobs", "1", "--keep-work", "--work", str(work), "-o",
+                    str(folder / "report")],
                    stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
-    report = json.loads((output / "instructor/report.json").read_text())
-    return {c["id"]: (c["score"], c["max_score"]) for c in report["checks"] if c["max_score"] > 0}
+    probes = list(work.glob("*/probes/stage8/probe"))
+    if len(probes) != 1:
+        raise RuntimeError(f"no stage-8 probe built for {entry or 'the model'} in {work}")
+    return probes[0]
 
 
-def measure(grader, entry, seeds, work):
+def sweep(grader, entry, args, work):
     name = "model" if entry is None else entry.stem
     folder = work / name
-    sub = submission(entry, folder)
-    lost = collections.Counter()
-    stage_lost = 0
-    for seed in seeds:
-        scores = grade(grader, sub, seed, folder / f"report-{seed}")
-        shutil.rmtree(folder / f"report-{seed}", ignore_errors=True)
-        for check, (score, maximum) in scores.items():
-            if score < maximum:
-                lost[check] += 1
-        if sum(s for s, _ in scores.values()) < sum(m for _, m in scores.values()):
-            stage_lost += 1
-    return name, lost, stage_lost, sorted(scores)
+    probe = built_probe(grader, entry, folder)
+    prefix = args.checks or ("stage8." if args.mutants else "stage8.statistics.")
+    table = subprocess.run([str(grader), "seeds", str(probe), "--checks", prefix, "--first",
+                            str(args.first), "--count", str(args.count)],
+                           capture_output=True, text=True, check=True).stdout
+    return name, table
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--seeds", type=int, default=100)
+    parser.add_argument("--count", type=int, default=100)
     parser.add_argument("--first", type=int, default=1)
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--mutants", action="store_true")
+    parser.add_argument("--checks", help="the checks whose id starts with this (default: "
+                        "stage8.statistics., or stage8. with --mutants)")
     parser.add_argument("--grader", default=str(ROOT / "build/release/bin/raystep-grade"))
     args = parser.parse_args()
 
@@ -74,20 +68,14 @@ def main():
     entries = sorted((CORPUS / folder).glob("8-*.diff"))
     if not args.mutants:
         entries = [None] + entries
-    seeds = range(args.first, args.first + args.seeds)
     with tempfile.TemporaryDirectory() as work_text:
         work = pathlib.Path(work_text)
+        # The sandbox's user must reach the probes the grader builds in there.
+        work.chmod(0o755)
         with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
-            results = list(pool.map(lambda e: measure(args.grader, e, seeds, work), entries))
-
-    checks = results[0][3]
-    print(f"Seeds {args.first} to {args.first + args.seeds - 1}: the seeds at which each entry "
-          f"lost points, per check and in stage 8 as a whole.\n")
-    print("| entry | " + " | ".join(c.removeprefix("stage8.") for c in checks) + " | stage 8 |")
-    print("|---" * (len(checks) + 2) + "|")
-    for name, lost, stage_lost, _ in results:
-        print(f"| {name} | " + " | ".join(str(lost[c]) for c in checks) +
-              f" | {stage_lost} of {args.seeds} |")
+            results = list(pool.map(lambda e: sweep(args.grader, e, args, work), entries))
+    for name, table in results:
+        print(f"#### {name}\n\n{table}")
     return 0
 
 

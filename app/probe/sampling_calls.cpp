@@ -180,7 +180,8 @@ void add_sampling_calls(CallTable& table) {
                             orthographic_ray_through);
     };
     // Per stream the colour, how many times the radiance was asked, and how many of the film
-    // points asked lay outside the pixel [i, i + 1) x [j, j + 1).
+    // points asked lay outside the pixel [i, i + 1] x [j, j + 1]: closed, since i + u with u just
+    // below 1 may round to i + 1.
     table["pixel_colour"] = [](const Json& a) {
         const FilmRadiance radiance = film_radiance_from(a.at("radiance"));
         const int i = integer(a.at("i"));
@@ -192,7 +193,7 @@ void add_sampling_calls(CallTable& table) {
             int outside = 0;
             const FilmRadiance counted = [&](const Vec2& film) {
                 ++calls;
-                if (!(film.x >= i && film.x < i + 1 && film.y >= j && film.y < j + 1)) ++outside;
+                if (!(film.x >= i && film.x <= i + 1 && film.y >= j && film.y <= j + 1)) ++outside;
                 return radiance(film);
             };
             const Color colour = pixel_colour(counted, i, j, pattern, count, r);

@@ -35,7 +35,7 @@ TEST_CASE("GradeReport: the total and the maximum add up every check, hidden one
 
 TEST_CASE("GradeReport::stage_scores: one entry per stage, the pipeline at index 0", "[report]") {
     const auto scores = example_report().stage_scores();
-    REQUIRE(scores.size() == 8);
+    REQUIRE(scores.size() == kLastStage + 1);
     CHECK(scores[0] == std::pair<double, double>(4, 4));
     CHECK(scores[1] == std::pair<double, double>(5, 5));
     CHECK(scores[2] == std::pair<double, double>(0, 4));
@@ -44,13 +44,16 @@ TEST_CASE("GradeReport::stage_scores: one entry per stage, the pipeline at index
     CHECK(scores[5] == std::pair<double, double>(0, 4));
     CHECK(scores[6] == std::pair<double, double>(3, 3));
     CHECK(scores[7] == std::pair<double, double>(3, 6));
+    // Stages 8 and 9 have no check in the example: nothing scored, nothing to score.
+    CHECK(scores[8] == std::pair<double, double>(0, 0));
+    CHECK(scores[9] == std::pair<double, double>(0, 0));
 }
 
 TEST_CASE("GradeReport::stage_scores: a stage out of range names its check", "[report]") {
     GradeReport report;
     report.checks.resize(1);
-    report.checks[0].id = "stage9.unit.nothing";
-    report.checks[0].stage = 9;
-    CHECK_THROWS_WITH(report.stage_scores(), Catch::Matchers::Contains("stage9.unit.nothing") &&
-                                                 Catch::Matchers::Contains("stage 9"));
+    report.checks[0].id = "stage10.unit.nothing";
+    report.checks[0].stage = 10;
+    CHECK_THROWS_WITH(report.stage_scores(), Catch::Matchers::Contains("stage10.unit.nothing") &&
+                                                 Catch::Matchers::Contains("stage 10"));
 }

@@ -23,6 +23,7 @@
 #include "grader/grade/merge_shards.h"
 #include "grader/grade/release.h"
 #include "grader/grade/release_grading.h"
+#include "grader/grade/seed_sweep.h"
 #include "grader/grade/shard.h"
 #include "grader/grade/write_reports.h"
 #include "grader/sandbox/sandbox.h"
@@ -264,6 +265,23 @@ int main(int argc, char** argv) {
         "Write a release's grading/ folder alone: the public case files and the rubric");
     public_cases_command->add_option("folder", grading_folder, "Where they go")->required();
 
+    std::string sweep_probe;
+    std::string sweep_prefix = "stage8.statistics.";
+    std::uint64_t sweep_first = 1;
+    int sweep_count = 100;
+    CLI::App* seeds_command = app.add_subcommand(
+        "seeds", "Run the seeded checks on one built probe at many seeds: how often each fails");
+    seeds_command
+        ->add_option("probe", sweep_probe,
+                     "A probe raystep-grade built (submission --keep-work): WORK/probes/...")
+        ->required()
+        ->check(CLI::ExistingFile);
+    seeds_command->add_option("--checks", sweep_prefix,
+                              "The checks whose id starts with this (default: stage8.statistics.)");
+    seeds_command->add_option("--first", sweep_first, "The first seed (default: 1)");
+    seeds_command->add_option("--count", sweep_count, "How many seeds (default: 100)")
+        ->check(CLI::Range(1, 1000000));
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& error) {
@@ -274,6 +292,14 @@ int main(int argc, char** argv) {
         if (submission->parsed()) return grade_one(one);
         if (batch->parsed()) return grade_many(many);
         if (release_command->parsed()) return release(release_folder);
+        if (seeds_command->parsed()) {
+            std::fputs(seed_sweep_text(sweep_seeds(fs::absolute(sweep_probe),
+                                                   this_build_toolchain().source, sweep_prefix,
+                                                   sweep_first, sweep_count))
+                           .c_str(),
+                       stdout);
+            return 0;
+        }
         if (public_cases_command->parsed()) {
             const std::size_t written = write_release_grading(this_build_toolchain().source,
                                                               RAYSTEP_RUBRIC, grading_folder);

@@ -312,6 +312,8 @@ std::vector<CheckDefinition> stage8_checks() {
          [] { return data_judged_cases(generated_cases(kOracleSeed, 400)); }});
     for (CheckDefinition& check : stage8_statistical_checks())
         checks.push_back(std::move(check));
+    for (CheckDefinition& check : noisy_render_checks())
+        checks.push_back(std::move(check));
     return checks;
 }
 

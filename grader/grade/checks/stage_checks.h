@@ -19,11 +19,16 @@ std::vector<CheckDefinition> stage4_checks();
 std::vector<CheckDefinition> stage5_checks();
 std::vector<CheckDefinition> stage6_checks();
 std::vector<CheckDefinition> stage7_checks();
-/// Stage 8's deterministic checks, "stage8.unit" and "stage8.oracle", then its statistical ones.
+/// Stage 8's deterministic checks, "stage8.unit", "stage8.hidden" and "stage8.oracle", then its
+/// statistical ones and its noisy render checks.
 std::vector<CheckDefinition> stage8_checks();
 /// Stage 8's checks of its random answers by their distributions, each with a stated false-fail
 /// rate, seeded by statistics_seed() (stage8_statistics.cpp).
 std::vector<CheckDefinition> stage8_statistical_checks();
+/// The render checks of sampled scenes, each view rendered at several seeds and compared tile by
+/// tile with the reference's mean (noisy_render_checks.cpp).
+std::vector<CheckDefinition> noisy_render_checks();
+/// Stage 9's checks, "stage9.unit", "stage9.hidden" and "stage9.oracle" (stage9_checks.cpp).
 std::vector<CheckDefinition> stage9_checks();
 std::vector<CheckDefinition> render_checks();
 

@@ -1,0 +1,401 @@
+// Stage 8's statistical checks of means (stage8_statistics.cpp says how the checks judge): a
+// pixel's colour over film radiances whose exact mean the grader knows (an edge's coverage, a
+// ramp), with the variance that stratification must bring, and a quad light's soft shadow over a
+// point against the light's integral, with a blocker over a known part of it.
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "app/grade/value_text.h"
+#include "grader/grade/checks/judging.h"
+#include "grader/grade/checks/sample_statistics.h"
+#include "grader/grade/checks/stage8_queries.h"
+#include "grader/grade/checks/stage8_statistics.h"
+#include "grader/grade/checks/statistics_seed.h"
+#include "grader/oracle/sampling_oracle.h"
+
+namespace raystep::grade {
+
+namespace {
+
+using probe::Json;
+
+// --- pixel_colour
+
+constexpr int kPixelI = 3;
+constexpr int kPixelJ = 5;
+
+// A film radiance of the probe's (app/probe/sampling_calls.cpp) and what the grader knows of it.
+struct FilmCase {
+    std::string text;
+    Json radiance;
+    std::function<double(const Vec2&)> at;  ///< its value at a film point
+    double mean = 0.0;                      ///< its exact mean over the pixel
+    /// The exact variance of the jittered estimate with n x n strata.
+    std::function<double(int n)> jittered_variance;
+};
+
+FilmCase constant_film(double value) {
+    return {"constant " + full_text(value), Json{{"kind", "constant"}, {"value", value}},
+            [value](const Vec2&) { return value; }, value, [](int) { return 0.0; }};
+}
+
+// An edge through `through` at `angle` (radians) to the x axis of the film: bright on the side
+// its normal points to.
+FilmCase edge_film(const Vec2& through, double angle, double bright, double dark) {
+    const Vec2 normal{-std::sin(angle), std::cos(angle)};
+    const Vec2 low{kPixelI, kPixelJ};
+    const Vec2 high{kPixelI + 1, kPixelJ + 1};
+    const double share = half_plane_share(low, high, through, normal);
+    const auto variance = [=](int n) {
+        // Each stratum's sample is bright with the share q of the stratum the edge leaves bright:
+        // the strata are independent, so the variance is (bright - dark)^2 sum q (1 - q) / n^4.
+        double sum = 0.0;
+        for (int b = 0; b < n; ++b) {
+            for (int a = 0; a < n; ++a) {
+                const Vec2 s_low = low + Vec2(a, b) / static_cast<double>(n);
+                const Vec2 s_high = low + Vec2(a + 1, b + 1) / static_cast<double>(n);
+                const double q = half_plane_share(s_low, s_high, through, normal);
+                sum += q * (1 - q);
+            }
+        }
+        const double n2 = static_cast<double>(n) * n;
+        return (bright - dark) * (bright - dark) * sum / (n2 * n2);
+    };
+    return {"an edge through " + point_text(through) + " at " + full_text(angle) +
+                " radians, bright " + full_text(bright) + ", dark " + full_text(dark),
+            Json{{"kind", "edge"},
+                 {"through", point_json(through)},
+                 {"normal", point_json(normal)},
+                 {"bright", bright},
+                 {"dark", dark}},
+            [=](const Vec2& film) {
+                const Vec2 d = film - through;
+                return d.x * normal.x + d.y * normal.y >= 0.0 ? bright : dark;
+            },
+            dark + (bright - dark) * share, variance};
+}
+
+FilmCase ramp_film(double value, const Vec2& gradient) {
+    const double mean = value + gradient.x * (kPixelI + 0.5) + gradient.y * (kPixelJ + 0.5);
+    // A stratum of side 1/n adds the variance of a uniform offset, (g.x^2 + g.y^2) / (12 n^2),
+    // over n^2 independent strata averaged: divided by n^2 again.
+    const auto variance = [=](int n) {
+        const double n2 = static_cast<double>(n) * n;
+        return (gradient.x * gradient.x + gradient.y * gradient.y) / (12.0 * n2 * n2);
+    };
+    return {"a ramp " + full_text(value) + " + " + point_text(gradient) + " . film",
+            Json{{"kind", "ramp"}, {"value", value}, {"gradient", point_json(gradient)}},
+            [=](const Vec2& film) { return value + gradient.x * film.x + gradient.y * film.y; },
+            mean, variance};
+}
+
+Json pixel_query(const FilmCase& film, SamplePattern pattern, int count, std::uint64_t seed,
+                 const Json& streams) {
+    return {{"radiance", film.radiance},
+            {"i", kPixelI},
+            {"j", kPixelJ},
+            {"pattern", pattern_name(pattern)},
+            {"count", count},
+            {"seed", seed},
+            {"streams", streams}};
+}
+
+std::string pixel_call(const FilmCase& film, SamplePattern pattern, int count) {
+    return "pixel_colour(" + film.text + ", pixel (" + std::to_string(kPixelI) + ", " +
+           std::to_string(kPixelJ) + "), " + pattern_name(pattern) + ", " + std::to_string(count) +
+           ")";
+}
+
+// Per stream: the radiance asked `count` times, every film point inside the pixel, and the three
+// channels alike (the probe's radiance is grey). Returns the red channel of each stream, or the
+// problem.
+std::string read_pixel_answers(const Json& answers, int count, std::vector<double>& colours) {
+    for (const Json& stream : answers) {
+        const int calls = stream.at("calls").get<int>();
+        if (calls != count) {
+            return "the radiance asked " + std::to_string(calls) + " times, not " +
+                   std::to_string(count);
+        }
+        const int outside = stream.at("outside").get<int>();
+        if (outside != 0) {
+            return std::to_string(outside) + " of the film points outside the pixel [" +
+                   std::to_string(kPixelI) + ", " + std::to_string(kPixelI + 1) + "] x [" +
+                   std::to_string(kPixelJ) + ", " + std::to_string(kPixelJ + 1) + "]";
+        }
+        const Vec3 colour = probe::vec3_from(stream.at("colour"));
+        if (!(colour.x == colour.y && colour.y == colour.z)) {
+            return "the channels of a grey radiance apart: " + full_text(colour);
+        }
+        colours.push_back(colour.x);
+    }
+    return "";
+}
+
+// Every stream's answer the exact value, within rounding: a constant's mean, or the regular
+// pattern's sum, which has no randomness.
+ProbeCase pixel_exact_case(const FilmCase& film, SamplePattern pattern, int count, double exact,
+                           std::uint64_t seed, StreamCounter& streams) {
+    return {pixel_call(film, pattern, count) + ": " + full_text(exact) + " from every stream",
+            {"pixel_colour", pixel_query(film, pattern, count, seed, streams.next(20))},
+            [count, exact](const ProbeAnswer& answer) {
+                const std::string want = full_text(exact) + " from every stream";
+                if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
+                std::vector<double> colours;
+                const std::string problem = read_pixel_answers(answer.value, count, colours);
+                if (!problem.empty()) return wrong(want, problem);
+                for (double c : colours) {
+                    if (!(std::abs(c - exact) <= 1e-12 * std::max(1.0, std::abs(exact)))) {
+                        return wrong(want, full_text(c));
+                    }
+                }
+                return right();
+            },
+            ""};
+}
+
+// The mean over kMeanStreams streams within the bound of standard errors of the exact mean; with
+// `variance_test`, also the streams' variance not above the exact jittered variance (one-sided),
+// which random sampling's exceeds many times over.
+ProbeCase pixel_mean_case(const FilmCase& film, SamplePattern pattern, int count,
+                          bool variance_test, std::uint64_t seed, StreamCounter& streams,
+                          double alpha) {
+    const int n = static_cast<int>(std::lround(std::sqrt(count)));
+    const double jittered_variance = film.jittered_variance(n);
+    return {pixel_call(film, pattern, count) + ": the mean over " + std::to_string(kMeanStreams) +
+                " streams" + (variance_test ? ", and its variance that of stratified samples" : ""),
+            {"pixel_colour", pixel_query(film, pattern, count, seed, streams.next(kMeanStreams))},
+            [count, exact = film.mean, variance_test, jittered_variance,
+             alpha](const ProbeAnswer& answer) {
+                const std::string want =
+                    "a mean within " + full_text(two_sided_normal_bound(alpha)) +
+                    " standard errors of " + full_text(exact) +
+                    (variance_test ? ", a variance near " + full_text(jittered_variance) : "");
+                if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
+                std::vector<double> colours;
+                const std::string problem = read_pixel_answers(answer.value, count, colours);
+                if (!problem.empty()) return wrong(want, problem);
+                const MeanEstimate estimate = estimate_mean(colours, kDeviationFloor);
+                const std::string got = "the mean " + full_text(estimate.mean) +
+                                        ", standard error " + full_text(estimate.standard_error) +
+                                        ", variance " +
+                                        full_text(estimate.deviation * estimate.deviation);
+                if (!mean_consistent(estimate, exact, two_sided_normal_bound(alpha))) {
+                    return wrong(want, got);
+                }
+                if (variance_test && !variance_not_above(colours, jittered_variance,
+                                                         one_sided_normal_bound(alpha))) {
+                    return wrong(want, got);
+                }
+                return right();
+            },
+            ""};
+}
+
+std::vector<ProbeCase> make_pixel_cases() {
+    const std::uint64_t seed = statistics_seed();
+    StreamCounter streams;
+    // Four means and one variance.
+    constexpr int tests = 5;
+    const double alpha = kCheckAlpha / tests;
+    const FilmCase constant = constant_film(0.7);
+    const FilmCase edge = edge_film({kPixelI + 0.37, kPixelJ + 0.61}, 0.3, 1.0, 0.2);
+    const FilmCase ramp = ramp_film(0.3, {0.05, -0.03});
+    // The regular pattern's exact answer: the mean at the 3 x 3 centres.
+    double regular_sum = 0.0;
+    for (int b = 0; b < 3; ++b) {
+        for (int a = 0; a < 3; ++a)
+            regular_sum += ramp.at({kPixelI + (a + 0.5) / 3, kPixelJ + (b + 0.5) / 3});
+    }
+    return {
+        pixel_exact_case(constant, SamplePattern::jittered, 16, 0.7, seed, streams),
+        pixel_exact_case(constant, SamplePattern::random, 10, 0.7, seed, streams),
+        pixel_exact_case(ramp, SamplePattern::regular, 9, regular_sum / 9, seed, streams),
+        pixel_mean_case(edge, SamplePattern::jittered, 16, false, seed, streams, alpha),
+        pixel_mean_case(edge, SamplePattern::jittered, 64, true, seed, streams, alpha),
+        pixel_mean_case(edge, SamplePattern::random, 16, false, seed, streams, alpha),
+        pixel_mean_case(ramp, SamplePattern::jittered, 16, false, seed, streams, alpha),
+    };
+}
+
+// --- quad_light_shading
+
+// A light 2 above the floor facing down, 2 x 2; a point on the floor seen from above.
+const QuadLight kLight{{-1, 2, -1}, {0, 0, 2}, {2, 0, 0}, {5, 2.5, 1.25}, 0};
+
+Material shaded_material() {
+    Material m;
+    m.diffuse = {0.6, 0.5, 0.4};
+    m.specular = {0.3, 0.3, 0.3};
+    m.shininess = 20;
+    return m;
+}
+
+SurfacePoint surface_at(const Vec3& position, const Vec3& normal, const Vec3& to_eye) {
+    const Vec3 n = glm::normalize(normal);
+    return {position, Vec3(0.0), n, n, glm::normalize(to_eye)};
+}
+
+const SurfacePoint kFloorPoint = surface_at({0.3, 0, -0.2}, {0, 1, 0}, {1, 1, 0.5});
+// On a wall x = 0 under the light's middle: half the light lies behind the wall's plane.
+const SurfacePoint kWallPoint = surface_at({0, 1, 0.1}, {1, 0, 0}, {1, 0.2, 0.3});
+// Above the light, facing it: the light's dark side.
+const SurfacePoint kAbovePoint = surface_at({0.2, 3, 0.1}, {0, -1, 0}, {0.1, -1, 0});
+
+const RayOffset kOffset{OffsetRule::along_normal, 1e-9};
+
+// The part u.x < blocked_below of the light, moved 1% of the way towards the point: from the
+// point it covers exactly that part, and a shadow ray meets it just before the light.
+Json blocker_json(const SurfacePoint& point, double blocked_below) {
+    if (blocked_below <= 0.0) return nullptr;
+    const Vec3 corner = point.position + 0.99 * (kLight.corner - point.position);
+    return {{"corner", probe::vec3(corner)},
+            {"edge1", probe::vec3(0.99 * blocked_below * kLight.edge1)},
+            {"edge2", probe::vec3(0.99 * kLight.edge2)}};
+}
+
+Json shading_query(const SurfacePoint& point, double blocked_below, SamplePattern pattern,
+                   int count, std::uint64_t seed, const Json& streams) {
+    return {{"material", probe::material(shaded_material())},
+            {"point", probe::surface_point(point)},
+            {"light", quad_light_json(kLight)},
+            {"pattern", pattern_name(pattern)},
+            {"count", count},
+            {"seed", seed},
+            {"streams", streams},
+            {"blocker", blocker_json(point, blocked_below)},
+            {"offset", probe::ray_offset(kOffset)}};
+}
+
+std::string shading_call(const SurfacePoint& point, double blocked_below, SamplePattern pattern,
+                         int count) {
+    return "quad_light_shading(light at " + full_text(kLight.corner) + " + u " +
+           full_text(kLight.edge1) + " + v " + full_text(kLight.edge2) + ", point " +
+           full_text(point.position) + " normal " + full_text(point.normal) + ", " +
+           pattern_name(pattern) + ", " + std::to_string(count) + ", " +
+           (blocked_below > 0 ? "blocked for u < " + full_text(blocked_below) : "nothing blocks") +
+           ")";
+}
+
+std::vector<Vec3> shading_colours(const Json& answers) {
+    std::vector<Vec3> colours;
+    for (const Json& stream : answers)
+        colours.push_back(probe::vec3_from(stream.at("colour")));
+    return colours;
+}
+
+// The light's integral over its part not blocked, seen from `point`, by the midpoint rule on
+// 1024 x 1024 cells (quad_light_integral: an error near 1e-7 of the value, far below the
+// checks' standard errors). It depends on no seed: each is computed once per run, however many
+// seeds a sweep grades at (seed_sweep.h).
+Color light_integral(const SurfacePoint& point, double blocked_below) {
+    static std::mutex mutex;
+    static std::map<std::array<double, 4>, Color> known;
+    const std::array<double, 4> key = {point.position.x, point.position.y, point.position.z,
+                                       blocked_below};
+    const std::lock_guard<std::mutex> lock(mutex);
+    const auto found = known.find(key);
+    if (found != known.end()) return found->second;
+    const Color integral =
+        quad_light_integral(shaded_material(), point, kLight, blocked_below, 1024);
+    known.emplace(key, integral);
+    return integral;
+}
+
+// The mean over kMeanStreams streams, channel by channel, within the bound of standard errors of
+// the exact integral.
+ProbeCase shading_mean_case(const SurfacePoint& point, double blocked_below, SamplePattern pattern,
+                            int count, std::uint64_t seed, StreamCounter& streams, double alpha) {
+    const Color exact = light_integral(point, blocked_below);
+    return {shading_call(point, blocked_below, pattern, count) + ": the mean over " +
+                std::to_string(kMeanStreams) + " streams",
+            {"quad_light_shading",
+             shading_query(point, blocked_below, pattern, count, seed, streams.next(kMeanStreams))},
+            [exact, alpha](const ProbeAnswer& answer) {
+                const double bound = two_sided_normal_bound(alpha);
+                const std::string want =
+                    "a mean within " + full_text(bound) + " standard errors of " + full_text(exact);
+                if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
+                const std::vector<Vec3> colours = shading_colours(answer.value);
+                Vec3 mean;
+                Vec3 error;
+                bool consistent = true;
+                for (int c = 0; c < 3; ++c) {
+                    std::vector<double> channel;
+                    for (const Vec3& colour : colours)
+                        channel.push_back(colour[c]);
+                    const MeanEstimate estimate = estimate_mean(channel, kDeviationFloor);
+                    mean[c] = estimate.mean;
+                    error[c] = estimate.standard_error;
+                    consistent = consistent && mean_consistent(estimate, exact[c], bound);
+                }
+                return consistent ? right()
+                                  : wrong(want, "the mean " + full_text(mean) +
+                                                    ", standard errors " + full_text(error));
+            },
+            ""};
+}
+
+// Every stream's answer `exact` within rounding: the regular pattern's sum, or nothing at all.
+ProbeCase shading_exact_case(const SurfacePoint& point, double blocked_below, SamplePattern pattern,
+                             int count, const Color& exact, std::uint64_t seed,
+                             StreamCounter& streams) {
+    return {shading_call(point, blocked_below, pattern, count) + ": " + full_text(exact) +
+                " from every stream",
+            {"quad_light_shading",
+             shading_query(point, blocked_below, pattern, count, seed, streams.next(20))},
+            [exact](const ProbeAnswer& answer) {
+                const std::string want = full_text(exact) + " from every stream";
+                if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
+                const double scale = std::max({exact.x, exact.y, exact.z, 1e-300});
+                for (const Vec3& colour : shading_colours(answer.value)) {
+                    if (!(glm::length(colour - exact) <= 1e-10 * scale)) {
+                        return wrong(want, full_text(colour));
+                    }
+                }
+                return right();
+            },
+            ""};
+}
+
+std::vector<ProbeCase> make_shading_cases() {
+    const std::uint64_t seed = statistics_seed();
+    StreamCounter streams;
+    // Four means of three channels each.
+    constexpr int tests = 12;
+    const double alpha = kCheckAlpha / tests;
+    const Material material = shaded_material();
+    return {
+        shading_mean_case(kFloorPoint, 0.0, SamplePattern::jittered, 16, seed, streams, alpha),
+        shading_mean_case(kFloorPoint, 0.5, SamplePattern::jittered, 16, seed, streams, alpha),
+        shading_mean_case(kFloorPoint, 0.5, SamplePattern::random, 9, seed, streams, alpha),
+        shading_mean_case(kWallPoint, 0.0, SamplePattern::jittered, 16, seed, streams, alpha),
+        // Blocked below 0.4, not 0.5: the middle column of centres lies at u.x = 0.5 exactly.
+        shading_exact_case(kFloorPoint, 0.4, SamplePattern::regular, 9,
+                           regular_quad_light_sum(material, kFloorPoint, kLight, 3, 0.4), seed,
+                           streams),
+        shading_exact_case(kAbovePoint, 0.0, SamplePattern::jittered, 16, Color(0.0), seed,
+                           streams),
+    };
+}
+
+}  // namespace
+
+std::vector<ProbeCase> pixel_cases() {
+    return make_pixel_cases();
+}
+
+std::vector<ProbeCase> shading_cases() {
+    return make_shading_cases();
+}
+
+}  // namespace raystep::grade
