@@ -58,6 +58,27 @@ TEST_CASE("stages_for_view: each view runs its stages and only what the scene us
     CHECK(stages_for_view(rich, View::full) == std::vector<int>{1, 2, 3, 5, 6, 7});
 }
 
+TEST_CASE("stages_for_view: samples and quad lights add stage 8 to the views that average them",
+          "[app]") {
+    const SceneFeatures sampled = scene_features(parse("spp 4\nsphere 0 0 0 1\n"));
+    CHECK(stages_for_view(sampled, View::full) == std::vector<int>{1, 2, 3, 6, 8});
+    CHECK(stages_for_view(sampled, View::shaded) == std::vector<int>{1, 2, 3, 6, 8});
+    CHECK(stages_for_view(sampled, View::depth) == std::vector<int>{1, 2, 3});
+    const SceneFeatures soft =
+        scene_features(parse("quadLight 0 5 0 0 0 1 1 0 0 1 1 1\nsphere 0 0 0 1\n"));
+    CHECK(stages_for_view(soft, View::shaded) == std::vector<int>{1, 2, 3, 6, 8});
+}
+
+TEST_CASE("stages_for_view: transmission adds stages 7 and 9 to the full view only", "[app]") {
+    const SceneFeatures glass =
+        scene_features(parse("transmission 1 1 1\nior 1.5\nsphere 0 0 0 1\n"));
+    CHECK(stages_for_view(glass, View::full) == std::vector<int>{1, 2, 3, 6, 7, 9});
+    CHECK(stages_for_view(glass, View::shaded) == std::vector<int>{1, 2, 3, 6});
+    const SceneFeatures flat =
+        scene_features(parse("maxdepth 0\ntransmission 1 1 1\nsphere 0 0 0 1\n"));
+    CHECK(stages_for_view(flat, View::full) == std::vector<int>{1, 2, 3, 6});
+}
+
 TEST_CASE("uses_bvh: spheres under a transform stay out of the BVH", "[app]") {
     std::string ellipsoids = "scale 1 2 1\n";
     std::string spheres;

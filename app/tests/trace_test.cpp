@@ -1,5 +1,6 @@
 #include "app/render/trace_log.h"
 
+#include <algorithm>
 #include <string>
 
 #include "app/render/render_pixel.h"
@@ -92,4 +93,53 @@ TEST_CASE("trace: each primitive under a shared transform is named with its own 
                              "transform: object-frame ray origin (0, 0, 6) direction (0, 0, -1): "
                              "sphere 1 (line 9) hit t=5 "));
     CHECK(lines[2].rfind("closest_hit: sphere 1 at t=5 ", 0) == 0);
+}
+
+namespace {
+
+bool has_line_starting(const std::vector<std::string>& lines, const std::string& start) {
+    return std::any_of(lines.begin(), lines.end(),
+                       [&](const std::string& line) { return line.rfind(start, 0) == 0; });
+}
+
+std::size_t count_starting(const std::vector<std::string>& lines, const std::string& start) {
+    return static_cast<std::size_t>(
+        std::count_if(lines.begin(), lines.end(),
+                      [&](const std::string& line) { return line.rfind(start, 0) == 0; }));
+}
+
+}  // namespace
+
+TEST_CASE("trace: a sampled pixel shows its first sample's steps, each sample, and the mean",
+          "[app]") {
+    const std::vector<std::string> lines =
+        trace("size 3 3\ncamera 0 0 5 0 0 0 0 1 0 45\nspp 4\nsphere 0 0 0 1\n", View::full, 1, 1);
+    CHECK(count_starting(lines, "camera sample ") == 4);
+    CHECK(count_starting(lines, "camera ray: ") == 1);  // the first sample's, in full
+    CHECK_THAT(lines[0], Catch::Matchers::StartsWith("camera sample 0 through film point ("));
+    CHECK(lines.back().rfind("pixel colour: the mean of 4 samples, ", 0) == 0);
+}
+
+TEST_CASE("trace: a quad light shows each light sample's shadow ray and the light's term",
+          "[app]") {
+    const std::vector<std::string> lines = trace(
+        "size 3 3\ncamera 0 5 0 0 0 0 0 0 -1 45\nlightsamples 4\nlightstratify on\n"
+        "quadLight -0.5 2 -0.5 0 0 1 1 0 0 5 5 5\ndiffuse 1 1 1\nplane 0 0 0 0 1 0\n",
+        View::shaded, 1, 1);
+    CHECK(has_line_starting(lines, "quad light (line 5): 4 samples, jittered"));
+    CHECK(count_starting(lines, "  light sample ") == 4);
+    CHECK(has_line_starting(lines, "  quad light (line 5) term "));
+}
+
+TEST_CASE("trace: a ray into the prism of total-internal-reflection.test reflects totally",
+          "[app]") {
+    const Scene scene = load_scene(std::string(RAYSTEP_SOURCE_DIR) +
+                                   "/scenes/stage9/total-internal-reflection.test");
+    TraceLog log;
+    render_pixel(prepare_render_scene(scene), View::full, 160, 110, &log, nullptr);
+    const std::vector<std::string>& lines = log.lines();
+    CHECK(has_line_starting(lines, "transmission 1: entering solid "));
+    CHECK(has_line_starting(lines, "transmission 2: leaving solid "));
+    CHECK(has_line_starting(lines, "  total internal reflection: reflected ray "));
+    CHECK(has_line_starting(lines, "  refracted ray "));
 }
