@@ -270,7 +270,8 @@ CLI::App* add_bench_command(CLI::App& app, BenchArguments& arguments) {
         ->excludes(pareto);
     command->add_flag("--quick", arguments.quick,
                       "An eighth of the rays, for a smoke test (with --pareto: short timing "
-                      "samples and one acne scene)");
+                      "samples and one acne scene; with --sampling: 48 x 36 pixels, 1 to 16 "
+                      "samples, 3 seeds)");
     return command;
 }
 

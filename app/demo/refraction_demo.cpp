@@ -43,10 +43,11 @@ std::string index_caption(const IndexPanel& p) {
 
 DemoFigure refraction_demo(const DemoSize& size) {
     // scenes/demos/glass-cube.test: a clear glass cube on a checkered floor, seen from above.
-    // Light entering the top face meets the side faces inside at 90 degrees minus its angle of
-    // refraction or more; beyond the critical angle asin(1/n) it is reflected whole, and those
-    // faces show the cube's inside instead of the floor behind. At n = 1 nothing bends and the
-    // cube vanishes; at 1.33 the critical angle is just within reach, at 2.4 far within.
+    // Light entering the top face at theta_t from the vertical inside meets a side face at 90
+    // degrees minus theta_t; beyond the critical angle asin(1/n) it is reflected whole, and that
+    // face shows the cube's inside instead of the floor behind. At n = 1 nothing bends and the
+    // cube vanishes; at 1.33 light that entered within 61 degrees of the vertical is reflected
+    // (the camera looks down at 56 degrees from it); at 1.5 and 2.4 all of it is.
     const PanelSize panel = panel_size(size, 4, false);
     const Scene scene = load_demo_scene("demos/glass-cube.test", panel);
     const IndexPanel panels[] = {{1.0, "air"}, {1.33, "water"}, {1.5, "glass"}, {2.4, "diamond"}};
