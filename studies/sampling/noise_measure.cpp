@@ -2,11 +2,9 @@
 
 #include <ctime>
 
-#include "app/render/ray_colour.h"
-#include "app/render/sample_streams.h"
+#include "app/demo/sampled_image.h"
 #include "app/render/tile_renderer.h"
 #include "base/scene/scene_loader.h"
-#include "stages/8_sampling/sampling.h"
 #include "studies/sampling/noise_statistics.h"
 
 namespace raystep {
@@ -42,30 +40,10 @@ Scene study_scene(const std::filesystem::path& file, const NoiseStudyOptions& op
     return scene;
 }
 
-// The full view with `count` pixel samples through stage 8's pixel_colour at every count, one
-// too: the renderer takes the pixel's centre at spp 1, which for jittered and random samples
-// would be a different estimator from the rest of their curve.
-Image pixel_sampled(const RenderScene& render_scene, SamplePattern pattern, int count,
-                    int threads) {
-    const Scene& scene = *render_scene.scene;
-    const PixelFunction pixel = [&](int i, int j) {
-        RandomStream film = film_random(scene, i, j);
-        int sample = 0;
-        const FilmRadiance radiance = [&](const Vec2& film_point) {
-            RandomStream lights = light_random(scene, i, j, sample++);
-            const Ray ray = camera_ray_through(render_scene, film_point);
-            return full_colour(render_scene, ray, scene_closest_hit(render_scene, ray, nullptr),
-                               &lights, nullptr, nullptr);
-        };
-        return pixel_colour(radiance, i, j, pattern, count, film);
-    };
-    return render_pixels(scene.width, scene.height, pixel, threads);
-}
-
 Image render_placed(Scene scene, const Placement& placement, std::uint64_t seed, int threads) {
     scene.seed = seed;
     if (placement.pixel) {
-        return pixel_sampled(prepare_render_scene(scene), placement.pattern, placement.count,
+        return sampled_image(prepare_render_scene(scene), placement.pattern, placement.count,
                              threads);
     }
     scene.samples_per_pixel = 1;
