@@ -27,6 +27,58 @@ void row(const char* label, const std::string& value) {
     std::printf("%-11s %s\n", label, value.c_str());
 }
 
+std::string pattern_name(SamplePattern pattern) {
+    switch (pattern) {
+        case SamplePattern::jittered:
+            return "jittered";
+        case SamplePattern::regular:
+            return "regular";
+        case SamplePattern::random:
+            return "random";
+    }
+    return "unknown";
+}
+
+std::string lights_row(const SceneFeatures& f) {
+    if (!f.uses_lights()) return "none (ambient and emission only, no shadow rays)";
+    std::string text = counted(f.point_lights, "point light", "point lights") + ", " +
+                       counted(f.directional_lights, "directional light", "directional lights");
+    if (f.spot_lights > 0) text += ", " + counted(f.spot_lights, "spot light", "spot lights");
+    if (f.quad_lights > 0) {
+        text += ", " + counted(f.quad_lights, "area light", "area lights") + " (quadLight)";
+    }
+    return text;
+}
+
+// Samples per pixel and per area light, and the seed they come from.
+std::string sampling_row(const Scene& scene, const SceneFeatures& f) {
+    std::string text = counted(static_cast<std::size_t>(scene.samples_per_pixel),
+                               "sample per pixel", "samples per pixel");
+    if (scene.samples_per_pixel > 1) text += ", " + pattern_name(scene.pixel_sampling);
+    if (f.quad_lights > 0) {
+        text += "; " + counted(static_cast<std::size_t>(scene.light_samples), "sample", "samples") +
+                " per area light, " + (scene.light_stratify ? "stratified" : "random");
+    }
+    return text + "; seed " + std::to_string(scene.seed);
+}
+
+std::string refraction_row(const Scene& scene, const SceneFeatures& f) {
+    if (!f.uses_refraction()) return "none";
+    return counted(f.transmissive_objects, "dielectric object", "dielectric objects") +
+           ", Fresnel " + (scene.schlick_fresnel ? "by Schlick's approximation" : "exact") +
+           ", up to " + std::to_string(scene.max_depth) + " bounces";
+}
+
+// The commands read with no effect or rendered otherwise, each with its line; the warnings that
+// say what raystep does with each go to the error stream.
+std::string notes_row(const Scene& scene) {
+    std::string text;
+    for (const SceneNote& note : scene.notes)
+        text +=
+            (text.empty() ? "" : ", ") + note.command + " (line " + std::to_string(note.line) + ")";
+    return text + ": each has no effect or renders otherwise; the warnings say how";
+}
+
 }  // namespace
 
 CLI::App* add_info_command(CLI::App& app, InfoArguments& arguments) {
@@ -45,11 +97,15 @@ int run_info(const InfoArguments& arguments) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const SceneFeatures f = scene_features(scene);
     const CameraSpec& camera = scene.camera;
+    for (const SceneNote& note : scene.notes)
+        std::fprintf(stderr, "%s\n", warning_text(scene, note).c_str());
 
     row("scene", scene.path + " (loaded in " + to_text(load_seconds) + " s)");
-    row("image", std::to_string(scene.width) + " x " + std::to_string(scene.height) +
-                     ", maxdepth " + std::to_string(scene.max_depth) +
-                     (scene.output.empty() ? "" : ", output " + scene.output));
+    row("image",
+        std::to_string(scene.width) + " x " + std::to_string(scene.height) + ", maxdepth " +
+            std::to_string(scene.max_depth) +
+            (scene.output.empty() ? "" : ", output " + scene.output) +
+            (scene.background == Color(0.0) ? "" : ", background " + to_text(scene.background)));
     std::string projection = camera.ortho ? "orthographic over [" + to_text(camera.ortho->left) +
                                                 ", " + to_text(camera.ortho->right) + "] x [" +
                                                 to_text(camera.ortho->bottom) + ", " +
@@ -75,14 +131,14 @@ int run_info(const InfoArguments& arguments) {
                           ? counted(f.transformed_objects, "object", "objects") + " under " +
                                 counted(f.transforms, "transform", "transforms")
                           : "none");
-    row("lights", f.uses_lights()
-                      ? counted(f.point_lights, "point light", "point lights") + ", " +
-                            counted(f.directional_lights, "directional light", "directional lights")
-                      : "none (ambient and emission only, no shadow rays)");
+    row("lights", lights_row(f));
+    if (f.uses_sampling()) row("sampling", sampling_row(scene, f));
     row("reflection", f.uses_reflection()
                           ? counted(f.reflective_objects, "mirror object", "mirror objects") +
                                 ", up to " + std::to_string(scene.max_depth) + " bounces"
                           : "none");
+    row("refraction", refraction_row(scene, f));
+    if (!scene.notes.empty()) row("warnings", notes_row(scene));
     const std::size_t bounded = bvh_primitives(f);
     row("structure", uses_bvh(f)
                          ? "a BVH (SAH) over the " + std::to_string(bounded) +

@@ -50,6 +50,10 @@ int run_render(const RenderArguments& arguments) {
             "--ray-offset");
     }
     Scene scene = load_scene(arguments.scene);
+    // What the scene asks for that raystep reads but does not render (a CSE168 integrator, say):
+    // said before the render, so that an image that lacks it is no surprise.
+    for (const SceneNote& note : scene.notes)
+        std::fprintf(stderr, "%s\n", warning_text(scene, note).c_str());
     apply_ray_offset(arguments.ray_offset, scene);
     apply_sampling(arguments.sampling, scene);
     const View view = *parse_view(arguments.view);

@@ -100,19 +100,15 @@ Color full_colour(const RenderScene& render_scene, const Ray& eye_ray,
                   const std::optional<PrimitiveHit>& eye_hit, RandomStream* light_random,
                   TraceLog* trace, PixelRecord* record) {
     const Scene& scene = *render_scene.scene;
-    if (render_scene.bounces == 0) {
-        if (!eye_hit) return scene.background;
-        return shade_hit(render_scene, eye_ray, *eye_hit, light_random, trace, record).local;
-    }
     // The eye ray's hit is already known; every later ray is found and shaded here. A later ray
     // of stage 9 may be reflected or refracted: the shade function sees only the ray.
-    const std::string later = render_scene.refraction ? "secondary ray " : "reflected ray ";
     int rays = 0;
     const auto find = [&](const Ray& ray) {
-        const std::optional<PrimitiveHit> hit =
-            rays++ == 0 ? eye_hit : scene_closest_hit(render_scene, ray, nullptr);
-        if (trace && rays > 1) {
-            trace->add(later + std::to_string(rays - 1) + ": " + describe_ray(ray) +
+        if (rays++ == 0) return eye_hit;
+        const std::optional<PrimitiveHit> hit = scene_closest_hit(render_scene, ray, nullptr);
+        if (trace) {
+            trace->add(std::string(render_scene.refraction ? "secondary ray " : "reflected ray ") +
+                       std::to_string(rays - 1) + ": " + describe_ray(ray) +
                        describe_landing(render_scene, hit));
         }
         return hit;

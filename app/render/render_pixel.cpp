@@ -187,8 +187,14 @@ Color camera_ray_colour(const RenderScene& render_scene, View view, const Ray& r
             if (!closest) return render_scene.scene->background;
             return shade_hit(render_scene, ray, *closest, light_random, trace, record).local;
         case View::full: {
-            const Color colour =
-                full_colour(render_scene, ray, closest, light_random, trace, record);
+            // Without bounces there is nothing to follow: the local colour, with no recursion
+            // to set up (most scenes of stages 2 to 6 take this way on every pixel).
+            Color colour = render_scene.scene->background;
+            if (render_scene.bounces > 0) {
+                colour = full_colour(render_scene, ray, closest, light_random, trace, record);
+            } else if (closest) {
+                colour = shade_hit(render_scene, ray, *closest, light_random, trace, record).local;
+            }
             if (record) record->full = colour;
             return colour;
         }
@@ -239,8 +245,8 @@ Color render_pixel(const RenderScene& render_scene, View view, int i, int j, Tra
     if (averages_samples(view) && scene.samples_per_pixel > 1) {
         return sampled_pixel(render_scene, view, i, j, trace, record);
     }
-    // One ray through the pixel's centre, stage 2's: a scene without samples renders as it did
-    // before stage 8 existed, and its light samples (quad lights at spp 1) use sample 0's stream.
+    // One ray through the pixel's centre, stage 2's: a scene without samples needs nothing of
+    // stage 8, and the light samples of a quad light at spp 1 use sample 0's stream.
     std::optional<RandomStream> lights;
     if (!scene.quad_lights.empty() && averages_samples(view)) {
         lights.emplace(light_random(scene, i, j, 0));

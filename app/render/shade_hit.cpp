@@ -141,7 +141,8 @@ ShadedHit shade_hit(const RenderScene& render_scene, const Ray& ray, const Primi
     for (const SpotLight& light : scene.spot_lights) {
         const LightSample sample = sample_spot_light(light, point.position);
         if (sample.intensity == Color(0.0)) {
-            if (trace) trace->add(light_name("spot", light.line) + ": outside its cone");
+            if (trace)
+                trace->add(light_name("spot", light.line) + ": no light here, outside its cone");
             continue;
         }
         consider(sample, "spot", light.line, false);

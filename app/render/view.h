@@ -8,16 +8,20 @@
 namespace raystep {
 
 /// What a render shows. Each view is what one stage produces, so that a stage can be checked
-/// (and graded) on its own image before the later stages exist.
+/// (and graded) on its own image before the later stages exist. Views up to cost show one ray
+/// through each pixel's centre whatever the scene's `spp` (a mean of depths or normals belongs
+/// to no surface); shaded and full average the pixel's samples by stage 8 when spp > 1
+/// (render_pixel.h, averages_samples).
 enum class View {
     rays,         ///< stage 2: the camera ray's direction as a colour, 0.5 (d + 1)
     depth,        ///< stage 3: distance to the nearest hit, near bright, far dark, misses black
     normal,       ///< stage 3: the geometric normal at the nearest hit as a colour, 0.5 (n + 1)
     barycentric,  ///< stage 3: (1 - beta - gamma, beta, gamma) on triangles, grey elsewhere
     cost,         ///< stage 4: BVH nodes visited plus primitives tested, as a heat map
-    shaded,       ///< stage 6: the local model with shadows, no reflection
-    full,         ///< the finished image: stage 6, and stage 7's reflections where the scene has
-                  ///< mirrors
+    shaded,  ///< stage 6: the local model with shadows, no reflection; quad lights' soft shadows
+             ///< (stage 8); misses show the background
+    full,    ///< the finished image: stage 6, stage 7's reflections where the scene has mirrors,
+             ///< stage 9's refraction where something transmits; misses show the background
 };
 
 /// The view's name on the command line.

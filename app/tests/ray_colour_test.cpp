@@ -116,3 +116,12 @@ TEST_CASE("prepare_render_scene: refraction only where something transmits and b
     CHECK_FALSE(flat.refraction);
     CHECK(flat.bounces == 0);
 }
+
+TEST_CASE("full view: a refracted ray that leaves the scene sees the background", "[app]") {
+    // Glass of index 1 and transmission 0.5 bends and reflects nothing: the background comes
+    // through both surfaces, halved at each.
+    const std::string text = kCentreCamera +
+                             "background 0.2 0.4 0.8\nambient 0 0 0\ntransmission 0.5 0.5 0.5\n"
+                             "ior 1\nsphere 0 0 0 1\n";
+    CHECK_THAT(pixel(text), IsNear(Color(0.05, 0.1, 0.2), 1e-12));
+}

@@ -91,3 +91,33 @@ TEST_CASE("uses_bvh: spheres under a transform stay out of the BVH", "[app]") {
     CHECK_FALSE(uses_bvh(transformed));
     CHECK(uses_bvh(scene_features(parse(spheres))));
 }
+
+TEST_CASE("scene_features: spot and area lights count as lights, area lights as sampling",
+          "[app]") {
+    const SceneFeatures f =
+        scene_features(parse("spot 0 2 0 0 -1 0 30 1 1 1 1\n"
+                             "quadLight 0 1 0 1 0 0 0 0 1 5 5 5\n"));
+    CHECK(f.spot_lights == 1);
+    CHECK(f.quad_lights == 1);
+    CHECK(f.uses_lights());
+    CHECK(f.uses_sampling());
+    CHECK_FALSE(scene_features(parse("spot 0 2 0 0 -1 0 30 1 1 1 1\n")).uses_sampling());
+}
+
+TEST_CASE("scene_features: more than one sample per pixel is sampling", "[app]") {
+    CHECK(scene_features(parse("spp 4\n")).samples_per_pixel == 4);
+    CHECK(scene_features(parse("spp 4\n")).uses_sampling());
+    CHECK_FALSE(scene_features(parse("spp 1\n")).uses_sampling());
+}
+
+TEST_CASE("scene_features: refraction needs a transmissive material and maxdepth above 0",
+          "[app]") {
+    const SceneFeatures f = scene_features(
+        parse("sphere 0 0 0 1\ntransmission 0.9 0.9 0.9\nior 1.5\nsphere 2 0 0 1\n"));
+    CHECK(f.transmissive_objects == 1);
+    CHECK(f.uses_refraction());
+    CHECK_FALSE(f.uses_reflection());
+    CHECK_FALSE(scene_features(parse("maxdepth 0\ntransmission 1 1 1\nsphere 0 0 0 1\n"))
+                    .uses_refraction());
+    CHECK_FALSE(scene_features(parse("ior 1.5\nsphere 0 0 0 1\n")).uses_refraction());
+}

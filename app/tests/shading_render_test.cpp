@@ -101,3 +101,13 @@ TEST_CASE("trace: the full view prints every shadow ray, shading term and reflec
     CHECK(has_line_starting(trace, "reflected ray 1: origin"));
     CHECK(has_line_starting(trace, "colour ("));
 }
+
+TEST_CASE("shaded view: a spot light lights a point inside its cone and not one outside", "[app]") {
+    // The spot at (0, 0, 3) points at the sphere's front (0, 0, 1), 2 units away, head-on:
+    // I = Kd = 0.5 there. Turned 45 degrees away, beyond its 30-degree cutoff, it adds nothing.
+    const std::string sphere = "ambient 0 0 0\ndiffuse 0.5 0.5 0.5\nsphere 0 0 0 1\n";
+    CHECK_THAT(pixel(kCentreCamera + "spot 0 0 3 0 0 -1 30 1 1 1 1\n" + sphere, View::shaded),
+               IsNear(Color(0.5), kTight));
+    CHECK(pixel(kCentreCamera + "spot 0 0 3 1 0 -1 30 1 1 1 1\n" + sphere, View::shaded) ==
+          Color(0.0));
+}

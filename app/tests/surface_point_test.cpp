@@ -1,11 +1,11 @@
 #include "app/render/surface_point.h"
 
 #include <cmath>
-#include <random>
 #include <string>
 
 #include <glm/geometric.hpp>
 
+#include "base/math/portable_random.h"
 #include "base/math/to_text.h"
 #include "base/scene/scene_loader.h"
 #include "base/testing/catch.h"
@@ -84,17 +84,19 @@ Exact distance_to_surface(const RenderScene& render_scene, const PrimitiveHit& h
 }
 
 // Rays from the camera's side towards random points near the primitives, many of them grazing.
-Ray random_eye_ray(std::mt19937_64& rng, const Placement& where) {
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    const Vec3 origin = where.at(Vec3(3, 3, 2) + 8.0 * Vec3(u(rng), u(rng), std::abs(u(rng))));
-    const Vec3 target = where.at(Vec3(3, 3, -0.5) + 2.5 * Vec3(u(rng), u(rng), u(rng)));
+Ray random_eye_ray(PortableRandom& random, const Placement& where) {
+    // Named draws: the order of arguments in a call is unspecified, the order of statements not.
+    const double ox = random.uniform(-1.0, 1.0);
+    const double oy = random.uniform(-1.0, 1.0);
+    const double oz = random.unit();
+    const Vec3 origin = where.at(Vec3(3, 3, 2) + 8.0 * Vec3(ox, oy, oz));
+    const Vec3 target = where.at(Vec3(3, 3, -0.5) + 2.5 * random.point(1.0));
     return {origin, glm::normalize(target - origin)};
 }
 
 // A unit direction on the side of `normal`, as close to the surface as `grazing` allows.
-Vec3 leaving_direction(std::mt19937_64& rng, const Vec3& normal, double grazing) {
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    const Vec3 any{u(rng), u(rng), u(rng)};
+Vec3 leaving_direction(PortableRandom& random, const Vec3& normal, double grazing) {
+    const Vec3 any = random.point(1.0);
     const Vec3 tangent = glm::normalize(any - glm::dot(any, normal) * normal);
     return glm::normalize(tangent + grazing * normal);
 }
@@ -139,16 +141,16 @@ struct SelfHits {
 SelfHits leave_surfaces(const Placement& where, const RayOffset& offset, int rays) {
     const Scene scene = parse_scene(test_scene(where), "placed.test", ".");
     const RenderScene render_scene = prepare_render_scene(scene);
-    std::mt19937_64 rng(11);
+    PortableRandom random(11);
     SelfHits count;
     for (int k = 0; k < rays; ++k) {
-        const Ray eye = random_eye_ray(rng, where);
+        const Ray eye = random_eye_ray(random, where);
         const std::optional<PrimitiveHit> hit = scene_closest_hit(render_scene, eye, nullptr);
         if (!hit) continue;
         ++count.surfaces;
         const SurfacePoint point = surface_point(render_scene, eye, *hit);
         for (const double grazing : {1e-6, 1e-3, 0.1, 1.0}) {
-            const Vec3 direction = leaving_direction(rng, point.normal, grazing);
+            const Vec3 direction = leaving_direction(random, point.normal, grazing);
             const Ray leaving = spawn_ray(point, direction, 1e300, offset);
             if (hits_itself(render_scene, *hit, leaving)) ++count.self_hits;
         }
@@ -163,10 +165,10 @@ TEST_CASE("surface_point: the surface passes within sum |n_i| error_i of the poi
         if (where.ellipsoid) continue;  // no exact distance to an ellipsoid here; see below
         const Scene scene = parse_scene(test_scene(where), "placed.test", ".");
         const RenderScene render_scene = prepare_render_scene(scene);
-        std::mt19937_64 rng(7);
+        PortableRandom random(7);
         int hits = 0;
         for (int k = 0; k < 20000; ++k) {
-            const Ray eye = random_eye_ray(rng, where);
+            const Ray eye = random_eye_ray(random, where);
             const std::optional<PrimitiveHit> hit = scene_closest_hit(render_scene, eye, nullptr);
             if (!hit) continue;
             ++hits;

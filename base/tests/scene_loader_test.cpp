@@ -384,6 +384,15 @@ TEST_CASE("parse_scene: CSE168 path tracer settings load, each noted once on its
                                             "brdf@7", "roughness@8"});
 }
 
+TEST_CASE("parse_scene: notes come in file order, the end-of-file spp note among them", "[base]") {
+    const Scene scene = parse(kCamera + "gamma 2.2\nspp 8\nrussianroulette off\n");
+    REQUIRE(scene.notes.size() == 3);
+    CHECK(scene.notes[0].command == "gamma");
+    CHECK(scene.notes[1].command == "spp");
+    CHECK(scene.notes[1].line == 3);
+    CHECK(scene.notes[2].command == "russianroulette");
+}
+
 TEST_CASE("parse_scene: integrator raytracer and direct are what raystep renders: no note",
           "[base]") {
     CHECK(parse(kCamera + "integrator raytracer\n").notes.empty());

@@ -1,5 +1,6 @@
 #include "base/scene/text_fields.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,10 @@ double number(const std::string& token) {
 
 long count(const std::string& token) {
     return parse_count(token, {kFile, 7}, "the count");
+}
+
+std::uint64_t seed(const std::string& token) {
+    return parse_unsigned64(token, {kFile, 7}, "the seed");
 }
 
 }  // namespace
@@ -60,4 +65,20 @@ TEST_CASE("parse_count: reads whole non-negative numbers only", "[base]") {
     CHECK_THROWS_WITH(count("99999999999999999999999"),
                       "test.txt:7: the count '99999999999999999999999' is too large");
     CHECK_THROWS_AS(count("x"), InputError);
+}
+
+TEST_CASE("parse_unsigned64: reads the whole 64-bit range and nothing beyond it", "[base]") {
+    CHECK(seed("0") == 0);
+    CHECK(seed("18446744073709551615") == 18446744073709551615ull);
+    CHECK_THROWS_WITH(seed("18446744073709551616"),
+                      "test.txt:7: the seed '18446744073709551616' is above "
+                      "18446744073709551615, the largest 64-bit number");
+    // A sign is refused rather than wrapped: strtoull would read "-1" as 2^64 - 1.
+    CHECK_THROWS_WITH(seed("-1"),
+                      "test.txt:7: the seed '-1' is not a whole number from 0 to "
+                      "18446744073709551615");
+    CHECK_THROWS_AS(seed("+1"), InputError);
+    CHECK_THROWS_AS(seed("1.5"), InputError);
+    CHECK_THROWS_AS(seed("0x10"), InputError);
+    CHECK_THROWS_AS(seed(""), InputError);
 }

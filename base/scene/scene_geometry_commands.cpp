@@ -1,0 +1,276 @@
+#include "base/scene/scene_parser.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "base/errors/input_error.h"
+#include "base/math/to_text.h"
+#include "base/scene/text_fields.h"
+
+namespace raystep::scene_parsing {
+
+namespace {
+
+// Translate by 0, scale by 1 and rotate by 0 degrees change nothing, so an object under only
+// such ops needs no matrix at all.
+bool is_identity(const TransformOp& op) {
+    switch (op.kind) {
+        case TransformOp::Kind::translate:
+            return op.vector == Vec3(0.0);
+        case TransformOp::Kind::scale:
+            return op.vector == Vec3(1.0);
+        case TransformOp::Kind::rotate:
+            return op.angle_degrees == 0.0;
+    }
+    return false;
+}
+
+}  // namespace
+
+// Geometry
+
+ObjectAttributes SceneParser::attributes() {
+    if (material_id_ == kUnregistered) {
+        scene_.materials.push_back(material_);
+        material_id_ = static_cast<std::uint32_t>(scene_.materials.size() - 1);
+    }
+    const std::uint32_t node = transform_stack_.back();
+    const std::uint32_t transform = scene_.transforms[node].identity ? 0 : node;
+    return {material_id_, transform, static_cast<std::uint32_t>(line_)};
+}
+
+void SceneParser::sphere() {
+    const Vec3 center = vec3(1, "the centre");
+    const double radius = number(4, "the radius");
+    if (!(radius > 0.0)) fail("radius " + std::string(fields_[4]) + " must be positive");
+    scene_.spheres.push_back({{center, radius}, attributes()});
+}
+
+void SceneParser::plane() {
+    const Vec3 point = vec3(1, "the point");
+    const Vec3 normal = direction(4, "the plane's normal");
+    scene_.planes.push_back({{point, normal}, attributes()});
+}
+
+// maxverts and maxvertnorms are promises, checked as the vertices come; never capacities to
+// allocate, so that a typo cannot reserve gigabytes.
+void SceneParser::maxverts() {
+    max_vertices_ = count(1, "the vertex count");
+    if (static_cast<std::size_t>(max_vertices_) < vertices_.size()) {
+        fail("maxverts " + std::to_string(max_vertices_) + " is less than the " +
+             std::to_string(vertices_.size()) + " vertices already given");
+    }
+}
+
+void SceneParser::maxvertnorms() {
+    max_normal_vertices_ = count(1, "the vertex count");
+    if (static_cast<std::size_t>(max_normal_vertices_) < normal_vertices_.size()) {
+        fail("maxvertnorms " + std::to_string(max_normal_vertices_) + " is less than the " +
+             std::to_string(normal_vertices_.size()) + " vertexnormals already given");
+    }
+}
+
+void SceneParser::vertex() {
+    if (max_vertices_ >= 0 && vertices_.size() == static_cast<std::size_t>(max_vertices_)) {
+        fail("more vertices than 'maxverts " + std::to_string(max_vertices_) + "' declared");
+    }
+    vertices_.push_back(vec3(1, "a coordinate"));
+}
+
+void SceneParser::vertexnormal() {
+    if (max_normal_vertices_ >= 0 &&
+        normal_vertices_.size() == static_cast<std::size_t>(max_normal_vertices_)) {
+        fail("more vertexnormals than 'maxvertnorms " + std::to_string(max_normal_vertices_) +
+             "' declared");
+    }
+    const Vec3 position = vec3(1, "a coordinate");
+    const Vec3 normal = direction(4, "the vertex normal");
+    normal_vertices_.push_back({position, normal});
+}
+
+std::array<std::size_t, 3> SceneParser::indices(std::size_t available,
+                                                std::string_view pile) const {
+    std::array<std::size_t, 3> result{};
+    for (std::size_t k = 0; k < 3; ++k) {
+        const long index = count(k + 1, "a vertex index");
+        if (static_cast<std::size_t>(index) >= available) {
+            fail("vertex index " + std::to_string(index) +
+                 " is out of range: " + std::to_string(available) + " " + std::string(pile) +
+                 " defined so far, numbered from 0");
+        }
+        result[k] = static_cast<std::size_t>(index);
+    }
+    return result;
+}
+
+void SceneParser::tri() {
+    const auto [i0, i1, i2] = indices(vertices_.size(), "vertices");
+    SceneTriangle triangle;
+    triangle.shape = {vertices_[i0], vertices_[i1], vertices_[i2]};
+    triangle.attributes = attributes();
+    scene_.triangles.push_back(triangle);
+}
+
+void SceneParser::trinormal() {
+    const auto [i0, i1, i2] = indices(normal_vertices_.size(), "vertexnormals");
+    SceneTriangle triangle;
+    triangle.shape = {normal_vertices_[i0].first, normal_vertices_[i1].first,
+                      normal_vertices_[i2].first};
+    triangle.attributes = attributes();
+    triangle.vertex_normals = static_cast<std::int32_t>(scene_.vertex_normals.size());
+    scene_.vertex_normals.push_back(
+        {normal_vertices_[i0].second, normal_vertices_[i1].second, normal_vertices_[i2].second});
+    scene_.triangles.push_back(triangle);
+}
+
+// The mesh file named by field k, resolved against the scene's folder; its errors become
+// this line's.
+std::pair<std::filesystem::path, TriangleMesh> SceneParser::mesh_file(std::size_t k) const {
+    std::filesystem::path file{std::string(fields_[k])};
+    if (file.is_relative()) file = folder_ / file;
+    std::error_code error;
+    if (!std::filesystem::exists(file, error)) {
+        fail("mesh file " + quoted_field(fields_[k]) + " not found (looked for " +
+             quoted_field(file.string()) + ")");
+    }
+    TriangleMesh loaded;
+    try {
+        loaded = load_mesh(file);
+    } catch (const InputError& mesh_error) {
+        fail(std::string("in mesh: ") + mesh_error.what());
+    }
+    // The scene's own domain holds for the mesh's coordinates too.
+    for (std::size_t v = 0; v < loaded.positions.size(); ++v) {
+        if (largest_magnitude(loaded.positions[v]) > kLargestNumber) {
+            fail("in mesh " + quoted_field(fields_[k]) + ": vertex " + std::to_string(v) + " " +
+                 to_text(loaded.positions[v]) +
+                 " has a coordinate beyond 1e100, the range in which the renderer computes "
+                 "reliably");
+        }
+    }
+    return {file, std::move(loaded)};
+}
+
+void SceneParser::mesh() {
+    const auto [file, loaded] = mesh_file(1);
+
+    SceneMesh record;
+    record.path = file.string();
+    record.first_triangle = static_cast<std::uint32_t>(scene_.triangles.size());
+    record.triangle_count = static_cast<std::uint32_t>(loaded.faces.size());
+    record.line = static_cast<std::uint32_t>(line_);
+    const auto mesh_id = static_cast<std::int32_t>(scene_.meshes.size());
+    scene_.meshes.push_back(record);
+
+    const ObjectAttributes shared = attributes();
+    scene_.triangles.reserve(scene_.triangles.size() + loaded.faces.size());
+    for (const auto& face : loaded.faces) {
+        SceneTriangle triangle;
+        triangle.shape = {loaded.positions[face[0]], loaded.positions[face[1]],
+                          loaded.positions[face[2]]};
+        triangle.attributes = shared;
+        triangle.mesh = mesh_id;
+        scene_.triangles.push_back(triangle);
+    }
+}
+
+// A mesh named once and placed by `instance` as often as wanted: its triangles are kept once,
+// in its own coordinates, so a thousand placements cost a thousand transforms, not a thousand
+// copies.
+void SceneParser::define() {
+    const std::string name(fields_[1]);
+    for (const MeshDefinition& defined : scene_.mesh_definitions) {
+        if (defined.name == name) {
+            fail("a mesh named " + quoted_field(name) + " is already defined, at line " +
+                 std::to_string(defined.line));
+        }
+    }
+    const auto [file, loaded] = mesh_file(2);
+    MeshDefinition definition;
+    definition.name = name;
+    definition.path = file.string();
+    definition.line = static_cast<std::uint32_t>(line_);
+    definition.triangles.reserve(loaded.faces.size());
+    for (const auto& face : loaded.faces) {
+        definition.triangles.push_back(
+            {loaded.positions[face[0]], loaded.positions[face[1]], loaded.positions[face[2]]});
+    }
+    scene_.mesh_definitions.push_back(std::move(definition));
+}
+
+void SceneParser::instance() {
+    const std::vector<MeshDefinition>& defined = scene_.mesh_definitions;
+    const auto found = std::find_if(defined.begin(), defined.end(),
+                                    [&](const MeshDefinition& d) { return d.name == fields_[1]; });
+    if (found == defined.end()) {
+        fail("no mesh named " + quoted_field(fields_[1]) +
+             " is defined above this line; 'define NAME FILE' names one");
+    }
+    scene_.mesh_instances.push_back(
+        {static_cast<std::uint32_t>(found - defined.begin()), attributes()});
+}
+
+// The transform stack. Each op becomes a tree node under the node in force: the OpenGL
+// right-multiplication, in memory linear in the file's length.
+
+void SceneParser::add_op(const TransformOp& op) {
+    TransformNode node;
+    node.parent = transform_stack_.back();
+    node.op = op;
+    node.identity = scene_.transforms[node.parent].identity && is_identity(op);
+    ScaleRange range = scale_ranges_[node.parent];
+    if (op.kind == TransformOp::Kind::scale) range = scaled(range, op.vector);
+    scale_ranges_.push_back(range);
+    scene_.transforms.push_back(node);
+    transform_stack_.back() = static_cast<std::uint32_t>(scene_.transforms.size() - 1);
+}
+
+SceneParser::ScaleRange SceneParser::scaled(ScaleRange range, const Vec3& factors) const {
+    const Vec3 sizes = glm::abs(factors);
+    range.smallest *= std::min({sizes.x, sizes.y, sizes.z});
+    range.largest *= std::max({sizes.x, sizes.y, sizes.z});
+    if (range.smallest < kSmallestDirection || range.largest > kLargestDirection) {
+        fail("the scales in force multiply to factors between " + to_text(range.smallest) +
+             " and " + to_text(range.largest) + ", beyond 1e-150 to 1e150, where the inverse " +
+             "transform and the object-frame ray overflow or underflow");
+    }
+    return range;
+}
+
+void SceneParser::translate() {
+    add_op({TransformOp::Kind::translate, vec3(1, "the offset"), 0.0});
+}
+
+void SceneParser::rotate() {
+    const Vec3 axis = direction(1, "the rotation axis");
+    add_op({TransformOp::Kind::rotate, axis, number(4, "the angle")});
+}
+
+void SceneParser::scale() {
+    const Vec3 factors = vec3(1, "a scale factor");
+    for (const double factor : {factors.x, factors.y, factors.z}) {
+        if (factor == 0.0) {
+            fail("scale " + to_text(factors) +
+                 " has a zero factor, which flattens objects and has no inverse");
+        }
+        // The inverse transform and the normal matrix divide by each factor.
+        if (std::abs(factor) < kSmallestDirection || std::abs(factor) > kLargestDirection) {
+            fail("scale " + to_text(factors) +
+                 " has a factor whose inverse overflows or underflows");
+        }
+    }
+    add_op({TransformOp::Kind::scale, factors, 0.0});
+}
+
+void SceneParser::push_transform() {
+    transform_stack_.push_back(transform_stack_.back());
+}
+
+void SceneParser::pop_transform() {
+    if (transform_stack_.size() == 1) fail("popTransform without a matching pushTransform");
+    transform_stack_.pop_back();
+}
+
+}  // namespace raystep::scene_parsing
