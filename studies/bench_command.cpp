@@ -12,6 +12,7 @@
 #include "studies/common/machine_description.h"
 #include "studies/common/number_text.h"
 #include "studies/epsilon/epsilon_measure.h"
+#include "studies/sampling/noise_command.h"
 #include "studies/scale/scene_scale.h"
 #include "studies/speed_error/pareto_registry.h"
 #include "studies/structures/baseline_registry.h"
@@ -219,10 +220,9 @@ CLI::App* add_bench_command(CLI::App& app, BenchArguments& arguments) {
         "--epsilon", arguments.epsilon,
         "The epsilon study: acne and light leaks of each ray offset rule on the acne scenes "
         "(docs/stage6.md)");
-    command
-        ->add_option("--chart", arguments.chart,
-                     "With --epsilon: also draw the study as an SVG chart into this file")
-        ->needs(epsilon);
+    command->add_option("--chart", arguments.chart,
+                        "With --epsilon or --sampling: also draw the study as an SVG chart into "
+                        "this file");
     command->add_flag("--scale", arguments.scale,
                       "The scale bars on scenes/scale/: a thousand transformed spheres against a "
                       "127,408-triangle scene, a thousand instanced bunnies against one "
@@ -232,6 +232,17 @@ CLI::App* add_bench_command(CLI::App& app, BenchArguments& arguments) {
         "The speed-against-error study: every triangle, sphere and plane test in double and "
         "float on decided ray cases, and the cost of each ray offset rule (docs/stage3.md; "
         "raystep-reference only)");
+    command
+        ->add_flag("--sampling", arguments.sampling,
+                   "The sampling noise study: RMSE against a converged render and time, for "
+                   "jittered, regular and random pixel samples and stratified and random light "
+                   "samples (docs/measurements/sampling-noise.md)")
+        ->excludes("--workload")
+        ->excludes("--growth")
+        ->excludes("--threshold")
+        ->excludes("--scale")
+        ->excludes(epsilon)
+        ->excludes(pareto);
     pareto->excludes("--workload")
         ->excludes("--growth")
         ->excludes("--threshold")
@@ -259,11 +270,17 @@ CLI::App* add_bench_command(CLI::App& app, BenchArguments& arguments) {
         ->excludes(pareto);
     command->add_flag("--quick", arguments.quick,
                       "An eighth of the rays, for a smoke test (with --pareto: short timing "
-                      "samples and one acne scene)");
+                      "samples and one acne scene; with --sampling: 48 x 36 pixels, 1 to 16 "
+                      "samples, 3 seeds)");
     return command;
 }
 
 int run_bench(const BenchArguments& arguments) {
+    if (!arguments.chart.empty() && !arguments.epsilon && !arguments.sampling) {
+        std::fprintf(stderr, "raystep bench: --chart requires --epsilon or --sampling\n");
+        return 2;
+    }
+    if (arguments.sampling) return run_noise_study(arguments.quick, arguments.chart);
     if (arguments.pareto) {
         const std::vector<ParetoStudy>& studies = ParetoStudyRegistry::entries();
         if (studies.empty()) {

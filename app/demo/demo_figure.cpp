@@ -24,11 +24,15 @@ constexpr int kMargin = 8;
 const Color kStripColour(0.1, 0.1, 0.12);
 const Color kCaptionTextColour(0.9, 0.9, 0.9);
 
+// One panel fills the width, two to four make rows of two, five to eight two rows of three or
+// four: a series side by side, a second series under it (regular against jittered samples).
 int columns_for(int panels) {
-    return panels == 1 ? 1 : 2;
+    if (panels == 1) return 1;
+    if (panels <= 4) return 2;
+    return (panels + 1) / 2;
 }
 int rows_for(int panels) {
-    return panels <= 2 ? 1 : 2;
+    return (panels + columns_for(panels) - 1) / columns_for(panels);
 }
 
 void fill(Image& image, int x0, int y0, int width, int height, const Color& colour) {
@@ -80,8 +84,8 @@ void draw_scale(Image& image, const LogHeatScale& scale, int y0,
 }  // namespace
 
 PanelSize panel_size(const DemoSize& size, int panels, bool scale) {
-    if (panels < 1 || panels > 4) {
-        throw std::invalid_argument("a demo figure holds 1 to 4 panels, not " +
+    if (panels < 1 || panels > 8) {
+        throw std::invalid_argument("a demo figure holds 1 to 8 panels, not " +
                                     std::to_string(panels));
     }
     const int rows = rows_for(panels);
@@ -108,8 +112,10 @@ Image draw_figure(const DemoFigure& figure, const DemoSize& size,
                   size.width - 2 * kMargin, TextAlign::centre);
     }
 
-    // Each panel with its caption under it, row by row; a lone last panel is centred
+    // Each panel with its caption under it, row by row; a short last row is centred
     const int columns = columns_for(count);
+    const int last_row = (count - 1) / columns;
+    const int in_last_row = count - last_row * columns;
     for (int k = 0; k < count; ++k) {
         const DemoPanel& p = figure.panels[static_cast<std::size_t>(k)];
         if (p.image.width() != panel.width || p.image.height() != panel.height) {
@@ -117,8 +123,9 @@ Image draw_figure(const DemoFigure& figure, const DemoSize& size,
                                    std::to_string(p.image.width()) + " x " +
                                    std::to_string(p.image.height()) + ", not the panel size");
         }
-        const bool lone_last = k == count - 1 && count % columns != 0;
-        const int x0 = lone_last ? (size.width - panel.width) / 2 : (k % columns) * panel.width;
+        const int row_start =
+            k / columns == last_row ? (size.width - in_last_row * panel.width) / 2 : 0;
+        const int x0 = row_start + (k % columns) * panel.width;
         const int y0 = kTitleHeight + (k / columns) * (panel.height + kCaptionHeight);
         paste(image, p.image, x0, y0);
         if (font) {

@@ -9,7 +9,7 @@
 
 namespace raystep {
 
-// A demo's result before it becomes one image: a title, one to four panels each with a caption,
+// A demo's result before it becomes one image: a title, one to eight panels each with a caption,
 // and for heat maps the colour scale. The demos render their panels at panel_size; draw_figure
 // lays everything out and writes the labels.
 
@@ -35,7 +35,7 @@ struct LogHeatScale {
 
 struct DemoFigure {
     std::string title;
-    std::vector<DemoPanel> panels;  ///< 1 to 4, all of panel_size
+    std::vector<DemoPanel> panels;  ///< 1 to 8, all of panel_size
     std::optional<LogHeatScale> scale;
 };
 
@@ -45,9 +45,10 @@ struct PanelSize {
 };
 
 /// The size of each panel of a figure of `panels` panels on an image of `size`: one panel fills
-/// the width, two stand side by side, three or four make two rows of two; the title, the
-/// captions and, when `scale`, the colour bar take the rest. Throws std::invalid_argument for no
-/// panels, more than four, or an image too small to hold them.
+/// the width, two stand side by side, three or four make two rows of two, five or six two rows
+/// of three, seven or eight two rows of four; the title, the captions and, when `scale`, the
+/// colour bar take the rest. Throws std::invalid_argument for no panels, more than eight, or an
+/// image too small to hold them.
 PanelSize panel_size(const DemoSize& size, int panels, bool scale);
 
 /// The figure as one image of `size`. Without a font the strips for the title, captions and

@@ -26,6 +26,15 @@ const std::vector<DemoEntry>& demo_list() {
         {"shadow-acne",
          "stage 6: shadow acne for shadow-ray offsets epsilon = 0, too small, good, error bound",
          shadow_acne_demo},
+        {"aliasing",
+         "stage 8: stripes to the horizon at 1, 4, 16 spp, regular grid (moire) against jittered",
+         aliasing_demo},
+        {"soft-shadows",
+         "stage 8: an area light's penumbra with 1 to 8 x 8 light samples, stratified and random",
+         soft_shadows_demo},
+        {"refraction",
+         "stage 9: a glass cube at n = 1, 1.33, 1.5, 2.4: total internal reflection sets in",
+         refraction_demo},
     };
     return kDemos;
 }

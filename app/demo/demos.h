@@ -31,4 +31,16 @@ DemoFigure shadow_acne_demo(const DemoSize& size);
 /// lecture's half-space test, the pixels where a ray leaks through the mesh in magenta.
 DemoFigure watertight_demo(const DemoSize& size);
 
+/// Stage 8: stripes receding to the horizon at 1, 4 and 16 samples per pixel, a regular grid
+/// (aliased) above jittered samples (noise).
+DemoFigure aliasing_demo(const DemoSize& size);
+
+/// Stage 8: an area light's soft shadow with 1, 2 x 2, 4 x 4 and 8 x 8 stratified light samples
+/// above the same counts at random.
+DemoFigure soft_shadows_demo(const DemoSize& size);
+
+/// Stage 9: a glass cube of index 1, 1.33, 1.5 and 2.4, each panel captioned with its critical
+/// angle: where the side faces reflect the cube's inside by total internal reflection.
+DemoFigure refraction_demo(const DemoSize& size);
+
 }  // namespace raystep

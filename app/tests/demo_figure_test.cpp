@@ -37,7 +37,8 @@ DemoFigure two_panel_figure(const DemoSize& size) {
 
 }  // namespace
 
-TEST_CASE("panel_size: one panel fills the width, two share it, four make two rows", "[app]") {
+TEST_CASE("panel_size: one panel fills the width, two share it, four to eight make two rows",
+          "[app]") {
     const DemoSize size{640, 480};
     // 480 = title 32 + panels + captions 24 each (+ the colour bar's 44)
     CHECK(panel_size(size, 1, false).width == 640);
@@ -46,11 +47,15 @@ TEST_CASE("panel_size: one panel fills the width, two share it, four make two ro
     CHECK(panel_size(size, 2, true).height == 480 - 32 - 44 - 24);
     CHECK(panel_size(size, 4, false).width == 320);
     CHECK(panel_size(size, 4, false).height == (480 - 32) / 2 - 24);
+    CHECK(panel_size(size, 6, false).width == 640 / 3);
+    CHECK(panel_size(size, 6, false).height == (480 - 32) / 2 - 24);
+    CHECK(panel_size(size, 7, false).width == 640 / 4);
+    CHECK(panel_size(size, 8, false).width == 640 / 4);
 }
 
-TEST_CASE("panel_size: no panels, five panels or no room for them are refused", "[app]") {
+TEST_CASE("panel_size: no panels, nine panels or no room for them are refused", "[app]") {
     CHECK_THROWS_AS(panel_size({640, 480}, 0, false), std::invalid_argument);
-    CHECK_THROWS_AS(panel_size({640, 480}, 5, false), std::invalid_argument);
+    CHECK_THROWS_AS(panel_size({640, 480}, 9, false), std::invalid_argument);
     CHECK_THROWS_AS(panel_size({640, 60}, 2, true), std::invalid_argument);
 }
 

@@ -1,0 +1,66 @@
+#include "studies/sampling/noise_command.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include "app/render/terminal.h"
+#include "studies/common/machine_description.h"
+#include "studies/sampling/noise_chart.h"
+#include "studies/sampling/noise_measure.h"
+
+namespace raystep {
+
+namespace {
+
+std::string counts_text(const std::vector<int>& counts) {
+    std::string text;
+    for (const int count : counts)
+        text += (text.empty() ? "" : ", ") + std::to_string(count);
+    return text;
+}
+
+}  // namespace
+
+int run_noise_study(bool quick, const std::string& chart) {
+    NoiseStudyOptions options = quick ? quick_noise_options() : NoiseStudyOptions{};
+    const bool terminal = is_terminal(stderr);
+    options.progress = [terminal](const std::string& what) {
+        if (terminal) std::fprintf(stderr, "\r\033[K  measuring %s", what.c_str());
+    };
+    std::printf(
+        "raystep bench --sampling: %s; %s\n"
+        "Each render %d x %d pixels on %d thread(s), its processor time (std::clock) from the "
+        "scene's preparation to its last pixel; samples %s; each point the mean over %d seeds (the "
+        "regular grid: 1, it has "
+        "no randomness); RMSE over every pixel and channel against a converged render of %d "
+        "stratified samples.\n",
+        machine_description().c_str(), local_time().c_str(), options.width, options.height,
+        options.threads, counts_text(options.counts).c_str(), options.seeds,
+        options.converged_samples);
+
+    const std::vector<NoiseScene> scenes =
+        measure_noise(std::filesystem::path(RAYSTEP_SOURCE_DIR) / "scenes/demos", options);
+    if (terminal) std::fprintf(stderr, "\r\033[K");
+
+    for (const NoiseScene& scene : scenes) {
+        std::printf("\n### %s, %s: %s\n\n%s", scene.name.c_str(), scene.sampled.c_str(),
+                    scene.description.c_str(), noise_table(scene).c_str());
+    }
+    bool all_hold = true;
+    std::printf("\n");
+    for (const NoiseFinding& finding : noise_findings(scenes)) {
+        std::printf("- %s: %s\n", finding.text.c_str(), finding.holds ? "yes" : "NO");
+        all_hold = all_hold && finding.holds;
+    }
+    if (!chart.empty()) {
+        std::ofstream file(chart);
+        file << noise_chart_svg(scenes);
+        if (!file) throw std::runtime_error("could not write the chart to " + chart);
+        std::printf("- the chart: %s\n", chart.c_str());
+    }
+    return all_hold ? 0 : 1;
+}
+
+}  // namespace raystep
