@@ -23,6 +23,7 @@
 #include "app/grade/rubric.h"
 #include "app/grade/stage3_case_checks.h"
 #include "app/report/console_summary.h"
+#include "app/report/grade_report.h"
 #include "app/report/report_text.h"
 #include "base/errors/input_error.h"
 
@@ -170,7 +171,7 @@ AddedCommand add_grade(CLI::App& app) {
         "Run the grader's public checks on this build and score them by the rubric (the hidden "
         "and generated checks are not run)");
     command->add_option("--stage", arguments->stage, "Only this stage's checks (0: the pipeline)")
-        ->check(CLI::Range(0, 7));
+        ->check(CLI::Range(0, kLastStage));
     command
         ->add_option("--grading", arguments->grading,
                      "The folder of public case files and rubric (the release's grading/)")

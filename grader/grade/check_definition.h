@@ -41,7 +41,7 @@ struct CheckMeasure {
 
 struct CheckDefinition {
     std::string id;    ///< "stage1.unit"; the rubric's key
-    int stage = 0;     ///< whose probe answers it: 1 to 7, or 0 for the whole pipeline
+    int stage = 0;     ///< whose probe answers it: 1 to 9, or 0 for the whole pipeline
     std::string kind;  ///< "unit", "oracle", "render", "speed"
     std::string name;
     std::function<CheckMeasure(const GradingContext&, const BuiltProbe&)> measure;
