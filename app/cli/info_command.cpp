@@ -27,18 +27,6 @@ void row(const char* label, const std::string& value) {
     std::printf("%-11s %s\n", label, value.c_str());
 }
 
-std::string pattern_name(SamplePattern pattern) {
-    switch (pattern) {
-        case SamplePattern::jittered:
-            return "jittered";
-        case SamplePattern::regular:
-            return "regular";
-        case SamplePattern::random:
-            return "random";
-    }
-    return "unknown";
-}
-
 std::string lights_row(const SceneFeatures& f) {
     if (!f.uses_lights()) return "none (ambient and emission only, no shadow rays)";
     std::string text = counted(f.point_lights, "point light", "point lights") + ", " +
@@ -54,7 +42,8 @@ std::string lights_row(const SceneFeatures& f) {
 std::string sampling_row(const Scene& scene, const SceneFeatures& f) {
     std::string text = counted(static_cast<std::size_t>(scene.samples_per_pixel),
                                "sample per pixel", "samples per pixel");
-    if (scene.samples_per_pixel > 1) text += ", " + pattern_name(scene.pixel_sampling);
+    if (scene.samples_per_pixel > 1)
+        text += ", " + std::string(sample_pattern_name(scene.pixel_sampling));
     if (f.quad_lights > 0) {
         text += "; " + counted(static_cast<std::size_t>(scene.light_samples), "sample", "samples") +
                 " per area light, " + (scene.light_stratify ? "stratified" : "random");

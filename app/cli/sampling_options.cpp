@@ -17,18 +17,6 @@ bool is_square(int count) {
     return side * side == count;
 }
 
-const char* pattern_name(SamplePattern pattern) {
-    switch (pattern) {
-        case SamplePattern::jittered:
-            return "jittered";
-        case SamplePattern::regular:
-            return "regular";
-        case SamplePattern::random:
-            return "random";
-    }
-    return "unknown";
-}
-
 }  // namespace
 
 void add_sampling_options(CLI::App& command, SamplingArguments& arguments) {
@@ -47,15 +35,16 @@ void add_sampling_options(CLI::App& command, SamplingArguments& arguments) {
 
 void apply_sampling(const SamplingArguments& arguments, Scene& scene) {
     if (arguments.samples_per_pixel > 0) scene.samples_per_pixel = arguments.samples_per_pixel;
-    if (arguments.pixel_sampling == "jittered") scene.pixel_sampling = SamplePattern::jittered;
-    if (arguments.pixel_sampling == "regular") scene.pixel_sampling = SamplePattern::regular;
-    if (arguments.pixel_sampling == "random") scene.pixel_sampling = SamplePattern::random;
+    if (const auto pattern = parse_sample_pattern(arguments.pixel_sampling)) {
+        scene.pixel_sampling = *pattern;
+    }
     if (arguments.seed) scene.seed = *arguments.seed;
     if (scene.pixel_sampling != SamplePattern::random && !is_square(scene.samples_per_pixel)) {
-        throw std::invalid_argument(
-            std::to_string(scene.samples_per_pixel) + " samples per pixel cannot be placed " +
-            pattern_name(scene.pixel_sampling) + ": it needs n x n strata (4, 9, 16, ...); " +
-            "use --spp with a square or --pixel-sampling random");
+        throw std::invalid_argument(std::to_string(scene.samples_per_pixel) +
+                                    " samples per pixel cannot be placed " +
+                                    std::string(sample_pattern_name(scene.pixel_sampling)) +
+                                    ": it needs n x n strata (4, 9, 16, ...); " +
+                                    "use --spp with a square or --pixel-sampling random");
     }
 }
 

@@ -7,6 +7,7 @@
 
 #include "base/math/types.h"
 #include "base/scene/ray_offset.h"
+#include "base/scene/sample_pattern.h"
 #include "base/scene/shapes.h"
 
 namespace raystep {
@@ -157,13 +158,6 @@ struct QuadLight {
     Vec3 edge2;   ///< ac
     Color radiance;
     std::uint32_t line = 0;
-};
-
-/// How the samples of a pixel are placed (`pixelsampling`, `raystep render --pixel-sampling`).
-enum class SamplePattern {
-    jittered,  ///< one random point in each of n x n strata (spp = n^2)
-    regular,   ///< the centres of the n x n strata: supersampling, no noise, still aliased
-    random,    ///< spp points uniform over the pixel
 };
 
 /// A command that was read and checked but does not render as its author may expect: a setting

@@ -65,8 +65,8 @@ void SceneParser::check_sample_grids() {
             throw InputError(
                 name_, static_cast<int>(line_of("spp")),
                 "spp " + std::to_string(spp) + " is not a square, and 'pixelsampling " +
-                    (scene_.pixel_sampling == SamplePattern::jittered ? "jittered" : "regular") +
-                    "' on line " + std::to_string(pattern_line) +
+                    std::string(sample_pattern_name(scene_.pixel_sampling)) + "' on line " +
+                    std::to_string(pattern_line) +
                     " places n x n samples; give a square (4, 9, 16, ...) or 'pixelsampling "
                     "random'");
         }

@@ -6,18 +6,6 @@ namespace raystep::grade {
 
 using probe::Json;
 
-std::string pattern_name(SamplePattern pattern) {
-    switch (pattern) {
-        case SamplePattern::jittered:
-            return "jittered";
-        case SamplePattern::regular:
-            return "regular";
-        case SamplePattern::random:
-            return "random";
-    }
-    return "unknown";
-}
-
 Json quad_light_json(const QuadLight& light) {
     return {{"corner", probe::vec3(light.corner)},
             {"edge1", probe::vec3(light.edge1)},

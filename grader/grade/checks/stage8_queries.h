@@ -14,9 +14,6 @@ namespace raystep::grade {
 // by the deterministic checks (stage8_checks.cpp) and the statistical ones
 // (stage8_statistics.cpp).
 
-/// A pattern as the calls name it: "jittered", "regular", "random".
-std::string pattern_name(SamplePattern pattern);
-
 probe::Json quad_light_json(const QuadLight& light);
 probe::Json perspective_camera_json(const PerspectiveCamera& camera);
 probe::Json orthographic_camera_json(const OrthographicCamera& camera);
