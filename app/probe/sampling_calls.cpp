@@ -40,9 +40,7 @@ Json points(const std::vector<Vec2>& list) {
 
 SamplePattern pattern_from(const Json& j) {
     const std::string name = j.get<std::string>();
-    if (name == "jittered") return SamplePattern::jittered;
-    if (name == "regular") return SamplePattern::regular;
-    if (name == "random") return SamplePattern::random;
+    if (const auto pattern = parse_sample_pattern(name)) return *pattern;
     throw std::invalid_argument("unknown sample pattern \"" + name + "\"");
 }
 
@@ -99,8 +97,9 @@ FilmRadiance film_radiance_from(const Json& j) {
 
 // A parallelogram in front of the light: a shadow ray is blocked when it meets it within its
 // [t_min, t_max]. Null: nothing blocks.
-OccludedFunction occluder_from(const Json& j) {
-    if (j.is_null()) return [](const Ray&) { return false; };
+// One parallelogram {"corner", "edge1", "edge2"} that blocks the rays crossing it within their
+// t range.
+OccludedFunction parallelogram_from(const Json& j) {
     const Vec3 corner = vec3_from(j.at("corner"));
     const Vec3 e1 = vec3_from(j.at("edge1"));
     const Vec3 e2 = vec3_from(j.at("edge2"));
@@ -117,6 +116,21 @@ OccludedFunction occluder_from(const Json& j) {
         const double s = (glm::dot(p, e1) * g22 - glm::dot(p, e2) * g12) / det;
         const double r = (glm::dot(p, e2) * g11 - glm::dot(p, e1) * g12) / det;
         return s >= 0.0 && s <= 1.0 && r >= 0.0 && r <= 1.0;
+    };
+}
+
+// null (nothing blocks), one parallelogram, or a list of them.
+OccludedFunction occluder_from(const Json& j) {
+    if (j.is_null()) return [](const Ray&) { return false; };
+    if (!j.is_array()) return parallelogram_from(j);
+    std::vector<OccludedFunction> parts;
+    for (const Json& part : j)
+        parts.push_back(parallelogram_from(part));
+    return [parts](const Ray& ray) {
+        for (const OccludedFunction& part : parts) {
+            if (part(ray)) return true;
+        }
+        return false;
     };
 }
 

@@ -60,15 +60,15 @@ PublicCase regular_case(int n) {
 }
 
 Json samples_query(SamplePattern pattern, int count) {
-    return {{"pattern", pattern_name(pattern)},
+    return {{"pattern", std::string(sample_pattern_name(pattern))},
             {"count", count},
             {"seed", kDefaultStatisticsSeed},
             {"streams", Json::array({0})}};
 }
 
 std::string samples_call(SamplePattern pattern, int count) {
-    return "samples(SamplePattern::" + pattern_name(pattern) + ", " + std::to_string(count) +
-           ", random)";
+    return "samples(SamplePattern::" + std::string(sample_pattern_name(pattern)) + ", " +
+           std::to_string(count) + ", random)";
 }
 
 PublicCase samples_throw_case(SamplePattern pattern, int count) {
@@ -252,14 +252,16 @@ PublicCase random_orthographic_case(PortableRandom& random) {
     return orthographic_case(camera, {random.uniform(0, width), random.uniform(0, height)});
 }
 
-// A light of any size and orientation and a point at least a tenth of its size off its plane,
-// on either side.
+// A light of any size and orientation, a parallelogram sheared by up to 60 degrees (its area is
+// |ab x ac|, not |ab| |ac|), and a point at least a tenth of its size off its plane, on either
+// side.
 PublicCase random_quad_light_case(PortableRandom& random) {
     QuadLight light;
     light.corner = random.point(10);
     light.edge1 = random.unit_vector() * random.decade(-1, 1);
-    light.edge2 =
-        glm::normalize(glm::cross(light.edge1, random.unit_vector())) * random.decade(-1, 1);
+    const Vec3 across = glm::normalize(glm::cross(light.edge1, random.unit_vector()));
+    const double shear = std::tan(random.uniform(-1.05, 1.05));
+    light.edge2 = (across + shear * glm::normalize(light.edge1)) * random.decade(-1, 1);
     light.radiance = {random.uniform(0, 5), random.uniform(0, 5), random.uniform(0, 5)};
     const Vec3 normal = glm::normalize(glm::cross(light.edge1, light.edge2));
     const double size = std::max(glm::length(light.edge1), glm::length(light.edge2));

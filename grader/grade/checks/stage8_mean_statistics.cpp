@@ -104,7 +104,7 @@ Json pixel_query(const FilmCase& film, SamplePattern pattern, int count, std::ui
     return {{"radiance", film.radiance},
             {"i", kPixelI},
             {"j", kPixelJ},
-            {"pattern", pattern_name(pattern)},
+            {"pattern", std::string(sample_pattern_name(pattern))},
             {"count", count},
             {"seed", seed},
             {"streams", streams}};
@@ -112,8 +112,8 @@ Json pixel_query(const FilmCase& film, SamplePattern pattern, int count, std::ui
 
 std::string pixel_call(const FilmCase& film, SamplePattern pattern, int count) {
     return "pixel_colour(" + film.text + ", pixel (" + std::to_string(kPixelI) + ", " +
-           std::to_string(kPixelJ) + "), " + pattern_name(pattern) + ", " + std::to_string(count) +
-           ")";
+           std::to_string(kPixelJ) + "), " + std::string(sample_pattern_name(pattern)) + ", " +
+           std::to_string(count) + ")";
 }
 
 // Per stream: the radiance asked `count` times, every film point inside the pixel, and the three
@@ -253,14 +253,31 @@ const SurfacePoint kAbovePoint = surface_at({0.2, 3, 0.1}, {0, -1, 0}, {0.1, -1,
 
 const RayOffset kOffset{OffsetRule::along_normal, 1e-9};
 
-// The part u.x < blocked_below of the light, moved 1% of the way towards the point: from the
-// point it covers exactly that part, and a shadow ray meets it just before the light.
-Json blocker_json(const SurfacePoint& point, double blocked_below) {
-    if (blocked_below <= 0.0) return nullptr;
-    const Vec3 corner = point.position + 0.99 * (kLight.corner - point.position);
+Json parallelogram(const Vec3& corner, const Vec3& edge1, const Vec3& edge2) {
     return {{"corner", probe::vec3(corner)},
-            {"edge1", probe::vec3(0.99 * blocked_below * kLight.edge1)},
-            {"edge2", probe::vec3(0.99 * kLight.edge2)}};
+            {"edge1", probe::vec3(edge1)},
+            {"edge2", probe::vec3(edge2)}};
+}
+
+// What blocks the shadow rays: the part u.x < blocked_below of the light, moved 1% of the way
+// towards the point (from the point it covers exactly that part, and a shadow ray meets it just
+// before the light), and two traps that no right shadow ray meets. The surface's own tangent
+// plane around the point catches a shadow ray that starts on the surface with nothing to keep
+// it from hitting the surface at t = 0 (shadow acne); a ceiling half a unit beyond the light
+// catches one that is not bounded at the light sample's distance.
+Json blocker_json(const SurfacePoint& point, double blocked_below) {
+    Json parts = Json::array();
+    if (blocked_below > 0.0) {
+        const Vec3 corner = point.position + 0.99 * (kLight.corner - point.position);
+        parts.push_back(
+            parallelogram(corner, 0.99 * blocked_below * kLight.edge1, 0.99 * kLight.edge2));
+    }
+    const Vec3 tangent = glm::normalize(glm::cross(point.normal, {0.6, 0.0, 0.8}));
+    const Vec3 bitangent = glm::cross(point.normal, tangent);
+    parts.push_back(parallelogram(point.position - 10.0 * tangent - 10.0 * bitangent,
+                                  20.0 * tangent, 20.0 * bitangent));
+    parts.push_back(parallelogram({-10, kLight.corner.y + 0.5, -10}, {0, 0, 20}, {20, 0, 0}));
+    return parts;
 }
 
 Json shading_query(const SurfacePoint& point, double blocked_below, SamplePattern pattern,
@@ -268,7 +285,7 @@ Json shading_query(const SurfacePoint& point, double blocked_below, SamplePatter
     return {{"material", probe::material(shaded_material())},
             {"point", probe::surface_point(point)},
             {"light", quad_light_json(kLight)},
-            {"pattern", pattern_name(pattern)},
+            {"pattern", std::string(sample_pattern_name(pattern))},
             {"count", count},
             {"seed", seed},
             {"streams", streams},
@@ -281,7 +298,7 @@ std::string shading_call(const SurfacePoint& point, double blocked_below, Sample
     return "quad_light_shading(light at " + full_text(kLight.corner) + " + u " +
            full_text(kLight.edge1) + " + v " + full_text(kLight.edge2) + ", point " +
            full_text(point.position) + " normal " + full_text(point.normal) + ", " +
-           pattern_name(pattern) + ", " + std::to_string(count) + ", " +
+           std::string(sample_pattern_name(pattern)) + ", " + std::to_string(count) + ", " +
            (blocked_below > 0 ? "blocked for u < " + full_text(blocked_below) : "nothing blocks") +
            ")";
 }

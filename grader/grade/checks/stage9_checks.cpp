@@ -39,6 +39,9 @@ constexpr const char* kPublicName =
 const Medium kGlass{1, 1.5};
 const Medium kWater{2, 1.33};
 const Medium kDiamond{3, 2.4};
+// A second glass solid of glass's index: leaving one of two equal-index solids must remove that
+// solid, found by its number, not by its index.
+const Medium kOtherGlass{4, 1.5};
 
 AllowedAnswers allowed(RefractionAnswer answer) {
     return {answer != RefractionAnswer::none, answer != RefractionAnswer::direction};
@@ -230,6 +233,8 @@ std::vector<PublicCase> hidden_cases() {
         after_crossing_case({kGlass}, kGlass, true, {kGlass, kGlass}),
         after_crossing_case({kGlass, kGlass}, kGlass, false, {kGlass}),
         after_crossing_case({kWater, kGlass, kGlass}, kGlass, false, {kWater, kGlass}),
+        after_crossing_case({kGlass, kOtherGlass}, kGlass, false, {kOtherGlass}),
+        after_crossing_case({kOtherGlass, kWater, kGlass}, kOtherGlass, false, {kWater, kGlass}),
         // The refracted ray: each offset rule, a bent shading normal, far from the origin,
         // total internal reflection
         refracted_ray_case(floor_point({1, 0, 2}, {-1, 1, 0}), 1.0, 1.5, kAlongNormal),
