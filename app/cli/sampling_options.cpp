@@ -29,8 +29,18 @@ void add_sampling_options(CLI::App& command, SamplingArguments& arguments) {
         .add_option("--pixel-sampling", arguments.pixel_sampling,
                     "Where a pixel's samples go, in place of the scene's pixelsampling")
         ->check(CLI::IsMember({"jittered", "regular", "random"}));
-    command.add_option("--seed", arguments.seed,
-                       "The random seed, in place of the scene's seed: another seed, other noise");
+    // CLI11 reads "-1" into an unsigned 64-bit number as 2^64 - 1, as strtoull does; the scene's
+    // `seed` refuses it, and so does the option.
+    command
+        .add_option("--seed", arguments.seed,
+                    "The random seed, in place of the scene's seed: another seed, other noise")
+        ->check(
+            [](const std::string& text) {
+                return text.find('-') == std::string::npos
+                           ? std::string()
+                           : std::string("the seed is a whole number from 0 to 2^64 - 1");
+            },
+            "0 to 2^64 - 1");
 }
 
 void apply_sampling(const SamplingArguments& arguments, Scene& scene) {
