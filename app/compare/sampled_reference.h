@@ -24,10 +24,12 @@ constexpr std::uint64_t kSampledReferenceSeeds = 0xFFFF'FFFF'0000'0000;
 constexpr int kSampledTile = 8;
 constexpr double kSampledTileBound = 4.0;
 constexpr double kSampledTilesApartAllowed = 0.01;
-/// The smallest spread a tile is given: one step of an 8-bit image. The student's render and the
-/// shipped mean are PNGs, so a tile with no noise (a background, a surface in full light) differs
-/// by rounding to 8 bits alone; the grader compares floats and needs only 1e-4.
-constexpr double kSampledDeviationFloor = 1.0 / 255.0;
+/// The smallest spread a tile is given: one step of an 8-bit image over the bound. The student's
+/// render and the shipped mean are PNGs, each pixel rounded to 8 bits, so two right images of a
+/// tile with little noise (a background, a surface in full light) may differ by up to a step
+/// from rounding alone, which must stay within the bound; the grader compares floats and needs
+/// only 1e-4. A larger floor would hide biases in quiet tiles (a scene with many light samples).
+constexpr double kSampledDeviationFloor = 1.0 / 255.0 / kSampledTileBound;
 
 /// True when the view of the scene averages random samples: a view that averages samples
 /// (render_pixel.h) of a scene with more than one sample per pixel or a quad light.
