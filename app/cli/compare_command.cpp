@@ -7,8 +7,10 @@
 #include <vector>
 
 #include "app/cli/render_command.h"
+#include "app/compare/noisy_render_comparison.h"
 #include "app/compare/reference_image.h"
 #include "app/compare/render_rule.h"
+#include "app/compare/sampled_reference.h"
 #include "app/render/view.h"
 #include "base/errors/input_error.h"
 #include "base/image/image_io.h"
@@ -39,8 +41,69 @@ std::string only_view(const fs::path& scene) {
                      "the reference has the views " + names + ": pick one with --view");
 }
 
+// A sampled view (a reference shipped with its tile spread): the render's tiles against the
+// reference's mean in standard errors, the grader's rule for noisy renders on one render.
+int compare_sampled(const fs::path& image_path, const fs::path& reference_path,
+                    const fs::path& spread_path, const fs::path& heat_map_path) {
+    const Image image = read_image(image_path);
+    const Image reference = read_image(reference_path);
+    const Image spread = read_image(spread_path);
+    std::printf(
+        "image      %s\nreference  %s (the reference's mean over %d seeds)\nspread     %s\n",
+        image_path.string().c_str(), reference_path.string().c_str(), kSampledReferenceRenders,
+        spread_path.string().c_str());
+    if (image.width() != reference.width() || image.height() != reference.height()) {
+        std::fprintf(stderr,
+                     "raystep compare: %s is %s pixels but the reference %s is %s: render the "
+                     "scene at its own size\n",
+                     image_path.string().c_str(), size_text(image).c_str(),
+                     reference_path.string().c_str(), size_text(reference).c_str());
+        std::printf("fail: the images differ in size\n");
+        return 1;
+    }
+    NoisyComparison comparison;
+    try {
+        comparison =
+            compare_render_with_spread(image, reference, spread, kSampledReferenceRenders,
+                                       kSampledTile, kSampledTileBound, kSampledDeviationFloor);
+    } catch (const std::invalid_argument&) {
+        throw InputError(spread_path.string(), 0,
+                         "holds " + size_text(spread) + " tiles, not one per " +
+                             std::to_string(kSampledTile) + " x " + std::to_string(kSampledTile) +
+                             " tile of the " + size_text(reference) + " reference");
+    }
+    const double share =
+        static_cast<double>(comparison.tiles_apart) / static_cast<double>(comparison.tiles);
+    const bool passed = share <= kSampledTilesApartAllowed;
+    std::printf(
+        "sampled scene: compared tile means in standard errors, not pixels: each %d x %d tile's "
+        "mean against the reference's, in units of the spread one render's tile has over its "
+        "seeds; a tile is apart beyond %.0f\n",
+        kSampledTile, kSampledTile, kSampledTileBound);
+    std::printf("  %-26s %d of %d (%.2f%%)\n", "tiles apart", comparison.tiles_apart,
+                comparison.tiles, 100.0 * share);
+    std::printf(
+        "  %-26s %.3g at pixel (%d, %d): %.4g %.4g %.4g here, %.4g %.4g %.4g in the "
+        "reference\n",
+        "worst tile, standard errors", comparison.worst_z, comparison.worst_i, comparison.worst_j,
+        comparison.worst_student.r, comparison.worst_student.g, comparison.worst_student.b,
+        comparison.worst_reference.r, comparison.worst_reference.g, comparison.worst_reference.b);
+    write_image(render_heat_map(reference, image), heat_map_path);
+    std::printf(
+        "heat map   %s (pixel by pixel: noise shows everywhere; look for tiles that stand out)\n",
+        heat_map_path.string().c_str());
+    std::printf(
+        "%s: %.2f%% of tiles apart; the grader passes at most %.2f%%, on the mean of 8 renders "
+        "of yours\n",
+        passed ? "pass" : "fail", 100.0 * share, 100.0 * kSampledTilesApartAllowed);
+    return passed ? 0 : 1;
+}
+
 int compare_files(const fs::path& image_path, const fs::path& reference_path,
                   const fs::path& heat_map_path) {
+    const fs::path spread_path = tile_spread_path(reference_path);
+    if (fs::is_regular_file(spread_path))
+        return compare_sampled(image_path, reference_path, spread_path, heat_map_path);
     const RenderFileVerdict judged = judge_render_files(image_path, reference_path);
     const Image& image = judged.image;
     const Image& reference = judged.reference;

@@ -135,9 +135,9 @@ std::vector<double> barycentrics(const Hit& hit) {
     return {hit.beta, hit.gamma};
 }
 
-// The shading steps: each light's reach and term, then the local colour.
+// The shading steps: each light's reach and term, then the local colour unless it is random.
 bool add_shading(Rows& rows, const PixelRecord& ours, const PixelRecord& reference,
-                 const std::vector<std::string>& light_names) {
+                 const std::vector<std::string>& light_names, bool random_colours) {
     if (!ours.hit && !reference.hit) return true;
     const bool reached = !ours.hit || ours.local.has_value();
     for (std::size_t k = 0; k < light_names.size(); ++k) {
@@ -161,6 +161,7 @@ bool add_shading(Rows& rows, const PixelRecord& ours, const PixelRecord& referen
             return false;
         }
     }
+    if (random_colours) return true;
     const auto local = [](const PixelRecord& record) {
         return record.local ? std::optional<std::vector<double>>(components(*record.local))
                             : std::nullopt;
@@ -172,7 +173,7 @@ bool add_shading(Rows& rows, const PixelRecord& ours, const PixelRecord& referen
 }  // namespace
 
 TraceComparison compare_pixel(const PixelRecord& ours, const PixelRecord& reference, View view,
-                              const std::vector<std::string>& light_names) {
+                              const std::vector<std::string>& light_names, bool random_colours) {
     TraceComparison comparison;
     Rows rows(comparison);
     const PipelineReach reach = pipeline_reach(view);
@@ -198,7 +199,8 @@ TraceComparison compare_pixel(const PixelRecord& ours, const PixelRecord& refere
         return comparison;
     }
 
-    if (!add_shading(rows, ours, reference, light_names) || reach == PipelineReach::shading) {
+    if (!add_shading(rows, ours, reference, light_names, random_colours) ||
+        reach == PipelineReach::shading || random_colours) {
         return comparison;
     }
     const auto full = [](const PixelRecord& record) {

@@ -32,7 +32,10 @@ struct TraceComparison {
 /// Two values are the same when they are within the rounding of the type the reference trace
 /// stores them in (stored_roundoff), relative to the quantity's magnitude: the reference's own
 /// value could be anywhere in that interval. Rows stop at the first step `ours` did not reach.
+/// With `random_colours` (a quad light's samples are in the colours, drawn in whatever order each
+/// build draws them) the rows stop after the lights: the local and full colours are left out.
 TraceComparison compare_pixel(const PixelRecord& ours, const PixelRecord& reference, View view,
-                              const std::vector<std::string>& light_names);
+                              const std::vector<std::string>& light_names,
+                              bool random_colours = false);
 
 }  // namespace raystep

@@ -54,6 +54,26 @@ Spread spread(const std::vector<Color>& values, int channel) {
     return {mean, std::sqrt(squares / (n - 1.0))};
 }
 
+// Counts a tile judged with the largest z of its channels, keeping the worst.
+void count_tile(NoisyComparison& result, bool apart, double tile_z, int i0, int j0,
+                const Color& student_mean, const Color& reference_mean) {
+    ++result.tiles;
+    if (apart) ++result.tiles_apart;
+    // A NaN is the worst there is, and stays so.
+    const bool worse = std::isnan(tile_z) ? !std::isnan(result.worst_z) : tile_z > result.worst_z;
+    if (result.tiles == 1 || worse) {
+        result.worst_z = tile_z;
+        result.worst_i = i0;
+        result.worst_j = j0;
+        result.worst_student = student_mean;
+        result.worst_reference = reference_mean;
+    }
+}
+
+int tiles_across(int pixels, int tile) {
+    return (pixels + tile - 1) / tile;
+}
+
 }  // namespace
 
 NoisyComparison compare_noisy_renders(const std::vector<Image>& student,
@@ -88,18 +108,7 @@ NoisyComparison compare_noisy_renders(const std::vector<Image>& student,
                 if (!(z <= bound)) apart = true;
                 if (std::isnan(z) || z > tile_z) tile_z = z;
             }
-            ++result.tiles;
-            if (apart) ++result.tiles_apart;
-            // A NaN is the worst there is, and stays so.
-            const bool worse =
-                std::isnan(tile_z) ? !std::isnan(result.worst_z) : tile_z > result.worst_z;
-            if (result.tiles == 1 || worse) {
-                result.worst_z = tile_z;
-                result.worst_i = i0;
-                result.worst_j = j0;
-                result.worst_student = student_mean;
-                result.worst_reference = reference_mean;
-            }
+            count_tile(result, apart, tile_z, i0, j0, student_mean, reference_mean);
         }
     }
     return result;
@@ -117,6 +126,60 @@ Image mean_image(const std::vector<Image>& renders) {
         }
     }
     return mean;
+}
+
+Image tile_deviations(const std::vector<Image>& renders, int tile) {
+    if (renders.empty() || tile < 1) throw std::invalid_argument("tile_deviations: no renders");
+    const Image& first = renders.front();
+    check_set(renders, first, "reference");
+    Image deviations(tiles_across(first.width(), tile), tiles_across(first.height(), tile));
+    for (int j0 = 0; j0 < first.height(); j0 += tile) {
+        for (int i0 = 0; i0 < first.width(); i0 += tile) {
+            const std::vector<Color> means = tile_means(renders, i0, j0, tile);
+            Color deviation;
+            for (int c = 0; c < 3; ++c)
+                deviation[c] = spread(means, c).deviation;
+            deviations.set(i0 / tile, j0 / tile, deviation);
+        }
+    }
+    return deviations;
+}
+
+NoisyComparison compare_render_with_spread(const Image& render, const Image& reference_mean,
+                                           const Image& deviations, int reference_renders, int tile,
+                                           double bound, double deviation_floor) {
+    if (tile < 1 || reference_renders < 1) {
+        throw std::invalid_argument("compare_render_with_spread: nothing to compare");
+    }
+    if (render.width() != reference_mean.width() || render.height() != reference_mean.height()) {
+        throw std::invalid_argument(
+            "compare_render_with_spread: the render is not the mean's size");
+    }
+    if (deviations.width() != tiles_across(render.width(), tile) ||
+        deviations.height() != tiles_across(render.height(), tile)) {
+        throw std::invalid_argument(
+            "compare_render_with_spread: the spread has not one pixel per tile");
+    }
+    const double error_scale = std::sqrt(1.0 + 1.0 / static_cast<double>(reference_renders));
+    NoisyComparison result;
+    for (int j0 = 0; j0 < render.height(); j0 += tile) {
+        for (int i0 = 0; i0 < render.width(); i0 += tile) {
+            const Color ours = tile_means({render}, i0, j0, tile).front();
+            const Color theirs = tile_means({reference_mean}, i0, j0, tile).front();
+            const Color deviation = deviations.at(i0 / tile, j0 / tile);
+            bool apart = false;
+            double tile_z = 0.0;
+            for (int c = 0; c < 3; ++c) {
+                const double s = std::max(static_cast<double>(deviation[c]), deviation_floor);
+                const double z = std::abs(ours[c] - theirs[c]) / (s * error_scale);
+                // Written so that a NaN is apart.
+                if (!(z <= bound)) apart = true;
+                if (std::isnan(z) || z > tile_z) tile_z = z;
+            }
+            count_tile(result, apart, tile_z, i0, j0, ours, theirs);
+        }
+    }
+    return result;
 }
 
 }  // namespace raystep

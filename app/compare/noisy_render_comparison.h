@@ -38,4 +38,23 @@ NoisyComparison compare_noisy_renders(const std::vector<Image>& student,
 /// The mean of renders of one size, pixel by pixel: the converged image a report shows.
 Image mean_image(const std::vector<Image>& renders);
 
+/// Per tile of tile x tile pixels (smaller at the right and bottom edges) and channel, the
+/// standard deviation over `renders` of the tile's mean in each: an image with a pixel per tile,
+/// tile (i0, j0) at (i0 / tile, j0 / tile). What one render's tile means spread around the mean,
+/// shipped with a sampled view's reference so that a single render can be judged
+/// (compare_render_with_spread). Throws std::invalid_argument unless there are at least two
+/// renders, all of one size.
+Image tile_deviations(const std::vector<Image>& renders, int tile);
+
+/// One render against a reference's mean over `reference_renders` renders, with `deviations` the
+/// reference's tile_deviations: per tile and channel, the difference of the tile's means against
+/// its standard error s sqrt(1 + 1/reference_renders), s the tile's deviation or
+/// `deviation_floor` when larger; apart beyond `bound`, as compare_noisy_renders. The one render
+/// brings no spread of its own, so a render noisier than the reference's has more tiles apart.
+/// Throws std::invalid_argument unless the render is the mean's size and `deviations` has a pixel
+/// per tile of it.
+NoisyComparison compare_render_with_spread(const Image& render, const Image& reference_mean,
+                                           const Image& deviations, int reference_renders, int tile,
+                                           double bound, double deviation_floor);
+
 }  // namespace raystep

@@ -28,7 +28,8 @@ bool averages_samples(View view);
 /// primitive tested and its result, and the closest hit; for a sampled pixel, every step of its
 /// first sample, then each sample's film point and colour, and the mean. When `record` is given,
 /// the values of the steps the view takes are put in it as they are computed: for a sampled pixel,
-/// its first sample's, with `full` the pixel's mean.
+/// those of one more ray, through the pixel's centre with the light samples of sample 0, as at
+/// one sample per pixel, whatever order the samples come in.
 Color render_pixel(const RenderScene& render_scene, View view, int i, int j, TraceLog* trace,
                    PixelRecord* record);
 

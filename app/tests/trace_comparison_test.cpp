@@ -107,3 +107,17 @@ TEST_CASE("compare_pixel: a value is the same as itself stored, rounded twice", 
     CHECK(std::abs(stored.hit->hit.t - ours.hit->hit.t) > std::ldexp(1.0, -17) * stored.hit->hit.t);
     CHECK_FALSE(compare_pixel(ours, stored, View::depth, kOneLight).first_difference);
 }
+
+TEST_CASE("compare_pixel: with random colours it stops after the lights, whatever the colours",
+          "[app]") {
+    PixelRecord ours = shaded_hit();
+    ours.local = Color(0.9);
+    ours.full = Color(0.9);
+    const TraceComparison comparison =
+        compare_pixel(ours, shaded_hit(), View::full, kOneLight, true);
+    CHECK_FALSE(comparison.first_difference);
+    REQUIRE(comparison.rows.size() == 8);
+    CHECK(comparison.rows.back().quantity == "point light (line 7): term");
+    // Without it the colours are compared, and the local colour differs.
+    CHECK(compare_pixel(ours, shaded_hit(), View::full, kOneLight).first_difference == 8u);
+}

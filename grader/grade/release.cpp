@@ -1,9 +1,14 @@
 #include "grader/grade/release.h"
 
+#include <algorithm>
 #include <stdexcept>
 
+#include <glm/common.hpp>
+
+#include "app/compare/noisy_render_comparison.h"
 #include "app/compare/reference_image.h"
 #include "app/compare/reference_trace.h"
+#include "app/compare/sampled_reference.h"
 #include "app/render/pixel_record.h"
 #include "app/render/tile_renderer.h"
 #include "base/image/image_io.h"
@@ -66,6 +71,38 @@ std::size_t copy_tree(const fs::path& source, const fs::path& output) {
     return files;
 }
 
+// The image as an 8-bit file holds it: each channel clamped to [0, 1] (image_io.h).
+Image clamped(Image image) {
+    for (int j = 0; j < image.height(); ++j) {
+        for (int i = 0; i < image.width(); ++i)
+            image.set(i, j, glm::clamp(image.at(i, j), Color(0.0), Color(1.0)));
+    }
+    return image;
+}
+
+// A sampled view's reference (sampled_reference.h): the mean of kSampledReferenceRenders renders
+// at the seeds kSampledReferenceSeeds + k as the reference image, and their tile deviations
+// beside it. Each render is clamped first, as the student's PNG is, so that a pixel brighter than
+// white (a light seen directly) is averaged as the student's render holds it. `records` is filled
+// while the first renders.
+void write_sampled_reference(const Scene& scene, View view, const fs::path& image,
+                             std::vector<PixelRecord>* records) {
+    // One preparation (the BVH) serves every seed: the render scene reads the seed from `seeded`
+    // as it renders.
+    Scene seeded = scene;
+    const RenderScene render_scene = prepare_render_scene(seeded);
+    std::vector<Image> renders;
+    for (int k = 0; k < kSampledReferenceRenders; ++k) {
+        seeded.seed = kSampledReferenceSeeds + static_cast<std::uint64_t>(k);
+        RenderOptions options;
+        options.view = view;
+        if (k == 0) options.records = records;
+        renders.push_back(clamped(render_image(render_scene, options)));
+    }
+    write_image(mean_image(renders), image);
+    write_image(tile_deviations(renders, kSampledTile), tile_spread_path(image));
+}
+
 }  // namespace
 
 ReleaseSummary make_release(const fs::path& source, const fs::path& output) {
@@ -101,11 +138,17 @@ ReleaseSummary make_release(const fs::path& source, const fs::path& output) {
             }
             std::vector<PixelRecord> records;
             for (const std::string& name : views) {
-                RenderOptions options;
-                options.view = *parse_view(name);
-                if (name == furthest) options.records = &records;
-                write_image(render_image(render_scene, options),
-                            reference_image_path(output / "scenes" / relative, name));
+                const View view = *parse_view(name);
+                const fs::path image = reference_image_path(output / "scenes" / relative, name);
+                std::vector<PixelRecord>* view_records = name == furthest ? &records : nullptr;
+                if (is_sampled_view(scene, view)) {
+                    write_sampled_reference(scene, view, image, view_records);
+                } else {
+                    RenderOptions options;
+                    options.view = view;
+                    options.records = view_records;
+                    write_image(render_image(render_scene, options), image);
+                }
                 ++summary.reference_images;
             }
             write_reference_trace(reference_trace_path(output / "scenes" / relative), scene.width,

@@ -102,3 +102,42 @@ TEST_CASE("mean_image: the pixel by pixel mean", "[grader]") {
     CHECK(mean.at(1, 0) == Color(2, 2, 2));
     CHECK(mean.at(0, 0) == Color(0, 0, 0));
 }
+
+TEST_CASE("tile_deviations: one pixel per tile, each tile's spread over the renders", "[grader]") {
+    std::vector<Image> renders = {Image(20, 12), Image(20, 12)};
+    for (int j = 0; j < 12; ++j) {
+        for (int i = 0; i < 20; ++i)
+            renders[1].set(i, j, Color(i < 8 ? 0.2 : 0.0));
+    }
+    const Image deviations = tile_deviations(renders, kTile);
+    // 20 x 12 pixels in tiles of 8: 3 x 2 tiles, the last column and row smaller.
+    REQUIRE(deviations.width() == 3);
+    REQUIRE(deviations.height() == 2);
+    // Tile means 0 and 0.2: a standard deviation of 0.2 / sqrt(2).
+    CHECK(deviations.at(0, 1).r == Approx(0.2 / std::sqrt(2.0)));
+    CHECK(deviations.at(1, 0).r == 0.0);
+    CHECK_THROWS_AS(tile_deviations({renders[0]}, kTile), std::invalid_argument);
+}
+
+TEST_CASE("compare_render_with_spread: one render of the mean passes, a biased one fails there",
+          "[grader]") {
+    const std::vector<Image> reference = noisy_renders(500, 16, 0.0);
+    const Image mean = mean_image(reference);
+    const Image spread = tile_deviations(reference, kTile);
+    int apart = 0;
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+        const NoisyComparison c = compare_render_with_spread(
+            noisy_renders(seed, 1, 0.0).front(), mean, spread, 16, kTile, kBound, kFloor);
+        CHECK(c.tiles == 48);
+        apart += c.tiles_apart;
+    }
+    CHECK(apart <= 2);
+    // A bias of 0.02 where x < 32: some 4.5 standard errors of a single render's tile.
+    const NoisyComparison biased = compare_render_with_spread(
+        noisy_renders(1, 1, 0.02).front(), mean, spread, 16, kTile, kBound, kFloor);
+    CHECK(biased.tiles_apart >= 12);
+    CHECK(biased.worst_i < kWidth / 2);
+    CHECK_THROWS_AS(compare_render_with_spread(noisy_renders(1, 1, 0.0).front(), mean, mean, 16,
+                                               kTile, kBound, kFloor),
+                    std::invalid_argument);
+}

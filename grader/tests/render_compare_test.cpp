@@ -2,11 +2,13 @@
 // marks from the share of matching pixels at which raystep compare passes (a student release has
 // no rubric, so the number lives in app/compare/render_rule.h), and on the images a render check
 // writes into its report, raystep compare's rule gives the check's verdict, summary and metrics.
+// On sampled views the rubric's number is the share of tiles (app/compare/sampled_reference.h).
 
 #include <algorithm>
 #include <map>
 
 #include "app/compare/render_rule.h"
+#include "app/compare/sampled_reference.h"
 #include "app/grade/rubric.h"
 #include "base/testing/catch.h"
 #include "base/testing/scratch_folder.h"
@@ -22,7 +24,11 @@ TEST_CASE("rubric: every render check has full marks where raystep compare passe
         if (check.kind != "render") continue;
         CAPTURE(check.id);
         ++render_checks;
-        CHECK(rubric.entry(check.id).full_at == Approx(1.0 - kDifferingShareAllowed).margin(1e-12));
+        // Stage 8's render checks are the noisy ones (noisy_render_checks.cpp): full marks from
+        // the share of tiles within the bound at which raystep compare passes a sampled view.
+        const bool sampled = check.id.rfind("stage8.render.", 0) == 0;
+        const double allowed = sampled ? kSampledTilesApartAllowed : kDifferingShareAllowed;
+        CHECK(rubric.entry(check.id).full_at == Approx(1.0 - allowed).margin(1e-12));
     }
     CHECK(render_checks > 0);
 }
