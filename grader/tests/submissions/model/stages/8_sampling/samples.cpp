@@ -27,6 +27,15 @@ int side_of_square(int count, const char* pattern) {
     return n;
 }
 
+// A coordinate of stratum [a/n, (a+1)/n), given the far edge (a+1)/n: (a + u) / n is below it in
+// exact arithmetic, but not always in doubles. With u within a few ulps of 1, a + u rounds up to
+// a + 1 (1 + (1 - 2^-53) is a tie, and ties go to the even 2), and the division can round up onto
+// the edge: the point lands in the next stratum, or on 1 outside the square. Such a point moves
+// to the last double below the edge.
+double inside_stratum(double coordinate, double far_edge) {
+    return coordinate < far_edge ? coordinate : std::nextafter(far_edge, 0.0);
+}
+
 }  // namespace
 
 std::vector<Vec2> jittered_samples(int strata_per_side, RandomStream& random) {
@@ -36,11 +45,9 @@ std::vector<Vec2> jittered_samples(int strata_per_side, RandomStream& random) {
     points.reserve(static_cast<std::size_t>(n) * n);
     for (int b = 0; b < n; ++b) {
         for (int a = 0; a < n; ++a) {
-            // (a + u) / n < 1 for u < 1 when a <= n - 1: the sum a + u rounds to at most
-            // a + 1 - 2^-53 (a + 1), which divided by n stays below (a + 1) / n, so no point
-            // leaves its stratum, nor the square.
             const Vec2 u = random.next2();
-            points.push_back({(a + u.x) / n, (b + u.y) / n});
+            points.push_back({inside_stratum((a + u.x) / n, (a + 1.0) / n),
+                              inside_stratum((b + u.y) / n, (b + 1.0) / n)});
         }
     }
     return points;
