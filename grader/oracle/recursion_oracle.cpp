@@ -11,16 +11,14 @@
 
 namespace raystep {
 
-ExpectedRay expected_reflection(const SurfacePoint& p, const RayOffset& offset) {
-    const WideVec v = widen(p.to_eye);
-    const WideVec n = widen(p.shading_normal);
-    const WideVec d = glm::normalize(-v + 2 * glm::dot(v, n) * n);
+ExpectedRay expected_leaving_ray(const SurfacePoint& p, const WideVec& d, Wide direction_tolerance,
+                                 const RayOffset& offset) {
     const Wide size = std::max({std::abs(Wide(p.position.x)), std::abs(Wide(p.position.y)),
                                 std::abs(Wide(p.position.z)), Wide(offset.epsilon)});
     ExpectedRay e{widen(p.position),
                   4 * kUnitRoundoff * size,
                   d,
-                  8 * kUnitRoundoff,
+                  direction_tolerance,
                   offset.epsilon,
                   std::numeric_limits<double>::infinity(),
                   {}};
@@ -37,6 +35,13 @@ ExpectedRay expected_reflection(const SurfacePoint& p, const RayOffset& offset) 
             break;
     }
     return e;
+}
+
+ExpectedRay expected_reflection(const SurfacePoint& p, const RayOffset& offset) {
+    const WideVec v = widen(p.to_eye);
+    const WideVec n = widen(p.shading_normal);
+    const WideVec d = glm::normalize(-v + 2 * glm::dot(v, n) * n);
+    return expected_leaving_ray(p, d, 8 * kUnitRoundoff, offset);
 }
 
 ExpectedRadiance expected_radiance(const Script& script, const Ray& eye, int bounces,

@@ -20,6 +20,13 @@ namespace raystep {
 /// A ray as stage 7's judges expect it (app/grade/expected_ray.h).
 using grade::ExpectedRay;
 
+/// A ray leaving `p` along the long-double unit direction `d`, unbounded, by the offset's rule
+/// (stage 6's spawn_ray): from the point itself, epsilon along the leaving side's normal, or from
+/// the error-bound region; its direction within `direction_tolerance`. Stage 7's mirror ray and
+/// stage 9's refracted ray both leave so.
+ExpectedRay expected_leaving_ray(const SurfacePoint& p, const WideVec& d, Wide direction_tolerance,
+                                 const RayOffset& offset);
+
 /// The mirror ray at `p`: -V reflected about the shading normal, normalized, leaving by the
 /// offset's rule (stage 6's spawn_ray) with no upper bound: from the point itself, epsilon along
 /// the leaving side's normal, or from the error-bound region. The leaving side is that of the

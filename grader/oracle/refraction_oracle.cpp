@@ -8,7 +8,6 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
-#include "grader/oracle/error_bound_origin.h"
 #include "grader/oracle/recursion_oracle.h"
 
 namespace raystep {
@@ -93,34 +92,6 @@ Wide corner_spread(const F& f, Wide value, Wide c1_low, Wide c1_high, Wide c2_lo
     return spread + 16 * kU;
 }
 
-// A ray leaving `point` along the long-double direction `d` by the offset's rule, unbounded, as
-// stage 7's mirror ray (recursion_oracle.cpp) leaves it.
-ExpectedRay leaving_ray(const SurfacePoint& point, const WideVec& d, Wide direction_tolerance,
-                        const RayOffset& offset) {
-    const Wide size = std::max({std::abs(Wide(point.position.x)), std::abs(Wide(point.position.y)),
-                                std::abs(Wide(point.position.z)), Wide(offset.epsilon)});
-    ExpectedRay e{widen(point.position),
-                  4 * kU * size,
-                  d,
-                  direction_tolerance,
-                  offset.epsilon,
-                  std::numeric_limits<double>::infinity(),
-                  {}};
-    switch (offset.rule) {
-        case OffsetRule::along_ray:
-            break;
-        case OffsetRule::along_normal:
-            e.origin += Wide(offset.epsilon) * leaving_normal(point, narrow(d));
-            e.t_min = 0.0;
-            break;
-        case OffsetRule::error_bound:
-            e.region = error_bound_origin(point, narrow(d));
-            e.t_min = 0.0;
-            break;
-    }
-    return e;
-}
-
 // Where the probe's fake scene looks for a ray's hit: the expected origin (the surface point
 // under the error-bound rule, whose origin is a region a few ulps wide) and direction.
 Ray key_of(const ExpectedRay& e, const Vec3& point) {
@@ -187,7 +158,7 @@ ExpectedRefractedRay expected_refracted_ray(const SurfacePoint& point, double n1
     ExpectedRefractedRay e;
     e.answer = r.answer;
     if (r.answer != RefractionAnswer::none)
-        e.ray = leaving_ray(point, r.direction, r.tolerance, offset);
+        e.ray = expected_leaving_ray(point, r.direction, r.tolerance, offset);
     return e;
 }
 
