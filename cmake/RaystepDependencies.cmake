@@ -6,7 +6,7 @@
 # instructor's: only the grader and the benchmarks use them.
 
 set(RAYSTEP_INSTALL_HINT
-    "Debian/Ubuntu: scripts/install-deps.sh; macOS: brew install glm catch2 openimageio cli11 tinyobjloader; Windows: vcpkg install glm catch2 openimageio cli11 tinyobjloader")
+    "Debian/Ubuntu: scripts/install-deps.sh; macOS: brew install glm catch2 openimageio cli11 tinyobjloader nlohmann-json cpp-httplib; Windows: vcpkg install glm catch2 openimageio cli11 tinyobjloader nlohmann-json cpp-httplib")
 
 # GLM is headers only. Packagings of GLM 0.9.9 differ: some install a CMake configuration with
 # glm::glm, some one whose target is plain `glm`, some none at all; the headers are all it takes.
@@ -62,3 +62,24 @@ else()
 endif()
 
 find_package(Threads REQUIRED)
+
+# cpp-httplib serves `raystep view`'s page. It is optional: a build without it has every other
+# command, and `raystep view` says what to install. Debian ships it compiled, with a pkg-config
+# file; Homebrew and vcpkg ship the header with a CMake configuration.
+add_library(raystep_httplib INTERFACE)
+if(PkgConfig_FOUND)
+    pkg_check_modules(cpp-httplib QUIET IMPORTED_TARGET cpp-httplib)
+endif()
+if(TARGET PkgConfig::cpp-httplib)
+    target_link_libraries(raystep_httplib INTERFACE PkgConfig::cpp-httplib)
+    set(RAYSTEP_HAVE_VIEW_SERVER ON)
+else()
+    find_package(httplib CONFIG QUIET)
+    if(TARGET httplib::httplib)
+        target_link_libraries(raystep_httplib INTERFACE httplib::httplib)
+        set(RAYSTEP_HAVE_VIEW_SERVER ON)
+    else()
+        set(RAYSTEP_HAVE_VIEW_SERVER OFF)
+        message(STATUS "cpp-httplib not found: `raystep view` is left out. ${RAYSTEP_INSTALL_HINT}")
+    endif()
+endif()

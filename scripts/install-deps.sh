@@ -17,10 +17,12 @@ set -euo pipefail
 # archives of every kind (libarchive), and Python for run_autograder's JSON when the grader itself
 # cannot run.
 # What a student release builds with: the stages and their tests, the raystep command (whose
-# `grade` reads the public checks' JSON: nlohmann-json).
+# `grade` reads the public checks' JSON: nlohmann-json; whose `view` serves its page with
+# cpp-httplib).
 student_packages=(
     cmake ninja-build g++ pkg-config
     libglm-dev catch2 libopenimageio-dev libcli11-dev libtinyobjloader-dev nlohmann-json3-dev
+    libcpp-httplib-dev
 )
 grading_packages=(
     cmake ninja-build g++ pkg-config
@@ -29,13 +31,14 @@ grading_packages=(
 )
 # What the rest needs: OpenImageIO's command-line tools (iv, idiff) to look at renders; the labels
 # of `raystep demo` (OpenImageIO draws text only with a TrueType font it is given); the report
-# tests (the XML parsed back with libxml2, the HTML report shown in headless Chromium); and
+# tests (the XML parsed back with libxml2, the HTML report and `raystep view` in headless
+# Chromium, `raystep view` served by cpp-httplib); and
 # `raystep-reference bench` (the Embree baseline, and the bunny mesh of CGAL's demo data); the
 # format check (clang-format 14, Debian 12's). The build configures without any of them, and the
 # tests that need one say so and are skipped.
 other_packages=(
-    openimageio-tools fonts-dejavu-core libxml2-dev chromium libembree-dev libcgal-demo
-    clang-format
+    openimageio-tools fonts-dejavu-core libxml2-dev chromium libcpp-httplib-dev libembree-dev
+    libcgal-demo clang-format
 )
 
 case "${1:-}" in

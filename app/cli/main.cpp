@@ -12,6 +12,7 @@
 #include "app/cli/info_command.h"
 #include "app/cli/render_command.h"
 #include "app/cli/trace_command.h"
+#include "app/cli/view_command.h"
 #include "base/errors/input_error.h"
 #include "base/errors/not_implemented.h"
 
@@ -30,11 +31,13 @@ int main(int argc, char** argv) {
     CheckArguments check;
     DemoArguments demo;
     CompareArguments compare;
+    ViewArguments view;
     CLI::App* render_command = add_render_command(app, render);
     CLI::App* info_command = add_info_command(app, info);
     CLI::App* trace_command = add_trace_command(app, trace);
     CLI::App* check_command = add_check_command(app, check);
     CLI::App* compare_command = add_compare_command(app, compare);
+    CLI::App* view_command = add_view_command(app, view);
     std::vector<AddedCommand> added;
     for (const AddCommand add : CommandRegistry::entries())
         added.push_back(add(app));
@@ -73,6 +76,7 @@ int main(int argc, char** argv) {
         if (check_command->parsed()) return run_check(check);
         if (compare_command->parsed()) return run_compare(compare);
         if (demo_command->parsed()) return run_demo(demo);
+        if (view_command->parsed()) return run_view(view, argv[0]);
         for (const AddedCommand& command : added) {
             if (command.command->parsed()) return command.run();
         }

@@ -2,111 +2,15 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
 #include <stdexcept>
 
-#include "app/cli/trace_comparison.h"
-#include "app/compare/reference_image.h"
-#include "app/compare/reference_trace.h"
-#include "app/render/pixel_record.h"
-#include "app/render/render_pixel.h"
-#include "app/render/render_scene.h"
+#include "app/trace/pixel_trace.h"
 #include "base/errors/input_error.h"
-#include "base/errors/not_implemented.h"
-#include "base/math/to_text.h"
 #include "base/scene/scene_loader.h"
 
 namespace raystep {
 
 namespace {
-
-struct TraceResult {
-    std::vector<std::string> lines;
-    bool stopped = false;  ///< a stub or an error ended it early
-};
-
-TraceResult trace_pixel(const TraceArguments& arguments) {
-    Scene scene = load_scene(arguments.scene);
-    apply_ray_offset(arguments.ray_offset, scene);
-    apply_sampling(arguments.sampling, scene);
-    if (arguments.x < 0 || arguments.x >= scene.width || arguments.y < 0 ||
-        arguments.y >= scene.height) {
-        throw std::invalid_argument("pixel (" + std::to_string(arguments.x) + ", " +
-                                    std::to_string(arguments.y) + ") is outside the " +
-                                    std::to_string(scene.width) + " x " +
-                                    std::to_string(scene.height) + " image of " + scene.path);
-    }
-    const View view = *parse_view(arguments.view);
-
-    TraceLog log;
-    log.add("pixel (" + std::to_string(arguments.x) + ", " + std::to_string(arguments.y) + ") of " +
-            scene.path + ", view " + arguments.view);
-    TraceResult result;
-    try {
-        const RenderScene render_scene = prepare_render_scene(scene);
-        const Color value =
-            render_pixel(render_scene, view, arguments.x, arguments.y, &log, nullptr);
-        log.add("value: " + to_text(value) +
-                (view == View::depth ? " (t; the image scales it to grey)" : ""));
-    } catch (const NotImplemented& stub) {
-        log.add(std::string("stopped: ") + stub.what());
-        result.stopped = true;
-    } catch (const std::exception& error) {
-        log.add(std::string("stopped by an error: ") + error.what());
-        result.stopped = true;
-    }
-    result.lines = log.lines();
-    return result;
-}
-
-// The scene's lights as a trace names them, in the order shade_hit takes them.
-std::vector<std::string> light_names(const Scene& scene) {
-    std::vector<std::string> names;
-    for (const PointLight& light : scene.point_lights)
-        names.push_back("point light (line " + std::to_string(light.line) + ")");
-    for (const DirectionalLight& light : scene.directional_lights)
-        names.push_back("directional light (line " + std::to_string(light.line) + ")");
-    return names;
-}
-
-// The reference's trace of the scene, checked against the scene and the pixel as it is now;
-// InputError, naming the file and the problem, when it cannot serve.
-ReferenceTrace reference_trace_for(const TraceArguments& arguments, const Scene& scene, View view) {
-    const std::filesystem::path path = reference_trace_path(arguments.scene);
-    if (!std::filesystem::exists(path)) {
-        throw InputError(
-            arguments.scene, 0,
-            "no reference trace: --compare reads " + path.string() +
-                ", the reference's values of every pixel, which a student release ships for "
-                "its own scenes. A scene of your own has none; the reference build writes one "
-                "(`raystep-reference render SCENE --view full --trace-data " +
-                path.string() + "` in the instructor's repository)");
-    }
-    ReferenceTrace trace = read_reference_trace(path);
-    const std::string file = path.string();
-    if (trace.width != scene.width || trace.height != scene.height) {
-        throw InputError(file, 0,
-                         "recorded for a " + std::to_string(trace.width) + " x " +
-                             std::to_string(trace.height) + " image, but " + arguments.scene +
-                             " is " + std::to_string(scene.width) + " x " +
-                             std::to_string(scene.height) + ": the scene changed since then");
-    }
-    const std::size_t lights = scene.point_lights.size() + scene.directional_lights.size();
-    if (pipeline_reach(trace.view) >= PipelineReach::shading && trace.lights != lights) {
-        throw InputError(file, 0,
-                         "recorded for " + std::to_string(trace.lights) + " lights, but " +
-                             arguments.scene + " has " + std::to_string(lights) +
-                             ": the scene changed since then");
-    }
-    if (pipeline_reach(view) > pipeline_reach(trace.view)) {
-        throw InputError(file, 0,
-                         "it holds the reference's steps as far as the " +
-                             std::string(view_name(trace.view)) + " view takes them; --view " +
-                             arguments.view + " goes further: compare with --view " +
-                             std::string(view_name(trace.view)) + " or a view before it");
-    }
-    return trace;
-}
 
 // Prints the quantities in three columns, marking the first that differs, and the verdict.
 void print_comparison(const TraceComparison& comparison, const std::string& stop) {
@@ -145,55 +49,20 @@ int compare_with_reference(const TraceArguments& arguments) {
     }
     const Scene scene = load_scene(arguments.scene);
     const View view = *parse_view(arguments.view);
-    ReferenceTrace reference;
+    PixelComparison result;
     try {
-        if (arguments.x < 0 || arguments.x >= scene.width || arguments.y < 0 ||
-            arguments.y >= scene.height) {
-            throw InputError(arguments.scene, 0,
-                             "pixel (" + std::to_string(arguments.x) + ", " +
-                                 std::to_string(arguments.y) + ") is outside its " +
-                                 std::to_string(scene.width) + " x " +
-                                 std::to_string(scene.height) + " image");
-        }
-        reference = reference_trace_for(arguments, scene, view);
+        result = compare_pixel_with_reference(scene, view, arguments.x, arguments.y);
     } catch (const InputError& error) {
         std::fprintf(stderr, "raystep: %s\n", error.what());
         return 2;
     }
-
-    PixelRecord ours;
-    std::string stop;
-    try {
-        const RenderScene render_scene = prepare_render_scene(scene);
-        render_pixel(render_scene, view, arguments.x, arguments.y, nullptr, &ours);
-    } catch (const std::exception& error) {
-        stop = error.what();
-    }
     std::printf("pixel (%d, %d) of %s, view %s, against %s\n", arguments.x, arguments.y,
                 arguments.scene.c_str(), arguments.view.c_str(),
-                reference_trace_path(arguments.scene).string().c_str());
-    // A sampled pixel's samples may come in any order, so no sample of this build need be the
-    // reference's first: both records hold the centre ray (render_pixel.h), and what a quad
-    // light's random samples decide is left out.
-    const bool random_colours = averages_samples(view) && !scene.quad_lights.empty();
-    if (averages_samples(view) && scene.samples_per_pixel > 1) {
-        std::printf(
-            "sampled pixel: compared the ray through the pixel's centre, as at spp 1; the "
-            "pixel's %d samples, which may come in any order, are not compared\n",
-            scene.samples_per_pixel);
-    }
-    if (random_colours) {
-        std::printf(
-            "quad light: compared up to the other lights; the local and full colours hold "
-            "its random light samples and are not compared (raystep compare judges "
-            "them)\n");
-    }
-    TraceComparison comparison = compare_pixel(ours, reference.at(arguments.x, arguments.y), view,
-                                               light_names(scene), random_colours);
-    // An error after the last step the view takes (none do today) still stops the trace.
-    comparison.stopped = comparison.stopped || !stop.empty();
-    print_comparison(comparison, stop);
-    return comparison.first_difference || comparison.stopped ? 1 : 0;
+                result.reference_trace.string().c_str());
+    for (const std::string& note : result.notes)
+        std::printf("%s\n", note.c_str());
+    print_comparison(result.comparison, result.stop);
+    return result.comparison.first_difference || result.comparison.stopped ? 1 : 0;
 }
 
 }  // namespace
@@ -228,7 +97,11 @@ int run_trace(const TraceArguments& arguments) {
         }
         return compare_with_reference(arguments);
     }
-    const TraceResult ours = trace_pixel(arguments);
+    Scene scene = load_scene(arguments.scene);
+    apply_ray_offset(arguments.ray_offset, scene);
+    apply_sampling(arguments.sampling, scene);
+    const PixelTrace ours =
+        trace_pixel(scene, *parse_view(arguments.view), arguments.x, arguments.y);
     for (const std::string& line : ours.lines)
         std::printf("%s\n", line.c_str());
     return ours.stopped ? 1 : 0;

@@ -13,6 +13,12 @@ struct DemoEntry {
     std::string_view name;         ///< on the command line: `raystep demo NAME`
     std::string_view description;  ///< one line: what it shows and for which stage
     DemoFigure (*make)(const DemoSize& size);
+    /// The scene of scenes/ that `raystep view` opens to explore the demo live, its view, and
+    /// the demo's parameter as the page's controls start it (a query string of
+    /// app/view/scene_controls.h's names): shadow-acne opens its scene with epsilon to turn.
+    std::string_view scene;
+    std::string_view view;
+    std::string_view controls;
 };
 
 /// Every demo, in lecture order.

@@ -22,15 +22,16 @@ constexpr int kTileSize = 16;
 // Shared by the workers: the next tile to take, the pixels done, and the first failure.
 class TileQueue {
   public:
-    TileQueue(int width, int height)
-        : width_(width),
+    TileQueue(int width, int height, const std::atomic<bool>* cancel)
+        : cancel_(cancel),
+          width_(width),
           tiles_x_((width + kTileSize - 1) / kTileSize),
           tile_count_(tiles_x_ * ((height + kTileSize - 1) / kTileSize)),
           height_(height) {}
 
     /// The next tile's first pixel, or false when none is left or the render failed.
     bool take(int& x0, int& y0) {
-        if (failed_.load()) return false;
+        if (failed_.load() || (cancel_ && cancel_->load())) return false;
         const int tile = next_.fetch_add(1);
         if (tile >= tile_count_) return false;
         x0 = (tile % tiles_x_) * kTileSize;
@@ -64,6 +65,7 @@ class TileQueue {
     int height() const { return height_; }
 
   private:
+    const std::atomic<bool>* cancel_;
     int width_;
     int tiles_x_;
     int tile_count_;
@@ -77,7 +79,10 @@ class TileQueue {
     std::exception_ptr error_;
 };
 
-void render_tiles(const PixelFunction& pixel, TileQueue& queue, Image& image) {
+using TileDone = std::function<void(const Image& image, const TileRect& tile)>;
+
+void render_tiles(const PixelFunction& pixel, const TileDone& on_tile, TileQueue& queue,
+                  Image& image) {
     try {
         int x0 = 0;
         int y0 = 0;
@@ -90,6 +95,7 @@ void render_tiles(const PixelFunction& pixel, TileQueue& queue, Image& image) {
                 }
             }
             queue.add_done(static_cast<std::size_t>((x1 - x0) * (y1 - y0)));
+            if (on_tile) on_tile(image, {x0, y0, x1, y1});
         }
     } catch (...) {
         queue.fail(std::current_exception());
@@ -100,9 +106,10 @@ void render_tiles(const PixelFunction& pixel, TileQueue& queue, Image& image) {
 // Every pixel on `threads` threads (0: one per hardware thread), with this thread drawing `bar`,
 // which counts `per_pixel` for each pixel done.
 Image render_tiles_in_pool(int width, int height, const PixelFunction& pixel, int threads,
-                           ProgressBar& bar, std::size_t per_pixel) {
+                           ProgressBar& bar, std::size_t per_pixel, const TileDone& on_tile = {},
+                           const std::atomic<bool>* cancel = nullptr) {
     Image image(width, height);
-    TileQueue queue(width, height);
+    TileQueue queue(width, height, cancel);
 
     const int wanted =
         threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -110,7 +117,8 @@ Image render_tiles_in_pool(int width, int height, const PixelFunction& pixel, in
     pool.reserve(static_cast<std::size_t>(wanted));
     try {
         for (int w = 0; w < wanted; ++w) {
-            pool.emplace_back(render_tiles, std::cref(pixel), std::ref(queue), std::ref(image));
+            pool.emplace_back(render_tiles, std::cref(pixel), std::cref(on_tile), std::ref(queue),
+                              std::ref(image));
         }
     } catch (const std::system_error&) {
         // Fewer threads than asked for (a process limit in a sandbox, say): the ones running
@@ -118,7 +126,7 @@ Image render_tiles_in_pool(int width, int height, const PixelFunction& pixel, in
     }
 
     if (pool.empty()) {
-        render_tiles(pixel, queue, image);
+        render_tiles(pixel, on_tile, queue, image);
     } else {
         // This thread draws the progress bar until every worker is done.
         const int workers = static_cast<int>(pool.size());
@@ -173,8 +181,8 @@ Image render_image(const RenderScene& render_scene, const RenderOptions& options
         sampled ? static_cast<std::size_t>(scene.samples_per_pixel) : std::size_t{1};
     ProgressBar bar(options.label, pixels * per_pixel, options.progress, stderr,
                     sampled ? "samples" : "");
-    Image image =
-        render_tiles_in_pool(scene.width, scene.height, pixel, options.threads, bar, per_pixel);
+    Image image = render_tiles_in_pool(scene.width, scene.height, pixel, options.threads, bar,
+                                       per_pixel, options.on_tile, options.cancel);
     finish_view(image, view);
     return image;
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <functional>
 #include <string>
 #include <vector>
@@ -11,6 +12,11 @@
 
 namespace raystep {
 
+/// The pixels [x0, x1) x [y0, y1) of an image: one tile of a render.
+struct TileRect {
+    int x0, y0, x1, y1;
+};
+
 struct RenderOptions {
     View view = View::full;
     int threads = 0;                  ///< worker threads; 0 means one per hardware thread
@@ -19,6 +25,13 @@ struct RenderOptions {
     /// When given, filled with every pixel's record as it is rendered, row by row from the top
     /// (j * width + i): the values of its steps, which a reference trace stores.
     std::vector<PixelRecord>* records = nullptr;
+    /// When given, called on a worker thread as each tile is done, with the image being rendered:
+    /// for a render watched as it grows (`raystep view`). It may read only the tile it is given,
+    /// whose pixels no thread writes again, and must be safe to call from several threads at once.
+    std::function<void(const Image& image, const TileRect& tile)> on_tile;
+    /// When given and set, no further tile is started; render_image returns once the tiles under
+    /// way are done, with the rest of the image black.
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 /// The colour of pixel (i, j), column i from the left and row j from the top. It is called from

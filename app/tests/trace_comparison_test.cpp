@@ -1,4 +1,4 @@
-#include "app/cli/trace_comparison.h"
+#include "app/trace/trace_comparison.h"
 
 #include <cmath>
 

@@ -1,0 +1,212 @@
+#!/usr/bin/env python3
+"""`raystep view` without a browser: what the server serves, what it refuses, and how it stops.
+
+    view_server_test.py RAYSTEP SCENE WORK_FOLDER
+
+Each check is a function named for the behaviour it pins down; the script runs them all and exits
+1 if any failed.
+"""
+
+import os
+import shutil
+import sys
+import time
+
+from view_process import ViewProcess, read_ppm, rgb_of
+
+RAYSTEP, SCENE, WORK = sys.argv[1:4]
+
+
+def check_the_page_and_its_files_are_served():
+    with Served([SCENE]) as view:
+        for path, kind in (("/", "text/html"), ("/view.js", "text/javascript"),
+                           ("/view.css", "text/css")):
+            status, content_type, body = view.request(path, api_header=False)
+            assert status == 200 and content_type.startswith(kind), (path, status, content_type)
+            assert body, path
+
+
+def check_no_file_is_served_by_its_path():
+    with Served([SCENE]) as view:
+        for path in ("/../../../../etc/passwd", "/%2e%2e/%2e%2e/etc/passwd", "/CMakeLists.txt",
+                     "/scenes/stage6/cornell-box.test"):
+            status, _, body = view.request(path, api_header=False)
+            assert status == 404 and b"root:" not in body, (path, status)
+        status, _, body = view.request("/api/open?scene=../../../etc/passwd")
+        assert status == 400 and b"no scene" in body, (status, body)
+        status, _, _ = view.request("/api/open?scene=/etc/passwd")
+        assert status == 400, status
+
+
+def check_an_api_request_without_the_page_header_is_refused():
+    with Served([SCENE]) as view:
+        status, _, body = view.request("/api/state", api_header=False)
+        assert status == 403 and b"X-Raystep" in body, (status, body)
+
+
+def check_another_host_name_is_refused():
+    # A DNS-rebinding page reaches 127.0.0.1 under its own host name.
+    with Served([SCENE]) as view:
+        status, _, _ = view.request("/", api_header=False, host="attacker.example:%d" % view.port)
+        assert status == 403, status
+        status, _, _ = view.request("/", api_header=False, host="localhost:%d" % view.port)
+        assert status == 200, status
+
+
+def check_the_tiles_make_the_image_raystep_render_writes():
+    with Served([SCENE]) as view:
+        for name in ("full", "normal", "depth"):
+            generation = view.json("/api/render?view=" + name)["generation"]
+            header, rgba = view.wait_for_render(generation)
+            written = os.path.join(WORK, "render-%s.ppm" % name)
+            run([RAYSTEP, "render", SCENE, "--view", name, "-o", written])
+            width, height, rgb = read_ppm(written)
+            assert (width, height) == (header["width"], header["height"])
+            assert rgb_of(rgba) == rgb, "the %s view differs from raystep render's" % name
+
+
+def check_a_bad_control_value_is_a_message_not_a_render():
+    with Served([SCENE]) as view:
+        for query, words in (("spp=5&pixelsampling=jittered", b"n x n strata"),
+                             ("offset=along-ray", b"needs epsilon"),
+                             ("epsilon=x&offset=along-ray", b"not a number"),
+                             ("view=nonsense", b"no view")):
+            status, _, body = view.request("/api/render?" + query)
+            assert status == 400 and words in body, (query, status, body)
+
+
+def check_a_pixel_outside_the_image_is_a_message():
+    with Served([SCENE]) as view:
+        status, _, body = view.request("/api/trace?x=100000&y=0&view=full")
+        assert status == 400 and b"outside" in body, (status, body)
+
+
+def check_an_edited_scene_renders_again():
+    scene = os.path.join(WORK, "edited.test")
+    shutil.copy(SCENE, scene)
+    with Served([scene]) as view:
+        generation = view.json("/api/render?view=full")["generation"]
+        before = view.wait_for_render(generation)[1]
+        text = open(scene).read()
+        time.sleep(0.05)
+        with open(scene, "w") as file:
+            file.write(text.replace("\npoint ", "\npoint 0 1.5 0 0.2 0.2 0.2\n# was: point ", 1))
+        deadline = time.time() + 30
+        while view.frame("/api/tiles?generation=0&since=0")[0]["generation"] == generation:
+            assert time.time() < deadline, "the edit was not noticed"
+            time.sleep(0.1)
+        after = view.wait_for_render(generation + 1)[1]
+        assert after != before, "the edited scene rendered the same image"
+
+
+def check_a_broken_edit_shows_file_and_line_and_the_fix_renders():
+    scene = os.path.join(WORK, "broken.test")
+    shutil.copy(SCENE, scene)
+    with Served([scene]) as view:
+        view.wait_for_render(view.json("/api/render?view=full")["generation"])
+        good = open(scene).read()
+        with open(scene, "w") as file:
+            file.write(good + "\nsphere 0 0\n")
+        error = wait_for(lambda: view.json("/api/state")["scene"].get("error"))
+        assert "broken.test:" in error and "sphere" in error, error
+        with open(scene, "w") as file:
+            file.write(good)
+        wait_for(lambda: "error" not in view.json("/api/state")["scene"])
+
+
+def check_a_rebuilt_program_starts_again_on_the_same_port():
+    # A copy of the program (with the image library it loads from its own folder), so that
+    # "rebuilding" it touches no file of the build.
+    folder = os.path.join(WORK, "program")
+    os.makedirs(folder, exist_ok=True)
+    program = os.path.join(folder, "raystep")
+    shutil.copy2(RAYSTEP, program)
+    library = os.path.join(os.path.dirname(RAYSTEP), "raystep_image_library.so")
+    if os.path.exists(library):
+        shutil.copy2(library, folder)
+    with Served([SCENE], program=program) as view:
+        first = view.json("/api/state")["server"]
+        time.sleep(0.05)
+        os.utime(program)  # what a link does to it
+        second = wait_for(lambda: answer_or_none(view, first))
+        assert second != first
+        assert view.json("/api/state")["scene"]["file"] == SCENE
+
+
+def check_a_taken_port_is_a_message_and_exit_code_3():
+    with Served([SCENE]) as view:
+        result = run([RAYSTEP, "view", SCENE, "--port", str(view.port)], expect=3)
+        assert "cannot listen on 127.0.0.1:%d" % view.port in result.stderr, result.stderr
+
+
+def check_a_scene_that_does_not_load_is_an_error_before_listening():
+    scene = os.path.join(WORK, "bad.test")
+    with open(scene, "w") as file:
+        file.write("size 10 10\nsphere 1 2\n")
+    result = run([RAYSTEP, "view", scene, "--port", "0"], expect=1)
+    assert "bad.test:2" in result.stderr, result.stderr
+
+
+def check_ctrl_c_stops_it_cleanly_mid_render():
+    view = ViewProcess(RAYSTEP, [SCENE])
+    view.json("/api/render?view=full&spp=64&pixelsampling=jittered")
+    code, out, err = view.interrupt()
+    assert code == 0 and "stopped" in out, (code, out, err)
+
+
+# ---- helpers ------------------------------------------------------------------------------------
+
+class Served:
+    def __init__(self, arguments, program=None):
+        self.view = ViewProcess(program or RAYSTEP, arguments)
+
+    def __enter__(self):
+        return self.view
+
+    def __exit__(self, *error):
+        self.view.kill()
+
+
+def run(command, expect=0):
+    import subprocess
+    result = subprocess.run(command, capture_output=True, text=True, timeout=120)
+    assert result.returncode == expect, "%s exited %d, not %d: %s" % (
+        " ".join(command), result.returncode, expect, result.stderr)
+    return result
+
+
+def wait_for(condition, timeout=30):
+    deadline = time.time() + timeout
+    while time.time() < deadline:
+        try:
+            value = condition()
+        except OSError:
+            value = None
+        if value:
+            return value
+        time.sleep(0.1)
+    raise AssertionError("gave up waiting after %d s" % timeout)
+
+
+def answer_or_none(view, old_id):
+    server = view.json("/api/state")["server"]
+    return server if server != old_id else None
+
+
+def main():
+    os.makedirs(WORK, exist_ok=True)
+    checks = [value for name, value in globals().items() if name.startswith("check_")]
+    failed = 0
+    for check in checks:
+        try:
+            check()
+            print("passed:", check.__name__[len("check_"):].replace("_", " "))
+        except Exception as error:  # a check's failure of any kind is reported, and the rest run
+            failed += 1
+            print("FAILED:", check.__name__[len("check_"):].replace("_", " "), "-", repr(error))
+    print("%d of %d checks failed" % (failed, len(checks)))
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

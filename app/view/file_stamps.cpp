@@ -1,0 +1,42 @@
+#include "app/view/file_stamps.h"
+
+#include <system_error>
+
+namespace raystep {
+
+namespace {
+
+std::string stamp_of(const std::filesystem::path& file) {
+    std::error_code error;
+    const auto time = std::filesystem::last_write_time(file, error);
+    if (error) return "missing";
+    const auto size = std::filesystem::file_size(file, error);
+    if (error) return "missing";
+    return std::to_string(time.time_since_epoch().count()) + " " + std::to_string(size);
+}
+
+}  // namespace
+
+FileStamps::FileStamps(std::vector<std::filesystem::path> files) : files_(std::move(files)) {
+    for (const std::filesystem::path& file : files_)
+        stamps_.push_back(stamp_of(file));
+}
+
+bool FileStamps::changed() const {
+    for (std::size_t k = 0; k < files_.size(); ++k) {
+        if (stamp_of(files_[k]) != stamps_[k]) return true;
+    }
+    return false;
+}
+
+std::vector<std::filesystem::path> scene_files(const std::filesystem::path& scene_file,
+                                               const Scene& scene) {
+    std::vector<std::filesystem::path> files{scene_file};
+    for (const SceneMesh& mesh : scene.meshes)
+        files.emplace_back(mesh.path);
+    for (const MeshDefinition& definition : scene.mesh_definitions)
+        files.emplace_back(definition.path);
+    return files;
+}
+
+}  // namespace raystep

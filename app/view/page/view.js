@@ -1,0 +1,431 @@
+// The page of `raystep view` (app/view/view_server.cpp serves it and answers its /api/ requests).
+// It asks for a render, draws its tiles as they finish, shows the reference beside it or under a
+// slider, traces the pixel a click picks, and renders again when the server says the scene file
+// or the program changed. No library: what it does fits in one file a student can read.
+"use strict";
+
+const page = {
+  server: null,            // the server's id: a new one means the program was rebuilt
+  sceneGeneration: null,   // counts the scene's loads on the server
+  scene: null,             // /api/state's scene
+  view: "full",
+  generation: 0,           // the render we draw
+  sequence: 0,             // the last tile drawn
+  renderState: "idle",
+  selected: null,          // the clicked pixel, {x, y}
+  controls: {},            // the controls' values as the form holds them
+};
+
+const $ = (id) => document.getElementById(id);
+
+async function api(path, params = {}) {
+  const query = new URLSearchParams(params).toString();
+  const response = await fetch("/api/" + path + (query ? "?" + query : ""),
+                               { headers: { "X-Raystep": "1" } });
+  if (!response.ok) {
+    let message = response.statusText;
+    try { message = (await response.json()).error; } catch (_) { /* not JSON */ }
+    throw new Error(message);
+  }
+  return response;
+}
+
+// A frame: 4 bytes of header length, the JSON header, then each tile's RGBA bytes.
+async function readFrame(response) {
+  const buffer = await response.arrayBuffer();
+  const length = new DataView(buffer).getUint32(0, true);
+  const header = JSON.parse(new TextDecoder().decode(new Uint8Array(buffer, 4, length)));
+  let offset = 4 + length;
+  header.images = header.tiles.map(([x, y, w, h]) => {
+    const pixels = new Uint8ClampedArray(buffer, offset, w * h * 4);
+    offset += w * h * 4;
+    return { x, y, image: new ImageData(pixels, w, h) };
+  });
+  return header;
+}
+
+function setStatus(text) { $("status").textContent = text; }
+
+function controlValues() {
+  const values = {};
+  for (const element of $("controls").elements) {
+    if (element.name) values[element.name] = element.value;
+  }
+  return values;
+}
+
+// ---- state: the scene, its views and controls ----------------------------------------------
+
+async function loadState() {
+  const state = await (await api("state")).json();
+  page.server = state.server;
+  page.scene = state.scene;
+  page.sceneGeneration = state.scene.generation;
+  fillSceneList(state.scenes, state.scene.file);
+  fillViews(state.views);
+  fillControls(state.scene.controls || []);
+  fillDemos(state.demos);
+  showSceneError(state.scene.error);
+  return state;
+}
+
+function fillSceneList(scenes, file) {
+  const list = $("scene-list");
+  list.replaceChildren();
+  const current = scenes.find((name) => file && file.endsWith("scenes/" + name));
+  if (file && !current) list.append(new Option(file, "", true, true));
+  if (!file) list.append(new Option("(choose a scene)", "", true, true));
+  for (const name of scenes) list.append(new Option(name, name, false, name === current));
+}
+
+function fillViews(views) {
+  const group = $("views");
+  group.replaceChildren();
+  for (const name of views) {
+    const button = document.createElement("button");
+    button.type = "button";
+    button.textContent = name;
+    button.dataset.view = name;
+    button.setAttribute("aria-pressed", String(name === page.view));
+    button.addEventListener("click", () => { page.view = name; startRender(); });
+    group.append(button);
+  }
+}
+
+function fillControls(controls) {
+  const form = $("controls");
+  form.replaceChildren();
+  for (const control of controls) {
+    const label = document.createElement("label");
+    label.append(control.label + " ");
+    let input;
+    if (control.kind === "choice") {
+      input = document.createElement("select");
+      for (const choice of control.choices) input.append(new Option(choice, choice));
+    } else {
+      input = document.createElement("input");
+      input.type = "text";
+      input.inputMode = "decimal";
+    }
+    input.name = control.name;
+    input.value = page.controls[control.name] ?? control.value;
+    input.addEventListener("change", () => { page.controls = controlValues(); startRender(); });
+    label.append(input);
+    form.append(label);
+  }
+  page.controls = controlValues();
+}
+
+function showSceneError(error) {
+  $("scene-error").hidden = !error;
+  $("scene-error").textContent = error || "";
+}
+
+// ---- the render and its tiles ---------------------------------------------------------------
+
+async function startRender() {
+  for (const button of $("views").children) {
+    button.setAttribute("aria-pressed", String(button.dataset.view === page.view));
+  }
+  $("render-caption").textContent = page.view;
+  if (!page.scene || !page.scene.width) return;
+  try {
+    const answer = await (await api("render", { view: page.view, ...page.controls })).json();
+    page.generation = answer.generation;
+    page.sequence = 0;
+    page.renderState = "rendering";
+    sizeCanvas($("render"), page.scene.width, page.scene.height);
+    $("render").getContext("2d").clearRect(0, 0, page.scene.width, page.scene.height);
+    showReference();
+    if (page.selected) tracePixel(page.selected.x, page.selected.y);
+  } catch (error) {
+    setStatus("not rendered: " + error.message);
+  }
+}
+
+function sizeCanvas(canvas, width, height) {
+  if (canvas.width !== width) canvas.width = width;
+  if (canvas.height !== height) canvas.height = height;
+  const zoom = Number($("zoom").value);
+  canvas.style.width = width * zoom + "px";
+  canvas.style.height = height * zoom + "px";
+}
+
+// Asks for the tiles since the last one drawn: often while rendering, then now and then, to see
+// a render the server started itself after the scene file changed.
+async function pollTiles() {
+  try {
+    const frame = await readFrame(await api("tiles",
+                                            { generation: page.generation, since: page.sequence }));
+    if (frame.scene_generation !== page.sceneGeneration) await onSceneReloaded();
+    if (frame.generation !== page.generation) {
+      page.generation = frame.generation;
+      $("render").getContext("2d").clearRect(0, 0, frame.width, frame.height);
+    }
+    if (frame.width) sizeCanvas($("render"), frame.width, frame.height);
+    const context = $("render").getContext("2d");
+    for (const tile of frame.images) context.putImageData(tile.image, tile.x, tile.y);
+    page.sequence = frame.sequence;
+    page.renderState = frame.state;
+    const total = frame.width * frame.height;
+    if (frame.state === "rendering") {
+      const percent = total ? Math.floor((100 * frame.pixels_done) / total) : 0;
+      setStatus(`rendering ${page.view}: ${percent}% (${frame.seconds.toFixed(1)} s)`);
+    } else if (frame.state === "done") {
+      setStatus(`${page.view}: done in ${frame.seconds.toFixed(2)} s`);
+    } else if (frame.state === "failed") {
+      setStatus(`${page.view} stopped: ${frame.error}`);
+    }
+    document.body.dataset.render = frame.state;
+    document.body.dataset.generation = String(frame.generation);
+    setTimeout(pollTiles, frame.state === "rendering" ? 100 : 500);
+  } catch (error) {
+    setStatus("waiting for raystep view (" + error.message + ")");
+    setTimeout(pollTiles, 1000);
+  }
+}
+
+async function onSceneReloaded() {
+  await loadState();
+  showReference();
+  if (page.selected) tracePixel(page.selected.x, page.selected.y);
+}
+
+// ---- the reference ---------------------------------------------------------------------------
+
+async function showReference() {
+  const mode = $("reference-mode").value;
+  const references = (page.scene && page.scene.reference_views) || [];
+  const has = references.includes(page.view);
+  $("reference-figure").hidden = mode !== "beside";
+  $("reference-overlay").hidden = mode !== "slider" || !has;
+  $("slider").hidden = mode !== "slider" || !has;
+  if (mode === "off") return;
+  if (!has) {
+    $("reference-caption").textContent = references.length
+      ? `none for ${page.view}; the release ships ${references.join(", ")}`
+      : "none shipped for this scene (a student release ships them in reference/ beside it)";
+    sizeCanvas($("reference"), 1, 1);
+    return;
+  }
+  try {
+    const blob = await (await api("reference", { view: page.view })).blob();
+    const bitmap = await createImageBitmap(blob);
+    for (const canvas of [$("reference"), $("reference-overlay")]) {
+      sizeCanvas(canvas, bitmap.width, bitmap.height);
+      canvas.getContext("2d").drawImage(bitmap, 0, 0);
+    }
+    $("reference-caption").textContent = page.view;
+    applySlider();
+  } catch (error) {
+    $("reference-caption").textContent = error.message;
+  }
+}
+
+function applySlider() {
+  const percent = 100 - Number($("slider").value);
+  $("reference-overlay").style.clipPath = `inset(0 0 0 ${100 - percent}%)`;
+}
+
+// ---- the trace panel -------------------------------------------------------------------------
+
+function pixelAt(event) {
+  const canvas = $("render");
+  const box = canvas.getBoundingClientRect();
+  const x = Math.floor(((event.clientX - box.left) * canvas.width) / box.width);
+  const y = Math.floor(((event.clientY - box.top) * canvas.height) / box.height);
+  return { x: Math.min(Math.max(x, 0), canvas.width - 1),
+           y: Math.min(Math.max(y, 0), canvas.height - 1) };
+}
+
+function placeMarker() {
+  const marker = $("marker");
+  if (!page.selected) { marker.hidden = true; return; }
+  const zoom = Number($("zoom").value);
+  marker.hidden = false;
+  marker.style.left = page.selected.x * zoom - 1 + "px";
+  marker.style.top = page.selected.y * zoom - 1 + "px";
+  marker.style.width = marker.style.height = zoom + "px";
+}
+
+async function tracePixel(x, y) {
+  page.selected = { x, y };
+  placeMarker();
+  const panel = $("trace-panel");
+  panel.dataset.state = "tracing";
+  $("trace-pixel").textContent = `(${x}, ${y}), view ${page.view}`;
+  try {
+    const trace = await (await api("trace", { x, y, view: page.view, ...page.controls })).json();
+    showTrace(trace);
+    panel.dataset.pixel = `${x},${y}`;
+    panel.dataset.view = page.view;
+    panel.dataset.state = "ready";
+  } catch (error) {
+    $("trace-lines").replaceChildren();
+    $("trace-hint").hidden = false;
+    $("trace-hint").textContent = "no trace: " + error.message;
+    panel.dataset.state = "failed";
+  }
+}
+
+function showTrace(trace) {
+  $("trace-hint").hidden = true;
+  $("trace-title").hidden = false;
+  const lines = $("trace-lines");
+  lines.replaceChildren();
+  trace.lines.forEach((line, k) => {
+    const item = document.createElement("li");
+    item.textContent = line;
+    if (trace.stopped && k === trace.lines.length - 1) item.className = "stopped";
+    lines.append(item);
+  });
+  const comparison = trace.comparison;
+  $("comparison-box").hidden = !comparison;
+  $("comparison-unavailable").hidden = !trace.comparison_unavailable;
+  $("comparison-unavailable").textContent = trace.comparison_unavailable
+    ? "No comparison: " + trace.comparison_unavailable : "";
+  if (!comparison) return;
+  const notes = $("comparison-notes");
+  notes.replaceChildren(...comparison.notes.map((note) => {
+    const item = document.createElement("li");
+    item.textContent = note;
+    return item;
+  }));
+  const body = $("comparison").tBodies[0];
+  body.replaceChildren();
+  comparison.rows.forEach((row, k) => {
+    const tr = body.insertRow();
+    const first = comparison.first_difference === k;
+    tr.className = (first ? "first " : "") + (row.same ? "" : "differs");
+    for (const text of [first ? ">>" : "", row.quantity, row.ours, row.reference]) {
+      tr.insertCell().textContent = text;
+    }
+  });
+  const verdict = $("comparison-verdict");
+  if (comparison.first_difference !== null) {
+    const row = comparison.rows[comparison.first_difference];
+    verdict.textContent = `first difference: ${row.quantity}, ${row.ours} here against ` +
+                          `${row.reference} in the reference`;
+    verdict.className = "different";
+  } else if (comparison.stopped) {
+    verdict.textContent = "stopped: " + comparison.stop;
+    verdict.className = "different";
+  } else {
+    verdict.textContent = "the traces are the same";
+    verdict.className = "same";
+  }
+}
+
+// ---- demos -----------------------------------------------------------------------------------
+
+function fillDemos(demos) {
+  const list = $("demo-list");
+  if (list.children.length) return;
+  for (const demo of demos) {
+    const row = document.createElement("div");
+    const figure = document.createElement("button");
+    figure.type = "button";
+    figure.textContent = "figure";
+    figure.addEventListener("click", () => showDemoFigure(demo));
+    const live = document.createElement("button");
+    live.type = "button";
+    live.textContent = "explore live";
+    live.addEventListener("click", () => exploreDemo(demo));
+    row.append(figure, live, `${demo.name}: ${demo.description}`);
+    list.append(row);
+  }
+}
+
+async function showDemoFigure(demo) {
+  $("demo-figure").hidden = false;
+  $("demo-caption").textContent = `rendering ${demo.name}...`;
+  try {
+    const frame = await readFrame(await api("demo", { name: demo.name }));
+    const tile = frame.images[0];
+    sizeCanvas($("demo-canvas"), tile.image.width, tile.image.height);
+    $("demo-canvas").getContext("2d").putImageData(tile.image, 0, 0);
+    $("demo-caption").textContent = `raystep demo ${demo.name}`;
+  } catch (error) {
+    $("demo-caption").textContent = `${demo.name} stopped: ${error.message}`;
+  }
+}
+
+async function exploreDemo(demo) {
+  await openScene(demo.scene);
+  page.view = demo.view;
+  const preset = Object.fromEntries(new URLSearchParams(demo.controls));
+  for (const element of $("controls").elements) {
+    if (element.name in preset) element.value = preset[element.name];
+  }
+  page.controls = controlValues();
+  $("demos").hidden = true;
+  await startRender();
+}
+
+async function openScene(name) {
+  try {
+    await api("open", { scene: name });
+    page.controls = {};
+    page.selected = null;
+    placeMarker();
+    await loadState();
+  } catch (error) {
+    setStatus("cannot open " + name + ": " + error.message);
+  }
+}
+
+// ---- a rebuilt program -----------------------------------------------------------------------
+
+// The server starts itself again after a rebuild; its new id tells the page to ask again.
+async function watchServer() {
+  try {
+    const state = await (await api("state")).json();
+    if (page.server !== null && state.server !== page.server) {
+      setStatus("the program was rebuilt: rendering again");
+      await loadState();
+      await startRender();
+    }
+  } catch (_) {
+    setStatus("raystep view is restarting or stopped; waiting for it");
+  }
+  setTimeout(watchServer, 1000);
+}
+
+// ---- start -----------------------------------------------------------------------------------
+
+window.addEventListener("DOMContentLoaded", async () => {
+  $("render").addEventListener("click", (event) => {
+    const { x, y } = pixelAt(event);
+    tracePixel(x, y);
+  });
+  $("reference-mode").addEventListener("change", showReference);
+  $("slider").addEventListener("input", applySlider);
+  $("zoom").addEventListener("change", () => {
+    for (const id of ["render", "reference", "reference-overlay"]) {
+      const canvas = $(id);
+      sizeCanvas(canvas, canvas.width, canvas.height);
+    }
+    placeMarker();
+  });
+  $("scene-list").addEventListener("change", async () => {
+    if (!$("scene-list").value) return;
+    await openScene($("scene-list").value);
+    await startRender();
+  });
+  $("show-demos").addEventListener("click", () => { $("demos").hidden = !$("demos").hidden; });
+  $("full-screen").addEventListener("click", () => {
+    if (document.fullscreenElement) {
+      document.exitFullscreen();
+    } else {
+      document.documentElement.requestFullscreen().catch(() => {});
+    }
+  });
+  document.addEventListener("fullscreenchange", () => {
+    document.body.classList.toggle("full-screen", Boolean(document.fullscreenElement));
+  });
+  const state = await loadState();
+  if (!state.scene.file) $("demos").hidden = false;
+  await startRender();
+  pollTiles();
+  watchServer();
+});
