@@ -9,10 +9,12 @@
 #      `raystep check` must report every stage-3 function as not implemented; every
 #      `raystep demo` must stop at a stub; `raystep info`, which runs no stage code, must work;
 #      `raystep bench`, the studies' command, is not there; `raystep grade` must run the public
-#      checks of grading/ (every one not implemented) and say that hidden checks exist.
+#      checks of grading/ (every one not implemented) and say that hidden checks exist;
+#      `raystep view`'s page must name the stub in its render, its trace and its comparison.
 #   2. The same release with every stage written (the model submission's manifest files copied
 #      in, nothing else): every command its READMEs name works as written
-#      (scripts/check-student-readme.py), `trace --compare` finding the traces the same among them.
+#      (scripts/check-student-readme.py), `trace --compare` finding the traces the same among them,
+#      and so must `raystep view`'s comparison.
 #   3. A mixed build, RAYSTEP_STUDENT_STAGES=1: the reference stage 2 must call the student's
 #      stage 1, so a render stops at a stage-1 stub.
 #   4. Handing in, on the stubs (so before 2 writes the stages): the release's GitHub Classroom
@@ -112,6 +114,11 @@ check_command "raystep trace stops at the stub" 1 "^stopped: $stub_message" \
 compare_scene=$release/scenes/stage2/perspective-wide.test
 check_command "raystep trace --compare finds the shipped reference trace and stops at the stub" 1 \
     "^stopped: $stub_message" "$bin/raystep" trace "$compare_scene" 0 0 --view rays --compare
+# raystep view: the page's render, a click's trace and its comparison with the shipped reference
+# trace all stop at the stub, and the page names it.
+check_command "raystep view names the stub in its render, trace and comparison" 0 \
+    "stop at $stub_message" python3 "$root/app/tests/view/view_release_check.py" "$bin/raystep" \
+    "$compare_scene" stubs
 check_command "raystep check reports every stage-3 function as a stub" 1 \
     "nothing was checked: 7 methods are not implemented" "$bin/raystep" check --stage 3
 check_command "raystep info needs no stage" 0 "^primitives" "$bin/raystep" info "$scene"
@@ -267,6 +274,9 @@ check_command "raystep submit does not replace its zip without --force" 1 "alrea
 if ! scripts/check-student-readme.py "$release" grader/tests/submissions/model/stages; then
     problems=$((problems + 1))
 fi
+check_command "raystep view with every stage written finds the click's trace the reference's" 0 \
+    "finds the traces the same" python3 "$root/app/tests/view/view_release_check.py" \
+    "$bin/raystep" "$compare_scene" written
 
 cmake -S "$root" -B "$root/build/student-stage1" -G Ninja -DCMAKE_BUILD_TYPE=Release \
     -DRAYSTEP_STUDENT_STAGES=1 -DRAYSTEP_WARNINGS_AS_ERRORS=ON >/dev/null

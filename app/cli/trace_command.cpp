@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "app/compare/reference_image.h"
 #include "app/trace/pixel_trace.h"
 #include "base/errors/input_error.h"
 #include "base/scene/scene_loader.h"
@@ -51,7 +52,8 @@ int compare_with_reference(const TraceArguments& arguments) {
     const View view = *parse_view(arguments.view);
     PixelComparison result;
     try {
-        result = compare_pixel_with_reference(scene, view, arguments.x, arguments.y);
+        result = compare_pixel_with_reference(scene, view, arguments.x, arguments.y,
+                                              reference_trace_path(arguments.scene));
     } catch (const InputError& error) {
         std::fprintf(stderr, "raystep: %s\n", error.what());
         return 2;

@@ -35,6 +35,8 @@ int run_view(const ViewArguments& arguments, const char* argv0) {
     options.threads = arguments.threads;
     options.project = RAYSTEP_SOURCE_DIR;
     options.program = own_program_file(argv0);
+    // Beside the build's bin/ folder, in the build tree, which nothing commits.
+    options.reference_cache = options.program.parent_path().parent_path() / "view-references";
     return run_view_server(options);
 #else
     (void)arguments;

@@ -25,9 +25,9 @@ std::vector<std::string> light_names(const Scene& scene) {
     return names;
 }
 
-// The reference's trace of the scene, checked against the scene and the pixel as it is now.
-ReferenceTrace reference_trace_for(const Scene& scene, View view) {
-    const std::filesystem::path path = reference_trace_path(scene.path);
+// The reference's trace of the scene in `path`, checked against the scene as it is now.
+ReferenceTrace reference_trace_for(const Scene& scene, View view,
+                                   const std::filesystem::path& path) {
     if (!std::filesystem::exists(path)) {
         throw InputError(
             scene.path, 0,
@@ -91,17 +91,18 @@ PixelTrace trace_pixel(const Scene& scene, View view, int x, int y) {
     return trace;
 }
 
-PixelComparison compare_pixel_with_reference(const Scene& scene, View view, int x, int y) {
+PixelComparison compare_pixel_with_reference(const Scene& scene, View view, int x, int y,
+                                             const std::filesystem::path& trace_file) {
     if (x < 0 || x >= scene.width || y < 0 || y >= scene.height) {
         throw InputError(scene.path, 0,
                          "pixel (" + std::to_string(x) + ", " + std::to_string(y) +
                              ") is outside its " + std::to_string(scene.width) + " x " +
                              std::to_string(scene.height) + " image");
     }
-    const ReferenceTrace reference = reference_trace_for(scene, view);
+    const ReferenceTrace reference = reference_trace_for(scene, view, trace_file);
 
     PixelComparison result;
-    result.reference_trace = reference_trace_path(scene.path);
+    result.reference_trace = trace_file;
     PixelRecord ours;
     try {
         const RenderScene render_scene = prepare_render_scene(scene);

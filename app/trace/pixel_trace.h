@@ -33,11 +33,13 @@ struct PixelComparison {
     std::string stop;  ///< what stopped this build, when something did
 };
 
-/// Compares pixel (x, y) of the view with the reference trace shipped beside the scene file
-/// (reference_trace_path). The scene must be as its file says: the reference recorded the scene's
-/// own ray offset and samples. Throws InputError, naming the file and the problem, when there is
-/// no usable reference trace: none shipped, a pixel outside the image, a scene changed since the
-/// trace was written, a view that goes further than the trace.
-PixelComparison compare_pixel_with_reference(const Scene& scene, View view, int x, int y);
+/// Compares pixel (x, y) of the view with the reference's trace of the scene in `trace_file`: the
+/// one a student release ships beside the scene file (reference_trace_path) unless another is
+/// given. The scene must be as its file says: the reference recorded the scene's own ray offset
+/// and samples. Throws InputError, naming the file and the problem, when there is no usable
+/// reference trace: none there, a pixel outside the image, a scene changed since the trace was
+/// written, a view that goes further than the trace.
+PixelComparison compare_pixel_with_reference(const Scene& scene, View view, int x, int y,
+                                             const std::filesystem::path& trace_file);
 
 }  // namespace raystep

@@ -9,7 +9,8 @@
 namespace raystep {
 
 std::uint64_t LiveRender::start(Scene scene, View view, int threads) {
-    stop();
+    std::lock_guard<std::mutex> control(control_);
+    stop_locked();
     std::uint64_t generation = 0;
     {
         std::lock_guard<std::mutex> lock(mutex_);
@@ -29,6 +30,11 @@ std::uint64_t LiveRender::start(Scene scene, View view, int threads) {
 }
 
 void LiveRender::stop() {
+    std::lock_guard<std::mutex> control(control_);
+    stop_locked();
+}
+
+void LiveRender::stop_locked() {
     cancel_ = true;
     if (thread_.joinable()) thread_.join();
     std::lock_guard<std::mutex> lock(mutex_);

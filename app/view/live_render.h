@@ -59,10 +59,12 @@ class LiveRender {
     void stop();
 
   private:
+    void stop_locked();
     void run(Scene scene, View view, int threads, std::uint64_t generation);
     void add_tile(std::uint64_t generation, const Image& image, const TileRect& rect);
 
-    mutable std::mutex mutex_;
+    std::mutex control_;        ///< start and stop, one at a time: they join and replace thread_
+    mutable std::mutex mutex_;  ///< what the render thread writes and the page reads
     std::thread thread_;
     std::atomic<bool> cancel_{false};
     std::uint64_t generation_ = 0;

@@ -20,6 +20,7 @@
 #include "app/view/file_stamps.h"
 #include "app/view/page_assets.h"
 #include "app/view/program_restart.h"
+#include "app/view/reference_files.h"
 #include "app/view/scene_controls.h"
 #include "app/view/view_session.h"
 #include "base/errors/input_error.h"
@@ -133,7 +134,7 @@ json controls_json(const Scene& scene) {
     return controls;
 }
 
-json scene_json(const ViewSession& session) {
+json scene_json(const ViewSession& session, const ReferenceFiles& references) {
     const std::string file = session.scene_file();
     json scene{{"file", file}, {"generation", session.scene_generation()}};
     const std::optional<Scene> loaded = session.scene();
@@ -148,12 +149,8 @@ json scene_json(const ViewSession& session) {
         notes.push_back(warning_text(*loaded, note));
     scene["notes"] = notes;
     scene["controls"] = controls_json(*loaded);
-    json references = json::array();
-    for (const std::string& view : view_names()) {
-        if (std::filesystem::exists(reference_image_path(file, view))) references.push_back(view);
-    }
-    scene["reference_views"] = references;
-    scene["reference_trace"] = std::filesystem::exists(reference_trace_path(file));
+    scene["reference_views"] = references.views(file);
+    scene["reference_source"] = references.source(file);
     return scene;
 }
 
@@ -169,7 +166,8 @@ json demos_json() {
     return demos;
 }
 
-json trace_json(const ViewSession& session, const httplib::Request& request) {
+json trace_json(const ViewSession& session, ReferenceFiles& references,
+                const httplib::Request& request) {
     const View view = view_parameter(request);
     const int x = integer_parameter(request, "x");
     const int y = integer_parameter(request, "y");
@@ -190,7 +188,8 @@ json trace_json(const ViewSession& session, const httplib::Request& request) {
         return body;
     }
     try {
-        const PixelComparison result = compare_pixel_with_reference(as_written, view, x, y);
+        const PixelComparison result = compare_pixel_with_reference(
+            as_written, view, x, y, references.trace(session.scene_file()));
         json rows = json::array();
         for (const TraceRow& row : result.comparison.rows) {
             rows.push_back({{"quantity", row.quantity},
@@ -212,19 +211,20 @@ json trace_json(const ViewSession& session, const httplib::Request& request) {
     return body;
 }
 
-// The reference's image of the view, read from the folder the release ships it in: the path is
-// made from the scene and the view's name, never from the request.
-void send_reference(const ViewSession& session, const httplib::Request& request,
-                    httplib::Response& response) {
+// The reference's image of the view (reference_files.h): the path is made from the scene and
+// the view's name, never from the request.
+void send_reference(const ViewSession& session, ReferenceFiles& references,
+                    const httplib::Request& request, httplib::Response& response) {
     const View view = view_parameter(request);
-    const std::filesystem::path path = reference_image_path(session.scene_file(), view_name(view));
+    const std::string scene = session.scene_file();
+    const std::filesystem::path path = references.image(scene, view);
     std::ifstream file(path, std::ios::binary);
-    if (!file) {
+    if (path.empty() || !file) {
         send_error(response, 404,
                    "no reference image of the " + std::string(view_name(view)) +
-                       " view: " + path.string() +
-                       " is not there (a student release ships one for each "
-                       "view its scene lists)");
+                       " view: " + reference_image_path(scene, view_name(view)).string() +
+                       " is not there (a student release ships one for each view its scene "
+                       "lists)");
         return;
     }
     std::ostringstream bytes;
@@ -256,8 +256,8 @@ httplib::Server::Handler answering(Handler handler) {
     };
 }
 
-void add_routes(httplib::Server& server, ViewSession& session, const std::string& server_id,
-                const ViewServerOptions& options) {
+void add_routes(httplib::Server& server, ViewSession& session, ReferenceFiles& references,
+                const std::string& server_id, const ViewServerOptions& options) {
     for (const PageAsset& asset : page_assets()) {
         server.Get(std::string(asset.path), [&asset](const httplib::Request&,
                                                      httplib::Response& response) {
@@ -266,7 +266,7 @@ void add_routes(httplib::Server& server, ViewSession& session, const std::string
     }
     server.Get("/api/state", answering([&](const httplib::Request&, httplib::Response& response) {
                    send_json(response, {{"server", server_id},
-                                        {"scene", scene_json(session)},
+                                        {"scene", scene_json(session, references)},
                                         {"views", view_names()},
                                         {"scenes", session.scene_list()},
                                         {"demos", demos_json()},
@@ -276,7 +276,7 @@ void add_routes(httplib::Server& server, ViewSession& session, const std::string
     server.Get("/api/open",
                answering([&](const httplib::Request& request, httplib::Response& response) {
                    session.open_listed(request.get_param_value("scene"));
-                   send_json(response, scene_json(session));
+                   send_json(response, scene_json(session, references));
                }));
     server.Get("/api/render",
                answering([&](const httplib::Request& request, httplib::Response& response) {
@@ -302,11 +302,11 @@ void add_routes(httplib::Server& server, ViewSession& session, const std::string
         }));
     server.Get("/api/reference",
                answering([&](const httplib::Request& request, httplib::Response& response) {
-                   send_reference(session, request, response);
+                   send_reference(session, references, request, response);
                }));
     server.Get("/api/trace",
                answering([&](const httplib::Request& request, httplib::Response& response) {
-                   send_json(response, trace_json(session, request));
+                   send_json(response, trace_json(session, references, request));
                }));
     server.Get("/api/demo",
                answering([](const httplib::Request& request, httplib::Response& response) {
@@ -320,7 +320,8 @@ void add_routes(httplib::Server& server, ViewSession& session, const std::string
 httplib::Server::HandlerResponse guard(const httplib::Request& request, httplib::Response& response,
                                        int port) {
     const std::string host = request.get_header_value("Host");
-    const std::string suffix = ":" + std::to_string(port);
+    // A browser leaves out the port when it is HTTP's own, 80.
+    const std::string suffix = port == 80 ? "" : ":" + std::to_string(port);
     if (host != "127.0.0.1" + suffix && host != "localhost" + suffix) {
         response.status = 403;
         response.set_content("raystep view answers only http://127.0.0.1" + suffix + "/\n",
@@ -372,7 +373,8 @@ int run_view_server(const ViewServerOptions& options) {
             return guard(request, response, port);
         });
     const std::string server_id = new_server_id();
-    add_routes(server, session, server_id, options);
+    ReferenceFiles references(reference_program_beside(options.program), options.reference_cache);
+    add_routes(server, session, references, server_id, options);
 
     const bool bound = options.port == 0 ? (port = server.bind_to_any_port("127.0.0.1")) > 0
                                          : server.bind_to_port("127.0.0.1", options.port);

@@ -12,8 +12,12 @@ struct ViewServerOptions {
     int threads = 0;    ///< render threads; 0: one per hardware thread
     /// The source tree whose scenes/ the page offers; no other file is read on the page's behalf.
     std::filesystem::path project;
-    /// The program's own file, watched for a rebuild; empty: rebuilds are not noticed.
+    /// The program's own file, watched for a rebuild; empty: rebuilds are not noticed. A
+    /// `raystep-reference` beside it writes the references a release would ship
+    /// (reference_files.h).
     std::filesystem::path program;
+    /// Where that reference program writes them.
+    std::filesystem::path reference_cache;
 };
 
 /// Exit codes of run_view_server besides 0 (stopped by Ctrl-C or SIGTERM) and 1 (a scene that

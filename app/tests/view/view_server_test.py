@@ -75,6 +75,32 @@ def check_a_bad_control_value_is_a_message_not_a_render():
             assert status == 400 and words in body, (query, status, body)
 
 
+def check_requests_at_once_from_many_pages_neither_crash_nor_stall_it():
+    # Renders started over renders, scene switches and traces, from eight clients at once.
+    import threading
+    with Served([SCENE]) as view:
+        paths = ["/api/render?view=full", "/api/render?view=depth&spp=4",
+                 "/api/open?scene=stage6/point-light.test", "/api/open?scene=stage6/cornell-box.test",
+                 "/api/trace?x=3&y=3&view=shaded", "/api/tiles?generation=1&since=0"]
+        failures = []
+
+        def client(first):
+            for k in range(30):
+                status, _, body = view.request(paths[(first + k) % len(paths)])
+                if status not in (200, 400):
+                    failures.append((status, body[:200]))
+
+        clients = [threading.Thread(target=client, args=(k,)) for k in range(8)]
+        for thread in clients:
+            thread.start()
+        for thread in clients:
+            thread.join(timeout=120)
+        assert not failures, failures[:3]
+        assert view.process.poll() is None, "the server died"
+        generation = view.json("/api/render?view=normal")["generation"]
+        view.wait_for_render(generation)
+
+
 def check_a_pixel_outside_the_image_is_a_message():
     with Served([SCENE]) as view:
         status, _, body = view.request("/api/trace?x=100000&y=0&view=full")
@@ -131,6 +157,25 @@ def check_a_rebuilt_program_starts_again_on_the_same_port():
         second = wait_for(lambda: answer_or_none(view, first))
         assert second != first
         assert view.json("/api/state")["scene"]["file"] == SCENE
+
+
+def check_the_instructor_build_writes_references_with_raystep_reference():
+    # This build has raystep-reference beside raystep: the page gets references no release
+    # shipped, written into the build tree, and the click's comparison against them.
+    with Served([SCENE]) as view:
+        scene = view.json("/api/state")["scene"]
+        assert scene["reference_source"] == "written by raystep-reference", scene
+        assert "normal" in scene["reference_views"], scene
+        status, content_type, body = view.request("/api/reference?view=normal")
+        assert status == 200 and content_type == "image/png", (status, body[:200])
+        assert body.startswith(b"\x89PNG"), body[:8]
+        trace = view.json("/api/trace?x=240&y=400&view=full")
+        comparison = trace.get("comparison")
+        assert comparison, trace.get("comparison_unavailable")
+        assert comparison["first_difference"] is None and comparison["rows"], comparison
+        # A control that changes the scene leaves the comparison out, and says why.
+        trace = view.json("/api/trace?x=240&y=400&view=full&offset=along-ray&epsilon=0.001")
+        assert "comparison" not in trace and "controls" in trace["comparison_unavailable"]
 
 
 def check_a_taken_port_is_a_message_and_exit_code_3():

@@ -208,6 +208,7 @@ async function showReference() {
     sizeCanvas($("reference"), 1, 1);
     return;
   }
+  $("reference-caption").textContent = `${page.view}: loading (${page.scene.reference_source})`;
   try {
     const blob = await (await api("reference", { view: page.view })).blob();
     const bitmap = await createImageBitmap(blob);
@@ -216,6 +217,7 @@ async function showReference() {
       canvas.getContext("2d").drawImage(bitmap, 0, 0);
     }
     $("reference-caption").textContent = page.view;
+    $("reference-source").textContent = page.scene.reference_source;
     applySlider();
   } catch (error) {
     $("reference-caption").textContent = error.message;
