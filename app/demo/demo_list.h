@@ -8,6 +8,14 @@
 
 namespace raystep {
 
+/// A parameter of the demo's own that `raystep view` offers as a choice, where the demo's
+/// parameter is not a setting of its scene.
+struct DemoParameter {
+    std::string_view name;                  ///< in the page's request: "triangle"
+    std::string_view label;                 ///< beside the control: "triangle test"
+    std::vector<std::string_view> choices;  ///< the first is the default
+};
+
 /// A demo as `raystep demo` lists it.
 struct DemoEntry {
     std::string_view name;         ///< on the command line: `raystep demo NAME`
@@ -19,6 +27,10 @@ struct DemoEntry {
     std::string_view scene;
     std::string_view view;
     std::string_view controls;
+    /// The demo's own parameter (name empty: none), and the demo as one panel at one of its
+    /// choices: watertight's triangle test.
+    DemoParameter parameter;
+    DemoFigure (*make_with)(std::string_view choice, const DemoSize& size);
 };
 
 /// Every demo, in lecture order.

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <string_view>
+
 #include "app/demo/demo_figure.h"
 
 namespace raystep {
@@ -16,6 +18,12 @@ DemoFigure barycentrics_demo(const DemoSize& size);
 
 /// Stage 5: ellipsoids coloured by their normals, taken to the world by M (wrong) beside M^-T.
 DemoFigure normal_transform_demo(const DemoSize& size);
+
+/// Stage 3: the mesh of watertight_demo under one triangle test of intersect.h, named as there
+/// ("intersect_triangle_cramer"), as one panel captioned with its leaking pixels: the demo with
+/// the test as a control, for `raystep view`. Throws std::invalid_argument naming the tests for
+/// another name.
+DemoFigure watertight_demo_with(std::string_view triangle_test, const DemoSize& size);
 
 /// Stage 4: the BVH's cost per pixel as a heat map, on a bunny and a bunny in a stadium.
 DemoFigure bvh_cost_demo(const DemoSize& size);

@@ -1,5 +1,8 @@
 // raystep demo watertight: rays that slip between the triangles of a closed mesh.
 
+#include <stdexcept>
+#include <string_view>
+
 #include <glm/geometric.hpp>
 
 #include "app/demo/demo_scene.h"
@@ -71,6 +74,19 @@ std::string leak_caption(const std::string& method, std::size_t leaks) {
     return method + ": " + thousands(leaks) + (leaks == 1 ? " leaking pixel" : " leaking pixels");
 }
 
+struct NamedTriangleTest {
+    std::string_view name;
+    TriangleTest test;
+};
+
+// Stage 3's triangle tests, by their names in intersect.h.
+constexpr NamedTriangleTest kTriangleTests[] = {
+    {"intersect_triangle", intersect_triangle},
+    {"intersect_triangle_halfspaces", intersect_triangle_halfspaces},
+    {"intersect_triangle_projection", intersect_triangle_projection},
+    {"intersect_triangle_cramer", intersect_triangle_cramer},
+};
+
 }  // namespace
 
 DemoFigure watertight_demo(const DemoSize& size) {
@@ -93,6 +109,25 @@ DemoFigure watertight_demo(const DemoSize& size) {
     figure.panels.push_back({leak_caption("intersect_triangle", renderer.leaks), renderer.image});
     figure.panels.push_back({leak_caption("half-spaces", halfspaces.leaks), halfspaces.image});
     return figure;
+}
+
+DemoFigure watertight_demo_with(std::string_view triangle_test, const DemoSize& size) {
+    std::string names;
+    for (const NamedTriangleTest& named : kTriangleTests) {
+        if (named.name != triangle_test) {
+            names += (names.empty() ? "" : ", ") + std::string(named.name);
+            continue;
+        }
+        const PanelSize panel = panel_size(size, 1, false);
+        const Scene scene = load_demo_scene("demos/watertight.test", panel);
+        const LeakPanel leaks = leak_panel(scene, make_scene_camera(scene), named.test);
+        DemoFigure figure;
+        figure.title = "A closed mesh at 1e14 from the origin: rays through the cracks in magenta";
+        figure.panels.push_back({leak_caption(std::string(named.name), leaks.leaks), leaks.image});
+        return figure;
+    }
+    throw std::invalid_argument("no triangle test '" + std::string(triangle_test) +
+                                "'; the tests are " + names);
 }
 
 }  // namespace raystep

@@ -148,6 +148,30 @@ TEST_CASE("watertight_demo: intersect_triangle never leaks, the half-space test 
               " leaking pixels");
 }
 
+TEST_CASE("watertight_demo_with: one panel per triangle test, leaks only off the watertight one",
+          "[app]") {
+    const DemoFigure watertight = watertight_demo_with("intersect_triangle", kTestSize);
+    check_panels(watertight, 1);
+    CHECK(watertight.panels[0].caption == "intersect_triangle: 0 leaking pixels");
+    const DemoFigure halfspaces = watertight_demo_with("intersect_triangle_halfspaces", kTestSize);
+    check_panels(halfspaces, 1);
+    CHECK(count_colour(halfspaces.panels[0].image, kLeak) > 0);
+    CHECK_THROWS_WITH(watertight_demo_with("moller", kTestSize),
+                      "no triangle test 'moller'; the tests are intersect_triangle, "
+                      "intersect_triangle_halfspaces, intersect_triangle_projection, "
+                      "intersect_triangle_cramer");
+}
+
+TEST_CASE("demo_list: a demo's parameter has choices its make_with takes", "[app]") {
+    for (const DemoEntry& demo : demo_list()) {
+        CAPTURE(demo.name);
+        CHECK(demo.parameter.name.empty() == (demo.make_with == nullptr));
+        CHECK(demo.parameter.name.empty() == demo.parameter.choices.empty());
+        for (const std::string_view choice : demo.parameter.choices)
+            CHECK_NOTHROW(demo.make_with(choice, kTestSize));
+    }
+}
+
 TEST_CASE("bvh_cost_demo and grid_cost_demo: the grid pays far more in the stadium",
           "[app][meshes]") {
     const DemoFigure bvh = bvh_cost_demo(kTestSize);

@@ -1,5 +1,6 @@
 #include "app/view/reference_files.h"
 
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -11,6 +12,14 @@
 #include "app/compare/reference_image.h"
 #include "app/view/file_stamps.h"
 #include "base/scene/scene_loader.h"
+
+#if !defined(_WIN32)
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+extern char** environ;
+#endif
 
 namespace raystep {
 
@@ -31,12 +40,38 @@ bool shipped(const std::string& scene_file) {
     return false;
 }
 
-// One word for the shell: in single quotes, each quote in it closed, escaped and reopened.
-std::string shell_word(const std::string& word) {
-    std::string quoted = "'";
-    for (const char c : word)
-        quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return quoted + "'";
+// Runs `program` with `arguments`, its output into `log`; its exit code, or -1 when it could not
+// run. Not std::system: that ignores SIGINT in this process while the child runs, and would lose
+// the Ctrl-C that stops the server.
+int run_program(const fs::path& program, const std::vector<std::string>& arguments,
+                const fs::path& log) {
+#if defined(_WIN32)
+    std::string command = "\"" + program.string() + "\"";
+    for (const std::string& argument : arguments)
+        command += " \"" + argument + "\"";
+    return std::system((command + " > \"" + log.string() + "\" 2>&1").c_str());
+#else
+    std::vector<std::string> words{program.string()};
+    words.insert(words.end(), arguments.begin(), arguments.end());
+    std::vector<char*> argv;
+    for (std::string& word : words)
+        argv.push_back(word.data());
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_adddup2(&actions, 1, 2);
+    pid_t child = 0;
+    const int failed =
+        posix_spawn(&child, program.c_str(), &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    if (failed != 0) return -1;
+    int status = 0;
+    while (waitpid(child, &status, 0) < 0) {
+        if (errno != EINTR) return -1;
+    }
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+#endif
 }
 
 std::string file_text(const fs::path& path) {
@@ -115,12 +150,8 @@ fs::path ReferenceFiles::fresh_cache_folder(const std::string& scene_file) {
 }
 
 void ReferenceFiles::run_reference(const std::vector<std::string>& arguments) const {
-    std::string command = shell_word(reference_program_.string());
-    for (const std::string& argument : arguments)
-        command += " " + shell_word(argument);
     const fs::path log = cache_ / "last-reference-run.txt";
-    command += " > " + shell_word(log.string()) + " 2>&1";
-    if (std::system(command.c_str()) != 0) {
+    if (run_program(reference_program_, arguments, log) != 0) {
         throw std::runtime_error(reference_program_.filename().string() +
                                  " failed: " + file_text(log));
     }

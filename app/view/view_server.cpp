@@ -161,7 +161,12 @@ json demos_json() {
                          {"description", std::string(demo.description)},
                          {"scene", std::string(demo.scene)},
                          {"view", std::string(demo.view)},
-                         {"controls", std::string(demo.controls)}});
+                         {"controls", std::string(demo.controls)},
+                         {"parameter",
+                          {{"name", std::string(demo.parameter.name)},
+                           {"label", std::string(demo.parameter.label)},
+                           {"choices", std::vector<std::string>(demo.parameter.choices.begin(),
+                                                                demo.parameter.choices.end())}}}});
     }
     return demos;
 }
@@ -235,7 +240,13 @@ void send_reference(const ViewSession& session, ReferenceFiles& references,
 void send_demo(const httplib::Request& request, httplib::Response& response) {
     const DemoEntry& demo = find_demo(request.get_param_value("name"));
     const DemoSize size;
-    const Image image = draw_figure(demo.make(size), size, find_label_font());
+    // With a value of the demo's own parameter, the demo at that value alone.
+    const std::string parameter(demo.parameter.name);
+    const bool with_value = !parameter.empty() && request.has_param(parameter.c_str());
+    const Image image =
+        draw_figure(with_value ? demo.make_with(request.get_param_value(parameter.c_str()), size)
+                               : demo.make(size),
+                    size, find_label_font());
     LiveRender::Tile whole{{0, 0, image.width(), image.height()}, {}};
     append_display_pixels(image, whole.rect, whole.pixels);
     send_frame(response, json{{"name", std::string(demo.name)}}, {whole});

@@ -148,6 +148,29 @@ def main():
         os.makedirs(os.path.dirname(SCREENSHOT), exist_ok=True)
         browser.screenshot(SCREENSHOT)
         print("screenshot:", SCREENSHOT)
+
+        # The lecturer's side: a demo at one value of its own parameter, a demo's scene explored
+        # live with its parameter as a control, and full screen.
+        browser.evaluate("document.getElementById('show-demos').click()")
+        browser.evaluate("(() => { const s = document.querySelector("
+                         "'#demo-list select[aria-label=\"triangle test\"]');"
+                         "s.value = 'intersect_triangle_halfspaces';"
+                         "s.dispatchEvent(new Event('change')); })()")
+        browser.wait_until("document.getElementById('demo-caption').textContent === 'raystep "
+                           "demo watertight (triangle test: intersect_triangle_halfspaces)'")
+        browser.evaluate("[...document.querySelectorAll('#demo-list div')].find((d) => "
+                         "d.textContent.includes('shadow-acne:')).querySelectorAll('button')[1]"
+                         ".click()")
+        browser.wait_until("document.getElementById('scene-list').value === "
+                           "'stage6/acne-scale-1e4.test'")
+        epsilon = browser.wait_until("document.querySelector('#controls [name=epsilon]').value")
+        assert epsilon == "1e-12", epsilon
+        wait_for_render(browser, generation)
+        box = browser.evaluate("(() => { const r = document.getElementById('full-screen')"
+                               ".getBoundingClientRect(); return [r.left + 5, r.top + 5]; })()")
+        browser.click(*box)
+        browser.wait_until("document.body.classList.contains('full-screen')")
+        browser.screenshot(SCREENSHOT.replace(".png", "-lecture.png"))
     finally:
         browser.close()
         code, out, err = view.interrupt()

@@ -199,6 +199,22 @@ def check_ctrl_c_stops_it_cleanly_mid_render():
     assert code == 0 and "stopped" in out, (code, out, err)
 
 
+def check_ctrl_c_while_the_reference_is_written_still_stops_it():
+    # std::system would ignore SIGINT in the server while raystep-reference runs.
+    import threading
+    scene = os.path.join(WORK, "fresh-reference.test")
+    with open(SCENE) as source, open(scene, "w") as copy:
+        copy.write(source.read() + "\n# a scene no reference was written for yet: %f\n"
+                   % time.time())
+    view = ViewProcess(RAYSTEP, [scene])
+    asking = threading.Thread(target=view.request, args=("/api/trace?x=1&y=1&view=full",))
+    asking.start()
+    time.sleep(0.3)
+    code, out, err = view.interrupt(timeout=60)
+    asking.join()
+    assert code == 0 and "stopped" in out, (code, out, err)
+
+
 # ---- helpers ------------------------------------------------------------------------------------
 
 class Served:

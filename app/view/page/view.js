@@ -333,20 +333,36 @@ function fillDemos(demos) {
     live.type = "button";
     live.textContent = "explore live";
     live.addEventListener("click", () => exploreDemo(demo));
-    row.append(figure, live, `${demo.name}: ${demo.description}`);
+    row.append(figure, live);
+    if (demo.parameter.name) row.append(demoParameterControl(demo));
+    row.append(`${demo.name}: ${demo.description}`);
     list.append(row);
   }
 }
 
-async function showDemoFigure(demo) {
+// A demo whose parameter is its own, not its scene's (watertight's triangle test): a choice that
+// draws the demo at that value alone.
+function demoParameterControl(demo) {
+  const select = document.createElement("select");
+  select.setAttribute("aria-label", demo.parameter.label);
+  select.append(new Option(demo.parameter.label + ": all", ""));
+  for (const choice of demo.parameter.choices) select.append(new Option(choice, choice));
+  select.addEventListener("change", () => showDemoFigure(demo, select.value));
+  return select;
+}
+
+async function showDemoFigure(demo, choice = "") {
   $("demo-figure").hidden = false;
   $("demo-caption").textContent = `rendering ${demo.name}...`;
+  const params = { name: demo.name };
+  if (choice) params[demo.parameter.name] = choice;
   try {
-    const frame = await readFrame(await api("demo", { name: demo.name }));
+    const frame = await readFrame(await api("demo", params));
     const tile = frame.images[0];
     sizeCanvas($("demo-canvas"), tile.image.width, tile.image.height);
     $("demo-canvas").getContext("2d").putImageData(tile.image, 0, 0);
-    $("demo-caption").textContent = `raystep demo ${demo.name}`;
+    $("demo-caption").textContent = `raystep demo ${demo.name}` +
+                                    (choice ? ` (${demo.parameter.label}: ${choice})` : "");
   } catch (error) {
     $("demo-caption").textContent = `${demo.name} stopped: ${error.message}`;
   }
