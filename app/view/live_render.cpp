@@ -15,6 +15,7 @@ std::uint64_t LiveRender::start(Scene scene, View view, int threads) {
     {
         std::lock_guard<std::mutex> lock(mutex_);
         generation = ++generation_;
+        view_ = view;
         state_ = State::rendering;
         error_.clear();
         width_ = scene.width;
@@ -85,6 +86,7 @@ LiveRender::Changes LiveRender::changes_since(std::uint64_t generation,
     std::lock_guard<std::mutex> lock(mutex_);
     Changes changes;
     changes.generation = generation_;
+    changes.view = view_;
     changes.state = state_;
     changes.error = error_;
     changes.width = width_;

@@ -31,6 +31,7 @@ class LiveRender {
     /// What changed since a sequence number, and where the render is.
     struct Changes {
         std::uint64_t generation = 0;
+        View view = View::full;
         State state = State::idle;
         std::string error;  ///< why it failed: a stub's message, say
         int width = 0;
@@ -68,6 +69,7 @@ class LiveRender {
     std::thread thread_;
     std::atomic<bool> cancel_{false};
     std::uint64_t generation_ = 0;
+    View view_ = View::full;
     State state_ = State::idle;
     std::string error_;
     int width_ = 0;

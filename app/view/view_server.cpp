@@ -301,6 +301,7 @@ void add_routes(httplib::Server& server, ViewSession& session, ReferenceFiles& r
                 counter_parameter(request, "generation"), counter_parameter(request, "since"));
             send_frame(response,
                        {{"generation", changes.generation},
+                        {"view", std::string(view_name(changes.view))},
                         {"scene_generation", session.scene_generation()},
                         {"state", live_render_state_name(changes.state)},
                         {"error", changes.error},

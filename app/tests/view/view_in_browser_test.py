@@ -144,7 +144,7 @@ def main():
         text = open(scene).read()
         with open(scene, "w") as file:
             file.write(text.replace("\npoint ", "\npoint 0 1.5 0 0.1 0.1 0.1\n# point ", 1))
-        wait_for_render(browser, generation)
+        generation = wait_for_render(browser, generation)
         os.makedirs(os.path.dirname(SCREENSHOT), exist_ok=True)
         browser.screenshot(SCREENSHOT)
         print("screenshot:", SCREENSHOT)
@@ -166,6 +166,8 @@ def main():
         epsilon = browser.wait_until("document.querySelector('#controls [name=epsilon]').value")
         assert epsilon == "1e-12", epsilon
         wait_for_render(browser, generation)
+        status = browser.evaluate("document.getElementById('status').textContent")
+        assert status.startswith("shaded: done"), status
         box = browser.evaluate("(() => { const r = document.getElementById('full-screen')"
                                ".getBoundingClientRect(); return [r.left + 5, r.top + 5]; })()")
         browser.click(*box)

@@ -13,6 +13,7 @@ const page = {
   sequence: 0,             // the last tile drawn
   renderState: "idle",
   selected: null,          // the clicked pixel, {x, y}
+  windowZoom: "2",         // the zoom to go back to when full screen ends
   controls: {},            // the controls' values as the form holds them
 };
 
@@ -170,11 +171,11 @@ async function pollTiles() {
     const total = frame.width * frame.height;
     if (frame.state === "rendering") {
       const percent = total ? Math.floor((100 * frame.pixels_done) / total) : 0;
-      setStatus(`rendering ${page.view}: ${percent}% (${frame.seconds.toFixed(1)} s)`);
+      setStatus(`rendering ${frame.view}: ${percent}% (${frame.seconds.toFixed(1)} s)`);
     } else if (frame.state === "done") {
-      setStatus(`${page.view}: done in ${frame.seconds.toFixed(2)} s`);
+      setStatus(`${frame.view}: done in ${frame.seconds.toFixed(2)} s`);
     } else if (frame.state === "failed") {
-      setStatus(`${page.view} stopped: ${frame.error}`);
+      setStatus(`${frame.view} stopped: ${frame.error}`);
     }
     document.body.dataset.render = frame.state;
     document.body.dataset.generation = String(frame.generation);
@@ -409,6 +410,32 @@ async function watchServer() {
   setTimeout(watchServer, 1000);
 }
 
+// ---- zoom and full screen ---------------------------------------------------------------------
+
+function setZoom(zoom) {
+  const select = $("zoom");
+  if (![...select.options].some((option) => option.value === String(zoom))) {
+    select.append(new Option(zoom + "x", String(zoom)));
+  }
+  select.value = String(zoom);
+  for (const id of ["render", "reference", "reference-overlay"]) {
+    const canvas = $(id);
+    sizeCanvas(canvas, canvas.width, canvas.height);
+  }
+  placeMarker();
+}
+
+// The largest whole zoom at which the render, and the reference beside it, fit the screen: whole,
+// so that each pixel stays a square of the same size.
+function fittingZoom() {
+  const canvas = $("render");
+  const beside = $("reference-mode").value === "beside" ? 2 : 1;
+  const width = (window.innerWidth - 40) / (beside * canvas.width);
+  const height = (window.innerHeight - $("render").getBoundingClientRect().top - 40) /
+                 canvas.height;
+  return Math.max(1, Math.floor(Math.min(width, height)));
+}
+
 // ---- start -----------------------------------------------------------------------------------
 
 window.addEventListener("DOMContentLoaded", async () => {
@@ -419,11 +446,8 @@ window.addEventListener("DOMContentLoaded", async () => {
   $("reference-mode").addEventListener("change", showReference);
   $("slider").addEventListener("input", applySlider);
   $("zoom").addEventListener("change", () => {
-    for (const id of ["render", "reference", "reference-overlay"]) {
-      const canvas = $(id);
-      sizeCanvas(canvas, canvas.width, canvas.height);
-    }
-    placeMarker();
+    if (!document.fullscreenElement) page.windowZoom = $("zoom").value;
+    setZoom($("zoom").value);
   });
   $("scene-list").addEventListener("change", async () => {
     if (!$("scene-list").value) return;
@@ -439,7 +463,9 @@ window.addEventListener("DOMContentLoaded", async () => {
     }
   });
   document.addEventListener("fullscreenchange", () => {
-    document.body.classList.toggle("full-screen", Boolean(document.fullscreenElement));
+    const full = Boolean(document.fullscreenElement);
+    document.body.classList.toggle("full-screen", full);
+    setZoom(full ? fittingZoom() : page.windowZoom);
   });
   const state = await loadState();
   if (!state.scene.file) $("demos").hidden = false;
