@@ -2,7 +2,6 @@
 
 #include <stdexcept>
 
-#include "app/compare/reference_image.h"
 #include "app/compare/reference_trace.h"
 #include "app/render/pixel_record.h"
 #include "app/render/render_pixel.h"
