@@ -125,6 +125,9 @@ def main():
         assert verdict in compare, (verdict, compare)
         print("clicked (%d, %d): %d trace lines and %d compared rows as raystep trace gives them,"
               " the first difference at %s" % (x, y, len(expected), len(rows), marked[0][1]))
+        os.makedirs(os.path.dirname(SCREENSHOT), exist_ok=True)
+        browser.screenshot(SCREENSHOT)
+        print("screenshot:", SCREENSHOT)
 
         # The view switch: the normal view, its reference beside it, its trace.
         browser.evaluate("document.querySelector('#views button[data-view=\"normal\"]').click()")
@@ -145,9 +148,6 @@ def main():
         with open(scene, "w") as file:
             file.write(text.replace("\npoint ", "\npoint 0 1.5 0 0.1 0.1 0.1\n# point ", 1))
         generation = wait_for_render(browser, generation)
-        os.makedirs(os.path.dirname(SCREENSHOT), exist_ok=True)
-        browser.screenshot(SCREENSHOT)
-        print("screenshot:", SCREENSHOT)
 
         # The lecturer's side: a demo at one value of its own parameter, a demo's scene explored
         # live with its parameter as a control, and full screen.

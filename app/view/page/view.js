@@ -13,7 +13,8 @@ const page = {
   sequence: 0,             // the last tile drawn
   renderState: "idle",
   selected: null,          // the clicked pixel, {x, y}
-  windowZoom: "2",         // the zoom to go back to when full screen ends
+  windowZoom: null,        // the zoom chosen in the window; null: fitted to it
+  zoomBeforeFullScreen: null,
   controls: {},            // the controls' values as the form holds them
 };
 
@@ -67,7 +68,19 @@ async function loadState() {
   fillControls(state.scene.controls || []);
   fillDemos(state.demos);
   showSceneError(state.scene.error);
+  sizeCanvas($("render"), state.scene.width || 1, state.scene.height || 1);
+  fitZoomToWindow();
   return state;
+}
+
+// Until the zoom is chosen, the largest whole zoom at which the render and the reference beside
+// it fit beside the side panel.
+function fitZoomToWindow() {
+  if (page.windowZoom !== null || !page.scene || !page.scene.width) return;
+  const beside = $("reference-mode").value === "beside" ? 2 : 1;
+  const room = window.innerWidth - document.querySelector("aside").offsetWidth - 80;
+  const zoom = Math.floor(room / (beside * page.scene.width));
+  setZoom(Math.min(4, Math.max(1, zoom)));
 }
 
 function fillSceneList(scenes, file) {
@@ -218,7 +231,7 @@ async function showReference() {
       canvas.getContext("2d").drawImage(bitmap, 0, 0);
     }
     $("reference-caption").textContent = page.view;
-    $("reference-source").textContent = page.scene.reference_source;
+    $("reference-source").textContent = `(${page.scene.reference_source})`;
     applySlider();
   } catch (error) {
     $("reference-caption").textContent = error.message;
@@ -271,6 +284,19 @@ async function tracePixel(x, y) {
   }
 }
 
+// What a line of the trace is about, for its colour: the lecture's steps, in the order the
+// renderer takes them.
+function stepKind(line) {
+  const text = line.trim();
+  if (text.startsWith("camera ray")) return "step-camera";
+  if (text.startsWith("closest_hit") || / hit t=/.test(text)) return "step-hit";
+  if (text.startsWith("shadow ray")) return "step-shadow";
+  if (/^(point|directional|spot|quad) light/.test(text)) return "step-light";
+  if (/^(reflected|refracted) ray/.test(text)) return "step-bounce";
+  if (text.startsWith("value:")) return "step-value";
+  return "";
+}
+
 function showTrace(trace) {
   $("trace-hint").hidden = true;
   $("trace-title").hidden = false;
@@ -279,7 +305,7 @@ function showTrace(trace) {
   trace.lines.forEach((line, k) => {
     const item = document.createElement("li");
     item.textContent = line;
-    if (trace.stopped && k === trace.lines.length - 1) item.className = "stopped";
+    item.className = trace.stopped && k === trace.lines.length - 1 ? "stopped" : stepKind(line);
     lines.append(item);
   });
   const comparison = trace.comparison;
@@ -465,7 +491,8 @@ window.addEventListener("DOMContentLoaded", async () => {
   document.addEventListener("fullscreenchange", () => {
     const full = Boolean(document.fullscreenElement);
     document.body.classList.toggle("full-screen", full);
-    setZoom(full ? fittingZoom() : page.windowZoom);
+    if (full) page.zoomBeforeFullScreen = $("zoom").value;
+    setZoom(full ? fittingZoom() : page.zoomBeforeFullScreen);
   });
   const state = await loadState();
   if (!state.scene.file) $("demos").hidden = false;
