@@ -210,7 +210,9 @@ json trace_json(const ViewSession& session, ReferenceFiles& references,
                                                        : json(nullptr)},
                               {"stopped", result.comparison.stopped},
                               {"stop", result.stop}};
-    } catch (const InputError& error) {
+    } catch (const std::exception& error) {
+        // No usable reference trace (InputError), or none the reference program could write:
+        // the trace above stands without its comparison.
         body["comparison_unavailable"] = error.what();
     }
     return body;

@@ -178,6 +178,25 @@ def check_the_instructor_build_writes_references_with_raystep_reference():
         assert "comparison" not in trace and "controls" in trace["comparison_unavailable"]
 
 
+def check_a_trace_stands_when_the_reference_cannot_write_one():
+    # A reference trace stores primitive numbers below 2^24; a scene past that gets its trace
+    # and, for the comparison, the reference program's reason.
+    # 257 placements of a mesh of 65,536 triangles make 16,842,752 primitives, the nearest
+    # placement the last, so that the pixel's hit is numbered past 2^24.
+    mesh = os.path.join(WORK, "many.off")
+    with open(mesh, "w") as file:
+        file.write("OFF\n3 65536 0\n-1 -1 0\n1 -1 0\n0 1 0\n" + "3 0 1 2\n" * 65536)
+    scene = os.path.join(WORK, "many-primitives.test")
+    with open(scene, "w") as file:
+        file.write("size 8 8\ncamera 0 0 400 0 0 0 0 1 0 1\ndefine many many.off\n")
+        for k in range(257):
+            file.write("pushTransform\ntranslate 0 0 %d\ninstance many\npopTransform\n" % k)
+    with Served([scene]) as view:
+        trace = view.json("/api/trace?x=4&y=4&view=depth")
+        assert trace["lines"][0].startswith("pixel (4, 4)"), trace["lines"][:2]
+        assert "2^24" in trace["comparison_unavailable"], trace["comparison_unavailable"]
+
+
 def check_a_taken_port_is_a_message_and_exit_code_3():
     with Served([SCENE]) as view:
         result = run([RAYSTEP, "view", SCENE, "--port", str(view.port)], expect=3)
