@@ -31,11 +31,12 @@ grading_packages=(
 # of `raystep demo` (OpenImageIO draws text only with a TrueType font it is given); the report
 # tests (the XML parsed back with libxml2, the HTML report shown in headless Chromium); and
 # `raystep-reference bench` (the Embree baseline, and the bunny mesh of CGAL's demo data); the
-# format check (clang-format 14, Debian 12's). The build configures without any of them, and the
-# tests that need one say so and are skipped.
+# format check (clang-format 14, Debian 12's); ccache, through which scripts/test-all.sh compiles
+# each object once for its several builds (scripts/use-ccache.sh). The build configures without
+# any of them, and the tests that need one say so and are skipped.
 other_packages=(
     openimageio-tools fonts-dejavu-core libxml2-dev chromium libembree-dev libcgal-demo
-    clang-format
+    clang-format ccache
 )
 
 case "${1:-}" in
