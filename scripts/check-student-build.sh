@@ -24,15 +24,20 @@
 #      every check not implemented, its points those of the checks the release holds cases for;
 #      `raystep submit`'s zip holding exactly the manifests' files, all of which the grader's
 #      unpacker takes.
+#
+# Where ccache is installed, the builds compile through it (scripts/use-ccache.sh); the release is
+# written inside build/ so that the cache's base directory, the repository, holds it, and its
+# objects with the release build's flags come from the cache.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
+source scripts/use-ccache.sh
 scene=base/tests/data/good/quad.test
 stub_message='stage [0-9]+: [A-Za-z_:]+ is not implemented yet, see docs/stage[0-9]+\.md, section "[^"]+"'
 
-release=$(mktemp -d)
+release=$root/build/student-release
+rm -rf "$release"
 trap 'rm -rf "$release"' EXIT
-rmdir "$release"
 build/release/bin/raystep-grade release "$release" >/dev/null
 for folder in solutions studies grader release; do
     if [ -e "$release/$folder" ]; then

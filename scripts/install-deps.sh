@@ -34,11 +34,12 @@ grading_packages=(
 # tests (the XML parsed back with libxml2, the HTML report and `raystep view` in headless
 # Chromium, `raystep view` served by cpp-httplib); and
 # `raystep-reference bench` (the Embree baseline, and the bunny mesh of CGAL's demo data); the
-# format check (clang-format 14, Debian 12's). The build configures without any of them, and the
-# tests that need one say so and are skipped.
+# format check (clang-format 14, Debian 12's); ccache, through which scripts/test-all.sh compiles
+# each object once for its several builds (scripts/use-ccache.sh). The build configures without
+# any of them, and the tests that need one say so and are skipped.
 other_packages=(
     openimageio-tools fonts-dejavu-core libxml2-dev chromium libcpp-httplib-dev libembree-dev
-    libcgal-demo clang-format
+    libcgal-demo clang-format ccache
 )
 
 case "${1:-}" in

@@ -8,28 +8,40 @@
 #      run no compiled code.
 # In a student release (no solutions/) only the first: the public tests, which fail until the
 # stages are written.
+# Where ccache is installed, every build compiles through one cache of the run's own
+# (scripts/use-ccache.sh): the student builds and the Gradescope test's setup.sh take most of their
+# objects from the release build. Each step prints the seconds since the start, and the end the
+# cache's hits: docs/measurements/ci-time.md has the figures of a fresh clone.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc 2>/dev/null || echo 2)
+source scripts/use-ccache.sh
+# step WHAT: names the step that starts, and when, in seconds since the run started.
+step() { echo "== $1 (at $SECONDS s)"; }
 
-echo "== release build and tests"
+step "release build"
 cmake --preset release -DRAYSTEP_WARNINGS_AS_ERRORS=ON >/dev/null
 cmake --build --preset release
+step "release tests"
 ctest --preset release -j "$jobs"
 
 if [ ! -d solutions ]; then
-    echo "== a student release: the tests above are yours to make pass"
+    step "a student release: the tests above are yours to make pass"
     exit 0
 fi
 
-echo "== student build: every stub fails cleanly"
+step "student build: every stub fails cleanly"
 scripts/check-student-build.sh
 
-echo "== sanitizer build and tests"
+step "sanitizer build"
 # Probes built by the grader's corpus test would carry AddressSanitizer too, which reserves more
 # address space than the sandbox allows: the corpus runs in the release build only.
 cmake --preset debug-asan -DRAYSTEP_WARNINGS_AS_ERRORS=ON >/dev/null
 cmake --build --preset debug-asan
+step "sanitizer tests"
 ctest --preset debug-asan -j "$jobs" -LE '^(corpus|format|layers|docs)$'
 
-echo "== all tests passed"
+step "all tests passed"
+if command -v ccache >/dev/null; then
+    ccache --show-stats
+fi
