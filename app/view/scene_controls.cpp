@@ -59,16 +59,20 @@ bool transmits(const Material& material) {
 
 std::vector<SceneControl> scene_controls(const Scene& scene) {
     std::vector<SceneControl> controls;
-    controls.push_back({"offset",
-                        "shadow-ray offset",
-                        "choice",
-                        {"error-bound", "along-ray", "along-normal"},
-                        std::string(offset_rule_name(scene.ray_offset.rule))});
-    controls.push_back({"epsilon",
-                        "epsilon (along-ray, along-normal)",
-                        "number",
-                        {},
-                        number_text(scene.ray_offset.epsilon)});
+    const bool lit = !scene.point_lights.empty() || !scene.directional_lights.empty() ||
+                     !scene.spot_lights.empty() || !scene.quad_lights.empty();
+    if (lit) {
+        controls.push_back({"offset",
+                            "shadow-ray offset",
+                            "choice",
+                            {"error-bound", "along-ray", "along-normal"},
+                            std::string(offset_rule_name(scene.ray_offset.rule))});
+        controls.push_back({"epsilon",
+                            "epsilon (along-ray, along-normal)",
+                            "number",
+                            {},
+                            number_text(scene.ray_offset.epsilon)});
+    }
     controls.push_back(
         {"spp", "samples per pixel", "number", {}, std::to_string(scene.samples_per_pixel)});
     controls.push_back({"pixelsampling",

@@ -22,9 +22,9 @@ struct SceneControl {
     std::string scene_value;  ///< the scene's own setting, as the control shows it
 };
 
-/// The controls that apply to `scene`: the ray offset always; samples per pixel, their pattern
-/// and the seed; light samples where there is a quad light; the index of refraction where a
-/// material transmits.
+/// The controls that apply to `scene`: the ray offset where a light casts shadows; samples per
+/// pixel, their pattern and the seed; light samples where there is a quad light; the index of
+/// refraction where a material transmits.
 std::vector<SceneControl> scene_controls(const Scene& scene);
 
 /// The scene with the controls' values in place of its own settings. An empty value keeps the

@@ -47,9 +47,16 @@ constexpr std::chrono::milliseconds kWatchPeriod{250};
 // server never grants: only the page it serves drives it.
 constexpr const char* kApiHeader = "X-Raystep";
 
+// JSON text of `value`. A byte that is not UTF-8 (a Latin-1 scene line echoed in an error, a file
+// name under scenes/, a request's parameter) becomes U+FFFD rather than an exception: the page
+// still gets its answer and can show the rest.
+std::string json_text(const json& value) {
+    return value.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
 void send_json(httplib::Response& response, const json& body, int status = 200) {
     response.status = status;
-    response.set_content(body.dump(), "application/json");
+    response.set_content(json_text(body), "application/json");
 }
 
 void send_error(httplib::Response& response, int status, const std::string& message) {
@@ -69,7 +76,7 @@ void send_frame(httplib::Response& response, json header,
         bytes += tile.pixels.size();
     }
     header["tiles"] = std::move(rects);
-    const std::string text = header.dump();
+    const std::string text = json_text(header);
     std::string body;
     body.reserve(4 + text.size() + bytes);
     const auto length = static_cast<std::uint32_t>(text.size());
@@ -142,6 +149,15 @@ json scene_json(const ViewSession& session, const ReferenceFiles& references) {
         scene["error"] = file.empty() ? "" : session.load_error();
         return scene;
     }
+    // The view the scene's `# views:` line names first: a stage-2 scene opens on rays, which
+    // stages 1 and 2 alone can render.
+    std::vector<std::string> views{"full"};
+    try {
+        views = reference_views(file);
+    } catch (const InputError&) {
+        // A `# views:` line naming no view: the page opens on full.
+    }
+    scene["first_view"] = views.empty() ? "full" : views.front();
     scene["width"] = loaded->width;
     scene["height"] = loaded->height;
     json notes = json::array();
@@ -271,6 +287,9 @@ httplib::Server::Handler answering(Handler handler) {
 
 void add_routes(httplib::Server& server, ViewSession& session, ReferenceFiles& references,
                 const std::string& server_id, const ViewServerOptions& options) {
+    // The page has no icon: an empty answer, not a 404 in the browser's console.
+    server.Get("/favicon.ico",
+               [](const httplib::Request&, httplib::Response& response) { response.status = 204; });
     for (const PageAsset& asset : page_assets()) {
         server.Get(std::string(asset.path), [&asset](const httplib::Request&,
                                                      httplib::Response& response) {
@@ -368,6 +387,11 @@ int run_view_server(const ViewServerOptions& options) {
     httplib::Server server;
     // A page holds its connection open between requests; Ctrl-C waits for the last of them.
     server.set_keep_alive_timeout(1);
+    // A client that sends half a request holds a worker until the read times out: more workers
+    // than httplib's default of 8 and a short timeout keep a few such clients (a stuck tab, a
+    // local program) from starving the page.
+    server.new_task_queue = [] { return new httplib::ThreadPool(32); };
+    server.set_read_timeout(2, 0);
     // One server per port. httplib's default sets SO_REUSEPORT, under which a second raystep view
     // on a taken port would share it silently rather than hear that it is taken; SO_REUSEADDR
     // alone lets a restart take its port back from connections still closing (on Windows,

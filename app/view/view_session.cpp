@@ -64,7 +64,12 @@ void ViewSession::open_listed(const std::string& relative) {
                                     (project_ / "scenes").string());
     }
     live_.stop();
-    load((project_ / "scenes" / relative).string());
+    // Named from the current folder when it is under it, as a scene given on the command line is.
+    std::error_code error;
+    const std::filesystem::path file = project_ / "scenes" / relative;
+    const std::filesystem::path near = std::filesystem::relative(file, error);
+    const bool under = !error && !near.empty() && *near.begin() != "..";
+    load((under ? near : file).string());
 }
 
 Scene ViewSession::scene_with(const std::map<std::string, std::string>& controls) const {

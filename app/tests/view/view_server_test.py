@@ -101,6 +101,34 @@ def check_requests_at_once_from_many_pages_neither_crash_nor_stall_it():
         view.wait_for_render(generation)
 
 
+def check_bytes_that_are_not_utf8_get_an_answer_not_an_empty_500():
+    scene = os.path.join(WORK, "latin1.test")
+    shutil.copy(SCENE, scene)
+    with Served([scene]) as view:
+        status, _, body = view.request("/api/render?view=%ff")
+        assert status == 400 and b"no view" in body, (status, body)
+        with open(scene, "ab") as file:
+            file.write(b"\nsph\xe9re 0 0 0 1\n")
+        error = wait_for(lambda: view.json("/api/state")["scene"].get("error"))
+        assert "latin1.test:" in error and "unknown command" in error, error
+
+
+def check_clients_that_send_half_a_request_do_not_starve_the_page():
+    import socket
+    with Served([SCENE]) as view:
+        stuck = []
+        for _ in range(40):
+            connection = socket.create_connection(("127.0.0.1", view.port))
+            connection.sendall(b"GET /api/state HTTP/1.1\r\nHost: 127.0.0")
+            stuck.append(connection)
+        start = time.time()
+        status, _, _ = view.request("/api/state")
+        waited = time.time() - start
+        for connection in stuck:
+            connection.close()
+        assert status == 200 and waited < 10, (status, waited)
+
+
 def check_a_pixel_outside_the_image_is_a_message():
     with Served([SCENE]) as view:
         status, _, body = view.request("/api/trace?x=100000&y=0&view=full")

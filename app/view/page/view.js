@@ -60,6 +60,9 @@ function controlValues() {
 
 async function loadState() {
   const state = await (await api("state")).json();
+  if (!page.scene || page.scene.file !== state.scene.file) {
+    page.view = state.scene.first_view || page.view;  // another scene: the view it names first
+  }
   page.server = state.server;
   page.scene = state.scene;
   page.sceneGeneration = state.scene.generation;
@@ -68,6 +71,9 @@ async function loadState() {
   fillControls(state.scene.controls || []);
   fillDemos(state.demos);
   showSceneError(state.scene.error);
+  // Without a scene (`raystep view` alone) the page is the demos.
+  $("images").hidden = !state.scene.file;
+  document.querySelector("aside").hidden = !state.scene.file;
   sizeCanvas($("render"), state.scene.width || 1, state.scene.height || 1);
   fitZoomToWindow();
   return state;
@@ -157,10 +163,9 @@ async function startRender() {
   }
 }
 
-function sizeCanvas(canvas, width, height) {
+function sizeCanvas(canvas, width, height, zoom = Number($("zoom").value)) {
   if (canvas.width !== width) canvas.width = width;
   if (canvas.height !== height) canvas.height = height;
-  const zoom = Number($("zoom").value);
   canvas.style.width = width * zoom + "px";
   canvas.style.height = height * zoom + "px";
 }
@@ -386,7 +391,7 @@ async function showDemoFigure(demo, choice = "") {
   try {
     const frame = await readFrame(await api("demo", params));
     const tile = frame.images[0];
-    sizeCanvas($("demo-canvas"), tile.image.width, tile.image.height);
+    sizeCanvas($("demo-canvas"), tile.image.width, tile.image.height, 1);
     $("demo-canvas").getContext("2d").putImageData(tile.image, 0, 0);
     $("demo-caption").textContent = `raystep demo ${demo.name}` +
                                     (choice ? ` (${demo.parameter.label}: ${choice})` : "");
