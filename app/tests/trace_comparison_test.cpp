@@ -86,6 +86,7 @@ TEST_CASE("compare_pixel: stops at the first step this build did not reach", "[a
     REQUIRE(comparison.rows.size() == 3);
     CHECK(comparison.rows[2].quantity == "the hit primitive");
     CHECK(comparison.rows[2].ours == "(not reached)");
+    CHECK_FALSE(comparison.rows[2].same);
 }
 
 TEST_CASE("compare_pixel: the rays view compares the camera ray only", "[app]") {

@@ -103,7 +103,7 @@ class Rows {
 
   private:
     bool stop(const std::string& quantity, const std::string& reference) {
-        comparison_.rows.push_back({quantity, "(not reached)", reference, true});
+        comparison_.rows.push_back({quantity, "(not reached)", reference, false});
         comparison_.stopped = true;
         return false;
     }

@@ -15,7 +15,7 @@ struct TraceRow {
     std::string quantity;  ///< "the hit's t"
     std::string ours;      ///< "(not reached)" when a stub stopped this build before it
     std::string reference;
-    bool same = true;
+    bool same = true;  ///< the values agree; false for a step this build did not reach
 };
 
 /// A pixel of this build held against the reference's, step by step in the order of the
