@@ -17,7 +17,8 @@
 #include "base/errors/not_implemented.h"
 
 // The `raystep` command. Library code throws; only here do errors become a message on stderr and
-// an exit code: 0 success, 1 a failure (bad input, a stub, an error), 2 a bad command line.
+// an exit code: 0 success, 1 a failure (bad input, a stub, an error), 2 a bad command line, and
+// for `view` 3 when it cannot listen on its port (app/view/view_server.h).
 // `compare` answers with 1 for a render that fails, so that anything which stops it comparing
 // exits 2 instead, as diff(1) does.
 int main(int argc, char** argv) {
