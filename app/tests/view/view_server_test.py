@@ -210,10 +210,23 @@ def check_a_trace_stands_when_the_reference_cannot_write_one():
     # A reference trace stores primitive numbers below 2^24; a scene past that gets its trace
     # and, for the comparison, the reference program's reason.
     # 257 placements of a mesh of 65,536 triangles make 16,842,752 primitives, the nearest
-    # placement the last, so that the pixel's hit is numbered past 2^24.
+    # placement the last, so that the pixel's hit is numbered past 2^24. The mesh is a grid of
+    # distinct triangles that its BVH separates: a pixel tests a few of each placement, not all
+    # 16.8 million (which takes a minute in the sanitizer build).
+    columns, rows = 256, 128
+    vertices = ["%g %g 0" % (-1 + 2 * i / columns, -1 + 2 * j / rows)
+                for j in range(rows + 1) for i in range(columns + 1)]
+    faces = []
+    for j in range(rows):
+        for i in range(columns):
+            a = j * (columns + 1) + i
+            b, c, d = a + 1, a + columns + 1, a + columns + 2
+            faces += ["3 %d %d %d" % (a, b, d), "3 %d %d %d" % (a, d, c)]
+    assert len(faces) == 65536
     mesh = os.path.join(WORK, "many.off")
     with open(mesh, "w") as file:
-        file.write("OFF\n3 65536 0\n-1 -1 0\n1 -1 0\n0 1 0\n" + "3 0 1 2\n" * 65536)
+        file.write("OFF\n%d %d 0\n" % (len(vertices), len(faces)))
+        file.write("\n".join(vertices + faces) + "\n")
     scene = os.path.join(WORK, "many-primitives.test")
     with open(scene, "w") as file:
         file.write("size 8 8\ncamera 0 0 400 0 0 0 0 1 0 1\ndefine many many.off\n")
