@@ -1,7 +1,7 @@
-// The grader against its corpus (grader/tests/submissions/README.md): the model submission gets
-// full marks; every mutant loses points in its own stage; every correct alternative gets full
-// marks; every hostile submission ends in bounded time with a low score and a complete report,
-// reads nothing secret and writes nothing outside its output folder.
+// The grader against its corpus (grader/tests/submissions/README.md): the model submission, graded
+// in a class, gets full marks; every mutant loses points in its own stage; every correct
+// alternative gets full marks; every hostile submission ends in bounded time with a low score and
+// a complete report, reads nothing secret and writes nothing outside its output folder.
 //
 // Each entry is graded by the real raystep-grade, as an instructor would run it, a few at a time.
 // A mutant, alternative or hostile entry is a diff against the model: the submission is the
@@ -218,6 +218,28 @@ void require_honest_zero(const Graded& stubs) {
     CHECK(stubs.report->score() == 0.0);
 }
 
+// The model's report: every check at full marks, and each with points passed, in every report
+// (Gradescope shows a test's status in colour: no test at full points may read "failed").
+void require_full_marks(const GradeReport& report, const fs::path& output) {
+    REQUIRE(report.checks.size() > 40);
+    for (const CheckResult& check : report.checks) {
+        // Full marks, which is not always every case passed: the lecture's triangle tests lose a
+        // few slivers by design, and the rubric allows for it.
+        INFO(check.id << ": " << check.summary);
+        CHECK(check.score == check.max_score);
+        if (check.max_score > 0) CHECK(check.outcome == Outcome::passed);
+    }
+    const nlohmann::json results = nlohmann::json::parse(
+        read_text(raystep::grade::instructor_folder(output) / "results.json"));
+    for (const nlohmann::json& test : results.at("tests")) {
+        INFO(test.value("name", ""));
+        if (test.at("max_score").get<double>() > 0 &&
+            test.at("score").get<double>() == test.at("max_score").get<double>()) {
+            CHECK(test.at("status") == "passed");
+        }
+    }
+}
+
 // `raystep-grade batch ARGUMENTS` run in `root`, its output in root/LOG: the exit code.
 int run_batch(const fs::path& root, const std::string& arguments, const std::string& log) {
     const std::string command = "cd " + shell_quoted(root) + " && " +
@@ -257,33 +279,6 @@ TEST_CASE(
                         read_text(kCorpus / "hostile/stubs-exec-sibling-probe.cpp"));
     grade(stubs, submission, "");
     require_honest_zero(stubs);
-}
-
-TEST_CASE("the model submission gets full marks on every check", "[corpus]") {
-    Graded model;
-    model.output = kWork / "model/report";
-    grade(model, kCorpus / "model", "");
-    INFO(describe(model));
-    REQUIRE(model.report);
-    REQUIRE(model.report->checks.size() > 40);
-    for (const CheckResult& check : model.report->checks) {
-        // Full marks, which is not always every case passed: the lecture's triangle tests lose a
-        // few slivers by design, and the rubric allows for it.
-        INFO(check.id << ": " << check.summary);
-        CHECK(check.score == check.max_score);
-        // Full points is passed, in every report (reports write the outcome as it is here).
-        if (check.max_score > 0) CHECK(check.outcome == Outcome::passed);
-    }
-    // Gradescope shows a test's status in colour: no test at full points may read "failed".
-    const nlohmann::json results = nlohmann::json::parse(
-        read_text(raystep::grade::instructor_folder(model.output) / "results.json"));
-    for (const nlohmann::json& test : results.at("tests")) {
-        INFO(test.value("name", ""));
-        if (test.at("max_score").get<double>() > 0 &&
-            test.at("score").get<double>() == test.at("max_score").get<double>()) {
-            CHECK(test.at("status") == "passed");
-        }
-    }
 }
 
 TEST_CASE("every mutant loses points in its own stage", "[corpus]") {
@@ -374,8 +369,8 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "a class of odd submissions, graded into a relative -o under a private folder, gets a "
-    "complete report each, all inside -o",
+    "a class of odd submissions and the model, graded into a relative -o under a private folder, "
+    "gets a complete report each, all inside -o, and the model full marks on every check",
     "[corpus]") {
     const fs::path root = kWork / "class";
     fs::remove_all(root);
@@ -426,8 +421,9 @@ TEST_CASE(
         REQUIRE(fs::is_regular_file(report));
         reports[name] = raystep::grade::report_from_json(nlohmann::json::parse(read_text(report)));
     }
-    CHECK(reports["model"].score() == reports["model"].max_score());
+    // The model, every stage with speed, graded as a class is: full marks on every check.
     CHECK(reports["model"].intake_problem.empty());
+    require_full_marks(reports["model"], home / "grades" / "model");
     for (const std::string name : {"submission", "tar-named", "with-build"}) {
         INFO(name);
         CHECK(stage_score(reports[name], 1).first == stage_score(reports[name], 1).second);
