@@ -163,11 +163,18 @@ def main():
                          ".click()")
         browser.wait_until("document.getElementById('scene-list').value === "
                            "'stage6/acne-scale-1e4.test'")
+        # Under the slider, the Cornell box's reference (480 x 480) never stands over the acne
+        # scene (480 x 360): the overlay stays hidden until the scene's own reference arrives.
+        overlay_size = ("(() => { const o = document.getElementById('reference-overlay'); "
+                        "return o.hidden ? null : [o.width, o.height]; })()")
+        shown = browser.evaluate(overlay_size)
+        assert shown in (None, [480, 360]), shown
         epsilon = browser.wait_until("document.querySelector('#controls [name=epsilon]').value")
         assert epsilon == "1e-12", epsilon
         wait_for_render(browser, generation)
         status = browser.evaluate("document.getElementById('status').textContent")
         assert status.startswith("shaded: done"), status
+        assert browser.wait_until(overlay_size) == [480, 360]
         box = browser.evaluate("(() => { const r = document.getElementById('full-screen')"
                                ".getBoundingClientRect(); return [r.left + 5, r.top + 5]; })()")
         browser.click(*box)

@@ -16,6 +16,8 @@ const page = {
   windowZoom: null,        // the zoom chosen in the window; null: fitted to it
   zoomBeforeFullScreen: null,
   controls: {},            // the controls' values as the form holds them
+  referenceRequest: 0,     // counts showReference's calls: only the latest may draw
+  traceRequest: 0,         // counts trace requests: only the latest may fill the panel
 };
 
 const $ = (id) => document.getElementById(id);
@@ -62,6 +64,7 @@ async function loadState() {
   const state = await (await api("state")).json();
   if (!page.scene || page.scene.file !== state.scene.file) {
     page.view = state.scene.first_view || page.view;  // another scene: the view it names first
+    clearReference();
   }
   page.server = state.server;
   page.scene = state.scene;
@@ -213,12 +216,14 @@ async function onSceneReloaded() {
 // ---- the reference ---------------------------------------------------------------------------
 
 async function showReference() {
+  // Only the latest call may draw: an answer that comes after a later call's is dropped.
+  const request = ++page.referenceRequest;
   const mode = $("reference-mode").value;
   const references = (page.scene && page.scene.reference_views) || [];
   const has = references.includes(page.view);
   $("reference-figure").hidden = mode !== "beside";
-  $("reference-overlay").hidden = mode !== "slider" || !has;
   $("slider").hidden = mode !== "slider" || !has;
+  clearReference();
   if (mode === "off") return;
   if (!has) {
     $("reference-caption").textContent = references.length
@@ -231,6 +236,8 @@ async function showReference() {
   try {
     const blob = await (await api("reference", { view: page.view })).blob();
     const bitmap = await createImageBitmap(blob);
+    if (request !== page.referenceRequest) return;
+    $("reference-overlay").hidden = mode !== "slider";
     for (const canvas of [$("reference"), $("reference-overlay")]) {
       sizeCanvas(canvas, bitmap.width, bitmap.height);
       canvas.getContext("2d").drawImage(bitmap, 0, 0);
@@ -239,8 +246,15 @@ async function showReference() {
     $("reference-source").textContent = `(${page.scene.reference_source})`;
     applySlider();
   } catch (error) {
-    $("reference-caption").textContent = error.message;
+    if (request === page.referenceRequest) $("reference-caption").textContent = error.message;
   }
+}
+
+// Until a view's reference arrives, no other scene's or view's stands in for it.
+function clearReference() {
+  $("reference-overlay").hidden = true;
+  $("reference-source").textContent = "";
+  $("reference").getContext("2d").clearRect(0, 0, $("reference").width, $("reference").height);
 }
 
 function applySlider() {
@@ -275,13 +289,17 @@ async function tracePixel(x, y) {
   const panel = $("trace-panel");
   panel.dataset.state = "tracing";
   $("trace-pixel").textContent = `(${x}, ${y}), view ${page.view}`;
+  // A click's trace arriving after a later click's is dropped.
+  const request = ++page.traceRequest;
   try {
     const trace = await (await api("trace", { x, y, view: page.view, ...page.controls })).json();
+    if (request !== page.traceRequest) return;
     showTrace(trace);
     panel.dataset.pixel = `${x},${y}`;
     panel.dataset.view = page.view;
     panel.dataset.state = "ready";
   } catch (error) {
+    if (request !== page.traceRequest) return;
     $("trace-lines").replaceChildren();
     $("trace-hint").hidden = false;
     $("trace-hint").textContent = "no trace: " + error.message;
