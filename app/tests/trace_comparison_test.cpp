@@ -60,6 +60,31 @@ TEST_CASE("compare_pixel: a difference within the stored rounding is none, beyon
     CHECK(compare_pixel(far, shaded_hit(), View::depth, kOneLight).first_difference == 3u);
 }
 
+TEST_CASE("compare_pixel: the same value prints as the student wrote it, not as stored", "[app]") {
+    // 3.6 and 5.6 keep 12 bits in a reference trace: 3.60010 and 5.59961. A student whose camera
+    // is at (0, 3.6, 5.6) reads 3.6 and 5.6 on both sides, not a fourth digit that looks like a
+    // bug.
+    PixelRecord camera = shaded_hit();
+    camera.camera_ray->origin = Vec3(0.0, 3.6, 5.6);
+    const TraceComparison comparison = compare_pixel(camera, camera, View::rays, kOneLight);
+    REQUIRE(comparison.rows.size() == 2);
+    CHECK(comparison.rows[0].ours == "(0, 3.6, 5.6)");
+    CHECK(comparison.rows[0].reference == "(0, 3.6, 5.6)");
+}
+
+TEST_CASE("compare_pixel: values that differ print with the digits that tell them apart", "[app]") {
+    // 3.5995 and 3.6 differ by 1.4e-4 relative, beyond the 12 bits' 1.2e-4; stored, they are
+    // 3.59961 and 3.60010, which at the four digits the bits carry both read 3.6.
+    PixelRecord ours = shaded_hit();
+    ours.camera_ray->origin = Vec3(0.0, 3.5995, 0.0);
+    PixelRecord reference = shaded_hit();
+    reference.camera_ray->origin = Vec3(0.0, 3.6, 0.0);
+    const TraceComparison comparison = compare_pixel(ours, reference, View::rays, kOneLight);
+    REQUIRE(comparison.first_difference == 0u);
+    CHECK(comparison.rows[0].ours == "(0, 3.5996, 0)");
+    CHECK(comparison.rows[0].reference == "(0, 3.6001, 0)");
+}
+
 TEST_CASE("compare_pixel: a component near 0 is held to its vector's precision", "[app]") {
     PixelRecord ours = shaded_hit();
     ours.camera_ray->direction.y = 1e-12;

@@ -32,10 +32,8 @@ double largest(const std::vector<double>& a, const std::vector<double>& b) {
     return most;
 }
 
-// Numbers as the reference trace stores them, so that two values the same print the same: the
-// stored value, a digit for each 3.3 bits kept and one more.
-std::string numbers(const std::vector<double>& values, TraceQuantity quantity) {
-    const int digits = 2 + stored_bits(quantity) * 3 / 10;
+// Numbers as the reference trace stores them, with `digits` significant digits.
+std::string numbers(const std::vector<double>& values, TraceQuantity quantity, int digits) {
     std::string text;
     for (const double v : values) {
         std::ostringstream number;
@@ -43,6 +41,13 @@ std::string numbers(const std::vector<double>& values, TraceQuantity quantity) {
         text += (text.empty() ? "" : ", ") + number.str();
     }
     return values.size() == 1 ? text : "(" + text + ")";
+}
+
+// The digits the stored bits carry, a digit for each 3.3 bits: a student's 3.6 and the
+// reference's 3.6 stored in 12 bits (3.60010) both print 3.6. Where the values differ, more
+// digits, until the two texts differ too.
+int digits_kept(TraceQuantity quantity) {
+    return 1 + stored_bits(quantity) * 3 / 10;
 }
 
 std::vector<double> components(const Vec3& v) {
@@ -80,16 +85,20 @@ class Rows {
     // A numeric quantity; false when `ours` did not reach it, so no later row can be compared.
     bool add(const std::string& quantity, TraceQuantity kind, const Side& ours,
              const Side& reference) {
-        if (!ours.reached)
-            return stop(quantity, reference.values ? numbers(*reference.values, kind) : "-");
+        const auto text = [&](const Side& side, int digits) {
+            return side.values ? numbers(*side.values, kind, digits) : "-";
+        };
+        if (!ours.reached) return stop(quantity, text(reference, digits_kept(kind)));
         bool same = ours.values.has_value() == reference.values.has_value();
         if (same && ours.values) {
             const double scale = largest(*ours.values, *reference.values);
             for (std::size_t c = 0; c < ours.values->size(); ++c)
                 same = same && same_within((*ours.values)[c], (*reference.values)[c], kind, scale);
         }
-        push(quantity, ours.values ? numbers(*ours.values, kind) : "-",
-             reference.values ? numbers(*reference.values, kind) : "-", same);
+        int digits = digits_kept(kind);
+        while (!same && digits < 17 && text(ours, digits) == text(reference, digits))
+            ++digits;
+        push(quantity, text(ours, digits), text(reference, digits), same);
         return true;
     }
 
