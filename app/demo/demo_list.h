@@ -24,6 +24,8 @@ struct DemoEntry {
     /// The scene of scenes/ that `raystep view` opens to explore the demo live, its view, and
     /// the demo's parameter as the page's controls start it (a query string of
     /// app/view/scene_controls.h's names): shadow-acne opens its scene with epsilon to turn.
+    /// Empty where the renderer cannot show the demo's idea: its cost view is the BVH's, never
+    /// the grid's.
     std::string_view scene;
     std::string_view view;
     std::string_view controls;

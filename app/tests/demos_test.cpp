@@ -1,9 +1,11 @@
 #include "app/demo/demos.h"
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "app/demo/demo_list.h"
+#include "app/render/view.h"
 #include "base/testing/catch.h"
 
 using namespace raystep;
@@ -170,6 +172,24 @@ TEST_CASE("demo_list: a demo's parameter has choices its make_with takes", "[app
         for (const std::string_view choice : demo.parameter.choices)
             CHECK_NOTHROW(demo.make_with(choice, kTestSize));
     }
+}
+
+TEST_CASE("demo_list: a demo explored live opens a scene of scenes/ in a view of the renderer",
+          "[app]") {
+    for (const DemoEntry& demo : demo_list()) {
+        CAPTURE(demo.name);
+        if (demo.scene.empty()) {
+            CHECK(demo.view.empty());
+            CHECK(demo.controls.empty());
+            continue;
+        }
+        CHECK(std::filesystem::is_regular_file(std::filesystem::path(RAYSTEP_SOURCE_DIR) /
+                                               "scenes" / demo.scene));
+        CHECK(parse_view(std::string(demo.view)));
+    }
+    // The renderer's cost view counts the BVH's work: live, grid-cost would be bvh-cost again.
+    CHECK(find_demo("grid-cost").scene.empty());
+    CHECK_FALSE(find_demo("bvh-cost").scene.empty());
 }
 
 TEST_CASE("bvh_cost_demo and grid_cost_demo: the grid pays far more in the stadium",

@@ -379,11 +379,14 @@ function fillDemos(demos) {
     figure.type = "button";
     figure.textContent = "figure";
     figure.addEventListener("click", () => showDemoFigure(demo));
-    const live = document.createElement("button");
-    live.type = "button";
-    live.textContent = "explore live";
-    live.addEventListener("click", () => exploreDemo(demo));
-    row.append(figure, live);
+    row.append(figure);
+    if (demo.scene) {
+      const live = document.createElement("button");
+      live.type = "button";
+      live.textContent = "explore live";
+      live.addEventListener("click", () => exploreDemo(demo));
+      row.append(live);
+    }
     if (demo.parameter.name) row.append(demoParameterControl(demo));
     row.append(`${demo.name}: ${demo.description}`);
     list.append(row);
