@@ -15,6 +15,7 @@
 #include "app/render/terminal.h"
 #include "app/render/tile_renderer.h"
 #include "base/image/image_io.h"
+#include "base/scene/scene_files.h"
 #include "base/scene/scene_loader.h"
 
 namespace raystep {
@@ -92,7 +93,8 @@ int run_render(const RenderArguments& arguments) {
 
     if (!arguments.trace_data.empty()) {
         write_reference_trace(arguments.trace_data, scene.width, scene.height, view,
-                              scene.point_lights.size() + scene.directional_lights.size(), records);
+                              scene.point_lights.size() + scene.directional_lights.size(), records,
+                              scene_digest(scene));
         std::printf("wrote %s (the trace data of every pixel)\n", arguments.trace_data.c_str());
     }
     return 0;

@@ -48,6 +48,8 @@ constexpr int kColourBits = 8;
 constexpr const char* kFormatAttribute = "raystep:trace";
 constexpr int kFormatVersion = 1;
 constexpr const char* kViewAttribute = "raystep:view";
+// The digest of the files the reference rendered (base/scene/scene_files.h, scene_digest).
+constexpr const char* kSceneDigestAttribute = "raystep:scene_digest";
 constexpr const char* kLightsAttribute = "raystep:lights";
 // Set when no pixel's full colour differs from its local colour (nothing reflects): the full
 // colour is not stored then, and reads back as the local colour (black on a miss).
@@ -282,7 +284,8 @@ double stored_roundoff(TraceQuantity quantity) {
 }
 
 void write_reference_trace(const fs::path& path, int width, int height, View view,
-                           std::size_t lights, const std::vector<PixelRecord>& pixels) {
+                           std::size_t lights, const std::vector<PixelRecord>& pixels,
+                           const std::string& scene_digest) {
     const PipelineReach reach = pipeline_reach(view);
     const bool full_is_local =
         reach == PipelineReach::full_colour &&
@@ -314,7 +317,8 @@ void write_reference_trace(const fs::path& path, int width, int height, View vie
     const RaystepIntAttribute ints[] = {{kFormatAttribute, kFormatVersion},
                                         {kLightsAttribute, static_cast<int>(lights)},
                                         {kFullIsLocalAttribute, full_is_local ? 1 : 0}};
-    const RaystepStringAttribute strings[] = {{kViewAttribute, view_text.c_str()}};
+    const RaystepStringAttribute strings[] = {{kViewAttribute, view_text.c_str()},
+                                              {kSceneDigestAttribute, scene_digest.c_str()}};
     const RaystepChannelImage image = {width,           height,      static_cast<int>(count),
                                        names.data(),    bits.data(), ints,
                                        std::size(ints), strings,     std::size(strings)};
@@ -384,6 +388,7 @@ ReferenceTrace read_reference_trace(const fs::path& path) {
     trace.width = width;
     trace.height = height;
     trace.view = *view;
+    trace.scene_digest = library.input_string_attribute(in.get(), kSceneDigestAttribute);
     trace.lights = static_cast<std::size_t>(lights);
     trace.pixels.reserve(size);
     std::vector<float> ordered(channels.size());

@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "app/render/pixel_record.h"
@@ -43,6 +44,9 @@ struct ReferenceTrace {
     int height = 0;
     View view = View::rays;  ///< the view it was recorded for: how far its records go
     std::size_t lights = 0;  ///< the scene's lights, each with its reach and term per pixel
+    /// The digest of the scene's files as the reference rendered them (scene_digest); empty when
+    /// the writer gave none.
+    std::string scene_digest;
     std::vector<PixelRecord> pixels;  ///< row by row from the top, j * width + i
 
     /// Pixel (i, j), column i from the left and row j from the top.
@@ -55,10 +59,11 @@ struct ReferenceTrace {
 /// Writes the records of a width x height render of `view` (RenderOptions::records) as a
 /// multi-channel OpenEXR image with ZIP compression, one channel a component ("hit.t",
 /// "light0.term.R"): only the channels the view's reach fills, each value rounded to its
-/// stored_bits and coded as reference_trace.cpp says. Throws std::runtime_error when it cannot
-/// write.
+/// stored_bits and coded as reference_trace.cpp says, with `scene_digest`, the digest of the
+/// scene's files (base/scene/scene_files.h). Throws std::runtime_error when it cannot write.
 void write_reference_trace(const std::filesystem::path& path, int width, int height, View view,
-                           std::size_t lights, const std::vector<PixelRecord>& pixels);
+                           std::size_t lights, const std::vector<PixelRecord>& pixels,
+                           const std::string& scene_digest);
 
 /// The file read back. Throws InputError naming the file and what is wrong when it cannot be
 /// read (missing, truncated), is not a reference trace (another image, a channel missing) or

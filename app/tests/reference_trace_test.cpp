@@ -46,13 +46,14 @@ TEST_CASE("reference_trace_path: <scene>.trace.exr in the reference folder besid
 TEST_CASE("reference trace: every value written reads back exactly", "[app]") {
     const raystep::testing::ScratchFolder folder("reference-trace");
     const fs::path path = folder.path() / "two.trace.exr";
-    write_reference_trace(path, 2, 1, View::full, 2, two_pixels());
+    write_reference_trace(path, 2, 1, View::full, 2, two_pixels(), "0123456789abcdef");
 
     const ReferenceTrace trace = read_reference_trace(path);
     CHECK(trace.width == 2);
     CHECK(trace.height == 1);
     CHECK(trace.view == View::full);
     CHECK(trace.lights == 2);
+    CHECK(trace.scene_digest == "0123456789abcdef");
     const PixelRecord& hit = trace.at(0, 0);
     REQUIRE(hit.camera_ray);
     CHECK(hit.camera_ray->origin == Vec3(0.0, 0.0, 4.0));
@@ -86,7 +87,7 @@ TEST_CASE("reference trace: a value is rounded to nearest within its stored roun
     const double third = 1.0 / 3.0;
     pixels[0].hit->hit.t = third;
     pixels[0].local = Color(third);
-    write_reference_trace(path, 2, 1, View::full, 2, pixels);
+    write_reference_trace(path, 2, 1, View::full, 2, pixels, "");
 
     const PixelRecord read = read_reference_trace(path).at(0, 0);
     const double t = read.hit->hit.t;
@@ -102,7 +103,7 @@ TEST_CASE("reference trace: a full colour equal to the local one reads back as i
     const fs::path path = folder.path() / "local.trace.exr";
     std::vector<PixelRecord> pixels = two_pixels();
     pixels[0].full = pixels[0].local;
-    write_reference_trace(path, 2, 1, View::full, 2, pixels);
+    write_reference_trace(path, 2, 1, View::full, 2, pixels, "");
 
     const ReferenceTrace trace = read_reference_trace(path);
     CHECK(trace.at(0, 0).full == Color(0.75, 0.5, 0.25));
@@ -112,7 +113,7 @@ TEST_CASE("reference trace: a full colour equal to the local one reads back as i
 TEST_CASE("reference trace: a view's reach bounds what is stored and read back", "[app]") {
     const raystep::testing::ScratchFolder folder("reference-trace");
     const fs::path path = folder.path() / "normal.trace.exr";
-    write_reference_trace(path, 2, 1, View::normal, 2, two_pixels());
+    write_reference_trace(path, 2, 1, View::normal, 2, two_pixels(), "");
 
     const ReferenceTrace trace = read_reference_trace(path);
     CHECK(trace.view == View::normal);
@@ -132,7 +133,7 @@ TEST_CASE("reference trace: a truncated file is an InputError naming it", "[app]
     RenderOptions options;
     options.records = &records;
     render_image(prepare_render_scene(scene), options);
-    write_reference_trace(path, 40, 30, View::full, 1, records);
+    write_reference_trace(path, 40, 30, View::full, 1, records, "");
     fs::resize_file(path, fs::file_size(path) / 2);
 
     try {

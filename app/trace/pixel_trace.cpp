@@ -9,6 +9,7 @@
 #include "base/errors/input_error.h"
 #include "base/errors/not_implemented.h"
 #include "base/math/to_text.h"
+#include "base/scene/scene_files.h"
 
 namespace raystep {
 
@@ -102,6 +103,13 @@ PixelComparison compare_pixel_with_reference(const Scene& scene, View view, int 
 
     PixelComparison result;
     result.reference_trace = trace_file;
+    // A scene edited since the reference traced it keeps its size and lights (else
+    // reference_trace_for refused it) but not its values: a difference may be the edit's.
+    if (!reference.scene_digest.empty() && reference.scene_digest != scene_digest(scene)) {
+        result.notes.push_back(
+            "the scene's files changed since the reference traced them: its values are of the "
+            "scene as it was, so a difference may come from the edit, not from your code");
+    }
     PixelRecord ours;
     try {
         const RenderScene render_scene = prepare_render_scene(scene);

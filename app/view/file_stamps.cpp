@@ -29,14 +29,4 @@ bool FileStamps::changed() const {
     return false;
 }
 
-std::vector<std::filesystem::path> scene_files(const std::filesystem::path& scene_file,
-                                               const Scene& scene) {
-    std::vector<std::filesystem::path> files{scene_file};
-    for (const SceneMesh& mesh : scene.meshes)
-        files.emplace_back(mesh.path);
-    for (const MeshDefinition& definition : scene.mesh_definitions)
-        files.emplace_back(definition.path);
-    return files;
-}
-
 }  // namespace raystep

@@ -4,8 +4,6 @@
 #include <string>
 #include <vector>
 
-#include "base/scene/scene.h"
-
 namespace raystep {
 
 /// The last-write time and size of some files when this was made, to tell when one of them has
@@ -25,9 +23,5 @@ class FileStamps {
     std::vector<std::filesystem::path> files_;
     std::vector<std::string> stamps_;
 };
-
-/// The files a scene is read from: the scene file and every mesh it loads.
-std::vector<std::filesystem::path> scene_files(const std::filesystem::path& scene_file,
-                                               const Scene& scene);
 
 }  // namespace raystep

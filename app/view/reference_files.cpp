@@ -11,6 +11,7 @@
 
 #include "app/compare/reference_image.h"
 #include "app/view/file_stamps.h"
+#include "base/scene/scene_files.h"
 #include "base/scene/scene_loader.h"
 
 #if !defined(_WIN32)
@@ -86,7 +87,7 @@ std::string file_text(const fs::path& path) {
 std::string stamp_of(const std::string& scene_file, const fs::path& program) {
     std::vector<fs::path> files{program};
     try {
-        const std::vector<fs::path> scene = scene_files(scene_file, load_scene(scene_file));
+        const std::vector<fs::path> scene = scene_files(load_scene(scene_file));
         files.insert(files.end(), scene.begin(), scene.end());
     } catch (const std::exception&) {
         files.emplace_back(scene_file);

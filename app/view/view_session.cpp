@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "app/view/scene_controls.h"
+#include "base/scene/scene_files.h"
 #include "base/scene/scene_loader.h"
 
 namespace raystep {
@@ -24,8 +25,7 @@ void ViewSession::load(const std::string& scene_file) {
         failure = std::current_exception();
     }
     // The stamps are taken before the next edit can land, from the files this load read.
-    FileStamps stamps(scene ? scene_files(scene_file, *scene)
-                            : std::vector<std::filesystem::path>{scene_file});
+    FileStamps stamps(scene ? scene_files(*scene) : std::vector<std::filesystem::path>{scene_file});
     std::lock_guard<std::mutex> lock(mutex_);
     if (scene_file != scene_file_) last_request_.reset();
     scene_file_ = scene_file;

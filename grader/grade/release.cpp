@@ -12,6 +12,7 @@
 #include "app/render/pixel_record.h"
 #include "app/render/tile_renderer.h"
 #include "base/image/image_io.h"
+#include "base/scene/scene_files.h"
 #include "base/scene/scene_loader.h"
 #include "grader/grade/release_grading.h"
 
@@ -154,7 +155,7 @@ ReleaseSummary make_release(const fs::path& source, const fs::path& output) {
             write_reference_trace(reference_trace_path(output / "scenes" / relative), scene.width,
                                   scene.height, *parse_view(furthest),
                                   scene.point_lights.size() + scene.directional_lights.size(),
-                                  records);
+                                  records, scene_digest(scene));
             ++summary.reference_traces;
         } catch (const std::exception& error) {
             summary.skipped.push_back(relative.string() + ": " + error.what());
