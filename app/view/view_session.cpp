@@ -5,11 +5,26 @@
 #include <stdexcept>
 #include <system_error>
 
+#include <nlohmann/json.hpp>
+
 #include "app/view/scene_controls.h"
 #include "base/scene/scene_files.h"
 #include "base/scene/scene_loader.h"
 
 namespace raystep {
+
+namespace {
+
+bool is_utf8(const std::string& text) {
+    try {
+        (void)nlohmann::json(text).dump();
+        return true;
+    } catch (const nlohmann::json::type_error&) {
+        return false;
+    }
+}
+
+}  // namespace
 
 ViewSession::ViewSession(std::filesystem::path project, int threads)
     : project_(std::move(project)), threads_(threads) {}
@@ -47,11 +62,19 @@ std::vector<std::string> ViewSession::scene_list() const {
     std::vector<std::string> scenes;
     const std::filesystem::path folder = project_ / "scenes";
     std::error_code error;
+    const std::filesystem::path real_folder = std::filesystem::weakly_canonical(folder, error);
     for (auto it = std::filesystem::recursive_directory_iterator(folder, error);
          !error && it != std::filesystem::recursive_directory_iterator(); it.increment(error)) {
-        if (it->is_regular_file() && it->path().extension() == ".test") {
-            scenes.push_back(it->path().lexically_relative(folder).generic_string());
-        }
+        if (!it->is_regular_file() || it->path().extension() != ".test") continue;
+        // A link to a file outside scenes/ is not the project's scene: the page never reads it,
+        // nor shows its lines in a load error.
+        std::error_code ignored;
+        const std::filesystem::path real = std::filesystem::weakly_canonical(it->path(), ignored);
+        const std::filesystem::path inside = real.lexically_relative(real_folder);
+        if (ignored || inside.empty() || *inside.begin() == "..") continue;
+        // A name the page can send back: JSON carries only UTF-8 text.
+        const std::string name = it->path().lexically_relative(folder).generic_string();
+        if (is_utf8(name)) scenes.push_back(name);
     }
     std::sort(scenes.begin(), scenes.end());
     return scenes;

@@ -35,7 +35,8 @@ class ViewSession {
     /// std::invalid_argument for any other name: the page can read no file outside that list.
     void open_listed(const std::string& relative);
 
-    /// The project's scenes, relative to its scenes/ folder, sorted.
+    /// The project's scenes, relative to its scenes/ folder, sorted: the .test files under it,
+    /// except links to a file outside it and files whose names are not UTF-8.
     std::vector<std::string> scene_list() const;
 
     /// Starts rendering what `request` asks for. Throws std::invalid_argument for a control's bad

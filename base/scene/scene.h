@@ -225,6 +225,11 @@ struct Scene {
     std::vector<SceneNote> notes;  ///< in file order, one per command name at most
 };
 
+/// The most samples `spp` and `lightsamples` may ask for, in a scene file or from the page of
+/// `raystep view`: each sample is at least a ray per pixel or per light and pixel, so 2^16 of them
+/// at 640 x 480 is already 2 x 10^10 rays.
+inline constexpr int kMaxSamples = 1 << 16;
+
 /// Every triangle of the scene in one numbering, the one hits use: Scene::triangles first, then
 /// the triangles of each mesh instance, instance after instance in the order they were written.
 std::size_t triangle_count(const Scene& scene);

@@ -30,9 +30,6 @@ namespace raystep::scene_parsing {
 inline constexpr long kMaxImageSide = 32768;
 inline constexpr long kMaxImagePixels = 1L << 27;  // 128 Mpixels, 1.5 GiB of float RGB
 inline constexpr long kMaxDepth = 1000;
-// `spp` and `lightsamples`: each sample is at least a ray per pixel or per light and pixel, so
-// 2^16 of them at 640 x 480 is already 2 x 10^10 rays.
-inline constexpr long kMaxSamples = 1L << 16;
 
 // A direction (an up vector, a normal, an axis, a scale factor) must have its largest component
 // in this range: then |v|^2 neither overflows nor underflows, and normalizing or inverting it is
