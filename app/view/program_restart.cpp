@@ -48,6 +48,16 @@ bool can_restart_program() {
 #endif
 }
 
+bool program_can_run(const std::filesystem::path& program) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(program, error)) return false;
+#if defined(_WIN32)
+    return true;
+#else
+    return ::access(program.c_str(), X_OK) == 0;
+#endif
+}
+
 std::string restart_program(const std::filesystem::path& program,
                             const std::vector<std::string>& arguments) {
 #if defined(_WIN32)

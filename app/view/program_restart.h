@@ -19,6 +19,10 @@ std::filesystem::path own_program_file(const char* argv0);
 /// True where restart_program can replace this process (POSIX systems).
 bool can_restart_program();
 
+/// True when `program` is a file this process may run: a link that failed has deleted it, and
+/// one still writing it has not yet made it executable.
+bool program_can_run(const std::filesystem::path& program);
+
 /// Replaces this process with `program` run with `arguments` (arguments[0] is the program's
 /// name); returns only when that fails, with the reason.
 std::string restart_program(const std::filesystem::path& program,

@@ -16,6 +16,7 @@
 
 #if !defined(_WIN32)
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 
@@ -41,16 +42,21 @@ bool shipped(const std::string& scene_file) {
     return false;
 }
 
-// Runs `program` with `arguments`, its output into `log`; its exit code, or -1 when it could not
-// run. Not std::system: that ignores SIGINT in this process while the child runs, and would lose
-// the Ctrl-C that stops the server.
+// Runs `program` with `arguments`, its standard error into `log`; its exit code, 128 plus the
+// signal that ended it, or -1 when it could not run. `child` holds its process id while it runs,
+// for ReferenceFiles::stop; a child started after `stopping` was set is stopped at once (stop()
+// sets `stopping` before it reads `child`, so one of the two sees the other). Not std::system:
+// that ignores SIGINT in this process while the child runs, and would lose the Ctrl-C that stops
+// the server.
 int run_program(const fs::path& program, const std::vector<std::string>& arguments,
-                const fs::path& log) {
+                const fs::path& log, std::atomic<long>& child, const std::atomic<bool>& stopping) {
 #if defined(_WIN32)
+    (void)child;
+    (void)stopping;
     std::string command = "\"" + program.string() + "\"";
     for (const std::string& argument : arguments)
         command += " \"" + argument + "\"";
-    return std::system((command + " > \"" + log.string() + "\" 2>&1").c_str());
+    return std::system((command + " > NUL 2> \"" + log.string() + "\"").c_str());
 #else
     std::vector<std::string> words{program.string()};
     words.insert(words.end(), arguments.begin(), arguments.end());
@@ -60,17 +66,23 @@ int run_program(const fs::path& program, const std::vector<std::string>& argumen
     argv.push_back(nullptr);
     posix_spawn_file_actions_t actions;
     posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_adddup2(&actions, 1, 2);
-    pid_t child = 0;
-    const int failed =
-        posix_spawn(&child, program.c_str(), &actions, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    pid_t pid = 0;
+    const int failed = posix_spawn(&pid, program.c_str(), &actions, nullptr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
     if (failed != 0) return -1;
+    child = pid;
+    if (stopping) ::kill(pid, SIGTERM);
     int status = 0;
-    while (waitpid(child, &status, 0) < 0) {
-        if (errno != EINTR) return -1;
+    while (waitpid(pid, &status, 0) < 0) {
+        if (errno != EINTR) {
+            child = 0;
+            return -1;
+        }
     }
+    child = 0;
+    if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 #endif
 }
@@ -150,12 +162,49 @@ fs::path ReferenceFiles::fresh_cache_folder(const std::string& scene_file) {
     return folder;
 }
 
-void ReferenceFiles::run_reference(const std::vector<std::string>& arguments) const {
+void ReferenceFiles::stop() {
+    stopping_ = true;
+#if !defined(_WIN32)
+    if (const long pid = child_; pid > 0) ::kill(static_cast<pid_t>(pid), SIGTERM);
+#endif
+}
+
+void ReferenceFiles::run_reference(const std::vector<std::string>& arguments) {
+    const std::string name = reference_program_.filename().string();
+    if (stopping_) throw std::runtime_error("raystep view is stopping: " + name + " was not run");
     const fs::path log = cache_ / "last-reference-run.txt";
-    if (run_program(reference_program_, arguments, log) != 0) {
-        throw std::runtime_error(reference_program_.filename().string() +
-                                 " failed: " + file_text(log));
+    const int code = run_program(reference_program_, arguments, log, child_, stopping_);
+#if !defined(_WIN32)
+    // Ctrl-C in the terminal reaches the whole process group, the reference program first: no
+    // other reference run starts after it, whatever the watch loop has seen yet.
+    if (code == 128 + SIGINT) stopping_ = true;
+#endif
+    if (stopping_) throw std::runtime_error("raystep view is stopping: " + name + " was stopped");
+    if (code != 0) {
+        // Its message without the program's own "raystep: " before it.
+        std::string message = file_text(log);
+        if (message.rfind("raystep: ", 0) == 0) message.erase(0, 9);
+        while (!message.empty() && message.back() == '\n')
+            message.pop_back();
+        throw std::runtime_error(name + " could not write the reference: " + message);
     }
+}
+
+// Runs the reference to write `outputs`, each through a file beside it that is renamed once the
+// reference program has finished: a run stopped halfway leaves no image that looks whole.
+void ReferenceFiles::write_references(std::vector<std::string> arguments,
+                                      const std::vector<fs::path>& outputs) {
+    std::vector<fs::path> partial;
+    for (const fs::path& output : outputs) {
+        partial.push_back(output.parent_path() /
+                          (output.stem().string() + ".partial" + output.extension().string()));
+        for (std::string& argument : arguments) {
+            if (argument == output.string()) argument = partial.back().string();
+        }
+    }
+    run_reference(arguments);
+    for (std::size_t k = 0; k < outputs.size(); ++k)
+        fs::rename(partial[k], outputs[k]);
 }
 
 fs::path ReferenceFiles::image(const std::string& scene_file, View view) {
@@ -168,8 +217,9 @@ fs::path ReferenceFiles::image(const std::string& scene_file, View view) {
     const fs::path image = folder / (fs::path(scene_file).stem().string() + "." +
                                      std::string(view_name(view)) + ".png");
     if (!fs::exists(image)) {
-        run_reference(
-            {"render", scene_file, "--view", std::string(view_name(view)), "-o", image.string()});
+        write_references(
+            {"render", scene_file, "--view", std::string(view_name(view)), "-o", image.string()},
+            {image});
     }
     return image;
 }
@@ -182,8 +232,10 @@ fs::path ReferenceFiles::trace(const std::string& scene_file) {
     const std::string name = fs::path(scene_file).stem().string();
     const fs::path trace = folder / (name + ".trace.exr");
     if (!fs::exists(trace)) {
-        run_reference({"render", scene_file, "--view", "full", "-o",
-                       (folder / (name + ".full.png")).string(), "--trace-data", trace.string()});
+        const fs::path image = folder / (name + ".full.png");
+        write_references({"render", scene_file, "--view", "full", "-o", image.string(),
+                          "--trace-data", trace.string()},
+                         {image, trace});
     }
     return trace;
 }

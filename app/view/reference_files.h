@@ -1,5 +1,6 @@
 #pragma once
 
+#include <atomic>
 #include <filesystem>
 #include <mutex>
 #include <string>
@@ -36,16 +37,24 @@ class ReferenceFiles {
     /// raystep-reference", or empty when there is none.
     std::string source(const std::string& scene_file) const;
 
+    /// Stops the reference program under way, if any, and runs none after it: image and trace
+    /// then throw. For Ctrl-C, which must not wait minutes for a reference of a slow scene.
+    void stop();
+
   private:
     bool can_write() const;
     std::filesystem::path cache_folder(const std::string& scene_file) const;
     /// The cache folder for the scene, emptied first when its stamp is stale.
     std::filesystem::path fresh_cache_folder(const std::string& scene_file);
-    void run_reference(const std::vector<std::string>& arguments) const;
+    void run_reference(const std::vector<std::string>& arguments);
+    void write_references(std::vector<std::string> arguments,
+                          const std::vector<std::filesystem::path>& outputs);
 
     std::filesystem::path reference_program_;
     std::filesystem::path cache_;
-    std::mutex mutex_;  ///< one reference run at a time
+    std::mutex mutex_;                   ///< one reference run at a time
+    std::atomic<long> child_{0};         ///< the reference program's process id while it runs
+    std::atomic<bool> stopping_{false};  ///< set by stop(), or by a Ctrl-C that ended the child
 };
 
 /// The reference program that sits beside `program` in an instructor's build: `raystep-reference`

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -187,20 +188,30 @@ json demos_json() {
     return demos;
 }
 
-json trace_json(const ViewSession& session, ReferenceFiles& references,
-                const httplib::Request& request) {
+// A pixel's trace, as `raystep trace` prints it.
+json trace_json(const ViewSession& session, const httplib::Request& request) {
+    const View view = view_parameter(request);
+    const int x = integer_parameter(request, "x");
+    const int y = integer_parameter(request, "y");
+    const PixelTrace trace = trace_pixel(session.scene_with(control_values(request)), view, x, y);
+    return {{"x", x},
+            {"y", y},
+            {"view", std::string(view_name(view))},
+            {"lines", trace.lines},
+            {"stopped", trace.stopped}};
+}
+
+// The pixel against the reference, as `raystep trace --compare` shows it; or why there is no
+// comparison. Apart from the trace: in the instructor's build the first comparison of a scene
+// waits for raystep-reference to write its trace, and the page shows this build's trace first.
+json comparison_json(const ViewSession& session, ReferenceFiles& references,
+                     const httplib::Request& request) {
     const View view = view_parameter(request);
     const int x = integer_parameter(request, "x");
     const int y = integer_parameter(request, "y");
     const std::map<std::string, std::string> controls = control_values(request);
-    const Scene scene = session.scene_with(controls);
-    const PixelTrace trace = trace_pixel(scene, view, x, y);
-    json body{{"x", x},
-              {"y", y},
-              {"view", std::string(view_name(view))},
-              {"lines", trace.lines},
-              {"stopped", trace.stopped}};
-    // The comparison is trace --compare's: the reference recorded the scene as its file says.
+    json body{{"x", x}, {"y", y}, {"view", std::string(view_name(view))}};
+    // The reference recorded the scene as its file says.
     const Scene as_written = session.scene_with({});
     if (controls_change_scene(controls, as_written)) {
         body["comparison_unavailable"] =
@@ -285,8 +296,21 @@ httplib::Server::Handler answering(Handler handler) {
     };
 }
 
+// What the page says of the program behind it, when something is wrong with it: empty when a
+// rebuild will restart it as it should.
+std::string program_note(const ViewServerOptions& options, const std::string& restart_failure) {
+    if (options.program.empty() || !can_restart_program()) return "";
+    if (!program_can_run(options.program)) {
+        return options.program.string() +
+               " is not there or cannot run: a build that failed to link leaves none. This page "
+               "still runs the build from before, and starts the next one that links.";
+    }
+    return restart_failure;
+}
+
 void add_routes(httplib::Server& server, ViewSession& session, ReferenceFiles& references,
-                const std::string& server_id, const ViewServerOptions& options) {
+                const std::string& server_id, const ViewServerOptions& options,
+                const std::string& restart_failure) {
     // The page has no icon: an empty answer, not a 404 in the browser's console.
     server.Get("/favicon.ico",
                [](const httplib::Request&, httplib::Response& response) { response.status = 204; });
@@ -302,8 +326,7 @@ void add_routes(httplib::Server& server, ViewSession& session, ReferenceFiles& r
                                         {"views", view_names()},
                                         {"scenes", session.scene_list()},
                                         {"demos", demos_json()},
-                                        {"restarts_on_rebuild",
-                                         !options.program.empty() && can_restart_program()}});
+                                        {"program_note", program_note(options, restart_failure)}});
                }));
     server.Get("/api/open",
                answering([&](const httplib::Request& request, httplib::Response& response) {
@@ -323,6 +346,7 @@ void add_routes(httplib::Server& server, ViewSession& session, ReferenceFiles& r
             send_frame(response,
                        {{"generation", changes.generation},
                         {"view", std::string(view_name(changes.view))},
+                        {"controls", session.last_controls()},
                         {"scene_generation", session.scene_generation()},
                         {"state", live_render_state_name(changes.state)},
                         {"error", changes.error},
@@ -339,7 +363,11 @@ void add_routes(httplib::Server& server, ViewSession& session, ReferenceFiles& r
                }));
     server.Get("/api/trace",
                answering([&](const httplib::Request& request, httplib::Response& response) {
-                   send_json(response, trace_json(session, references, request));
+                   send_json(response, trace_json(session, request));
+               }));
+    server.Get("/api/compare",
+               answering([&](const httplib::Request& request, httplib::Response& response) {
+                   send_json(response, comparison_json(session, references, request));
                }));
     server.Get("/api/demo",
                answering([](const httplib::Request& request, httplib::Response& response) {
@@ -378,12 +406,15 @@ std::string new_server_id() {
     return std::to_string(std::chrono::steady_clock::now().time_since_epoch().count());
 }
 
-}  // namespace
+// How one round of serving ended.
+enum class Served { stopped, rebuilt, port_unavailable };
 
-int run_view_server(const ViewServerOptions& options) {
-    ViewSession session(options.project, options.threads);
-    if (!options.scene.empty()) session.open(options.scene);
-
+// Serves the page on 127.0.0.1:`port` (0: any free port, which `port` then holds) until Ctrl-C
+// or SIGTERM, or until a build has replaced the program: changed from `running`, then the same
+// for a whole watch period, and runnable (program_can_run), so that neither a failed link, which
+// deletes it, nor one still writing it, counts as a rebuild.
+Served serve(ViewSession& session, ReferenceFiles& references, const ViewServerOptions& options,
+             const FileStamps& running, const std::string& restart_failure, int& port) {
     httplib::Server server;
     // A page holds its connection open between requests; Ctrl-C waits for the last of them.
     server.set_keep_alive_timeout(1);
@@ -405,53 +436,54 @@ int run_view_server(const ViewServerOptions& options) {
         setsockopt(socket, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
 #endif
     });
-    int port = options.port;
+    const int asked = port;
     server.set_pre_routing_handler(
         [&port](const httplib::Request& request, httplib::Response& response) {
             return guard(request, response, port);
         });
+    // Lives as long as the server, whose routes hold it: a new one each round, so that the page
+    // can tell a restarted server from the one before.
     const std::string server_id = new_server_id();
-    ReferenceFiles references(reference_program_beside(options.program), options.reference_cache);
-    add_routes(server, session, references, server_id, options);
+    add_routes(server, session, references, server_id, options, restart_failure);
 
-    const bool bound = options.port == 0 ? (port = server.bind_to_any_port("127.0.0.1")) > 0
-                                         : server.bind_to_port("127.0.0.1", options.port);
+    const bool bound = asked == 0 ? (port = server.bind_to_any_port("127.0.0.1")) > 0
+                                  : server.bind_to_port("127.0.0.1", asked);
     if (!bound) {
         std::fprintf(stderr,
                      "raystep view: cannot listen on 127.0.0.1:%d: the port is taken (another "
                      "raystep view?) or not yours to use. Choose another with --port N, or "
                      "--port 0 for any free port.\n",
-                     options.port);
-        return kViewPortUnavailable;
+                     asked);
+        return Served::port_unavailable;
     }
     std::printf("raystep view: open http://127.0.0.1:%d/ in a browser (Ctrl-C stops it)\n", port);
     std::fflush(stdout);
-
-    g_stop_signal = 0;
-    std::signal(SIGINT, on_stop_signal);
-    std::signal(SIGTERM, on_stop_signal);
 
     // The watch loop: Ctrl-C, an edited scene, a rebuilt program.
     std::atomic<bool> rebuilt{false};
     std::atomic<bool> listening_ended{false};
     std::thread watch([&] {
-        const FileStamps program(options.program.empty()
-                                     ? std::vector<std::filesystem::path>{}
-                                     : std::vector<std::filesystem::path>{options.program});
-        // A build writes the program over some time: it counts as rebuilt once it has changed and
-        // then stayed the same for a whole period.
+        // A stop before the server listens would be lost, and it would listen on for good.
+        while (!server.is_running() && !listening_ended)
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
         std::optional<FileStamps> settling;
         while (!listening_ended) {
             std::this_thread::sleep_for(kWatchPeriod);
-            if (g_stop_signal) break;
-            session.reload_if_changed();
-            if (can_restart_program() && program.changed()) {
-                if (settling && !settling->changed()) {
-                    rebuilt = true;
-                    break;
-                }
-                settling.emplace(program.files());
+            if (g_stop_signal) {
+                // A reference the page asked for may be minutes from done: it is stopped too.
+                references.stop();
+                break;
             }
+            session.reload_if_changed();
+            if (!can_restart_program() || !running.changed()) {
+                settling.reset();
+                continue;
+            }
+            if (settling && !settling->changed() && program_can_run(options.program)) {
+                rebuilt = true;
+                break;
+            }
+            settling.emplace(running.files());
         }
         server.stop();
     });
@@ -459,8 +491,37 @@ int run_view_server(const ViewServerOptions& options) {
     listening_ended = true;
     watch.join();
     session.live().stop();
+    return rebuilt ? Served::rebuilt : Served::stopped;
+}
 
-    if (rebuilt) {
+}  // namespace
+
+int run_view_server(const ViewServerOptions& options) {
+    ViewSession session(options.project, options.threads);
+    if (!options.scene.empty()) session.open(options.scene);
+    ReferenceFiles references(reference_program_beside(options.program), options.reference_cache);
+
+    g_stop_signal = 0;
+    std::signal(SIGINT, on_stop_signal);
+    std::signal(SIGTERM, on_stop_signal);
+
+    int port = options.port;
+    // The program as this process runs it, and why the last restart failed: after a failure the
+    // page keeps this build, and waits for the next.
+    FileStamps running(options.program.empty()
+                           ? std::vector<std::filesystem::path>{}
+                           : std::vector<std::filesystem::path>{options.program});
+    std::string restart_failure;
+    while (true) {
+        switch (serve(session, references, options, running, restart_failure, port)) {
+            case Served::stopped:
+                std::printf("raystep view: stopped\n");
+                return 0;
+            case Served::port_unavailable:
+                return kViewPortUnavailable;
+            case Served::rebuilt:
+                break;
+        }
         std::printf("raystep view: %s was rebuilt; starting it again\n",
                     options.program.string().c_str());
         std::fflush(stdout);
@@ -470,13 +531,12 @@ int run_view_server(const ViewServerOptions& options) {
         if (options.threads > 0) {
             arguments.insert(arguments.end(), {"--threads", std::to_string(options.threads)});
         }
-        const std::string failure = restart_program(options.program, arguments);
-        std::fprintf(stderr, "raystep view: could not start %s again: %s\n",
-                     options.program.string().c_str(), failure.c_str());
-        return 1;
+        restart_failure = "could not start " + options.program.string() +
+                          " again: " + restart_program(options.program, arguments) +
+                          ". This page still runs the build from before; build again to retry.";
+        std::fprintf(stderr, "raystep view: %s\n", restart_failure.c_str());
+        running = FileStamps(running.files());
     }
-    std::printf("raystep view: stopped\n");
-    return 0;
 }
 
 }  // namespace raystep

@@ -21,13 +21,14 @@ struct ViewServerOptions {
 };
 
 /// Exit codes of run_view_server besides 0 (stopped by Ctrl-C or SIGTERM) and 1 (a scene that
-/// does not load, a restart after a rebuild that failed).
+/// does not load).
 constexpr int kViewPortUnavailable = 3;  ///< the port is taken, or not ours to listen on
 
 /// Serves the page on http://127.0.0.1:PORT until Ctrl-C: the scene's views rendered as tiles
 /// finish, the reference beside them, each pixel's trace, the lecture demos and their controls.
 /// Prints the address once it listens. Reloads the scene when one of its files changes, and
-/// restarts itself in place when its program file is rebuilt (where can_restart_program).
+/// restarts itself in place when its program file is rebuilt (where can_restart_program); when
+/// that fails, it serves on with the build it runs and says why on the page.
 int run_view_server(const ViewServerOptions& options);
 
 }  // namespace raystep

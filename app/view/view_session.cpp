@@ -156,4 +156,9 @@ std::uint64_t ViewSession::scene_generation() const {
     return scene_generation_;
 }
 
+std::map<std::string, std::string> ViewSession::last_controls() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return last_request_ ? last_request_->controls : std::map<std::string, std::string>{};
+}
+
 }  // namespace raystep

@@ -58,6 +58,9 @@ class ViewSession {
     std::string load_error() const;
     /// Counts the scene's loads, so that the page knows when to ask again.
     std::uint64_t scene_generation() const;
+    /// The controls' values of the last render asked for (none before the first), so that every
+    /// page can show what the one image it renders was rendered with.
+    std::map<std::string, std::string> last_controls() const;
 
     LiveRender& live() { return live_; }
 

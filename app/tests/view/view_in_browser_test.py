@@ -4,7 +4,8 @@
     view_in_browser_test.py RAYSTEP RAYSTEP_REFERENCE SCENE WORK_FOLDER SCREENSHOT
 
 A copy of SCENE gets what a student release ships beside a scene (the reference's images and
-trace, written by RAYSTEP_REFERENCE), and then a light of another colour: the student's bug. In
+trace, written by RAYSTEP_REFERENCE), and then a light of half the brightness, as a student's
+bug would make it (the comparison notes, too, that the scene changed since its trace). In
 headless Chromium the test waits for the render, clicks a pixel, and checks the panel's lines
 against `raystep trace` and its comparison against `raystep trace --compare`; then switches the
 view, moves the reference slider, and edits the scene. The page's screenshot is kept at
@@ -16,6 +17,7 @@ import re
 import shutil
 import subprocess
 import sys
+import time
 
 from headless_chromium import Chromium, find_browser
 from view_process import ViewProcess
@@ -65,6 +67,11 @@ def click_pixel(browser, x, y, view):
     browser.wait_until("(() => { const p = document.getElementById('trace-panel'); return "
                        "p.dataset.state === 'ready' && p.dataset.pixel === '%d,%d' && "
                        "p.dataset.view === '%s'; })()" % (x, y, view))
+
+
+def set_control(browser, name, value):
+    browser.evaluate("(() => { const c = document.querySelector('#controls [name=%s]');"
+                     "c.value = '%s'; c.dispatchEvent(new Event('change')); })()" % (name, value))
 
 
 def comparison_rows(browser):
@@ -143,11 +150,43 @@ def main():
                          "m.value = 'slider'; m.dispatchEvent(new Event('change')); })()")
         browser.wait_until("!document.getElementById('slider').hidden")
 
-        # An edit of the scene file renders again without a click.
+        # One server renders one image: another page (here a plain request) asks for the depth
+        # view, and this page's buttons and caption follow the render it now draws.
+        view.json("/api/render?view=depth")
+        browser.wait_until("document.querySelector('#views [aria-pressed=\"true\"]').dataset.view"
+                           " === 'depth' && document.getElementById('render-caption')"
+                           ".textContent === 'depth'")
+        generation = wait_for_render(browser, generation)
+
+        # A control value the server refuses stays said, its field marked, while the image is
+        # the last render's; a value it takes renders again.
+        set_control(browser, "spp", "abc")
+        browser.wait_until("document.querySelector('#controls [name=spp]')"
+                           ".classList.contains('refused')")
+        time.sleep(1.5)  # three of the tiles' polls, which used to write over it
+        status = browser.evaluate("document.getElementById('status').textContent")
+        assert status.startswith("not rendered: control spp"), status
+        set_control(browser, "spp", "1")
+        generation = wait_for_render(browser, generation)
+        assert not browser.evaluate("document.querySelector('#controls [name=spp]')"
+                                    ".classList.contains('refused')")
+
+        # An edit of the scene file renders again without a click; a broken one shows file:line
+        # and leaves no trace of the scene before it; mended, it renders again.
         text = open(scene).read()
+        with open(scene, "w") as file:
+            file.write(text + "\nsphere 1 2\n")
+        browser.wait_until("!document.getElementById('scene-error').hidden")
+        error = browser.evaluate("document.getElementById('scene-error').textContent")
+        assert re.search(r"\.test:\d+: ", error), error
+        browser.wait_until("document.getElementById('status').textContent.startsWith("
+                           "'the scene does not load')")
+        assert browser.evaluate("document.getElementById('trace-lines').children.length") == 0
+        assert browser.evaluate("document.getElementById('comparison-box').hidden")
         with open(scene, "w") as file:
             file.write(text.replace("\npoint ", "\npoint 0 1.5 0 0.1 0.1 0.1\n# point ", 1))
         generation = wait_for_render(browser, generation)
+        browser.wait_until("document.getElementById('scene-error').hidden")
 
         # The lecturer's side: a demo at one value of its own parameter, a demo's scene explored
         # live with its parameter as a control, and full screen.

@@ -37,8 +37,9 @@ def main():
                 break
             time.sleep(0.1)
         trace = view.json("/api/trace?x=0&y=0&view=" + view_name)
-        comparison = trace.get("comparison")
-        assert comparison, trace.get("comparison_unavailable")
+        compared = view.json("/api/compare?x=0&y=0&view=" + view_name)
+        comparison = compared.get("comparison")
+        assert comparison, compared.get("comparison_unavailable")
         if STAGES == "stubs":
             assert header["state"] == "failed" and STUB.search(header["error"]), header
             assert trace["stopped"] and STUB.search(trace["lines"][-1]), trace["lines"]

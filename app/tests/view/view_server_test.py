@@ -75,13 +75,45 @@ def check_a_bad_control_value_is_a_message_not_a_render():
             assert status == 400 and words in body, (query, status, body)
 
 
+def check_a_scene_s_own_sample_count_and_epsilon_0_are_controls_it_takes():
+    # The page sends the scene's own values back: any spp a scene may ask for (up to 2^16) is
+    # one the control takes; and epsilon 0 is the shadow-acne lecture's first case.
+    scene = os.path.join(WORK, "many-samples.test")
+    with open(scene, "w") as file:
+        file.write("size 2 2\ncamera 0 0 4 0 0 0 0 1 0 45\nspp 8192\npixelsampling random\n"
+                   "point 0 0 4 1 1 1\nsphere 0 0 0 1\n")
+    with Served([scene]) as view:
+        controls = {c["name"]: c["value"] for c in view.json("/api/state")["scene"]["controls"]}
+        assert controls["spp"] == "8192", controls
+        generation = view.json("/api/render?view=full&spp=8192&pixelsampling=random")
+        view.wait_for_render(generation["generation"])
+        generation = view.json("/api/render?view=shaded&offset=along-ray&epsilon=0")
+        view.wait_for_render(generation["generation"])
+        status, _, body = view.request("/api/render?view=full&spp=65537&pixelsampling=random")
+        assert status == 400 and b"1 to 65536" in body, (status, body)
+
+
+def check_every_page_sees_the_view_and_controls_of_the_one_render():
+    # One server renders one image: a second page that asks for another view and controls
+    # changes what the first page shows, and the tiles say which, so the first page's buttons
+    # follow.
+    with Served([SCENE]) as view:
+        view.json("/api/render?view=full")
+        generation = view.json("/api/render?view=normal&offset=along-ray&epsilon=0.5")
+        header, _ = view.frame("/api/tiles?generation=0&since=0")
+        assert header["generation"] == generation["generation"], header
+        assert header["view"] == "normal", header
+        assert header["controls"] == {"offset": "along-ray", "epsilon": "0.5"}, header
+
+
 def check_requests_at_once_from_many_pages_neither_crash_nor_stall_it():
     # Renders started over renders, scene switches and traces, from eight clients at once.
     import threading
     with Served([SCENE]) as view:
         paths = ["/api/render?view=full", "/api/render?view=depth&spp=4",
                  "/api/open?scene=stage6/point-light.test", "/api/open?scene=stage6/cornell-box.test",
-                 "/api/trace?x=3&y=3&view=shaded", "/api/tiles?generation=1&since=0"]
+                 "/api/trace?x=3&y=3&view=shaded", "/api/compare?x=3&y=3&view=shaded",
+                 "/api/tiles?generation=1&since=0"]
         failures = []
 
         def client(first):
@@ -187,6 +219,32 @@ def check_a_rebuilt_program_starts_again_on_the_same_port():
         assert view.json("/api/state")["scene"]["file"] == SCENE
 
 
+def check_a_failed_link_keeps_the_server_and_the_next_link_restarts_it():
+    # A link that fails deletes the program; one under way writes it before making it
+    # executable. Neither is a rebuild: the page keeps the build it has, and says why.
+    folder = os.path.join(WORK, "failing-program")
+    os.makedirs(folder, exist_ok=True)
+    program = os.path.join(folder, "raystep")
+    shutil.copy2(RAYSTEP, program)
+    library = os.path.join(os.path.dirname(RAYSTEP), "raystep_image_library.so")
+    if os.path.exists(library):
+        shutil.copy2(library, folder)
+    with Served([SCENE], program=program) as view:
+        first = view.json("/api/state")["server"]
+        os.remove(program)
+        note = wait_for(lambda: view.json("/api/state")["program_note"])
+        assert "not there or cannot run" in note, note
+        shutil.copyfile(RAYSTEP, program)  # written, not yet executable
+        time.sleep(1.5)
+        state = view.json("/api/state")
+        assert state["server"] == first and state["program_note"], state["program_note"]
+        assert view.process.poll() is None, "the server stopped"
+        os.chmod(program, 0o755)
+        second = wait_for(lambda: answer_or_none(view, first))
+        assert second != first
+        assert view.json("/api/state")["program_note"] == ""
+
+
 def check_the_instructor_build_writes_references_with_raystep_reference():
     # This build has raystep-reference beside raystep: the page gets references no release
     # shipped, written into the build tree, and the click's comparison against them.
@@ -197,13 +255,13 @@ def check_the_instructor_build_writes_references_with_raystep_reference():
         status, content_type, body = view.request("/api/reference?view=normal")
         assert status == 200 and content_type == "image/png", (status, body[:200])
         assert body.startswith(b"\x89PNG"), body[:8]
-        trace = view.json("/api/trace?x=240&y=400&view=full")
-        comparison = trace.get("comparison")
-        assert comparison, trace.get("comparison_unavailable")
+        compared = view.json("/api/compare?x=240&y=400&view=full")
+        comparison = compared.get("comparison")
+        assert comparison, compared.get("comparison_unavailable")
         assert comparison["first_difference"] is None and comparison["rows"], comparison
         # A control that changes the scene leaves the comparison out, and says why.
-        trace = view.json("/api/trace?x=240&y=400&view=full&offset=along-ray&epsilon=0.001")
-        assert "comparison" not in trace and "controls" in trace["comparison_unavailable"]
+        compared = view.json("/api/compare?x=240&y=400&view=full&offset=along-ray&epsilon=0.001")
+        assert "comparison" not in compared and "controls" in compared["comparison_unavailable"]
 
 
 def check_a_trace_stands_when_the_reference_cannot_write_one():
@@ -235,7 +293,11 @@ def check_a_trace_stands_when_the_reference_cannot_write_one():
     with Served([scene]) as view:
         trace = view.json("/api/trace?x=4&y=4&view=depth")
         assert trace["lines"][0].startswith("pixel (4, 4)"), trace["lines"][:2]
-        assert "2^24" in trace["comparison_unavailable"], trace["comparison_unavailable"]
+        reason = view.json("/api/compare?x=4&y=4&view=depth")["comparison_unavailable"]
+        # The reference program's own message, without its output or its name twice.
+        assert "2^24" in reason and "wrote" not in reason, reason
+        assert reason.startswith("raystep-reference could not write the reference: primitive"), \
+            reason
 
 
 def check_a_taken_port_is_a_message_and_exit_code_3():
@@ -259,20 +321,23 @@ def check_ctrl_c_stops_it_cleanly_mid_render():
     assert code == 0 and "stopped" in out, (code, out, err)
 
 
-def check_ctrl_c_while_the_reference_is_written_still_stops_it():
-    # std::system would ignore SIGINT in the server while raystep-reference runs.
+def check_ctrl_c_while_a_slow_reference_is_written_stops_it_at_once():
+    # The reference of a scene at 2^16 samples a pixel takes hours: Ctrl-C stops the server and
+    # its raystep-reference within seconds, and no other reference run starts after it.
     import threading
-    scene = os.path.join(WORK, "fresh-reference.test")
+    scene = os.path.join(WORK, "slow-reference.test")
     with open(SCENE) as source, open(scene, "w") as copy:
-        copy.write(source.read() + "\n# a scene no reference was written for yet: %f\n"
-                   % time.time())
+        copy.write(source.read() + "\nspp 65536\n")
     view = ViewProcess(RAYSTEP, [scene])
-    asking = threading.Thread(target=view.request, args=("/api/trace?x=1&y=1&view=full",))
+    asking = threading.Thread(target=view.request, args=("/api/compare?x=1&y=1&view=full",))
     asking.start()
-    time.sleep(0.3)
-    code, out, err = view.interrupt(timeout=60)
+    wait_for(lambda: reference_runs("slow-reference"))
+    started = time.time()
+    code, out, err = view.interrupt(timeout=20)
     asking.join()
     assert code == 0 and "stopped" in out, (code, out, err)
+    assert time.time() - started < 10, time.time() - started
+    assert not reference_runs("slow-reference"), reference_runs("slow-reference")
 
 
 # ---- helpers ------------------------------------------------------------------------------------
@@ -307,6 +372,21 @@ def wait_for(condition, timeout=30):
             return value
         time.sleep(0.1)
     raise AssertionError("gave up waiting after %d s" % timeout)
+
+
+def reference_runs(name):
+    """The raystep-reference processes running on a scene whose name holds `name`."""
+    runs = []
+    for pid in filter(str.isdigit, os.listdir("/proc")):
+        try:
+            with open("/proc/%s/cmdline" % pid, "rb") as file:
+                words = file.read().split(b"\0")
+        except OSError:
+            continue
+        if words and words[0].endswith(b"raystep-reference") and \
+                any(name.encode() in word for word in words):
+            runs.append(int(pid))
+    return runs
 
 
 def answer_or_none(view, old_id):

@@ -18,6 +18,7 @@ const page = {
   controls: {},            // the controls' values as the form holds them
   referenceRequest: 0,     // counts showReference's calls: only the latest may draw
   traceRequest: 0,         // counts trace requests: only the latest may fill the panel
+  renderError: "",         // why the server refused the last render asked for
 };
 
 const $ = (id) => document.getElementById(id);
@@ -139,9 +140,14 @@ function fillControls(controls) {
   page.controls = controlValues();
 }
 
+// A scene that does not load: its error, file:line, and nothing left of what it showed before
+// (the trace, its comparison, the reference's caption) that would read as still true.
 function showSceneError(error) {
   $("scene-error").hidden = !error;
   $("scene-error").textContent = error || "";
+  if (!error) return;
+  setStatus("the scene does not load: the message above says where");
+  clearTrace("The scene does not load; once it does, the clicked pixel is traced again.");
 }
 
 // ---- the render and its tiles ---------------------------------------------------------------
@@ -154,6 +160,7 @@ async function startRender() {
   if (!page.scene || !page.scene.width) return;
   try {
     const answer = await (await api("render", { view: page.view, ...page.controls })).json();
+    showRenderError("");
     page.generation = answer.generation;
     page.sequence = 0;
     page.renderState = "rendering";
@@ -162,8 +169,20 @@ async function startRender() {
     showReference();
     if (page.selected) tracePixel(page.selected.x, page.selected.y);
   } catch (error) {
-    setStatus("not rendered: " + error.message);
+    showRenderError(error.message);
   }
+}
+
+// A render the server refused (a control's value it does not take) stays said, and its control
+// marked, until a render is started: the image beside it is the last one rendered, not what the
+// controls say.
+function showRenderError(message) {
+  page.renderError = message;
+  const refused = /^control (\w+):/.exec(message);
+  for (const element of $("controls").elements) {
+    element.classList.toggle("refused", Boolean(refused) && element.name === refused[1]);
+  }
+  if (message) setStatus("not rendered: " + message + " (the image is the last render)");
 }
 
 function sizeCanvas(canvas, width, height, zoom = Number($("zoom").value)) {
@@ -183,6 +202,7 @@ async function pollTiles() {
     if (frame.generation !== page.generation) {
       page.generation = frame.generation;
       $("render").getContext("2d").clearRect(0, 0, frame.width, frame.height);
+      followRender(frame);
     }
     if (frame.width) sizeCanvas($("render"), frame.width, frame.height);
     const context = $("render").getContext("2d");
@@ -190,7 +210,11 @@ async function pollTiles() {
     page.sequence = frame.sequence;
     page.renderState = frame.state;
     const total = frame.width * frame.height;
-    if (frame.state === "rendering") {
+    if (page.scene && page.scene.error) {
+      setStatus("the scene does not load: the message above says where");
+    } else if (page.renderError) {
+      // Said by showRenderError, and kept.
+    } else if (frame.state === "rendering") {
       const percent = total ? Math.floor((100 * frame.pixels_done) / total) : 0;
       setStatus(`rendering ${frame.view}: ${percent}% (${frame.seconds.toFixed(1)} s)`);
     } else if (frame.state === "done") {
@@ -207,10 +231,27 @@ async function pollTiles() {
   }
 }
 
+// One server renders one image: a render another page started (a second tab, the lectern's
+// laptop) is the one this page now shows, so its buttons and controls follow it.
+function followRender(frame) {
+  for (const element of $("controls").elements) {
+    if (element.name in frame.controls) element.value = frame.controls[element.name];
+  }
+  page.controls = controlValues();
+  if (frame.view === page.view) return;
+  page.view = frame.view;
+  for (const button of $("views").children) {
+    button.setAttribute("aria-pressed", String(button.dataset.view === page.view));
+  }
+  $("render-caption").textContent = page.view;
+  showReference();
+  if (page.selected) tracePixel(page.selected.x, page.selected.y);
+}
+
 async function onSceneReloaded() {
   await loadState();
   showReference();
-  if (page.selected) tracePixel(page.selected.x, page.selected.y);
+  if (page.selected && !page.scene.error) tracePixel(page.selected.x, page.selected.y);
 }
 
 // ---- the reference ---------------------------------------------------------------------------
@@ -225,6 +266,10 @@ async function showReference() {
   $("slider").hidden = mode !== "slider" || !has;
   clearReference();
   if (mode === "off") return;
+  if (page.scene && page.scene.error) {
+    $("reference-caption").textContent = "";
+    return;
+  }
   if (!has) {
     $("reference-caption").textContent = references.length
       ? `none for ${page.view}; the release ships ${references.join(", ")}`
@@ -283,28 +328,45 @@ function placeMarker() {
   marker.style.width = marker.style.height = zoom + "px";
 }
 
+// A click's trace, then its comparison: the comparison can wait for raystep-reference to write
+// the scene's reference first (in the instructor's build), and this build's trace does not.
 async function tracePixel(x, y) {
   page.selected = { x, y };
   placeMarker();
   const panel = $("trace-panel");
   panel.dataset.state = "tracing";
   $("trace-pixel").textContent = `(${x}, ${y}), view ${page.view}`;
-  // A click's trace arriving after a later click's is dropped.
+  // A click's answers arriving after a later click's are dropped.
   const request = ++page.traceRequest;
+  const params = { x, y, view: page.view, ...page.controls };
   try {
-    const trace = await (await api("trace", { x, y, view: page.view, ...page.controls })).json();
+    const trace = await (await api("trace", params)).json();
     if (request !== page.traceRequest) return;
     showTrace(trace);
+    $("comparison-unavailable").hidden = false;
+    $("comparison-unavailable").textContent =
+      "Comparing with the reference (the first time, raystep-reference writes it: as long as one " +
+      "render)...";
+    const compared = await (await api("compare", params)).json();
+    if (request !== page.traceRequest) return;
+    showComparison(compared);
     panel.dataset.pixel = `${x},${y}`;
     panel.dataset.view = page.view;
     panel.dataset.state = "ready";
   } catch (error) {
     if (request !== page.traceRequest) return;
-    $("trace-lines").replaceChildren();
-    $("trace-hint").hidden = false;
-    $("trace-hint").textContent = "no trace: " + error.message;
+    clearTrace("no trace: " + error.message);
     panel.dataset.state = "failed";
   }
+}
+
+function clearTrace(hint) {
+  $("trace-lines").replaceChildren();
+  $("trace-title").hidden = true;
+  $("comparison-box").hidden = true;
+  $("comparison-unavailable").hidden = true;
+  $("trace-hint").hidden = false;
+  $("trace-hint").textContent = hint;
 }
 
 // What a line of the trace is about, for its colour: the lecture's steps, in the order the
@@ -323,6 +385,7 @@ function stepKind(line) {
 function showTrace(trace) {
   $("trace-hint").hidden = true;
   $("trace-title").hidden = false;
+  $("comparison-box").hidden = true;
   const lines = $("trace-lines");
   lines.replaceChildren();
   trace.lines.forEach((line, k) => {
@@ -331,11 +394,14 @@ function showTrace(trace) {
     item.className = trace.stopped && k === trace.lines.length - 1 ? "stopped" : stepKind(line);
     lines.append(item);
   });
-  const comparison = trace.comparison;
+}
+
+function showComparison(compared) {
+  const comparison = compared.comparison;
   $("comparison-box").hidden = !comparison;
-  $("comparison-unavailable").hidden = !trace.comparison_unavailable;
-  $("comparison-unavailable").textContent = trace.comparison_unavailable
-    ? "No comparison: " + trace.comparison_unavailable : "";
+  $("comparison-unavailable").hidden = !compared.comparison_unavailable;
+  $("comparison-unavailable").textContent = compared.comparison_unavailable
+    ? "No comparison: " + compared.comparison_unavailable : "";
   if (!comparison) return;
   const notes = $("comparison-notes");
   notes.replaceChildren(...comparison.notes.map((note) => {
@@ -416,6 +482,7 @@ async function showDemoFigure(demo, choice = "") {
     $("demo-canvas").getContext("2d").putImageData(tile.image, 0, 0);
     $("demo-caption").textContent = `raystep demo ${demo.name}` +
                                     (choice ? ` (${demo.parameter.label}: ${choice})` : "");
+    $("demo-figure").scrollIntoView({ block: "nearest" });
   } catch (error) {
     $("demo-caption").textContent = `${demo.name} stopped: ${error.message}`;
   }
@@ -451,13 +518,16 @@ async function openScene(name) {
 async function watchServer() {
   try {
     const state = await (await api("state")).json();
+    $("program-note").hidden = !state.program_note;
+    $("program-note").textContent = state.program_note;
     if (page.server !== null && state.server !== page.server) {
       setStatus("the program was rebuilt: rendering again");
       await loadState();
       await startRender();
     }
   } catch (_) {
-    setStatus("raystep view is restarting or stopped; waiting for it");
+    setStatus("raystep view does not answer: it is restarting, or it stopped (its terminal says " +
+              "why); this page waits for it");
   }
   setTimeout(watchServer, 1000);
 }
