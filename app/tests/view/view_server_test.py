@@ -201,15 +201,7 @@ def check_a_broken_edit_shows_file_and_line_and_the_fix_renders():
 
 
 def check_a_rebuilt_program_starts_again_on_the_same_port():
-    # A copy of the program (with the image library it loads from its own folder), so that
-    # "rebuilding" it touches no file of the build.
-    folder = os.path.join(WORK, "program")
-    os.makedirs(folder, exist_ok=True)
-    program = os.path.join(folder, "raystep")
-    shutil.copy2(RAYSTEP, program)
-    library = os.path.join(os.path.dirname(RAYSTEP), "raystep_image_library.so")
-    if os.path.exists(library):
-        shutil.copy2(library, folder)
+    program = program_copy("program")
     with Served([SCENE], program=program) as view:
         first = view.json("/api/state")["server"]
         time.sleep(0.05)
@@ -222,13 +214,7 @@ def check_a_rebuilt_program_starts_again_on_the_same_port():
 def check_a_failed_link_keeps_the_server_and_the_next_link_restarts_it():
     # A link that fails deletes the program; one under way writes it before making it
     # executable. Neither is a rebuild: the page keeps the build it has, and says why.
-    folder = os.path.join(WORK, "failing-program")
-    os.makedirs(folder, exist_ok=True)
-    program = os.path.join(folder, "raystep")
-    shutil.copy2(RAYSTEP, program)
-    library = os.path.join(os.path.dirname(RAYSTEP), "raystep_image_library.so")
-    if os.path.exists(library):
-        shutil.copy2(library, folder)
+    program = program_copy("failing-program")
     with Served([SCENE], program=program) as view:
         first = view.json("/api/state")["server"]
         os.remove(program)
@@ -372,6 +358,19 @@ def wait_for(condition, timeout=30):
             return value
         time.sleep(0.1)
     raise AssertionError("gave up waiting after %d s" % timeout)
+
+
+def program_copy(name):
+    """A copy of the program in WORK/name (with the image library it loads from its own folder),
+    so that "rebuilding" it touches no file of the build."""
+    folder = os.path.join(WORK, name)
+    os.makedirs(folder, exist_ok=True)
+    program = os.path.join(folder, "raystep")
+    shutil.copy2(RAYSTEP, program)
+    library = os.path.join(os.path.dirname(RAYSTEP), "raystep_image_library.so")
+    if os.path.exists(library):
+        shutil.copy2(library, folder)
+    return program
 
 
 def reference_runs(name):

@@ -152,11 +152,16 @@ function showSceneError(error) {
 
 // ---- the render and its tiles ---------------------------------------------------------------
 
-async function startRender() {
+// The view's button pressed, and its name over the render.
+function markView() {
   for (const button of $("views").children) {
     button.setAttribute("aria-pressed", String(button.dataset.view === page.view));
   }
   $("render-caption").textContent = page.view;
+}
+
+async function startRender() {
+  markView();
   if (!page.scene || !page.scene.width) return;
   try {
     const answer = await (await api("render", { view: page.view, ...page.controls })).json();
@@ -210,10 +215,8 @@ async function pollTiles() {
     page.sequence = frame.sequence;
     page.renderState = frame.state;
     const total = frame.width * frame.height;
-    if (page.scene && page.scene.error) {
-      setStatus("the scene does not load: the message above says where");
-    } else if (page.renderError) {
-      // Said by showRenderError, and kept.
+    if ((page.scene && page.scene.error) || page.renderError) {
+      // Said by showSceneError or showRenderError, and kept.
     } else if (frame.state === "rendering") {
       const percent = total ? Math.floor((100 * frame.pixels_done) / total) : 0;
       setStatus(`rendering ${frame.view}: ${percent}% (${frame.seconds.toFixed(1)} s)`);
@@ -240,10 +243,7 @@ function followRender(frame) {
   page.controls = controlValues();
   if (frame.view === page.view) return;
   page.view = frame.view;
-  for (const button of $("views").children) {
-    button.setAttribute("aria-pressed", String(button.dataset.view === page.view));
-  }
-  $("render-caption").textContent = page.view;
+  markView();
   showReference();
   if (page.selected) tracePixel(page.selected.x, page.selected.y);
 }
