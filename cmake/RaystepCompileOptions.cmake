@@ -21,3 +21,11 @@ function(raystep_set_compile_options target)
         endif()
     endif()
 endfunction()
+
+# raystep_compile_file_by_file(TARGET): TARGET's files compile one by one even in a unity build
+# (CMAKE_UNITY_BUILD, which scripts/test-all.sh turns on for its sanitizer build). A stage's files
+# are a student's: helpers of the same name in two of them are theirs to write, and a unity build
+# would join them into one file where the names clash.
+function(raystep_compile_file_by_file target)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD OFF)
+endfunction()

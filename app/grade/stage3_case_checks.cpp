@@ -34,11 +34,11 @@ MethodRun run_over(const Stage3Method& method, const std::vector<CaseFamily>& fa
             return run;
         }
         run.cases += score.cases;
-        run.passed += score.passed + score.count(Verdict::leak);
-        run.leaks += score.count(Verdict::leak);
+        run.passed += score.passed + score.count(raystep::Verdict::leak);
+        run.leaks += score.count(raystep::Verdict::leak);
         for (const raystep::Counterexample& example : score.counterexamples) {
             if (!run.first_failure.empty()) break;
-            if (example.verdict == Verdict::leak) continue;
+            if (example.verdict == raystep::Verdict::leak) continue;
             const std::string index = std::to_string(example.case_index);
             run.first_failure.push_back(
                 {"family " + family.name + ", case " + index + ": " + example.text, "pass",

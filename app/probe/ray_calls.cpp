@@ -8,16 +8,12 @@ namespace raystep::probe {
 
 namespace {
 
-int integer(const Json& j) {
-    return j.get<int>();
-}
-
 // The rays of the pixels listed in "pixels" ([[i, j], ...]).
 template <class Camera, class MakeRay>
 Json pixel_rays(const Camera& camera, const Json& pixels, MakeRay make_ray) {
     Json rays = Json::array();
     for (const Json& pixel : pixels) {
-        rays.push_back(ray(make_ray(camera, integer(pixel.at(0)), integer(pixel.at(1)))));
+        rays.push_back(ray(make_ray(camera, integer_from(pixel.at(0)), integer_from(pixel.at(1)))));
     }
     return rays;
 }
@@ -31,14 +27,14 @@ void add_ray_calls(CallTable& table) {
     table["perspective_rays"] = [](const Json& a) {
         const PerspectiveCamera camera = make_perspective_camera(
             vec3_from(a.at("lookfrom")), vec3_from(a.at("lookat")), vec3_from(a.at("up")),
-            number_from(a.at("fovy")), integer(a.at("width")), integer(a.at("height")));
+            number_from(a.at("fovy")), integer_from(a.at("width")), integer_from(a.at("height")));
         return pixel_rays(camera, a.at("pixels"), perspective_ray);
     };
     table["orthographic_rays"] = [](const Json& a) {
         const OrthographicCamera camera = make_orthographic_camera(
             vec3_from(a.at("lookfrom")), vec3_from(a.at("lookat")), vec3_from(a.at("up")),
             number_from(a.at("left")), number_from(a.at("right")), number_from(a.at("bottom")),
-            number_from(a.at("top")), integer(a.at("width")), integer(a.at("height")));
+            number_from(a.at("top")), integer_from(a.at("width")), integer_from(a.at("height")));
         return pixel_rays(camera, a.at("pixels"), orthographic_ray);
     };
 }

@@ -19,10 +19,6 @@ namespace raystep::probe {
 
 namespace {
 
-int integer(const Json& j) {
-    return j.get<int>();
-}
-
 Json point(const Vec2& p) {
     return Json::array({number(p.x), number(p.y)});
 }
@@ -140,8 +136,8 @@ PerspectiveCamera perspective_camera_from(const Json& j) {
     c.frame = {vec3_from(j.at("u")), vec3_from(j.at("v")), vec3_from(j.at("w"))};
     c.half_width = number_from(j.at("half_width"));
     c.half_height = number_from(j.at("half_height"));
-    c.width = integer(j.at("width"));
-    c.height = integer(j.at("height"));
+    c.width = integer_from(j.at("width"));
+    c.height = integer_from(j.at("height"));
     return c;
 }
 
@@ -153,8 +149,8 @@ OrthographicCamera orthographic_camera_from(const Json& j) {
     c.right = number_from(j.at("right"));
     c.bottom = number_from(j.at("bottom"));
     c.top = number_from(j.at("top"));
-    c.width = integer(j.at("width"));
-    c.height = integer(j.at("height"));
+    c.width = integer_from(j.at("width"));
+    c.height = integer_from(j.at("height"));
     return c;
 }
 
@@ -170,19 +166,19 @@ Json rays_through(const Camera& camera, const Json& films, RayThrough through) {
 
 void add_sampling_calls(CallTable& table) {
     table["regular_samples"] = [](const Json& a) {
-        return points(regular_samples(integer(a.at("strata"))));
+        return points(regular_samples(integer_from(a.at("strata"))));
     };
     table["jittered_samples"] = [](const Json& a) {
-        const int strata = integer(a.at("strata"));
+        const int strata = integer_from(a.at("strata"));
         return per_stream(a, [&](RandomStream& r) { return points(jittered_samples(strata, r)); });
     };
     table["random_samples"] = [](const Json& a) {
-        const int count = integer(a.at("count"));
+        const int count = integer_from(a.at("count"));
         return per_stream(a, [&](RandomStream& r) { return points(random_samples(count, r)); });
     };
     table["samples"] = [](const Json& a) {
         const SamplePattern pattern = pattern_from(a.at("pattern"));
-        const int count = integer(a.at("count"));
+        const int count = integer_from(a.at("count"));
         return per_stream(a, [&](RandomStream& r) { return points(samples(pattern, count, r)); });
     };
     table["perspective_ray_through"] = [](const Json& a) {
@@ -198,10 +194,10 @@ void add_sampling_calls(CallTable& table) {
     // below 1 may round to i + 1.
     table["pixel_colour"] = [](const Json& a) {
         const FilmRadiance radiance = film_radiance_from(a.at("radiance"));
-        const int i = integer(a.at("i"));
-        const int j = integer(a.at("j"));
+        const int i = integer_from(a.at("i"));
+        const int j = integer_from(a.at("j"));
         const SamplePattern pattern = pattern_from(a.at("pattern"));
-        const int count = integer(a.at("count"));
+        const int count = integer_from(a.at("count"));
         return per_stream(a, [&](RandomStream& r) {
             int calls = 0;
             int outside = 0;
@@ -217,7 +213,7 @@ void add_sampling_calls(CallTable& table) {
     table["sample_quad_light"] = [](const Json& a) {
         return light_sample(sample_quad_light(quad_light_from(a.at("light")),
                                               vec3_from(a.at("point")), point_from(a.at("u")),
-                                              integer(a.at("sample_count"))));
+                                              integer_from(a.at("sample_count"))));
     };
     // Per stream the colour and the shadow rays traced.
     table["quad_light_shading"] = [](const Json& a) {
@@ -225,7 +221,7 @@ void add_sampling_calls(CallTable& table) {
         const SurfacePoint p = surface_point_from(a.at("point"));
         const QuadLight light = quad_light_from(a.at("light"));
         const SamplePattern pattern = pattern_from(a.at("pattern"));
-        const int count = integer(a.at("count"));
+        const int count = integer_from(a.at("count"));
         const OccludedFunction blocker = occluder_from(a.at("blocker"));
         const RayOffset offset = ray_offset_from(a.at("offset"));
         return per_stream(a, [&](RandomStream& r) {

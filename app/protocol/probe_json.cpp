@@ -1,12 +1,12 @@
 #include "app/protocol/probe_json.h"
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
 namespace raystep::probe {
-
-namespace {
 
 const Json& field(const Json& j, const char* name) {
     if (!j.is_object() || !j.contains(name)) {
@@ -14,6 +14,8 @@ const Json& field(const Json& j, const char* name) {
     }
     return j.at(name);
 }
+
+namespace {
 
 const Json& element(const Json& j, std::size_t k, std::size_t size) {
     if (!j.is_array() || j.size() != size) {
@@ -41,6 +43,16 @@ double number_from(const Json& j) {
     if (j == "inf") return HUGE_VAL;
     if (j == "-inf") return -HUGE_VAL;
     throw std::invalid_argument("expected a number");
+}
+
+int integer_from(const Json& j) {
+    const bool fits = j.is_number_unsigned()
+                          ? j.get<std::uint64_t>() <= std::numeric_limits<int>::max()
+                          : j.is_number_integer() &&
+                                j.get<std::int64_t>() >= std::numeric_limits<int>::min() &&
+                                j.get<std::int64_t>() <= std::numeric_limits<int>::max();
+    if (!fits) throw std::invalid_argument("expected a whole number that fits an int");
+    return j.get<int>();
 }
 
 Json vec3(const Vec3& v) {

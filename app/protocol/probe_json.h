@@ -26,6 +26,10 @@ using Json = nlohmann::json;
 
 Json number(double x);
 double number_from(const Json& j);
+int integer_from(const Json& j);  ///< a whole number that fits an int, nothing else
+
+/// The field `name` of an object; throws naming it where there is no such field.
+const Json& field(const Json& j, const char* name);
 
 Json vec3(const Vec3& v);
 Vec3 vec3_from(const Json& j);

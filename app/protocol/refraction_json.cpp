@@ -7,12 +7,6 @@ namespace raystep::probe {
 
 namespace {
 
-const Json& field(const Json& j, const char* name) {
-    if (!j.is_object() || !j.contains(name))
-        throw std::invalid_argument(std::string("expected a field \"") + name + "\"");
-    return j.at(name);
-}
-
 // A solid's number as the renderer numbers it: a whole number that fits 32 bits, nothing else.
 std::uint32_t solid_from(const Json& j) {
     if (!j.is_number_unsigned() ||

@@ -128,14 +128,6 @@ Color direction_color(const Vec3& direction) {
     return 0.5 * (direction + Vec3(1.0));
 }
 
-}  // namespace
-
-bool averages_samples(View view) {
-    return view == View::shaded || view == View::full;
-}
-
-namespace {
-
 // Everything after the camera ray, for one ray: its closest hit and what the view makes of it.
 // Quad lights draw from `light_random`.
 Color camera_ray_colour(const RenderScene& render_scene, View view, const Ray& ray,

@@ -9,14 +9,6 @@
 
 namespace raystep {
 
-/// True for the views that average a pixel's samples when the scene has more than one
-/// (`spp`): shaded and full, the views of the finished colour. The others show one ray through
-/// the pixel's centre whatever the scene's spp: a mean of depths, normals or barycentrics blends
-/// values that belong to different surfaces (a depth halfway between a sphere and the wall
-/// behind it is a depth of nothing), and those views are there to check stages 2 to 4 one ray
-/// at a time.
-bool averages_samples(View view);
-
 /// Pixel (i, j) of the view. Where the view averages samples and the scene has spp > 1, the
 /// colour is stage 8's pixel_colour over the scene's samples per pixel, placed by its
 /// `pixelsampling`, each sample a camera ray through its film point; else one camera ray through

@@ -40,4 +40,8 @@ std::vector<std::string> view_names() {
     return names;
 }
 
+bool averages_samples(View view) {
+    return view == View::shaded || view == View::full;
+}
+
 }  // namespace raystep

@@ -11,7 +11,7 @@ namespace raystep {
 /// (and graded) on its own image before the later stages exist. Views up to cost show one ray
 /// through each pixel's centre whatever the scene's `spp` (a mean of depths or normals belongs
 /// to no surface); shaded and full average the pixel's samples by stage 8 when spp > 1
-/// (render_pixel.h, averages_samples).
+/// (averages_samples below).
 enum class View {
     rays,         ///< stage 2: the camera ray's direction as a colour, 0.5 (d + 1)
     depth,        ///< stage 3: distance to the nearest hit, near bright, far dark, misses black
@@ -32,5 +32,13 @@ std::optional<View> parse_view(std::string_view name);
 
 /// Every view's name, in the order above.
 std::vector<std::string> view_names();
+
+/// True for the views that average a pixel's samples when the scene has more than one
+/// (`spp`): shaded and full, the views of the finished colour. The others show one ray through
+/// the pixel's centre whatever the scene's spp: a mean of depths, normals or barycentrics blends
+/// values that belong to different surfaces (a depth halfway between a sphere and the wall
+/// behind it is a depth of nothing), and those views are there to check stages 2 to 4 one ray
+/// at a time.
+bool averages_samples(View view);
 
 }  // namespace raystep

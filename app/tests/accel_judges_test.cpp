@@ -14,7 +14,6 @@ namespace raystep {
 namespace {
 
 using grade::ProbeAnswer;
-using grade::Verdict;
 using probe::Json;
 
 Json interval(double enter, double exit) {
@@ -39,12 +38,12 @@ TEST_CASE("slab_interval: a ray that must hit passes only an interval within tol
     CHECK_FALSE(judge(testing::result_answer(interval(4, 6 + 1e-9))).passed);
     CHECK_FALSE(judge(testing::result_answer(interval(4 - 1e-9, 6))).passed);
     CHECK_FALSE(judge(testing::result_answer(interval(std::nan(""), 6))).passed);
-    const Verdict miss = judge(testing::result_answer(nullptr));
+    const grade::Verdict miss = judge(testing::result_answer(nullptr));
     CHECK_FALSE(miss.passed);
     CHECK(miss.got == "a miss");
     CHECK(miss.expected ==
           "t in [4, 6] (within 9.9999999999999998e-13 and 9.9999999999999998e-13)");
-    const Verdict reversed = judge(testing::result_answer(interval(6, 4)));
+    const grade::Verdict reversed = judge(testing::result_answer(interval(6, 4)));
     CHECK_FALSE(reversed.passed);
     CHECK(reversed.got == "t in [6, 4], which is empty");
     ProbeAnswer threw;
@@ -57,7 +56,7 @@ TEST_CASE("slab_interval: a ray that must miss passes only a miss; within roundi
     miss.must_miss = true;
     const grade::Judge must_miss = judge_from(grade::slab_interval_judge(miss));
     CHECK(must_miss(testing::result_answer(nullptr)).passed);
-    const Verdict hit = must_miss(testing::result_answer(interval(1, 2)));
+    const grade::Verdict hit = must_miss(testing::result_answer(interval(1, 2)));
     CHECK_FALSE(hit.passed);
     CHECK(hit.expected == "a miss");
 
@@ -101,7 +100,7 @@ TEST_CASE("slab_interval: an infinite end must come out infinite, a finite end i
 TEST_CASE("grid_cells: exactly the expected three integers") {
     const grade::Judge judge = judge_from(grade::grid_cells_judge({2, 3, 4}));
     CHECK(judge(testing::result_answer(Json::array({2, 3, 4}))).passed);
-    const Verdict off = judge(testing::result_answer(Json::array({2, 3, 5})));
+    const grade::Verdict off = judge(testing::result_answer(Json::array({2, 3, 5})));
     CHECK_FALSE(off.passed);
     CHECK(off.expected == "2 x 3 x 4");
     CHECK(off.got == "2 x 3 x 5");
@@ -119,13 +118,13 @@ TEST_CASE("structure_hit: the same primitive at the same t, bit for bit, in a li
     CHECK(judge(one(expected)).passed);
     PrimitiveHit later = expected;
     later.hit.t = std::nextafter(2.5, 3.0);
-    const Verdict late = judge(one(later));
+    const grade::Verdict late = judge(one(later));
     CHECK_FALSE(late.passed);
     CHECK(late.expected == "triangle 3 at t = 2.5");
     CHECK(late.got == "triangle 3 at t = 2.5000000000000004");
     CHECK_FALSE(judge(one(PrimitiveHit{hit, PrimitiveKind::triangle, 4})).passed);
     CHECK_FALSE(judge(one(PrimitiveHit{hit, PrimitiveKind::sphere, 3})).passed);
-    const Verdict miss = judge(one(std::nullopt));
+    const grade::Verdict miss = judge(one(std::nullopt));
     CHECK_FALSE(miss.passed);
     CHECK(miss.got == "a miss");
     // The hit itself, or two answers, is not the answer to a list of one ray
@@ -150,7 +149,7 @@ TEST_CASE("structure_hit: with a tolerance, t within it on the same primitive; a
     };
     CHECK(judge(at(0.99999999999999978, 1)).passed);
     CHECK(judge(at(1.0 + 5e-10, 1)).passed);
-    const Verdict far = judge(at(1.0 + 2e-9, 1));
+    const grade::Verdict far = judge(at(1.0 + 2e-9, 1));
     CHECK_FALSE(far.passed);
     CHECK(far.expected == "sphere 1 at t = 1 (within 1.0000000000000001e-09)");
     CHECK_FALSE(judge(at(1.0, 0)).passed);
@@ -160,7 +159,7 @@ TEST_CASE("structure_hit: with a tolerance, t within it on the same primitive; a
 TEST_CASE("structure_occluded: the expected boolean in a list of one") {
     const grade::Judge judge = judge_from(grade::structure_occluded_judge(true));
     CHECK(judge(testing::result_answer(Json::array({true}))).passed);
-    const Verdict wrong = judge(testing::result_answer(Json::array({false})));
+    const grade::Verdict wrong = judge(testing::result_answer(Json::array({false})));
     CHECK_FALSE(wrong.passed);
     CHECK(wrong.expected == "occluded");
     CHECK(wrong.got == "not occluded");

@@ -9,6 +9,7 @@
 
 #include "app/check/case_file.h"
 #include "base/testing/catch.h"
+#include "base/testing/special_values.h"
 #include "base/testing/vec3_matchers.h"
 
 using namespace raystep;
@@ -34,7 +35,7 @@ const Sphere kSphere{{0.0, 0.0, 0.0}, 1.0};
 const Triangle kTriangle{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}};
 const Plane kPlane{{0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}};
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+using raystep::testing::kNaN;
 const Vec3 kUp{0.0, 0.0, 1.0};
 
 // Tolerances that are exact in binary, so that a test can sit right on them.

@@ -10,6 +10,7 @@
 #include "app/grade/data_judge.h"
 #include "app/grade/recursion_judges.h"
 #include "app/tests/probe_answers.h"
+#include "base/testing/special_values.h"
 
 namespace raystep {
 namespace {
@@ -17,8 +18,8 @@ namespace {
 using grade::build_judge;
 using grade::ExpectedRay;
 
-const double kInf = std::numeric_limits<double>::infinity();
-const double kNaN = std::numeric_limits<double>::quiet_NaN();
+using raystep::testing::kInf;
+using raystep::testing::kNaN;
 const double kMax = std::numeric_limits<double>::max();
 
 grade::ProbeAnswer ray(const Ray& r) {

@@ -19,7 +19,7 @@ namespace {
 
 // A sphere on a floor under a quad light, four samples per pixel: a penumbra, a lit floor and a
 // background, each noisy in its own way.
-const std::string kSoftShadow =
+const std::string kSoftShadowScene =
     "size 64 48\ncamera 0 2 6 0 0.5 0 0 1 0 40\nspp 4\nlightsamples 4\nlightstratify on\n"
     "quadLight -0.5 3 -0.5 0 0 1 1 0 0 20 20 20\nambient 0.05 0.05 0.05\n"
     "diffuse 0.6 0.6 0.6\nvertex -4 0 -4\nvertex 4 0 -4\nvertex 4 0 4\nvertex -4 0 4\n"
@@ -47,7 +47,7 @@ PixelRecord record_of(const Scene& scene, int i, int j) {
 
 TEST_CASE("compare_render_with_spread: the reference at other seeds passes, a brighter light fails",
           "[app]") {
-    const Scene scene = parse_scene(kSoftShadow, "soft.test", ".");
+    const Scene scene = parse_scene(kSoftShadowScene, "soft.test", ".");
     REQUIRE(is_sampled_view(scene, View::full));
     std::vector<Image> reference;
     for (int k = 0; k < kSampledReferenceRenders; ++k)
@@ -77,7 +77,7 @@ TEST_CASE("compare_render_with_spread: the reference at other seeds passes, a br
 
 TEST_CASE("render_pixel: a sampled pixel's record is its centre ray's, whatever the seed",
           "[app]") {
-    Scene scene = parse_scene(kSoftShadow, "soft.test", ".");
+    Scene scene = parse_scene(kSoftShadowScene, "soft.test", ".");
     scene.quad_lights.clear();
     scene.point_lights.push_back(PointLight{});
     scene.point_lights.back().position = Vec3(0.0, 3.0, 0.0);

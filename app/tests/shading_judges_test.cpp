@@ -9,6 +9,7 @@
 #include "app/grade/data_judge.h"
 #include "app/grade/shading_judges.h"
 #include "app/tests/probe_answers.h"
+#include "base/testing/special_values.h"
 
 namespace raystep {
 namespace {
@@ -17,8 +18,8 @@ using grade::build_judge;
 using grade::ErrorBoundOrigin;
 using grade::LeavingDirection;
 
-const double kInf = std::numeric_limits<double>::infinity();
-const double kNaN = std::numeric_limits<double>::quiet_NaN();
+using raystep::testing::kInf;
+using raystep::testing::kNaN;
 
 grade::ProbeAnswer sample(const Vec3& direction, double distance, const Vec3& intensity) {
     return testing::result_answer(probe::light_sample({direction, distance, intensity}));

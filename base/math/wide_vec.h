@@ -17,6 +17,9 @@ using WideMat = glm::mat<4, 4, Wide>;
 /// The unit roundoff of a double (2^-53) as a long double, for tolerances summed in long double.
 inline constexpr Wide kWideUnitRoundoff = 0x1p-53L;
 
+/// pi to the digits a long double keeps.
+inline constexpr Wide kWidePi = 3.141592653589793238462643383279502884L;
+
 /// A double vector, exactly.
 inline WideVec widen(const Vec3& v) {
     return {v.x, v.y, v.z};

@@ -14,7 +14,7 @@ namespace fs = std::filesystem;
 namespace {
 
 const std::string kTriangle = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
-const std::string kCamera = "camera 0 0 4 0 0 0 0 1 0 45\n";
+const std::string kCameraLine = "camera 0 0 4 0 0 0 0 1 0 45\n";
 
 void write(const fs::path& path, const std::string& text) {
     std::ofstream(path, std::ios::binary) << text;
@@ -27,7 +27,7 @@ TEST_CASE("scene_files: the scene file, then each mesh it draws or defines", "[b
     write(folder.path() / "a.off", kTriangle);
     write(folder.path() / "b.off", kTriangle);
     write(folder.path() / "two.test",
-          "size 4 4\n" + kCamera + "mesh a.off\ndefine b b.off\ninstance b\n");
+          "size 4 4\n" + kCameraLine + "mesh a.off\ndefine b b.off\ninstance b\n");
     const Scene scene = load_scene(folder.path() / "two.test");
     const std::vector<fs::path> files = scene_files(scene);
     REQUIRE(files.size() == 3);
@@ -38,7 +38,7 @@ TEST_CASE("scene_files: the scene file, then each mesh it draws or defines", "[b
 
 TEST_CASE("scene_digest: 64-bit FNV-1a of the files' bytes, then a boundary byte", "[base]") {
     const testing::ScratchFolder folder("scene-digest");
-    write(folder.path() / "one.test", "size 1 1\n" + kCamera);
+    write(folder.path() / "one.test", "size 1 1\n" + kCameraLine);
     // Computed apart from this code, in Python, over the file's bytes and the boundary byte 0xff.
     CHECK(scene_digest(load_scene(folder.path() / "one.test")) == "d51efb0c0f160222");
 }
@@ -67,7 +67,7 @@ TEST_CASE("scene_digest: CRLF line ends change nothing, any other byte does, mes
 TEST_CASE("scene_digest: empty when a file of the scene cannot be read", "[base]") {
     const testing::ScratchFolder folder("scene-digest");
     write(folder.path() / "a.off", kTriangle);
-    write(folder.path() / "mesh.test", "size 4 4\n" + kCamera + "mesh a.off\n");
+    write(folder.path() / "mesh.test", "size 4 4\n" + kCameraLine + "mesh a.off\n");
     const Scene scene = load_scene(folder.path() / "mesh.test");
     fs::remove(folder.path() / "a.off");
     CHECK(scene_digest(scene).empty());

@@ -11,8 +11,6 @@ namespace raystep {
 
 namespace {
 
-constexpr Wide kPi = 3.141592653589793238462643383279502884L;
-
 // The point of the image plane (at distance 1 from the eye) through pixel (i, j)'s centre, in
 // world directions; the half width scaled by `width_factor`.
 WideVec image_plane_point(const WideFrame& f, const CameraCase& c, Wide half_angle,
@@ -37,7 +35,7 @@ WideFrame wide_frame(const CameraCase& c) {
 
 ExpectedCameraRay expected_perspective(const CameraCase& c, int i, int j) {
     const WideFrame f = wide_frame(c);
-    const Wide half_angle = c.fovy * kPi / 360;
+    const Wide half_angle = c.fovy * kWidePi / 360;
     const WideVec through = image_plane_point(f, c, half_angle, 1, i, j);
     const WideVec direction = through / glm::length(through);
 

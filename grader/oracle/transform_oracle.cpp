@@ -12,8 +12,6 @@ namespace raystep {
 
 namespace {
 
-constexpr Wide kPi = 3.141592653589793238462643383279502884L;
-
 WideMat absolute(const WideMat& m) {
     WideMat a;
     for (int c = 0; c < 4; ++c) {
@@ -49,7 +47,7 @@ WideMat wide_scaling(const WideVec& factors) {
 
 WideMat wide_rotation(const Vec3& axis, Wide degrees) {
     const WideVec a = widen(axis) / glm::length(widen(axis));
-    const Wide theta = degrees * kPi / 180;
+    const Wide theta = degrees * kWidePi / 180;
     const Wide c = std::cos(theta);
     const Wide s = std::sin(theta);
     WideMat m(1.0L);
@@ -78,7 +76,7 @@ WideOp wide_op(const TransformOp& op) {
             const WideMat m = wide_rotation(op.vector, op.angle_degrees);
             const WideMat i = wide_rotation(op.vector, -Wide(op.angle_degrees));
             WideMat spread(0.0L);
-            const Wide angle = 1 + std::abs(op.angle_degrees * kPi / 180);
+            const Wide angle = 1 + std::abs(op.angle_degrees * kWidePi / 180);
             for (int c = 0; c < 3; ++c) {
                 for (int r = 0; r < 3; ++r)
                     spread[c][r] = angle;

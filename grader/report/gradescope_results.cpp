@@ -14,14 +14,15 @@ namespace {
 
 // Text of one test's output: Gradescope puts it in a collapsed <pre>; past a few pages nobody
 // reads it, and the HTML report has everything.
-constexpr std::size_t kMaxTestOutputBytes = 16000;
+constexpr std::size_t kGradescopeTestOutputBytes = 16000;
 
 nlohmann::json test_of(const CheckResult& check, int place_in_stage) {
     std::string output = outcome_name(check.outcome);
     if (!check.summary.empty()) output += ": " + clipped_text(check.summary, kMaxFieldBytes);
     // Gradescope shows a test's output to the student: the student's commands, never the
     // instructor's.
-    const std::string findings = check_findings(check, Audience::student, kMaxTestOutputBytes);
+    const std::string findings =
+        check_findings(check, Audience::student, kGradescopeTestOutputBytes);
     if (!findings.empty()) output += "\n\n" + findings;
 
     nlohmann::json metrics = nlohmann::json::object();

@@ -14,7 +14,7 @@ using raystep::testing::kHostile;
 namespace {
 
 // What Gradescope reads: the JSON as written to results.json and parsed back.
-nlohmann::json written(const GradeReport& report) {
+nlohmann::json gradescope_written(const GradeReport& report) {
     return nlohmann::json::parse(gradescope_results(report).dump(2));
 }
 
@@ -23,7 +23,7 @@ nlohmann::json written(const GradeReport& report) {
 // https://gradescope-autograders.readthedocs.io/en/latest/specs/, "Output format".
 TEST_CASE("gradescope_results: the top level has the specification's fields and types",
           "[report]") {
-    const nlohmann::json results = written(example_report());
+    const nlohmann::json results = gradescope_written(example_report());
     REQUIRE(results.is_object());
     CHECK(results.at("score").is_number());
     CHECK(results.at("score") == 16.5);
@@ -49,7 +49,7 @@ TEST_CASE("gradescope_results: the top level has the specification's fields and 
 TEST_CASE("gradescope_results: one test per check, in order, with the specification's fields",
           "[report]") {
     const GradeReport report = example_report();
-    const nlohmann::json tests = written(report).at("tests");
+    const nlohmann::json tests = gradescope_written(report).at("tests");
     REQUIRE(tests.size() == report.checks.size());
     const std::set<std::string> visibilities = {"visible", "hidden", "after_due_date",
                                                 "after_published"};
@@ -74,11 +74,11 @@ TEST_CASE("gradescope_results: one test per check, in order, with the specificat
         CHECK(test.at("extra_data").at("id") == check.id);
         total += test.at("score").get<double>();
     }
-    CHECK(total == written(report).at("score").get<double>());
+    CHECK(total == gradescope_written(report).at("score").get<double>());
 }
 
 TEST_CASE("gradescope_results: numbers, names and outputs of individual checks", "[report]") {
-    const nlohmann::json tests = written(example_report()).at("tests");
+    const nlohmann::json tests = gradescope_written(example_report()).at("tests");
     CHECK(tests[0].at("number") == "1.1");
     CHECK(tests[1].at("number") == "1.2");
     CHECK(tests[3].at("number") == "3.1");
@@ -103,7 +103,7 @@ TEST_CASE("gradescope_results: numbers, names and outputs of individual checks",
 
 TEST_CASE("gradescope_results: the output every student sees leaves the withheld checks out",
           "[report]") {
-    const std::string output = written(example_report()).at("output");
+    const std::string output = gradescope_written(example_report()).at("output");
     CHECK_THAT(output, !Catch::Matchers::Contains(kHiddenSecret));
     CHECK_THAT(output, Catch::Matchers::Contains("  total     12.5 / 32   3 of 9\n"));
     CHECK_THAT(output, Catch::Matchers::Contains("3 checks are graded but not shown yet"));

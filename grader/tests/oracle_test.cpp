@@ -3,11 +3,11 @@
 // 200 digits; the values are literals here).
 
 #include <cmath>
-#include <limits>
 
 #include <gmpxx.h>
 
 #include "base/testing/catch.h"
+#include "base/testing/special_values.h"
 #include "base/testing/vec3_matchers.h"
 #include "grader/oracle/exact_intersection.h"
 #include "grader/oracle/nearest_double.h"
@@ -17,7 +17,7 @@ using raystep::testing::IsNear;
 
 namespace {
 
-const double kInf = std::numeric_limits<double>::infinity();
+using raystep::testing::kInf;
 
 // The right triangle (0,0,0) (1,0,0) (0,1,0) in the z = 0 plane.
 const Triangle kUnitTriangle{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};

@@ -16,7 +16,7 @@ using raystep::testing::kHostile;
 
 namespace {
 
-nlohmann::json written(const GradeReport& report) {
+nlohmann::json prairielearn_written(const GradeReport& report) {
     return nlohmann::json::parse(prairielearn_results(report, {}).dump());
 }
 
@@ -24,7 +24,7 @@ nlohmann::json written(const GradeReport& report) {
 
 // https://prairielearn.readthedocs.io/en/latest/externalGrading/, "Grading results".
 TEST_CASE("prairielearn_results: the fields and types PrairieLearn reads", "[report]") {
-    const nlohmann::json results = written(example_report());
+    const nlohmann::json results = prairielearn_written(example_report());
     CHECK(results.at("gradable") == true);
     CHECK(results.at("score").is_number());
     CHECK(results.at("score").get<double>() == Approx(16.5 / 40.0));
@@ -45,7 +45,7 @@ TEST_CASE("prairielearn_results: the fields and types PrairieLearn reads", "[rep
 
 TEST_CASE("prairielearn_results: withheld checks become one test per stage, points kept",
           "[report]") {
-    const nlohmann::json results = written(example_report());
+    const nlohmann::json results = prairielearn_written(example_report());
     const nlohmann::json& tests = results.at("tests");
     REQUIRE(tests.size() == 9 + 3);  // the visible checks, then stages 3, 6 and 7's withheld ones
     CHECK(tests[9].at("name") == "stage 3: hidden checks");
@@ -67,7 +67,7 @@ TEST_CASE("prairielearn_results: withheld checks become one test per stage, poin
 }
 
 TEST_CASE("prairielearn_results: a visible check's test", "[report]") {
-    const nlohmann::json test = written(example_report()).at("tests")[3];
+    const nlohmann::json test = prairielearn_written(example_report()).at("tests")[3];
     CHECK(test.at("name") == "stage3.oracle.shared-edges");
     CHECK(test.at("description") == "rays through shared edges of closed meshes");
     CHECK(test.at("points") == 1.5);
@@ -95,18 +95,18 @@ TEST_CASE("prairielearn_results: nothing compiled is not gradable, with the comp
         report.checks.push_back(check);
         report.checks.push_back(check);  // a stage's checks share its compiler output
     }
-    const nlohmann::json results = written(report);
+    const nlohmann::json results = prairielearn_written(report);
     CHECK(results.at("gradable") == false);
     CHECK(results.at("format_errors") == nlohmann::json({"error in stage 1", "error in stage 2"}));
 
     // One stage that compiles makes the submission gradable: the rest score zero.
     report.checks[0].outcome = Outcome::failed;
-    CHECK(written(report).at("gradable") == true);
+    CHECK(prairielearn_written(report).at("gradable") == true);
 }
 
 TEST_CASE("prairielearn_results: an empty report scores 0, and a huge one stays under 1 MB",
           "[report]") {
-    CHECK(written(GradeReport{}).at("score") == 0.0);
+    CHECK(prairielearn_written(GradeReport{}).at("score") == 0.0);
 
     GradeReport huge;
     for (int k = 0; k < 300; ++k) {

@@ -3,7 +3,6 @@
 // the media exactly; and radiance's rays in any order, each once.
 
 #include <cmath>
-#include <limits>
 
 #include <catch2/catch.hpp>
 
@@ -11,12 +10,13 @@
 #include "app/grade/refraction_judges.h"
 #include "app/protocol/refraction_json.h"
 #include "app/tests/probe_answers.h"
+#include "base/testing/special_values.h"
 
 namespace raystep::grade {
 namespace {
 
-const double kInf = std::numeric_limits<double>::infinity();
-const double kNaN = std::numeric_limits<double>::quiet_NaN();
+using raystep::testing::kInf;
+using raystep::testing::kNaN;
 
 const WideVec kDown{0, -1, 0};
 

@@ -6,12 +6,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 
 #include <glm/geometric.hpp>
 
 #include "base/math/portable_random.h"
 #include "base/testing/catch.h"
+#include "base/testing/special_values.h"
+#include "base/testing/wide_near.h"
 #include "grader/oracle/refraction_oracle.h"
 #include "stages/9_refraction/refraction.h"
 
@@ -19,14 +20,8 @@ using namespace raystep;
 
 namespace {
 
-const double kInf = std::numeric_limits<double>::infinity();
-
-bool close(const WideVec& got, const Vec3& expected, Wide tolerance) {
-    for (int k = 0; k < 3; ++k) {
-        if (!(std::abs(got[k] - expected[k]) <= tolerance)) return false;
-    }
-    return true;
-}
+using raystep::testing::kInf;
+using raystep::testing::wide_near;
 
 // The largest component of |got - expected| over the tolerance: at most 1 for a right answer.
 double error_ratio(const Vec3& got, const ExpectedRefraction& e) {
@@ -87,7 +82,7 @@ RandomRefraction random_refraction(PortableRandom& random, int k) {
 // Whether a right formula's answer is one the oracle accepts.
 bool accepted(const std::optional<Vec3>& got, const ExpectedRefraction& e) {
     if (!got) return e.answer != RefractionAnswer::direction;
-    return e.answer != RefractionAnswer::none && close(e.direction, *got, e.tolerance);
+    return e.answer != RefractionAnswer::none && wide_near(e.direction, *got, e.tolerance);
 }
 
 }  // namespace
@@ -97,7 +92,7 @@ TEST_CASE("expected_refraction: 45 degrees into glass bends to asin(sin 45 / 1.5
     const ExpectedRefraction e = expected_refraction(incident, {0, 1, 0}, 1 / 1.5);
     REQUIRE(e.answer == RefractionAnswer::direction);
     const double sin2 = std::sqrt(0.5) / 1.5;
-    CHECK(close(e.direction, {sin2, -std::sqrt(1 - sin2 * sin2), 0}, 1e-15L));
+    CHECK(wide_near(e.direction, {sin2, -std::sqrt(1 - sin2 * sin2), 0}, 1e-15L));
     CHECK(e.tolerance < 1e-13L);
 }
 
@@ -167,7 +162,7 @@ TEST_CASE(
     };
     const ExpectedRefractionRadiance e = expected_radiance_with_refraction(
         make, {{0, 0, 0}, {1, 0, 0}, 0, kInf}, 1, {}, false, {OffsetRule::along_ray, 1e-4});
-    CHECK(close(e.colour, {0.14, 0.1, 1.06}, 1e-15L));
+    CHECK(wide_near(e.colour, {0.14, 0.1, 1.06}, 1e-15L));
     CHECK(e.rays.size() == 3);
     CHECK(e.scene.size() == 3);
     CHECK(e.colour_tolerance.z < 1e-14L);

@@ -9,6 +9,7 @@
 
 #include "base/math/portable_random.h"
 #include "base/testing/catch.h"
+#include "base/testing/special_values.h"
 #include "grader/grade/checks/sample_statistics.h"
 #include "grader/oracle/sampling_oracle.h"
 
@@ -17,7 +18,7 @@ using namespace raystep::grade;
 
 namespace {
 
-const double kNaN = std::numeric_limits<double>::quiet_NaN();
+using raystep::testing::kNaN;
 constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace

@@ -23,12 +23,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void check_contained(const HostileRun& hostile_run, bool isolate) {
-    CHECK(hostile_run.run.isolated == isolate);
-    CHECK(hostile_run.seconds < kBoundSeconds);
-    CHECK(hostile_run.left_behind == 0);
-}
-
 // A TCP socket listening on 127.0.0.1 at a port the kernel picks; closed at the end.
 class LocalListener {
   public:

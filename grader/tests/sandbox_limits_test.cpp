@@ -12,17 +12,6 @@
 using namespace raystep::grade;
 using namespace raystep::grade::testing;
 
-namespace {
-
-// What every run must show, however it ended.
-void check_contained(const HostileRun& hostile_run, bool isolate) {
-    CHECK(hostile_run.run.isolated == isolate);
-    CHECK(hostile_run.seconds < kBoundSeconds);
-    CHECK(hostile_run.left_behind == 0);
-}
-
-}  // namespace
-
 TEST_CASE("run_sandboxed: a program that copies stdin to stdout gives all 10 MB back",
           "[sandbox]") {
     const bool isolate = GENERATE(false, true);

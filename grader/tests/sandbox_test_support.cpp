@@ -142,4 +142,10 @@ std::string start_error(const std::vector<std::string>& argv, const SandboxPolic
     return "";
 }
 
+void check_contained(const HostileRun& hostile_run, bool isolate) {
+    CHECK(hostile_run.run.isolated == isolate);
+    CHECK(hostile_run.seconds < kBoundSeconds);
+    CHECK(hostile_run.left_behind == 0);
+}
+
 }  // namespace raystep::grade::testing

@@ -35,6 +35,10 @@ struct HostileRun {
     int left_behind = 0;   ///< processes of the run still there (a second after it returned)
 };
 
+/// What every run must show, however it ended: isolated as asked, back within kBoundSeconds,
+/// nothing left running.
+void check_contained(const HostileRun& hostile_run, bool isolate);
+
 /// Makes this test process a child subreaper (Linux): every process that a run leaves behind,
 /// and every zombie, then becomes a child of ours, where processes_left_behind sees it.
 void adopt_orphans();

@@ -12,7 +12,7 @@ using raystep::testing::kHostile;
 namespace {
 
 // What a student's script reads: the JSON as written and parsed back.
-nlohmann::json written(const GradeReport& report) {
+nlohmann::json student_written(const GradeReport& report) {
     return nlohmann::json::parse(student_results(report).dump(2));
 }
 
@@ -26,7 +26,7 @@ TEST_CASE("student_results: only the checks a student is shown, and how many are
                                  "SHADOWS-after-due-date", "PUBLISHED-depth-input"}) {
         CHECK_THAT(text, !Catch::Matchers::Contains(withheld));
     }
-    const nlohmann::json results = written(report);
+    const nlohmann::json results = student_written(report);
     CHECK(results.at("checks").size() == 9);
     CHECK(results.at("checks_not_shown") == 3);
     CHECK(results.at("score") == 12.5);
@@ -39,7 +39,7 @@ TEST_CASE("student_results: only the checks a student is shown, and how many are
 }
 
 TEST_CASE("student_results: each stage's sums, in the order a student meets them", "[report]") {
-    const nlohmann::json stages = written(example_report()).at("stages");
+    const nlohmann::json stages = student_written(example_report()).at("stages");
     REQUIRE(stages.size() == 7);  // stage 6 has only a withheld check
     CHECK(stages[0] == nlohmann::json({{"stage", 1},
                                        {"name", "stage 1"},
@@ -54,7 +54,7 @@ TEST_CASE("student_results: each stage's sums, in the order a student meets them
 
 TEST_CASE("student_results: a check with its counterexamples and the student's commands",
           "[report]") {
-    const nlohmann::json checks = written(example_report()).at("checks");
+    const nlohmann::json checks = student_written(example_report()).at("checks");
     const nlohmann::json& edges = checks[3];
     CHECK(edges.at("id") == "stage3.oracle.shared-edges");
     CHECK(edges.at("outcome") == "failed");
@@ -68,7 +68,8 @@ TEST_CASE("student_results: a check with its counterexamples and the student's c
     CHECK(edges.at("counterexamples")[1].at("got") == displayable_text(kHostile));
     CHECK(edges.at("counterexamples")[2].at("reproduce") == "");
     CHECK(checks[0].at("passed") == true);
-    CHECK_THAT(written(example_report()).dump(), !Catch::Matchers::Contains("raystep-grade"));
+    CHECK_THAT(student_written(example_report()).dump(),
+               !Catch::Matchers::Contains("raystep-grade"));
 }
 
 TEST_CASE("student_results: hostile bytes and NaN metrics still make valid JSON", "[report]") {

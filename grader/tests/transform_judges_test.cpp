@@ -12,11 +12,12 @@
 #include "app/grade/transform_judges.h"
 #include "app/protocol/wide_json.h"
 #include "app/tests/probe_answers.h"
+#include "base/testing/special_values.h"
 
 namespace raystep::grade {
 namespace {
 
-const double kInf = std::numeric_limits<double>::infinity();
+using raystep::testing::kInf;
 
 ProbeAnswer transform_answer(const Mat4& matrix, const Mat4& inverse) {
     return testing::result_answer(probe::transform({matrix, inverse}));

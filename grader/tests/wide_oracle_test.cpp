@@ -3,9 +3,10 @@
 // ones the public cases of grader/grade/checks/ state in their comments.
 
 #include <cmath>
-#include <limits>
 
 #include "base/testing/catch.h"
+#include "base/testing/special_values.h"
+#include "base/testing/wide_near.h"
 #include "grader/oracle/camera_oracle.h"
 #include "grader/oracle/recursion_oracle.h"
 #include "grader/oracle/shading_oracle.h"
@@ -15,14 +16,8 @@ using namespace raystep;
 
 namespace {
 
-const double kInf = std::numeric_limits<double>::infinity();
-
-bool close(const WideVec& got, const Vec3& expected, Wide tolerance = 1e-15L) {
-    for (int k = 0; k < 3; ++k) {
-        if (!(std::abs(got[k] - expected[k]) <= tolerance)) return false;
-    }
-    return true;
-}
+using raystep::testing::kInf;
+using raystep::testing::wide_near;
 
 }  // namespace
 
@@ -32,7 +27,7 @@ TEST_CASE("expected_perspective: pixel (1, 2) of 4 x 4 at fovy 90 looks along (-
     c.fovy = 90;
     const ExpectedCameraRay ray = expected_perspective(c, 1, 2);
     const Vec3 through{-0.25, -0.25, -1};
-    CHECK(close(widen(ray.direction), through / std::sqrt(1.125)));
+    CHECK(wide_near(widen(ray.direction), through / std::sqrt(1.125)));
     CHECK(ray.origin == Vec3(0, 0, 0));
     CHECK(ray.direction_tolerance > 0);
     CHECK(ray.direction_tolerance < 1e-14);
@@ -48,15 +43,15 @@ TEST_CASE(
     c.bottom = -1;
     c.top = 1;
     const ExpectedCameraRay ray = expected_orthographic(c, 0, 0);
-    CHECK(close(widen(ray.origin), {-1.5, 0.5, 5}));
-    CHECK(close(widen(ray.direction), {0, 0, -1}));
+    CHECK(wide_near(widen(ray.origin), {-1.5, 0.5, 5}));
+    CHECK(wide_near(widen(ray.direction), {0, 0, -1}));
 }
 
 TEST_CASE("wide_rotation: a quarter turn about +z takes x to y", "[grader]") {
     const WideMat m = wide_rotation({0, 0, 1}, 90);
-    CHECK(close(WideVec(m[0]), {0, 1, 0}));
-    CHECK(close(WideVec(m[1]), {-1, 0, 0}));
-    CHECK(close(WideVec(m[2]), {0, 0, 1}));
+    CHECK(wide_near(WideVec(m[0]), {0, 1, 0}));
+    CHECK(wide_near(WideVec(m[1]), {-1, 0, 0}));
+    CHECK(wide_near(WideVec(m[2]), {0, 0, 1}));
 }
 
 TEST_CASE("wide_compose: T R S moves (1, 0, 0) to (1, 4, 3) and back", "[grader]") {
@@ -65,9 +60,9 @@ TEST_CASE("wide_compose: T R S moves (1, 0, 0) to (1, 4, 3) and back", "[grader]
                                        {TransformOp::Kind::scale, {2, 1, 1}, 0.0}};
     const Transform t = transform_of(ops);
     const WideProduct moved = wide_product(t.matrix, {1, 0, 0}, 1.0);
-    CHECK(close(moved.value, {1, 4, 3}));
+    CHECK(wide_near(moved.value, {1, 4, 3}));
     const WideProduct back = wide_product(t.inverse, {1, 4, 3}, 1.0);
-    CHECK(close(back.value, {1, 0, 0}));
+    CHECK(wide_near(back.value, {1, 0, 0}));
     // Three ops: every entry's tolerance is 8 (3 + 1) ulps of its size, never zero where the
     // entry is not.
     const WideTransform w = wide_compose(ops);
@@ -80,7 +75,7 @@ TEST_CASE("wide_normal: S(2, 1, 4) takes the normal (1, 1, 1) to (0.5, 1, 0.25) 
     const Transform t = transform_of({{TransformOp::Kind::scale, {2, 1, 4}, 0.0}});
     const WideNormal n = wide_normal(t.inverse, WideVec(1, 1, 1));
     const double length = std::sqrt(0.25 + 1 + 0.0625);
-    CHECK(close(n.value, Vec3(0.5, 1, 0.25) / length));
+    CHECK(wide_near(n.value, Vec3(0.5, 1, 0.25) / length));
 }
 
 TEST_CASE("wide_transformed_hit: down the y axis onto the ellipsoid of radii (3, 2, 1) at t = 8",
@@ -91,7 +86,7 @@ TEST_CASE("wide_transformed_hit: down the y axis onto the ellipsoid of radii (3,
         wide_transformed_hit({{1, 10, 0}, {0, -1, 0}}, {{0, 0, 0}, 1.0}, t);
     REQUIRE(hit.hit);
     CHECK(std::abs(hit.t - 8) <= 1e-14);
-    CHECK(close(hit.normal.value, {0, 1, 0}));
+    CHECK(wide_near(hit.normal.value, {0, 1, 0}));
     // Above its top (z = 1): a miss.
     CHECK_FALSE(wide_transformed_hit({{1, 10, 1.5}, {0, -1, 0}}, {{0, 0, 0}, 1.0}, t).hit);
 }
@@ -99,9 +94,9 @@ TEST_CASE("wide_transformed_hit: down the y axis onto the ellipsoid of radii (3,
 TEST_CASE("wide_point_light: 5 away with attenuation 3, the colour over 3", "[grader]") {
     const WideLightSample s =
         wide_point_light({{2, 5, -1}, {3, 1.5, 0.75}, {1, 0.2, 0.04}}, {-1, 1, -1});
-    CHECK(close(s.direction, {0.6, 0.8, 0}));
+    CHECK(wide_near(s.direction, {0.6, 0.8, 0}));
     CHECK(std::abs(s.distance - 5) <= 1e-15L);
-    CHECK(close(s.intensity, {1, 0.5, 0.25}));
+    CHECK(wide_near(s.intensity, {1, 0.5, 0.25}));
     CHECK(std::isinf(wide_directional_light({{0, -6, 8}, {0.3, 0.6, 0.9}}).distance));
 }
 
@@ -111,11 +106,11 @@ TEST_CASE("wide_blinn_phong: the highlight from above is Ks (N . H)^4 = 0.64 Ks"
     m.shininess = 4;
     const SurfacePoint up{{0, 0, 0}, {0, 0, 0}, {0, 1, 0}, {0, 1, 0}, {0, 1, 0}};
     const WideColor c = wide_blinn_phong(m, up, {{0.8, 0.6, 0}, 10.0, Color(1.0)});
-    CHECK(close(c.value, {0.64, 0.32, 0.16}));
+    CHECK(wide_near(c.value, {0.64, 0.32, 0.16}));
     // A light below the floor: black, with no tolerance.
     const WideColor below = wide_blinn_phong(m, up, {{0.6, -0.8, 0}, 10.0, Color(1.0)});
-    CHECK(close(below.value, {0, 0, 0}, 0));
-    CHECK(close(below.tolerance, {0, 0, 0}, 0));
+    CHECK(wide_near(below.value, {0, 0, 0}, 0));
+    CHECK(wide_near(below.tolerance, {0, 0, 0}, 0));
 }
 
 TEST_CASE("expected_radiance: a black mirror ends the chain after its local colour", "[grader]") {
@@ -128,10 +123,10 @@ TEST_CASE("expected_radiance: a black mirror ends the chain after its local colo
                         ShadedHit{floor, Color(7.0), Color(1.0)}};
     const ExpectedRadiance e = expected_radiance(script, eye, 5, along_ray);
     // 0.3 + 0.5 * 1: the third hit is never asked about.
-    CHECK(close(e.colour, Vec3(0.8)));
+    CHECK(wide_near(e.colour, Vec3(0.8)));
     CHECK(e.rays.size() == 2);
     // The mirror ray leaves the floor at 45 degrees, from the point itself under along_ray.
-    CHECK(close(e.rays[1].direction, {std::sqrt(0.5), std::sqrt(0.5), 0}));
+    CHECK(wide_near(e.rays[1].direction, {std::sqrt(0.5), std::sqrt(0.5), 0}));
     CHECK(e.rays[1].t_min == 1e-4);
     CHECK(e.rays[1].t_max == kInf);
 }

@@ -16,7 +16,7 @@ using raystep::testing::numbered_rays;
 
 namespace {
 
-BenchHit hit_on(std::size_t ray) {
+BenchHit candidate_hit(std::size_t ray) {
     return {static_cast<std::uint32_t>(ray % 7), 1.0 + ray};
 }
 
@@ -69,7 +69,7 @@ TEST_CASE("measure_candidates: answers, counts and times for every ray set", "[b
     const std::vector<RaySet> sets{{"a", "100 rays", numbered_rays(100)},
                                    {"b", "10 rays", numbered_rays(10)}};
     const std::vector<StructureMeasurement> results = measure_candidates(
-        {fake_candidate("fake", hit_on)}, PrimitiveList{}, sets, quick_options());
+        {fake_candidate("fake", candidate_hit)}, PrimitiveList{}, sets, quick_options());
     REQUIRE(results.size() == 1);
     const StructureMeasurement& m = results[0];
     CHECK(m.name == "fake");
@@ -85,13 +85,13 @@ TEST_CASE("measure_candidates: answers, counts and times for every ray set", "[b
     REQUIRE(a.answers.size() == 100);
     for (std::size_t k = 0; k < 100; ++k) {
         CAPTURE(k);
-        REQUIRE(a.answers[k] == hit_on(k));
+        REQUIRE(a.answers[k] == candidate_hit(k));
     }
     CHECK(m.ray_sets[1].rays == 10);
 }
 
 TEST_CASE("measure_candidates: a stub's row says so and the others are measured", "[bench]") {
-    BenchCandidate stub = fake_candidate("grid", hit_on);
+    BenchCandidate stub = fake_candidate("grid", candidate_hit);
     stub.make = [](const PrimitiveList&) -> std::unique_ptr<BenchStructure> {
         throw_not_implemented(4, "UniformGrid", "Grids");
     };
@@ -100,7 +100,7 @@ TEST_CASE("measure_candidates: a stub's row says so and the others are measured"
         return {};
     });
     const std::vector<StructureMeasurement> results =
-        measure_candidates({stub, broken, fake_candidate("fake", hit_on)}, PrimitiveList{},
+        measure_candidates({stub, broken, fake_candidate("fake", candidate_hit)}, PrimitiveList{},
                            {{"a", "100 rays", numbered_rays(100)}}, quick_options());
     REQUIRE(results.size() == 3);
     CHECK_THAT(results[0].failure,
@@ -112,9 +112,9 @@ TEST_CASE("measure_candidates: a stub's row says so and the others are measured"
 }
 
 TEST_CASE("measure_candidates: a subsampled candidate keeps within its test budget", "[bench]") {
-    BenchCandidate brute = fake_candidate("brute force", hit_on);
+    BenchCandidate brute = fake_candidate("brute force", candidate_hit);
     brute.subsampled = true;
-    BenchCandidate small = fake_candidate("small scenes only", hit_on);
+    BenchCandidate small = fake_candidate("small scenes only", candidate_hit);
     small.max_primitives = 2;
 
     PrimitiveList list;
@@ -126,7 +126,7 @@ TEST_CASE("measure_candidates: a subsampled candidate keeps within its test budg
     const RayMeasurement& r = results[0].ray_sets.at(0);
     CHECK(r.stride == 4);
     CHECK(r.rays == 25);
-    CHECK(r.answers[3] == hit_on(12));
+    CHECK(r.answers[3] == candidate_hit(12));
     CHECK(results[1].failure == "skipped: 10 primitives, over its limit of 2");
 }
 

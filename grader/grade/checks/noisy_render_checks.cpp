@@ -30,9 +30,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// As the other render checks: at most this wide.
-constexpr int kWidth = 160;
-
 // The submission's renders and the reference's. Eight give each tile's mean over renders a
 // standard error of a third of one render's spread; the reference's sixteen, rendered once per
 // run, make its own error the smaller part of the difference's.
@@ -57,9 +54,9 @@ constexpr double kTilesApartPassed = 0.01;
 
 Scene scaled_scene(const fs::path& path, std::uint64_t seed) {
     Scene scene = load_scene(path);
-    if (scene.width > kWidth) {
-        const double scale = static_cast<double>(kWidth) / scene.width;
-        scene.width = kWidth;
+    if (scene.width > kRenderCheckWidth) {
+        const double scale = static_cast<double>(kRenderCheckWidth) / scene.width;
+        scene.width = kRenderCheckWidth;
         scene.height = std::max(1, static_cast<int>(std::lround(scene.height * scale)));
     }
     scene.seed = seed;
@@ -106,7 +103,7 @@ CheckMeasure measure_noisy_render(const GradingContext& context, const BuiltProb
         const std::uint64_t seed = (statistics_seed() << 8) + static_cast<std::uint64_t>(k);
         probe::Json args = {{"scene", path.string()},
                             {"view", std::string(view_name(check.view))},
-                            {"max_width", kWidth},
+                            {"max_width", kRenderCheckWidth},
                             {"seed", seed}};
         cases.push_back({check.scene + ", " + std::string(view_name(check.view)) + " view, seed " +
                              std::to_string(seed),
@@ -115,7 +112,8 @@ CheckMeasure measure_noisy_render(const GradingContext& context, const BuiltProb
                              if (answer.kind != ProbeAnswer::Kind::result)
                                  return wrong("an image", "");
                              student[static_cast<std::size_t>(k)] = probe::image_from(
-                                 answer.value, static_cast<std::size_t>(kWidth) * kWidth * 4);
+                                 answer.value, static_cast<std::size_t>(kRenderCheckWidth) *
+                                                   kRenderCheckWidth * 4);
                              return right();
                          },
                          std::string(kStudentRaystep) + " render scenes/" + check.scene +
@@ -167,7 +165,7 @@ CheckMeasure measure_noisy_render(const GradingContext& context, const BuiltProb
         measure.counterexamples = {
             {"the " + std::to_string(kTile) + " x " + std::to_string(kTile) + " tile at pixel (" +
                  std::to_string(comparison.worst_i) + ", " + std::to_string(comparison.worst_j) +
-                 ") of " + check.scene + " at " + std::to_string(kWidth) +
+                 ") of " + check.scene + " at " + std::to_string(kRenderCheckWidth) +
                  " pixels wide, its mean over " + std::to_string(kStudentRenders) + " seeds",
              full_text(comparison.worst_reference),
              full_text(comparison.worst_student) + ", " + full_text(comparison.worst_z) +

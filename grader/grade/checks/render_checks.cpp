@@ -22,15 +22,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Renders at most this wide: enough to see a stage's mistakes, small enough that a slow
-// submission still renders every check within its time.
-constexpr int kWidth = 160;
-
 Scene scaled_scene(const fs::path& path) {
     Scene scene = load_scene(path);
-    if (scene.width > kWidth) {
-        const double scale = static_cast<double>(kWidth) / scene.width;
-        scene.width = kWidth;
+    if (scene.width > kRenderCheckWidth) {
+        const double scale = static_cast<double>(kRenderCheckWidth) / scene.width;
+        scene.width = kRenderCheckWidth;
         scene.height = std::max(1, static_cast<int>(std::lround(scene.height * scale)));
     }
     return scene;
@@ -63,8 +59,8 @@ std::string render_command(const std::string& scene, View view) {
 
 // The render's worst pixel as a counterexample (worst_render_place, app/grade/render_judge.h,
 // which a release's `raystep grade` reports the same way): the colours, and the `raystep trace` of
-// the same place in the scene at its own size (the grader renders at most kWidth wide), which
-// shows a student every step of their own renderer's computation there.
+// the same place in the scene at its own size (the grader renders at most kRenderCheckWidth wide),
+// which shows a student every step of their own renderer's computation there.
 Counterexample pixel_counterexample(const GradingContext& context, const std::string& id,
                                     const std::string& scene_name, View view,
                                     const Image& reference, const Image& student) {
@@ -77,8 +73,9 @@ Counterexample pixel_counterexample(const GradingContext& context, const std::st
 
 // The probe's query for a render of the scene file at `scene_path`.
 ProbeQuery render_query(const std::string& scene_path, View view, const CameraClip& clip) {
-    probe::Json args = {
-        {"scene", scene_path}, {"view", std::string(view_name(view))}, {"max_width", kWidth}};
+    probe::Json args = {{"scene", scene_path},
+                        {"view", std::string(view_name(view))},
+                        {"max_width", kRenderCheckWidth}};
     if (!clip.name.empty()) {
         args["camera_t_min"] = probe::number(clip.t_min);
         args["camera_t_max"] = probe::number(clip.t_max);
@@ -102,15 +99,15 @@ CheckMeasure measure_render(const GradingContext& context, const BuiltProbe& pro
     const std::string input = render_input(scene, view, clip);
     // The judge keeps the image; the diff comes once the run is over.
     std::optional<Image> student;
-    ProbeCase render_case{input, render_query(path.string(), view, clip),
-                          [&student](const ProbeAnswer& answer) {
-                              if (answer.kind != ProbeAnswer::Kind::result)
-                                  return wrong("an image", "");
-                              student = probe::image_from(
-                                  answer.value, static_cast<std::size_t>(kWidth) * kWidth * 4);
-                              return right();
-                          },
-                          render_command(scene, view)};
+    ProbeCase render_case{
+        input, render_query(path.string(), view, clip),
+        [&student](const ProbeAnswer& answer) {
+            if (answer.kind != ProbeAnswer::Kind::result) return wrong("an image", "");
+            student = probe::image_from(
+                answer.value, static_cast<std::size_t>(kRenderCheckWidth) * kRenderCheckWidth * 4);
+            return right();
+        },
+        render_command(scene, view)};
     ProbeRunLimits limits;
     limits.readable = {context.source / "scenes"};
     CheckMeasure measure = run_cases(context, id, probe, {render_case}, limits);

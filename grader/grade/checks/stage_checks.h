@@ -32,6 +32,10 @@ std::vector<CheckDefinition> noisy_render_checks();
 std::vector<CheckDefinition> stage9_checks();
 std::vector<CheckDefinition> render_checks();
 
+/// The render checks render at most this wide: enough to see a stage's mistakes, small enough
+/// that a slow submission still renders every check within its time.
+inline constexpr int kRenderCheckWidth = 160;
+
 /// The public checks of each stage as data (grader/grade/checks/data_judged.h): what the stage's
 /// "stageN.unit" check runs, and what the student release's `raystep grade` runs.
 PublicCheck stage1_public_check();
