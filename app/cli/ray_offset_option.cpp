@@ -1,6 +1,8 @@
 #include "app/cli/ray_offset_option.h"
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 namespace raystep {
 
@@ -25,7 +27,15 @@ void add_ray_offset_options(CLI::App& command, RayOffsetArguments& arguments) {
     command
         .add_option("--epsilon", arguments.epsilon,
                     "The offset distance of along-ray and along-normal")
-        ->check(CLI::PositiveNumber);
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                char* end = nullptr;
+                const double value = std::strtod(text.c_str(), &end);
+                if (!text.empty() && *end == '\0' && std::isfinite(value) && value > 0.0)
+                    return std::string();
+                return "the offset distance must be a number above 0, not '" + text + "'";
+            },
+            "EPSILON"));
     // The two options make sense only together: checked once both are read, as a command-line
     // error (exit code 2), before any scene is loaded.
     command.parse_complete_callback([&arguments] {

@@ -1,5 +1,7 @@
 #include "app/cli/view_command.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 
 #if RAYSTEP_HAVE_VIEW_SERVER
@@ -21,7 +23,17 @@ CLI::App* add_view_command(CLI::App& app, ViewArguments& arguments) {
     command
         ->add_option("--port", arguments.port,
                      "Port on 127.0.0.1 (only this machine can connect); 0 takes any free one")
-        ->check(CLI::Range(0, 65535));
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                // Decimal digits only: CLI11 would read 0x1F44 as 8004 without a word.
+                const bool digits = !text.empty() && text.size() <= 5 &&
+                                    std::all_of(text.begin(), text.end(), [](unsigned char c) {
+                                        return std::isdigit(c) != 0;
+                                    });
+                if (digits && std::stoi(text) <= 65535) return std::string();
+                return "a port is a number from 0 to 65535, not '" + text + "'";
+            },
+            "PORT"));
     command->add_option("--threads", arguments.threads, "Render threads (default: all cores)")
         ->check(CLI::Range(1, 1024));
     return command;

@@ -1,5 +1,6 @@
 #include "app/view/scene_controls.h"
 
+#include <limits>
 #include <map>
 #include <string>
 
@@ -64,6 +65,20 @@ TEST_CASE("apply_scene_controls: epsilon 0 is the lecture's shadow ray from the 
                       "control epsilon: the offset distance must be >= 0");
     CHECK_THROWS_WITH(apply_scene_controls({{"offset", "along-ray"}, {"epsilon", "abc"}}, scene),
                       "control epsilon: 'abc' is not a number");
+}
+
+TEST_CASE("apply_scene_controls: a subnormal epsilon is a number, one beyond a double is not",
+          "[app]") {
+    Scene scene = lit_scene();
+    apply_scene_controls({{"offset", "along-ray"}, {"epsilon", "1e-320"}}, scene);
+    CHECK(scene.ray_offset.epsilon > 0.0);
+    CHECK(scene.ray_offset.epsilon < std::numeric_limits<double>::min());
+    CHECK_THROWS_WITH(apply_scene_controls({{"offset", "along-ray"}, {"epsilon", "1e400"}}, scene),
+                      "control epsilon: '1e400' is beyond the largest double");
+    CHECK_THROWS_WITH(apply_scene_controls({{"offset", "along-ray"}, {"epsilon", "nan"}}, scene),
+                      "control epsilon: 'nan' is not a number");
+    CHECK_THROWS_WITH(apply_scene_controls({{"offset", "along-ray"}, {"epsilon", ""}}, scene),
+                      "control offset: along-ray needs epsilon, the offset distance");
 }
 
 TEST_CASE("controls_change_scene: the scene's own values change nothing, another value does",

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "base/scene/ray_offset.h"
@@ -17,16 +18,17 @@ const std::string* value_of(const std::map<std::string, std::string>& values,
     return found == values.end() || found->second.empty() ? nullptr : &found->second;
 }
 
+// strtod, not stod: stod refuses a number below the smallest normal double (1e-320) as out of
+// range, where strtod gives the subnormal it is.
 double number_of(const std::string& name, const std::string& text) {
-    std::size_t used = 0;
-    double value = 0.0;
-    try {
-        value = std::stod(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used != text.size() || !std::isfinite(value)) {
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || std::isnan(value)) {
         throw std::invalid_argument("control " + name + ": '" + text + "' is not a number");
+    }
+    if (!std::isfinite(value)) {
+        throw std::invalid_argument("control " + name + ": '" + text +
+                                    "' is beyond the largest double");
     }
     return value;
 }
