@@ -12,7 +12,10 @@ std::string stamp_of(const std::filesystem::path& file) {
     if (error) return "missing";
     const auto size = std::filesystem::file_size(file, error);
     if (error) return "missing";
-    return std::to_string(time.time_since_epoch().count()) + " " + std::to_string(size);
+    // libc++ counts file time in __int128, which std::to_string does not take; nanoseconds
+    // since 1970 fit a long long until 2262.
+    return std::to_string(static_cast<long long>(time.time_since_epoch().count())) + " " +
+           std::to_string(size);
 }
 
 }  // namespace

@@ -109,7 +109,10 @@ std::string stamp_of(const std::string& scene_file, const fs::path& program) {
         std::error_code error;
         const auto time = fs::last_write_time(file, error);
         const auto size = error ? 0 : fs::file_size(file, error);
-        stamp += file.string() + " " + std::to_string(time.time_since_epoch().count()) + " " +
+        // libc++ counts file time in __int128, which std::to_string does not take; nanoseconds
+        // since 1970 fit a long long until 2262.
+        stamp += file.string() + " " +
+                 std::to_string(static_cast<long long>(time.time_since_epoch().count())) + " " +
                  std::to_string(size) + "\n";
     }
     return stamp;

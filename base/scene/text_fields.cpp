@@ -84,9 +84,12 @@ void split_fields(std::string_view line, std::vector<std::string_view>& fields) 
 // Each parse tries std::from_chars first: it reads a plain decimal number as strtod does (doubles
 // correctly rounded), several times faster, which is most of the time of loading a mesh of a
 // hundred thousand faces. What it does not read whole ('+1', hexadecimal, a number out of range)
-// goes on to strtod and strtol, whose rules and messages stand.
+// goes on to strtod and strtol, whose rules and messages stand. libc++ before LLVM 20 (every
+// Xcode so far) has no from_chars for double and leaves __cpp_lib_to_chars undefined: there the
+// number goes straight to strtod, which gives the same double, only slower.
 double parse_finite_number(std::string_view token, const TextPosition& where,
                            std::string_view what) {
+#if defined(__cpp_lib_to_chars)
     double fast = 0.0;
     const auto [fast_end, fast_error] =
         std::from_chars(token.data(), token.data() + token.size(), fast);
@@ -94,6 +97,7 @@ double parse_finite_number(std::string_view token, const TextPosition& where,
         std::isfinite(fast)) {
         return fast;
     }
+#endif
     char* end = nullptr;
     errno = 0;
     const double value = std::strtod(token.data(), &end);
