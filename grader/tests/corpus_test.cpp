@@ -160,6 +160,19 @@ std::string describe(const Graded& entry) {
     return text;
 }
 
+// The share of its stage that a mutant's header promises it loses, from a comment line such as
+// "# Loses at least 10% of its stage." above the diff: the classes of bug an issue named as
+// costing too little (docs/measurements/check-power.md). nullopt where the header promises none.
+std::optional<double> promised_loss(const fs::path& diff) {
+    std::ifstream file(diff);
+    const std::string marker = "# Loses at least ";
+    for (std::string line; std::getline(file, line) && line.rfind("#", 0) == 0;) {
+        if (line.rfind(marker, 0) != 0) continue;
+        return std::stod(line.substr(marker.size())) / 100.0;
+    }
+    return std::nullopt;
+}
+
 // The files under `folder`, by path relative to it, in order.
 std::vector<std::string> files_under(const fs::path& folder) {
     std::vector<std::string> files;
@@ -291,6 +304,10 @@ TEST_CASE("every mutant loses points in its own stage", "[corpus]") {
         const auto [score, max] = stage_score(*entry.report, entry.stage);
         CHECK(max > 0.0);
         CHECK(score < max);
+        if (const std::optional<double> share = promised_loss(entry.diff)) {
+            INFO("its header promises it loses at least " << 100.0 * *share << "% of its stage");
+            CHECK(max - score >= *share * max - 1e-9);
+        }
         stages.push_back(entry.stage);
     }
     for (int stage = 1; stage <= raystep::grade::kLastStage; ++stage) {
