@@ -13,6 +13,10 @@ namespace raystep::probe {
 // reply the protocol names (grader/probe/README.md), and a reply is read back into a ProbeAnswer
 // by one function on both sides.
 
+/// The line a probe's main writes on its answer channel before it reads a query: the grader sends
+/// the queries only once it has come (grader/probe/README.md).
+inline constexpr const char* kReadyLine = R"({"ready":true})";
+
 /// The reply to `query` ({"id", "call", "args"}): {"id", "result"}, {"id", "not_implemented"}
 /// for a NotImplemented, or {"id", "threw": {"type", "message"}} for any other exception, its
 /// type one of the standard ones the contracts name or "other". Never throws.

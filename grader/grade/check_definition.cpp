@@ -23,9 +23,11 @@ std::string ending(const SandboxRun& run, std::size_t answered, std::size_t aske
     std::string text = "the probe answered " + std::to_string(answered) + " of " +
                        std::to_string(asked) + " queries, then ";
     if (run.timed_out) return text + "ran out of time";
-    if (run.signal != 0)
+    if (run.signal != 0) {
+        const std::string limit = limit_of_signal(run.signal);
         return text + "died of signal " + std::to_string(run.signal) + " (" +
-               strsignal(run.signal) + ")";
+               strsignal(run.signal) + ")" + (limit.empty() ? "" : ": " + limit);
+    }
     if (run.answers_capped) return text + "flooded its answer channel past the cap";
     return text + "exited with code " + std::to_string(run.exit_code);
 }

@@ -31,6 +31,8 @@ ProbeSession ask_probe(const std::filesystem::path& program, const std::vector<P
     policy.limits.output_bytes = kPrintedBytes;
     policy.limits.file_size_bytes = 0;  // a probe writes nothing but its answers
     policy.answer_channel = true;
+    policy.input_after_first_answer = true;
+    policy.single_process = true;
 
     ProbeSession session;
     session.run = run_sandboxed({program.string()}, input, policy);
@@ -39,8 +41,21 @@ ProbeSession ask_probe(const std::filesystem::path& program, const std::vector<P
     // Answers come in order, one per line, on the answer channel; each must carry its query's id.
     // A line out of order or unreadable is malformed; whatever the probe did not reach stays
     // unanswered.
+    // The probe's main says it is ready before the queries are sent; a first line that is not
+    // that was written by something else, and so is every line after it that claims an answer.
     const std::string& answers = session.run.answers;
     std::istringstream lines(answers);
+    std::string first;
+    if (!std::getline(lines, first) || lines.eof()) return session;
+    if (first != probe::kReadyLine) {
+        for (ProbeAnswer& answer : session.answers) {
+            answer = probe::malformed_reply(first,
+                                            "the answer channel (descriptor 3) did not start with "
+                                            "the probe's ready line: something other than the "
+                                            "probe wrote on it");
+        }
+        return session;
+    }
     std::size_t next = 0;
     for (std::string line; next < queries.size() && std::getline(lines, line);) {
         if (lines.eof() && answers.back() != '\n') break;  // cut mid-line

@@ -4,6 +4,7 @@
 // It holds no expected answer and judges nothing: raystep-grade does, from outside.
 // grader/probe/README.md describes the protocol.
 
+#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -44,6 +45,18 @@ std::FILE* answer_stream() {
     return fdopen(answers, "w");
 }
 
+// In bubblewrap a probe is its PID namespace's first process (grader/sandbox/sandbox.h), and the
+// kernel delivers that process no signal it has no handler for, so abort() (a failed assert, an
+// uncaught exception) could not end it with SIGABRT: the C library would fall back to a fault, and
+// the report would say SIGSEGV. This handler ends it as SIGABRT would be reported, with exit code
+// 128 + SIGABRT, which the sandbox reads as that signal. Installed before the submission's static
+// constructors run (priority 101 comes before every default one), so that their aborts are named
+// too.
+__attribute__((constructor(101))) void report_abort_as_first_process() {
+    if (getpid() != 1) return;
+    std::signal(SIGABRT, [](int) { _exit(128 + SIGABRT); });
+}
+
 }  // namespace
 
 int main() {
@@ -52,6 +65,11 @@ int main() {
         std::perror("raystep-probe: cannot set up the answer stream");
         return 2;
     }
+    // Ready: the grader sends the queries only now, so none waited on stdin while the
+    // submission's static constructors ran
+    std::fputs(kReadyLine, answers);
+    std::fputc('\n', answers);
+    std::fflush(answers);
     const CallTable table = all_calls();
     std::string line;
     while (std::getline(std::cin, line)) {

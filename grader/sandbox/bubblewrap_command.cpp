@@ -62,7 +62,7 @@ std::vector<Bind> policy_binds(const SandboxPolicy& policy) {
 
 std::vector<std::string> bubblewrap_command(const fs::path& bwrap, const fs::path& program,
                                             const std::vector<std::string>& arguments,
-                                            const SandboxPolicy& policy) {
+                                            const SandboxPolicy& policy, int filter_descriptor) {
     const std::string uid = std::to_string(kSandboxUid);
     const std::string gid = std::to_string(kSandboxGid);
     std::vector<std::string> command = {
@@ -80,6 +80,16 @@ std::vector<std::string> bubblewrap_command(const fs::path& bwrap, const fs::pat
         "--die-with-parent",
         // A session of its own: it cannot push input into a terminal (TIOCSTI, CVE-2017-5226).
         "--new-session"};
+    // A program that may start no process needs no init to reap what it starts: it is the PID
+    // namespace's first process itself, bubblewrap's own child, so that bubblewrap reaps it and
+    // its CPU time reaches our wait (through an init, bubblewrap exits without reaping it, and
+    // the time is lost). The run still ends with it: the namespace dies with its first process.
+    if (policy.single_process) command.push_back("--as-pid-1");
+    // The system call filter, installed by bubblewrap just before it executes the program, so
+    // that its own set-up (clone with new namespaces) is not under it.
+    if (filter_descriptor >= 0) {
+        command.insert(command.end(), {"--seccomp", std::to_string(filter_descriptor)});
+    }
 
     // The system, read-only (bubblewrap binds nosuid), then a private /proc, /dev and /tmp.
     std::vector<fs::path> visible;

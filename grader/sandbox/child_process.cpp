@@ -2,8 +2,10 @@
 
 #include <fcntl.h>
 #include <grp.h>
+#include <linux/seccomp.h>
 #include <pthread.h>
 #include <signal.h>
+#include <sys/prctl.h>
 #include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -18,7 +20,17 @@ namespace raystep::grade {
 namespace {
 
 // The child's steps between fork and exec, in order; a failing one is reported to the parent.
-enum class Step : int { signals, stdio, descriptors, session, limits, identity, directory, exec };
+enum class Step : int {
+    signals,
+    stdio,
+    descriptors,
+    session,
+    limits,
+    identity,
+    directory,
+    filter,
+    exec
+};
 
 const char* step_name(Step step) {
     switch (step) {
@@ -36,6 +48,8 @@ const char* step_name(Step step) {
             return "switching to the sandbox's user";
         case Step::directory:
             return "entering its working folder";
+        case Step::filter:
+            return "installing its system call filter";
         case Step::exec:
             return "executing it";
     }
@@ -110,9 +124,19 @@ struct ChildEnds {
     int stdout_write;
     int stderr_write;
     int report_write;
-    int answer_write;  ///< -1 for none
-    int program;       ///< the program, opened by the parent, or -1 to execute it by path
+    int answer_write;          ///< -1 for none
+    int program;               ///< the program, opened by the parent, or -1 to execute it by path
+    int inherited;             ///< ChildSpec::inherited_fd, or -1
+    const sock_fprog* filter;  ///< nullptr for none
 };
+
+// The descriptors the child places, each at a fixed number: the answer pipe (kept across the
+// exec), the report pipe and the program (both closed by the exec), the inherited descriptor
+// (kept). Every number from kFirstFreeDescriptor up is closed before the exec.
+constexpr int kReportDescriptor = kAnswerDescriptor + 1;
+constexpr int kProgramDescriptor = kAnswerDescriptor + 2;
+static_assert(kInheritedDescriptor == kAnswerDescriptor + 3);
+constexpr int kFirstFreeDescriptor = kAnswerDescriptor + 4;
 
 // The child, from fork to exec. Only async-signal-safe calls: another thread of the grader may
 // have held a lock (malloc's, say) at the fork, and it is never released here.
@@ -129,44 +153,43 @@ struct ChildEnds {
         sigemptyset(&action.sa_mask);
         if (sigaction(sig, &action, nullptr) != 0) report_failure(ends.report_write, Step::signals);
     }
-
     // Its stdin, stdout and stderr are our pipes.
     if (dup2(ends.stdin_read, 0) < 0 || dup2(ends.stdout_write, 1) < 0 ||
         dup2(ends.stderr_write, 2) < 0) {
         report_failure(ends.report_write, Step::stdio);
     }
-
     // No other descriptor of the grader's: some may not be close-on-exec (a report being written,
-    // say), and the program could read or write them, or hold a pipe of another run open. The
-    // answer pipe, if any, goes to kAnswerDescriptor and stays open across the exec; the report
-    // pipe goes to the next descriptor and the program's, if any, to the one after; both close
-    // themselves at the exec. Each is first copied above those numbers, so that placing one never
-    // overwrites another.
-    const int reserved = ends.answer_write >= 0 ? kAnswerDescriptor + 2 : kAnswerDescriptor + 1;
-    const int first_free = ends.program >= 0 ? reserved + 1 : reserved;
-    const int report_high = fcntl(ends.report_write, F_DUPFD_CLOEXEC, first_free);
+    // say), and the program could read or write them, or hold a pipe of another run open. Each
+    // descriptor the child keeps is first copied above the fixed numbers, so that placing one
+    // never overwrites another not yet placed, then put at its number; the rest are closed.
+    const int report_high = fcntl(ends.report_write, F_DUPFD_CLOEXEC, kFirstFreeDescriptor);
     if (report_high < 0) report_failure(ends.report_write, Step::descriptors);
-    const int report_fd = reserved - 1;
-    if (dup3(report_high, report_fd, O_CLOEXEC) < 0) report_failure(report_high, Step::descriptors);
-    const int program_fd = ends.program >= 0 ? reserved : -1;
-    if (program_fd >= 0) {
-        const int program_high = fcntl(ends.program, F_DUPFD_CLOEXEC, first_free);
-        if (program_high < 0 || dup3(program_high, program_fd, O_CLOEXEC) < 0) {
-            report_failure(report_fd, Step::descriptors);
-        }
+    const auto high = [&](int fd) {
+        if (fd < 0) return -1;
+        const int copy = fcntl(fd, F_DUPFD_CLOEXEC, kFirstFreeDescriptor);
+        if (copy < 0) report_failure(report_high, Step::descriptors);
+        return copy;
+    };
+    const int program_high = high(ends.program);
+    const int answer_high = high(ends.answer_write);
+    const int inherited_high = high(ends.inherited);
+    if (dup3(report_high, kReportDescriptor, O_CLOEXEC) < 0) {
+        report_failure(report_high, Step::descriptors);
     }
-    if (ends.answer_write >= 0) {
-        const int answer_high = fcntl(ends.answer_write, F_DUPFD, first_free);
-        if (answer_high < 0 || dup2(answer_high, kAnswerDescriptor) < 0) {
-            report_failure(report_fd, Step::descriptors);
-        }
+    const int report_fd = kReportDescriptor;
+    if ((program_high >= 0 && dup3(program_high, kProgramDescriptor, O_CLOEXEC) < 0) ||
+        (answer_high >= 0 && dup2(answer_high, kAnswerDescriptor) < 0) ||
+        (inherited_high >= 0 && dup2(inherited_high, kInheritedDescriptor) < 0)) {
+        report_failure(report_fd, Step::descriptors);
     }
-    if (close_range(static_cast<unsigned>(first_free), ~0U, 0) !=
+    if (answer_high < 0) close(kAnswerDescriptor);
+    if (program_high < 0) close(kProgramDescriptor);
+    if (inherited_high < 0) close(kInheritedDescriptor);
+    if (close_range(static_cast<unsigned>(kFirstFreeDescriptor), ~0U, 0) !=
         0) {  // Linux 5.9; older: one by one
-        for (long fd = first_free; fd < open_max; ++fd)
+        for (long fd = kFirstFreeDescriptor; fd < open_max; ++fd)
             close(static_cast<int>(fd));
     }
-
     // A new session, and so a new process group whose id is our pid: the parent can kill the
     // whole group at once, and no terminal of the grader's can signal it or be read by it.
     if (setsid() < 0) report_failure(report_fd, Step::session);
@@ -178,6 +201,7 @@ struct ChildEnds {
         !lower_limit(RLIMIT_AS, spec.address_space_bytes, spec.address_space_bytes) ||
         !lower_limit(RLIMIT_NPROC, spec.tasks, spec.tasks) ||
         !lower_limit(RLIMIT_FSIZE, spec.file_size_bytes, spec.file_size_bytes) ||
+        !lower_limit(RLIMIT_NOFILE, spec.open_files, spec.open_files) ||
         !lower_limit(RLIMIT_CORE, 0, 0)) {
         report_failure(report_fd, Step::limits);
     }
@@ -195,11 +219,17 @@ struct ChildEnds {
         report_failure(report_fd, Step::directory);
     }
 
+    // The filter last: the steps above make calls it may refuse. no_new_privs is the price the
+    // kernel asks of a process without privilege for installing one, and the program keeps it.
+    if (ends.filter != nullptr && (prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0 ||
+                                   prctl(PR_SET_SECCOMP, SECCOMP_MODE_FILTER, ends.filter) != 0)) {
+        report_failure(report_fd, Step::filter);
+    }
     sigset_t none;
     sigemptyset(&none);
     sigprocmask(SIG_SETMASK, &none, nullptr);
-    if (program_fd >= 0) {
-        syscall(SYS_execveat, program_fd, "", argv, envp, AT_EMPTY_PATH);
+    if (program_high >= 0) {
+        syscall(SYS_execveat, kProgramDescriptor, "", argv, envp, AT_EMPTY_PATH);
     } else {
         execve(spec.executable.c_str(), argv, envp);
     }
@@ -237,8 +267,12 @@ ChildProcess start_child(const ChildSpec& spec) {
     }
     const long open_max = sysconf(_SC_OPEN_MAX);
     const int stdin_read = spec.stdin_fd >= 0 ? spec.stdin_fd : in.read.get();
-    const ChildEnds ends{stdin_read,         out.write.get(),     err.write.get(),
-                         report.write.get(), answers.write.get(), program.get()};
+    const sock_fprog filter{static_cast<unsigned short>(spec.system_call_filter.size()),
+                            const_cast<sock_filter*>(spec.system_call_filter.data())};
+    const ChildEnds ends{stdin_read,          out.write.get(),
+                         err.write.get(),     report.write.get(),
+                         answers.write.get(), program.get(),
+                         spec.inherited_fd,   spec.system_call_filter.empty() ? nullptr : &filter};
 
     // Block every signal across the fork, so that none reaches a handler of the grader's in the
     // child before it has reset them all.

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <linux/filter.h>
 #include <sys/resource.h>
 #include <sys/types.h>
 
@@ -28,7 +29,8 @@ struct ChildSpec {
     rlim_t address_space_bytes = RLIM_INFINITY;
     rlim_t tasks = RLIM_INFINITY;  ///< RLIMIT_NPROC: processes and threads of the child's user
     rlim_t file_size_bytes = RLIM_INFINITY;
-    std::optional<Identity> identity;  ///< switch to it before exec; nullopt keeps ours
+    rlim_t open_files = RLIM_INFINITY;  ///< RLIMIT_NOFILE
+    std::optional<Identity> identity;   ///< switch to it before exec; nullopt keeps ours
     /// Give the child a fourth pipe at descriptor kAnswerDescriptor (not close-on-exec), whose
     /// other end ChildProcess::answers_read holds.
     bool answer_pipe = false;
@@ -38,11 +40,20 @@ struct ChildSpec {
     bool exec_by_descriptor = false;
     /// The child's stdin: this descriptor (the caller keeps and closes it) instead of a pipe.
     int stdin_fd = -1;
+    /// A descriptor the child gets at kInheritedDescriptor, open across the exec (the caller
+    /// keeps and closes its own): bubblewrap reads its system call filter there. -1 for none.
+    int inherited_fd = -1;
+    /// Installed (with no_new_privs) as the last step before the exec, after the identity
+    /// switch: the program runs under it from its first instruction. Empty for none.
+    std::vector<sock_filter> system_call_filter;
 };
 
 /// Where a child started with an answer pipe finds it: the first descriptor after stderr, open
 /// before the program's first instruction (and so before any static constructor of its).
 constexpr int kAnswerDescriptor = 3;
+
+/// Where a child finds ChildSpec::inherited_fd.
+constexpr int kInheritedDescriptor = 6;
 
 /// A started child: its pid, which is also its process group and session, and our ends of its
 /// stdin, stdout and stderr: non-blocking, and close-on-exec so that no other program the grader

@@ -18,6 +18,7 @@
 #include "grader/sandbox/sandbox_paths.h"
 #include "grader/sandbox/sandbox_user.h"
 #include "grader/sandbox/supervise.h"
+#include "grader/sandbox/system_call_filter.h"
 
 namespace raystep::grade {
 
@@ -64,6 +65,7 @@ ChildSpec limited_spec(const SandboxLimits& limits, bool isolated) {
     spec.cpu_seconds = static_cast<rlim_t>(std::max(1.0, std::ceil(limits.cpu_seconds)));
     spec.address_space_bytes = limits.address_space_bytes;
     spec.file_size_bytes = limits.file_size_bytes;
+    spec.open_files = static_cast<rlim_t>(std::max(0, limits.open_files));
     spec.identity = program_identity();
     // A fork bomb is held by RLIMIT_NPROC, which the kernel enforces on every uid but 0: hence a
     // program that is never root (sandbox_user.h), bubblewrap's included (inside its user
@@ -101,13 +103,31 @@ void read_status(const Supervision& supervision, bool isolated, SandboxRun& run)
 // Whether the CPU limit ended the program. SIGXCPU comes at the soft limit; SIGKILL a second
 // later, at the hard one, for a program that caught or ignored SIGXCPU. A SIGKILL can have other
 // senders (the OOM killer, the program itself), so it counts when the CPU time reached the limit.
-// bubblewrap does not pass its program's CPU time on to us (its rusage leaves it out), so there the
+// Through bubblewrap's init the program's CPU time is lost (SandboxRun::cpu_seconds), so there the
 // wall-clock time stands in for it: a single thread cannot reach the hard limit sooner.
-bool at_cpu_limit(const SandboxRun& run, const Supervision& supervision, double soft_seconds) {
+bool at_cpu_limit(const SandboxRun& run, bool cpu_time_complete, double soft_seconds) {
     if (run.signal == SIGXCPU) return true;
     if (run.signal != SIGKILL) return false;
-    return run.isolated ? run.wall_seconds >= soft_seconds + 1.0
-                        : supervision.cpu_seconds >= soft_seconds;
+    return cpu_time_complete ? run.cpu_seconds >= soft_seconds
+                             : run.wall_seconds >= soft_seconds + 1.0;
+}
+
+// The filter's instructions in a pipe, for bubblewrap to read at kInheritedDescriptor: a few
+// hundred bytes, which the pipe holds before anyone reads them.
+UniqueFd filter_pipe(const std::vector<sock_filter>& filter) {
+    int ends[2];
+    if (pipe2(ends, O_CLOEXEC) != 0) {
+        throw std::runtime_error(std::string("sandbox: cannot make a pipe: ") +
+                                 std::strerror(errno));
+    }
+    UniqueFd read_end(ends[0]);
+    UniqueFd write_end(ends[1]);
+    const std::size_t bytes = filter.size() * sizeof(sock_filter);
+    if (write(write_end.get(), filter.data(), bytes) != static_cast<ssize_t>(bytes)) {
+        throw std::runtime_error(std::string("sandbox: cannot write the system call filter: ") +
+                                 std::strerror(errno));
+    }
+    return read_end;
 }
 
 }  // namespace
@@ -124,9 +144,17 @@ SandboxRun run_sandboxed(const std::vector<std::string>& argv, const std::string
     // its absolute path, which means the same inside and out.
     ChildSpec spec = limited_spec(policy.limits, isolated);
     const std::vector<std::string> arguments(argv.begin() + 1, argv.end());
+    const std::vector<sock_filter> filter = system_call_filter(policy.single_process);
+    UniqueFd filter_for_bubblewrap;
     if (isolated) {
-        spec.argv = bubblewrap_command(find_executable("bwrap"), program, arguments, normal);
+        if (!filter.empty()) {
+            filter_for_bubblewrap = filter_pipe(filter);
+            spec.inherited_fd = filter_for_bubblewrap.get();
+        }
+        spec.argv = bubblewrap_command(find_executable("bwrap"), program, arguments, normal,
+                                       filter.empty() ? -1 : kInheritedDescriptor);
     } else {
+        spec.system_call_filter = filter;
         spec.argv = {program.string()};
         spec.argv.insert(spec.argv.end(), arguments.begin(), arguments.end());
         spec.working_directory = normal.working_directory.string();
@@ -139,7 +167,7 @@ SandboxRun run_sandboxed(const std::vector<std::string>& argv, const std::string
     spec.answer_pipe = policy.answer_channel;
     UniqueFd stdin_file;
     if (!policy.stdin_file.empty()) {
-        stdin_file.reset(open(policy.stdin_file.c_str(), O_RDONLY | O_CLOEXEC));
+        stdin_file.reset(open(policy.stdin_file.c_str(), O_RDONLY | O_CLOEXEC | O_NOCTTY));
         if (!stdin_file) {
             throw std::runtime_error("sandbox: cannot open " + policy.stdin_file.string() + ": " +
                                      std::strerror(errno));
@@ -152,7 +180,10 @@ SandboxRun run_sandboxed(const std::vector<std::string>& argv, const std::string
     ChildProcess child = start_child(spec);
     Supervision supervision =
         supervise(child, input, start + policy.limits.wall,
-                  {policy.limits.output_bytes, kErrorBytes, policy.limits.answer_bytes});
+                  {policy.limits.output_bytes, kErrorBytes, policy.limits.answer_bytes},
+                  policy.answer_channel && policy.input_after_first_answer
+                      ? InputStart::after_first_answer_line
+                      : InputStart::at_once);
 
     // Outside bubblewrap, what the program left running (a process that started a session of its
     // own escapes the kill of the group) ends with the run: it is the run's user's alone.
@@ -161,9 +192,11 @@ SandboxRun run_sandboxed(const std::vector<std::string>& argv, const std::string
     SandboxRun run;
     run.isolated = isolated;
     run.wall_seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    run.cpu_seconds = supervision.cpu_seconds;
     read_status(supervision, isolated, run);
+    const bool cpu_time_complete = !isolated || policy.single_process;
     run.timed_out = supervision.killed_at_wall ||
-                    at_cpu_limit(run, supervision, static_cast<double>(spec.cpu_seconds));
+                    at_cpu_limit(run, cpu_time_complete, static_cast<double>(spec.cpu_seconds));
     run.output_capped = supervision.output_capped;
     run.answers_capped = supervision.answers_capped;
     run.output = std::move(supervision.output);
@@ -182,15 +215,32 @@ bool bubblewrap_available() {
         policy.isolate = false;
         policy.limits.cpu_seconds = 5;
         policy.limits.wall = std::chrono::seconds(10);
+        SandboxPolicy probe_like = policy;
+        probe_like.single_process = true;
         try {
             const std::vector<std::string> command = bubblewrap_command(
-                find_executable("bwrap"), find_executable("true"), {}, normalized(policy));
+                find_executable("bwrap"), find_executable("true"), {}, normalized(probe_like), -1);
             return run_sandboxed(command, "", policy).exit_code == 0;
         } catch (const std::runtime_error&) {
             return false;
         }
     }();
     return available;
+}
+
+std::string limit_of_signal(int signal) {
+    switch (signal) {
+        case SIGSYS:
+            return "it made a system call the sandbox forbids: starting a process, or asking for "
+                   "memory outside its address space (shared memory, message queues, memfd), "
+                   "which the memory limit could not count";
+        case SIGXFSZ:
+            return "it wrote a file past the sandbox's file size limit (a probe may write none)";
+        case SIGXCPU:
+            return "it reached the sandbox's CPU time limit";
+        default:
+            return "";
+    }
 }
 
 }  // namespace raystep::grade

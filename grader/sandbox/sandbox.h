@@ -28,11 +28,17 @@ namespace raystep::grade {
 // program's first process exits; whatever it left running is killed then: by bubblewrap's PID
 // namespace, or without it by killing every process of the run's user.
 //
-// Limits: rlimits bound each process, not the run. Memory a program holds outside its address
-// space (SysV shared memory, memfd files, pipe buffers) is bounded only by a cgroup, which this
-// sandbox does not make; nor is the number of files it writes in the writable folder. When the
-// grader is not root, runs without bubblewrap share the grader's user: nothing then keeps one
-// from another, or from the grader's files.
+// Memory: rlimits bound each process, not the run, and RLIMIT_AS counts only what is mapped. So
+// every run also gets a system call filter (system_call_filter.h) that kills a program asking
+// for memory outside its address space (SysV shared memory, message queues and semaphores, POSIX
+// message queues, memfd files, io_uring), and a cap on its open descriptors, which bounds what it
+// can hold in pipe and socket buffers. A single_process run (a probe) may start no process
+// besides its threads: one address space, one descriptor table, and the kernel's account of its
+// CPU time is the whole run's. Files it writes are bounded by RLIMIT_FSIZE each, and with
+// bubblewrap /tmp is a tmpfs of that size; the number of files written in the writable folder is
+// not bounded. docs/instructor.md, "What student code can touch", has the whole argument. When
+// the grader is not root, runs without bubblewrap share the grader's user: nothing then keeps
+// one from another, or from the grader's files.
 
 struct SandboxLimits {
     double cpu_seconds = 10.0;
@@ -43,6 +49,8 @@ struct SandboxLimits {
     /// RLIMIT_FSIZE: the largest file it may write; with bubblewrap, also the size of its /tmp.
     std::size_t file_size_bytes = 64u << 20;
     std::size_t output_bytes = 64u << 20;  ///< stdout read at most; stderr at most 1 MiB
+    /// RLIMIT_NOFILE: with the process limit, what bounds the pipe and socket buffers it holds.
+    int open_files = 64;
     std::size_t answer_bytes = 64u << 20;  ///< the answer channel read at most, when there is one
 };
 
@@ -62,9 +70,19 @@ struct SandboxPolicy {
     /// answers there, so that nothing the submission prints on stdout, even before main, can
     /// reach or break the protocol.
     bool answer_channel = false;
+    /// With an answer channel: the program's stdin gets `input` only once it has written a first
+    /// line there. A probe writes it from main, so that no query waits on stdin while the
+    /// submission's static constructors run.
+    bool input_after_first_answer = false;
     /// The program's stdin is this file, which the grader opens itself: the program needs no way
-    /// to it, and is never shown the folder it lies in. Empty: stdin is the run's `input`.
+    /// to it, and is never shown the folder it lies in. A folder is opened as a folder, for a
+    /// program that reads it through the descriptor (raystep-unpack). Empty: stdin is the run's
+    /// `input`.
     std::filesystem::path stdin_file;
+    /// The program may start threads but no process (system_call_filter.h): a probe. Its CPU time
+    /// is then the whole run's, with bubblewrap too, where it runs as the PID namespace's first
+    /// process (bubblewrap's --as-pid-1), so that bubblewrap reaps it and passes its time on.
+    bool single_process = false;
 };
 
 struct SandboxRun {
@@ -81,8 +99,17 @@ struct SandboxRun {
     std::string errors;           ///< stderr, up to 1 MiB
     std::string answers;          ///< the answer channel, up to its cap (answer_channel only)
     double wall_seconds = 0.0;
+    /// User and system CPU time, as the kernel accounted it when the program ended: all of a
+    /// single_process run's; otherwise the first process's and what it waited for (and nothing of
+    /// the program's through bubblewrap).
+    double cpu_seconds = 0.0;
     bool isolated = false;  ///< bubblewrap was used
 };
+
+/// What a signal that ended a sandboxed program says about the sandbox's limits, in words ("it
+/// made a system call the sandbox forbids: ..."), or empty for a signal of the program's own
+/// doing (SIGSEGV, SIGABRT...).
+std::string limit_of_signal(int signal);
 
 /// Runs argv[0] with arguments, `input` (or policy.stdin_file) on its stdin, under the policy.
 /// argv[0] without a slash is looked up in the sandbox's PATH; the program gets its absolute path

@@ -95,7 +95,7 @@ double seconds(const timeval& t) {
 }  // namespace
 
 Supervision supervise(ChildProcess& child, const std::string& input, Clock::time_point deadline,
-                      OutputCaps caps) {
+                      OutputCaps caps, InputStart start) {
     Supervision result;
     SigpipeBlocked sigpipe;
     std::vector<char> buffer(kChunk);
@@ -123,8 +123,11 @@ Supervision supervise(ChildProcess& child, const std::string& input, Clock::time
                 !child.stdout_read && !child.stderr_read && !child.answers_read;
             if (exited && (pipes_closed || now >= drain_until)) break;
 
-            // Wait for any pipe to be ready, at most one slice.
-            pollfd fds[4] = {{child.stdin_write.get(), POLLOUT, 0},
+            // Wait for any pipe to be ready, at most one slice. stdin waits, when asked to, for
+            // the answer pipe's first line.
+            const bool input_open =
+                start == InputStart::at_once || result.answers.find('\n') != std::string::npos;
+            pollfd fds[4] = {{input_open ? child.stdin_write.get() : -1, POLLOUT, 0},
                              {child.stdout_read.get(), POLLIN, 0},
                              {child.stderr_read.get(), POLLIN, 0},
                              {child.answers_read.get(), POLLIN, 0}};  // poll skips fd -1

@@ -11,7 +11,9 @@
 #      usually hides it, its whole process tree measured (measure_process_tree.py): peak memory
 #      within Gradescope's 768 MB, and time within its 10 minutes, both as run here and on half a
 #      processor (twice the processor time);
-#   6. results.json read back: every check there, each with its full points.
+#   6. results.json read back: every check there, each with its full points;
+#   7. a hostile stage 1 that takes 3 GiB of shared memory, graded and measured the same way: within
+#      768 MB, with a complete results.json that names the sandbox's rule it broke.
 # cmake -DROOT=<repo> -DWORK=<scratch> -P gradescope_test.cmake (as root, like Gradescope)
 cmake_minimum_required(VERSION 3.22)
 set(megabyte 1048576)
@@ -125,26 +127,38 @@ if(bubblewrap_copies)
         set(sandbox "bubblewrap could not be hidden here (no mount namespace): probes ran inside it")
     endif()
 endif()
-run("run_autograder" ${WORK}/run_autograder.log
-    ${python3_path} ${CMAKE_CURRENT_LIST_DIR}/measure_process_tree.py ${WORK}/measured.json --
-    ${run_autograder})
-# The numbers as measure_process_tree.py wrote them (string(JSON) would print 31.81 as
-# 31.809999999999999).
-file(READ ${WORK}/measured.json measured)
-foreach(field memory_method cpu_method)
-    string(JSON ${field} GET "${measured}" ${field})
-endforeach()
-foreach(field peak_bytes sampled_peak_bytes cpu_seconds wall_seconds)
-    string(REGEX MATCH "\"${field}\": ([0-9.]+)" _ "${measured}")
-    set(${field} ${CMAKE_MATCH_1})
-endforeach()
-math(EXPR peak_mb "${peak_bytes} / ${megabyte}")
-math(EXPR sampled_mb "${sampled_peak_bytes} / ${megabyte}")
-math(EXPR limit_bytes "${memory_limit_mb} * ${megabyte}")
-if(peak_bytes GREATER_EQUAL limit_bytes)
-    message(FATAL_ERROR "run_autograder's processes took ${peak_mb} MB together (${memory_method}), "
-                        "over Gradescope's ${memory_limit_mb} MB")
-endif()
+# measured_run(NAME): run_autograder on what is in submission/, its whole process tree measured
+# into ${WORK}/NAME.json; stops when the tree took Gradescope's 768 MB or more. Sets peak_mb,
+# sampled_mb, memory_method, cpu_method, cpu_seconds and wall_seconds in the caller.
+function(measured_run name)
+    run("run_autograder" ${WORK}/${name}.log
+        ${python3_path} ${CMAKE_CURRENT_LIST_DIR}/measure_process_tree.py ${WORK}/${name}.json --
+        ${run_autograder})
+    # The numbers as measure_process_tree.py wrote them (string(JSON) would print 31.81 as
+    # 31.809999999999999).
+    file(READ ${WORK}/${name}.json measured)
+    foreach(field memory_method cpu_method)
+        string(JSON ${field} GET "${measured}" ${field})
+        set(${field} ${${field}} PARENT_SCOPE)
+    endforeach()
+    foreach(field peak_bytes sampled_peak_bytes cpu_seconds wall_seconds)
+        string(REGEX MATCH "\"${field}\": ([0-9.]+)" _ "${measured}")
+        set(${field} ${CMAKE_MATCH_1})
+    endforeach()
+    set(cpu_seconds ${cpu_seconds} PARENT_SCOPE)
+    set(wall_seconds ${wall_seconds} PARENT_SCOPE)
+    math(EXPR peak_mb "${peak_bytes} / ${megabyte}")
+    math(EXPR sampled_mb "${sampled_peak_bytes} / ${megabyte}")
+    set(peak_mb ${peak_mb} PARENT_SCOPE)
+    set(sampled_mb ${sampled_mb} PARENT_SCOPE)
+    math(EXPR limit_bytes "${memory_limit_mb} * ${megabyte}")
+    if(peak_bytes GREATER_EQUAL limit_bytes)
+        message(FATAL_ERROR "run_autograder's processes took ${peak_mb} MB together "
+                            "(${memory_method}) grading ${name}, over Gradescope's "
+                            "${memory_limit_mb} MB")
+    endif()
+endfunction()
+measured_run(model)
 # On half a processor the run takes at least twice its processor time.
 math(EXPR half_processor_limit "${time_limit_seconds} / 2")
 if(wall_seconds GREATER_EQUAL time_limit_seconds OR cpu_seconds GREATER_EQUAL half_processor_limit)
@@ -193,10 +207,43 @@ if(NOT short STREQUAL "[]" OR NOT score EQUAL points OR NOT score GREATER 0)
                         "points: ${short}\n(results: ${autograder}/results)")
 endif()
 
+set(model_peak_mb ${peak_mb})
+set(model_sampled_mb ${sampled_mb})
+set(model_memory_method ${memory_method})
+set(model_seconds ${wall_seconds})
+set(model_cpu_seconds ${cpu_seconds})
+
+# 7: a hostile stage 1 that takes 3 GiB of SysV shared memory in a static initializer, outside
+# every probe's address space (hostile/1-shared-memory-3-gib.diff), graded the same way: the whole
+# tree stays within 768 MB, results.json is complete, and the report names the rule the probe
+# broke.
+file(REMOVE_RECURSE ${autograder}/submission ${autograder}/results)
+file(MAKE_DIRECTORY ${autograder}/submission/stages ${autograder}/results)
+file(COPY ${ROOT}/grader/tests/submissions/model/stages/1_vectors
+     DESTINATION ${autograder}/submission/stages)
+find_program(git_path git REQUIRED)
+run("git apply" ${WORK}/hostile-apply.log ${CMAKE_COMMAND} -E chdir ${autograder}/submission
+    ${git_path} apply -p1 ${ROOT}/grader/tests/submissions/hostile/1-shared-memory-3-gib.diff)
+measured_run(shared-memory)
+file(READ ${autograder}/results/results.json hostile_results)
+string(JSON hostile_tests LENGTH "${hostile_results}" tests)
+string(JSON hostile_score GET "${hostile_results}" score)
+if(hostile_tests EQUAL 0 OR hostile_score GREATER 0)
+    message(FATAL_ERROR "the shared-memory submission got ${hostile_score} points over "
+                        "${hostile_tests} checks; results: ${autograder}/results")
+endif()
+string(FIND "${hostile_results}" "system call the sandbox forbids" named)
+if(named EQUAL -1)
+    message(FATAL_ERROR "the shared-memory submission's results.json does not name the sandbox's "
+                        "rule it broke; results: ${autograder}/results")
+endif()
+
 message(STATUS "autograder zip: ${zip_made}")
 message(STATUS "setup.sh: ${setup_seconds} s (its log: ${WORK}/setup.log)")
 message(STATUS "sandbox: ${sandbox}")
-message(STATUS "run_autograder: ${score} of ${points} points over ${tests} checks in ${wall_seconds} s, "
-               "${cpu_seconds} s of processor (at least twice that on Gradescope's half processor)")
-message(STATUS "peak memory of the whole tree: ${peak_mb} MB by ${memory_method}; "
-               "sampled resident memory: ${sampled_mb} MB")
+message(STATUS "run_autograder: ${score} of ${points} points over ${tests} checks in ${model_seconds} s, "
+               "${model_cpu_seconds} s of processor (at least twice that on Gradescope's half processor)")
+message(STATUS "peak memory of the whole tree: ${model_peak_mb} MB by ${model_memory_method}; "
+               "sampled resident memory: ${model_sampled_mb} MB")
+message(STATUS "the 3 GiB shared-memory submission: ${hostile_score} points over ${hostile_tests} "
+               "checks in ${wall_seconds} s, peak memory ${peak_mb} MB (${memory_method})")

@@ -28,6 +28,25 @@ TEST_CASE("run_sandboxed: the answer channel is descriptor 3, kept apart from st
     CHECK(run.left_behind == 0);
 }
 
+TEST_CASE(
+    "run_sandboxed: input held until the answer channel's first line reaches no one before it",
+    "[sandbox]") {
+    const bool isolate = GENERATE(false, true);
+    CAPTURE(isolate);
+    if (!can_run(isolate)) return;
+    SandboxPolicy policy = test_policy(isolate);
+    policy.answer_channel = true;
+
+    const HostileRun at_once = run_hostile({hostile("ready_then_echo")}, "query\n", policy);
+    CHECK(at_once.run.output == "waiting before ready: yes\nquery\n");
+
+    policy.input_after_first_answer = true;
+    const HostileRun held = run_hostile({hostile("ready_then_echo")}, "query\n", policy);
+    CHECK(held.run.output == "waiting before ready: no\nquery\n");
+    CHECK(held.run.answers == "ready\n");
+    CHECK(held.left_behind == 0);
+}
+
 TEST_CASE("run_sandboxed: without an answer channel, descriptor 3 is not open", "[sandbox]") {
     const bool isolate = GENERATE(false, true);
     CAPTURE(isolate);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "base/testing/catch.h"
+#include "grader/sandbox/system_call_filter.h"
 #include "sandbox_test_support.h"
 
 using namespace raystep::grade;
@@ -116,6 +117,79 @@ TEST_CASE("run_sandboxed: a program that sleeps forever is killed at the wall-cl
     CHECK(sleep.run.wall_seconds >= 1.0);
     CHECK(sleep.run.wall_seconds < 3.0);
     check_contained(sleep, isolate);
+}
+
+TEST_CASE(
+    "run_sandboxed: memory outside the address space (SysV, memfd, mqueue) ends the program at "
+    "its first call with SIGSYS, named as a limit",
+    "[sandbox]") {
+    const bool isolate = GENERATE(false, true);
+    const std::string mode = GENERATE("sysv", "memfd", "mqueue");
+    CAPTURE(isolate, mode);
+    if (!can_run(isolate)) return;
+    if (filter_architecture().empty()) {
+        WARN("no system call filter on this architecture: nothing to test");
+        return;
+    }
+
+    const HostileRun held = run_hostile({hostile("shared_memory"), mode}, "", test_policy(isolate));
+    CAPTURE(held.run.output, held.run.errors);
+    CHECK(held.run.signal == SIGSYS);
+    CHECK(held.run.output.empty());  // not even the first 64 MiB
+    CHECK_FALSE(held.run.timed_out);
+    CHECK_FALSE(limit_of_signal(held.run.signal).empty());
+    check_contained(held, isolate);
+}
+
+TEST_CASE("run_sandboxed: a single-process run may start threads, but a fork ends it with SIGSYS",
+          "[sandbox]") {
+    const bool isolate = GENERATE(false, true);
+    CAPTURE(isolate);
+    if (!can_run(isolate)) return;
+    if (filter_architecture().empty()) {
+        WARN("no system call filter on this architecture: nothing to test");
+        return;
+    }
+    SandboxPolicy policy = test_policy(isolate);
+
+    // Allowed to start processes, it forks as it likes
+    const HostileRun free = run_hostile({hostile("start_process")}, "", policy);
+    CHECK(free.run.exit_code == 0);
+    CHECK(free.run.output == "child started\nparent waited\n");
+    check_contained(free, isolate);
+
+    policy.single_process = true;
+    const HostileRun forked = run_hostile({hostile("start_process")}, "", policy);
+    CAPTURE(forked.run.output, forked.run.errors);
+    CHECK(forked.run.signal == SIGSYS);
+    CHECK(forked.run.output.empty());
+    check_contained(forked, isolate);
+
+    const HostileRun threads = run_hostile({hostile("spin_threads")}, "", policy);
+    CAPTURE(threads.run.errors);
+    CHECK(threads.run.exit_code == 0);
+    CHECK(threads.run.signal == 0);
+    check_contained(threads, isolate);
+}
+
+TEST_CASE(
+    "run_sandboxed: a single-process run's CPU time counts all its threads, through bubblewrap "
+    "too",
+    "[sandbox]") {
+    const bool isolate = GENERATE(false, true);
+    CAPTURE(isolate);
+    if (!can_run(isolate)) return;
+    SandboxPolicy policy = test_policy(isolate);
+    policy.single_process = true;
+    policy.limits.cpu_seconds = 5;
+    policy.limits.wall = std::chrono::seconds(8);
+
+    // Three threads of 0.3 s each: 0.9 s, less what the clocks' granularity rounds off
+    const HostileRun threads = run_hostile({hostile("spin_threads")}, "", policy);
+    CHECK(threads.run.exit_code == 0);
+    CHECK(threads.run.cpu_seconds >= 0.85);
+    CHECK(threads.run.cpu_seconds < 3.0);
+    check_contained(threads, isolate);
 }
 
 TEST_CASE("run_sandboxed: unbounded allocation stops at the address-space limit", "[sandbox]") {
