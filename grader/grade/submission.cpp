@@ -18,103 +18,29 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A submission is a few dozen files: past this many entries, a folder is not looked through
-// further (an archive's listing has its own cap in raystep-unpack).
-constexpr std::size_t kMostEntries = 20000;
-
-// One entry of a submission, a candidate for a manifest file: its path inside the submission (a
-// name only, never opened as such) and, where it can be taken, the file holding its contents.
+// One entry of a submission, a candidate for a manifest file, as raystep-unpack listed it: its
+// path inside the submission (a name only, never opened as such) and, where it was taken, the
+// file holding its contents.
 struct Entry {
     std::string path;
     std::string kind;  ///< "file", "folder", "link", "other"
     std::uintmax_t size = 0;
-    fs::path contents;  ///< empty when it cannot be taken
+    std::string target;  ///< what a link points to, as it says (never followed)
+    fs::path contents;   ///< empty when it cannot be taken
 };
 
 std::size_t depth(const std::string& path) {
     return static_cast<std::size_t>(std::count(path.begin(), path.end(), '/'));
 }
 
-// Folders that hold what tools made, never a student's sources: a working copy's history, build
-// products, packages. Not looked into, so that their thousands of entries cannot crowd the cap
-// below.
-bool made_by_tools(const fs::path& folder) {
-    static const std::set<std::string> names = {".git",
-                                                ".hg",
-                                                ".svn",
-                                                "build",
-                                                "cmake-build-debug",
-                                                "cmake-build-release",
-                                                "out",
-                                                "target",
-                                                "node_modules",
-                                                ".venv",
-                                                "venv",
-                                                "__pycache__",
-                                                ".cache",
-                                                ".vs"};
-    return names.count(folder.filename().string()) > 0;
-}
-
-Entry folder_entry(const fs::path& root, const fs::directory_entry& found, std::error_code& error) {
-    Entry entry;
-    entry.path = fs::relative(found.path(), root, error).generic_string();
-    const fs::file_status status = found.symlink_status(error);
-    if (fs::is_regular_file(status)) {
-        entry.kind = "file";
-        entry.size = found.file_size(error);
-        entry.contents = found.path();
-    } else {
-        entry.kind = fs::is_directory(status) ? "folder"
-                     : fs::is_symlink(status) ? "link"
-                                              : "other";
-    }
-    return entry;
-}
-
-// Every entry under `root`, links and special files included (as such, never followed): first
-// each manifest file where the layout puts it (stages/<folder>/<file>), then the rest, past the
-// folders tools make.
-std::vector<Entry> folder_entries(const fs::path& root, const std::vector<StageManifest>& manifests,
-                                  std::string& problem) {
-    std::vector<Entry> entries;
-    std::set<fs::path> listed;
-    std::error_code error;
-    for (const StageManifest& manifest : manifests) {
-        for (const std::string& file : manifest.files) {
-            const fs::path path = root / "stages" / manifest.folder / file;
-            if (!fs::exists(fs::symlink_status(path, error))) continue;
-            entries.push_back(folder_entry(root, fs::directory_entry(path, error), error));
-            listed.insert(path);
-        }
-    }
-    error.clear();
-    fs::recursive_directory_iterator it(root, fs::directory_options::skip_permission_denied, error);
-    for (; !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
-        if (listed.count(it->path()) > 0) continue;
-        if (entries.size() >= kMostEntries) {
-            problem = "the folder holds more than " + std::to_string(kMostEntries) +
-                      " entries; those past them were not looked at";
-            break;
-        }
-        entries.push_back(folder_entry(root, *it, error));
-        if (error) break;
-        if (it->is_directory(error) && !it->is_symlink(error) && made_by_tools(it->path())) {
-            it.disable_recursion_pending();
-        }
-    }
-    if (error && problem.empty()) {
-        problem = "the folder could not be read to its end: " + error.message();
-    }
-    return entries;
-}
-
-// Lists the archive and copies out the entries named like a manifest file, in the sandbox:
-// raystep-unpack reads it on stdin and writes only into work/unpacked. The program itself is
-// copied into the work folder, so that the sandbox's user need not reach the grader's build.
-std::vector<Entry> archive_entries(const fs::path& archive, const std::set<std::string>& names,
-                                   const fs::path& work, const IntakeBudget& budget,
-                                   std::string& problem) {
+// Lists the submission and copies out the entries named like a manifest file, in the sandbox, as
+// the sandbox's unprivileged user: raystep-unpack reads it on stdin (an archive's bytes, or a
+// folder's descriptor, through which it follows no link) and writes only into work/unpacked. The
+// program itself is copied into the work folder, so that the sandbox's user need not reach the
+// grader's build.
+std::vector<Entry> listed_entries(const fs::path& submission, bool folder,
+                                  const std::set<std::string>& names, const fs::path& work,
+                                  const IntakeBudget& budget, std::string& problem) {
     const fs::path tools = work / "tools";
     const fs::path unpacked = work / "unpacked";
     std::error_code ignored;
@@ -133,7 +59,7 @@ std::vector<Entry> archive_entries(const fs::path& archive, const std::set<std::
     policy.read_only = {tools};
     policy.writable = unpacked;
     policy.working_directory = unpacked;
-    policy.stdin_file = archive;
+    policy.stdin_file = submission;
     policy.limits.cpu_seconds = 30;
     policy.limits.wall = std::chrono::seconds(60);
     policy.limits.file_size_bytes = budget.largest_file;
@@ -151,6 +77,7 @@ std::vector<Entry> archive_entries(const fs::path& archive, const std::set<std::
             entry.kind = j.at("kind").get<std::string>();
             entry.size =
                 static_cast<std::uintmax_t>(std::max<long long>(0, j.at("size").get<long long>()));
+            entry.target = j.value("target", "");
             if (j.at("taken").get<bool>()) {
                 entry.contents = unpacked / std::to_string(entries.size());
             }
@@ -160,22 +87,40 @@ std::vector<Entry> archive_entries(const fs::path& archive, const std::set<std::
         }
     }
     const std::string said = run.errors.substr(0, run.errors.find('\n'));
-    if (run.exit_code == 3) {
+    const std::string what = folder ? "folder" : "archive";
+    if (!folder && run.exit_code == 3) {
         problem =
             "it is not a folder, nor an archive the grader can read (zip, tar, tar.gz, 7z, "
             "...): " +
             said;
     } else if (run.timed_out) {
-        problem = "listing the archive took longer than " +
+        problem = "listing the " + what + " took longer than " +
                   std::to_string(static_cast<int>(policy.limits.cpu_seconds)) +
                   " s; the entries after the first " + std::to_string(entries.size()) +
                   " were not seen";
     } else if (run.exit_code != 0 || run.signal != 0) {
-        problem = "the archive could be read only in part (" +
+        problem = "the " + what + " could be read only in part (" +
                   (said.empty() ? "its reader stopped" : said) + "); the entries after the first " +
                   std::to_string(entries.size()) + " were not seen";
     }
     return entries;
+}
+
+// The links of a submission, each as "path (a link to TARGET)", for a report that must say why
+// files are missing: the grader follows no link, at any depth.
+std::string links_named(const std::vector<Entry>& entries) {
+    std::string named;
+    std::size_t count = 0;
+    for (const Entry& entry : entries) {
+        if (entry.kind != "link") continue;
+        ++count;
+        if (count <= 10) {
+            named += (named.empty() ? "" : "; ") + entry.path + " (a link to " +
+                     (entry.target.empty() ? "somewhere" : entry.target) + ")";
+        }
+    }
+    if (count > 10) named += "; and " + std::to_string(count - 10) + " more";
+    return named;
 }
 
 // The candidate for `file` of stage `folder`: stages/<folder>/<file> if present, else the
@@ -258,10 +203,9 @@ Submission take_submission(const fs::path& path, const std::vector<StageManifest
     std::vector<Entry> entries;
     std::error_code error;
     const fs::file_status status = fs::status(path, error);
-    if (fs::is_directory(status)) {
-        entries = folder_entries(path, manifests, submission.problem);
-    } else if (fs::is_regular_file(status)) {
-        entries = archive_entries(path, names, work, budget, submission.problem);
+    if (fs::is_directory(status) || fs::is_regular_file(status)) {
+        entries =
+            listed_entries(path, fs::is_directory(status), names, work, budget, submission.problem);
     } else if (fs::exists(status)) {
         submission.problem = "it is neither a folder nor a file";
     } else {
@@ -306,6 +250,15 @@ Submission take_submission(const fs::path& path, const std::vector<StageManifest
     if (submission.problem.empty() && taken == 0 && !manifests.empty()) {
         submission.problem = "it holds none of the files the stages' manifests name (such as " +
                              manifests.front().files.front() + ")";
+    }
+    // Files are missing: any link may be why, since none is followed
+    const bool missing = std::any_of(submission.stages.begin(), submission.stages.end(),
+                                     [](const SubmittedStage& s) { return !s.missing.empty(); });
+    const std::string links = links_named(entries);
+    if (missing && !links.empty()) {
+        submission.problem += (submission.problem.empty() ? "" : "; ") +
+                              std::string("the grader follows no link, and these were left: ") +
+                              links;
     }
     return submission;
 }

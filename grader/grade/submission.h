@@ -37,13 +37,16 @@ struct IntakeBudget {
 
 /// Takes the manifest files, and only those, from a submission into work/submission. The
 /// submission may be a folder, or a file: an archive of any kind libarchive reads, whatever its
-/// name says (raystep-unpack, run in the sandbox, lists it and copies out only entries named like
-/// a manifest file). A file is found at stages/<folder>/<file> anywhere in the submission, or else
-/// as <file> anywhere (the shallowest). Links of every kind, special files and files over the
-/// budget are never taken; names never reach the file system, so no name can place a file
-/// outside the work folder. Never throws for what the submission is or holds: a path that is
-/// missing, not an archive, broken partway or over the budget is said in `problem`, with every
-/// file that could be taken. Throws only for the grader's own problems (raystep-unpack missing).
+/// name says. Either is read the same way: raystep-unpack, run in the sandbox as its unprivileged
+/// user, lists it and copies out only entries named like a manifest file; a folder it reads
+/// through a descriptor the grader opened, one name at a time, following no link at any depth.
+/// A file is found at stages/<folder>/<file> anywhere in the submission, or else as <file>
+/// anywhere (the shallowest). Links of every kind (a linked `stages` or stage folder too), special
+/// files and files over the budget are never taken, and when files are missing `problem` names
+/// every link; names never reach the file system, so no name can place a file outside the work
+/// folder. Never throws for what the submission is or holds: a path that is missing, not an
+/// archive, unreadable, broken partway or over the budget is said in `problem`, with every file
+/// that could be taken. Throws only for the grader's own problems (raystep-unpack missing).
 Submission take_submission(const std::filesystem::path& path,
                            const std::vector<StageManifest>& manifests,
                            const std::filesystem::path& work, const IntakeBudget& budget = {});

@@ -3,6 +3,7 @@
 // archive is written here with libarchive, so that every case is exactly what it says.
 #include <archive.h>
 #include <archive_entry.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -292,20 +293,91 @@ TEST_CASE("class_submissions: every entry but the output folder, each under a na
     }
 }
 
-TEST_CASE("take_submission: a private (0600) source file is taken, and the copy is readable by all",
+TEST_CASE("take_submission: a taken file's copy is readable by all, whatever its own mode",
           "[intake]") {
     const TempFolder folder(0755);
     const fs::path root = folder.path() / "carol";
     fs::create_directories(root / "stages/1_vectors");
     const fs::path file = root / "stages/1_vectors/vectors.cpp";
     std::ofstream(file) << "// vectors";
-    fs::permissions(file, fs::perms::owner_read | fs::perms::owner_write);
+    fs::permissions(file, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read |
+                              fs::perms::others_read);
     const WorkFolder work(folder.path(), "work-", false);
 
     const Submission submission = take_submission(root, kManifests, work.path());
     REQUIRE(submission.stages[0].files.size() == 1);
     const fs::perms mode = fs::status(submission.stages[0].files[0]).permissions();
     CHECK((mode & fs::perms::others_read) == fs::perms::others_read);
+}
+
+TEST_CASE(
+    "take_submission: a root grader reads a folder as a user of its own, so a private (0700) "
+    "folder is refused with the command that opens it",
+    "[intake]") {
+    if (geteuid() != 0) {
+        WARN("not root: the folder is read as the grader's own user, who may read it");
+        return;
+    }
+    const TempFolder folder(0755);
+    const fs::path root = folder.path() / "erin";
+    fs::create_directories(root / "stages/1_vectors");
+    std::ofstream(root / "stages/1_vectors/vectors.cpp") << "// vectors";
+    fs::permissions(root / "stages", fs::perms::owner_all);
+    const WorkFolder work(folder.path(), "work-", false);
+
+    const Submission submission = take_submission(root, kManifests, work.path());
+    CHECK(taken(submission).empty());
+    CAPTURE(submission.problem);
+    CHECK(submission.problem.find("chmod -R go+rX") != std::string::npos);
+}
+
+// A folder submission whose way to its files passes a link, where the link leads to the
+// instructor's solutions. Whatever the link is, nothing is taken through it, and the problem names
+// it.
+TEST_CASE("take_submission: a link at any depth of a folder hands in nothing, and is named",
+          "[intake]") {
+    const TempFolder folder(0755);
+    // What a link may reach: a copy of the repository's layout, solutions included
+    const fs::path repository = folder.path() / "repository";
+    for (const char* layer : {"solutions", "stages"}) {
+        fs::create_directories(repository / layer / "3_intersect");
+        std::ofstream(repository / layer / "3_intersect/sphere.cpp") << "// the reference sphere";
+        std::ofstream(repository / layer / "3_intersect/plane.cpp") << "// the reference plane";
+    }
+    struct Layout {
+        std::string name;
+        std::string link;  ///< inside the submission
+        fs::path target;
+    };
+    const std::string source = RAYSTEP_SOURCE_DIR;
+    const std::vector<Layout> layouts = {
+        {"a linked stages folder", "stages", repository / "solutions"},
+        {"a linked stage folder", "stages/3_intersect", repository / "solutions/3_intersect"},
+        {"a link in the middle of a path", "work/stages", repository / "solutions"},
+        {"a link to the repository itself", "repo", repository},
+        {"a link to the real repository", "raystep", source},
+        {"a link to /proc/self/root", "root", "/proc/self/root"},
+    };
+    for (const Layout& layout : layouts) {
+        CAPTURE(layout.name);
+        const fs::path root = folder.path() / "mallory";
+        fs::remove_all(root);
+        fs::create_directories((root / layout.link).parent_path());
+        if (layout.link != "stages") {
+            fs::create_directories(root / "stages/1_vectors");
+            std::ofstream(root / "stages/1_vectors/vectors.cpp") << "// vectors";
+        }
+        fs::create_directory_symlink(layout.target, root / layout.link);
+        const WorkFolder work(folder.path(), "work-", false);
+
+        const Submission submission = take_submission(root, kManifests, work.path());
+        std::map<std::string, std::string> expected;
+        if (layout.link != "stages") expected["1_vectors/vectors.cpp"] = "// vectors";
+        CHECK(taken(submission) == expected);
+        CAPTURE(submission.problem);
+        CHECK(submission.problem.find(layout.link + " (a link to " + layout.target.string()) !=
+              std::string::npos);
+    }
 }
 
 TEST_CASE("take_submission: a working copy's 25,000 build products do not hide its sources",

@@ -1,19 +1,23 @@
-// raystep-unpack: lists an archive of any kind libarchive reads (zip, tar and its compressed
-// forms, 7z, ...) and copies out the few entries raystep-grade asks for, by file name. It is the
-// grader's own code but reads a submission's bytes, so raystep-grade runs it in the sandbox with
-// the archive on its stdin and only an empty folder in view (grader/grade/submission.cpp).
+// raystep-unpack: lists a submission, an archive of any kind libarchive reads (zip, tar and its
+// compressed forms, 7z, ...) or a folder, and copies out the few entries raystep-grade asks for,
+// by file name. It is the grader's own code but reads a submission's bytes, so raystep-grade runs
+// it in the sandbox, as an unprivileged user, with the submission on its stdin and only an empty
+// folder in view (grader/grade/submission.cpp).
 //
-//   raystep-unpack FOLDER MAX_FILE_BYTES MAX_TOTAL_BYTES NAME... < ARCHIVE
+//   raystep-unpack FOLDER MAX_FILE_BYTES MAX_TOTAL_BYTES NAME... < SUBMISSION
 //
-// Writes one JSON line per entry on stdout: {"path", "kind" (file, folder, link, other), "size",
-// "taken"}; an entry taken is a regular file whose last path component is one of the NAMEs, of at
-// most MAX_FILE_BYTES, while the bytes taken stay within MAX_TOTAL_BYTES; its contents go to
-// FOLDER/N, N its entry's number from 0. No entry's path ever reaches the file system, so no name
-// (absolute, "..", a link's target, bytes that are not UTF-8) can place a file anywhere else.
-// Exit codes: 0 read to the end; 3 not an archive it can read; 4 the archive broke partway (the
-// lines before stand); 2 a bad command line. Whatever went wrong is said on stderr.
+// Writes one JSON line per entry on stdout (unpacked_entry.h): {"path", "kind" (file, folder,
+// link, other), "size", "taken"}, and a link's "target"; an entry taken is a regular file whose
+// last path component is one of the NAMEs, of at most MAX_FILE_BYTES, while the bytes taken stay
+// within MAX_TOTAL_BYTES; its contents go to FOLDER/N, N its entry's number from 0. No entry's path
+// ever reaches the file system, so no name (absolute, "..", a link's target, bytes that are not
+// UTF-8) can place a file anywhere else. A folder on stdin is read through that descriptor alone,
+// one name at a time, following no link (folder_listing.h). Exit codes: 0 read to the end; 3 not
+// an archive it can read; 4 the archive broke partway, or the folder could not be read to its end
+// (the lines before stand); 2 a bad command line. Whatever went wrong is said on stderr.
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <archive.h>
@@ -24,9 +28,9 @@
 #include <set>
 #include <string>
 
-#include <nlohmann/json.hpp>
-
 #include "grader/grade/archive_entry_name.h"
+#include "grader/tools/folder_listing.h"
+#include "grader/tools/unpacked_entry.h"
 
 namespace {
 
@@ -83,13 +87,18 @@ int main(int argc, char** argv) {
     if (argc < 4 || number_argument(argv[2]) < 0 || number_argument(argv[3]) < 0) {
         std::fprintf(
             stderr,
-            "usage: raystep-unpack FOLDER MAX_FILE_BYTES MAX_TOTAL_BYTES NAME... < ARCHIVE\n");
+            "usage: raystep-unpack FOLDER MAX_FILE_BYTES MAX_TOTAL_BYTES NAME... < SUBMISSION\n");
         return 2;
     }
     const std::string folder = argv[1];
     const long long max_file = number_argument(argv[2]);
     const long long max_total = number_argument(argv[3]);
     const std::set<std::string> wanted(argv + 4, argv + argc);
+
+    struct stat submission {};
+    if (fstat(STDIN_FILENO, &submission) == 0 && S_ISDIR(submission.st_mode)) {
+        return raystep::grade::list_folder(STDIN_FILENO, {folder, max_file, max_total, wanted});
+    }
 
     archive* reader = archive_read_new();
     archive_read_support_filter_all(reader);
@@ -125,9 +134,9 @@ int main(int argc, char** argv) {
             taken = copy_data(reader, folder + "/" + std::to_string(index), max_file);
             if (taken) taken_bytes += size;
         }
-        const nlohmann::json line = {
-            {"path", path}, {"kind", kind}, {"size", size}, {"taken", taken}};
-        std::puts(line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
+        const char* target = archive_entry_symlink(entry);
+        if (!target) target = archive_entry_hardlink(entry);
+        raystep::grade::print_entry(path, kind, size, taken, target ? target : "");
     }
     archive_read_free(reader);
     return status;
