@@ -207,8 +207,9 @@ int main(int argc, char** argv) {
                            "Where to build (default: beside the reports, or the system's temporary "
                            "folder where the sandbox's user cannot reach them)");
     submission->add_option("--seed", one.seed,
-                           "The seed of the statistical checks (stage 8's random samples): a "
-                           "right submission passes at any seed at their stated false-fail rate");
+                           "The seed of the statistical checks (stage 8's random samples) and "
+                           "of stage 3's contract cases: a right submission passes at any seed at "
+                           "their stated false-fail rate");
     submission->add_flag("--keep-work", one.keep_work,
                          "Keep the build (the submission's files, objects, probes) to look into");
 

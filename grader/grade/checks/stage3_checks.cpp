@@ -1,8 +1,8 @@
 // Stage 3 checks: every intersection function on the hard-case families (grader/families) and on
-// hand-picked cases of the contract,
-// decided by the exact oracle (grader/oracle), scored as `raystep check` scores them
-// (app/check/case_scoring.h). The seeds are the grader's own, not the public case files': a
-// submission is graded on cases it has not seen.
+// hand-picked cases of the contract, decided by the exact oracle (grader/oracle), scored as
+// `raystep check` scores them (app/check/case_scoring.h). The seeds are the grader's own, not the
+// public case files': a submission is graded on cases it has not seen. The contract's edges are
+// checks of their own (stage3_contract_checks.cpp).
 //
 // A leak (a ray through a shared edge that no triangle of the mesh reports) is counted and
 // reported but not failed: stage 3's contract asks for the three lecture methods, which leak by
@@ -98,15 +98,8 @@ ProbeCase method_case(const Stage3Method& method, const CaseFamily& family, cons
             student_case_command(method, family, ray_case)};
 }
 
-namespace {
-
-// Each method on each case of each family that has a primitive it tests: one query per case, so
-// that every case is in the denominator, answered or not, and has a number of its own to
-// reproduce it by.
-CheckMeasure measure_methods(const GradingContext& context, const BuiltProbe& probe,
-                             const std::vector<Stage3Method>& methods,
-                             const std::vector<CaseFamily>& families, const std::string& id) {
-    std::size_t leaks = 0;
+std::vector<ProbeCase> method_cases(const std::vector<Stage3Method>& methods,
+                                    const std::vector<CaseFamily>& families, std::size_t& leaks) {
     std::vector<ProbeCase> cases;
     for (const Stage3Method& method : methods) {
         for (const CaseFamily& family : families) {
@@ -116,7 +109,18 @@ CheckMeasure measure_methods(const GradingContext& context, const BuiltProbe& pr
             }
         }
     }
-    CheckMeasure measure = run_cases(context, id, probe, cases);
+    return cases;
+}
+
+namespace {
+
+// Each method on each case of each family that has a primitive it tests, leaks counted and
+// reported, not failed.
+CheckMeasure measure_methods(const GradingContext& context, const BuiltProbe& probe,
+                             const std::vector<Stage3Method>& methods,
+                             const std::vector<CaseFamily>& families, const std::string& id) {
+    std::size_t leaks = 0;
+    CheckMeasure measure = run_cases(context, id, probe, method_cases(methods, families, leaks));
     if (leaks > 0) {
         measure.metrics["leaks (not failed)"] = static_cast<double>(leaks);
         if (measure.outcome == Outcome::passed || measure.outcome == Outcome::failed) {
@@ -140,11 +144,14 @@ std::vector<CheckDefinition> stage3_checks() {
     }
     checks.push_back(
         {"stage3.hidden", 3, "unit",
-         "every function on the contract: t ranges, edges, ties, degenerate input, the domain",
+         "every function on the contract: t ranges, edges, two sides, nearly parallel rays, the "
+         "domain",
          [](const GradingContext& context, const BuiltProbe& probe) {
              return measure_methods(context, probe, stage3_methods(), decided_contract(),
                                     "stage3.hidden");
          }});
+    for (CheckDefinition& check : stage3_contract_checks())
+        checks.push_back(std::move(check));
     checks.push_back(stage3_speed_error_check());
     return checks;
 }

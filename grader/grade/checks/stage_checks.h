@@ -76,6 +76,16 @@ std::vector<PublicCheck> render_public_checks(const std::filesystem::path& sourc
 ProbeCase method_case(const Stage3Method& method, const CaseFamily& family, const RayCase& ray_case,
                       std::size_t& leaks);
 
+/// method_case for each method on each case of each family that has a primitive it tests, methods
+/// outermost: one query per case, so that every case is in the denominator and has a number of
+/// its own to reproduce it by.
+std::vector<ProbeCase> method_cases(const std::vector<Stage3Method>& methods,
+                                    const std::vector<CaseFamily>& families, std::size_t& leaks);
+
+/// Stage 3's contract edges, each a check of its own (stage3_contract_checks.cpp):
+/// "stage3.contract.range_ends", ".ties", ".ray_in_plane" and ".degenerate".
+std::vector<CheckDefinition> stage3_contract_checks();
+
 /// Stage 3's intersect_triangle, its speed against its error on one family
 /// (stage3_speed_error.cpp), and the names of what it measures, which the report's chart reads
 /// back (grader/grade/speed_error_chart.h).
