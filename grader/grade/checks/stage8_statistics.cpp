@@ -3,8 +3,9 @@
 // by their values. Each check asks for hundreds of streams of the grader's seed
 // (statistics_seed()) in one query per case and runs a few tests on what comes back:
 //
-// - what holds for every stream (one point per stratum, the radiance asked `count` times, no film
-//   point outside the pixel, a dark side that adds nothing): deterministic, no false fails;
+// - what holds for every stream (one point per stratum and below its far edge, the film points
+//   and shadow rays handed back and the colour they make, no shadow ray behind the surface, no
+//   light sample shared by two film samples): deterministic, no false fails;
 // - a chi-square test of pooled points against the exact uniform distribution, or a z-test of a
 //   mean over streams against the exact value the grader integrates, or a one-sided test of a
 //   variance against the exact variance of stratified sampling.
@@ -12,7 +13,8 @@
 // A check's false-fail rate is kCheckAlpha: it runs m tests, each at kCheckAlpha / m
 // (Bonferroni), so that a right submission loses a check's points on at most that share of
 // seeds. The measured rates, on the reference and on every stage-8 alternative over many seeds,
-// and the command that measures them: docs/measurements/stage8-checks.md.
+// each check's power against the bugs it is for, and the commands that measure them:
+// docs/measurements/stage8-checks.md.
 
 #include <algorithm>
 #include <cmath>
