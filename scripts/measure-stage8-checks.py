@@ -6,7 +6,8 @@ at which a right submission failed. With --mutants, does the same for each stage
 every stage-8 check, which should fail at every seed.
 
     scripts/measure-stage8-checks.py [--count 100] [--first 1] [--jobs 2] [--mutants]
-        [--checks stage8.render.] [--grader build/release/bin/raystep-grade]
+        [--entries '8-jittered-*'] [--checks stage8.render.]
+        [--grader build/release/bin/raystep-grade]
 
 Prints one Markdown table per entry, for docs/measurements/stage8-checks.md.
 """
@@ -59,14 +60,17 @@ def main():
     parser.add_argument("--first", type=int, default=1)
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--mutants", action="store_true")
+    parser.add_argument("--entries", default="8-*",
+                        help="the diffs whose name matches this pattern (default: 8-*; the model "
+                        "is swept only with the default)")
     parser.add_argument("--checks", help="the checks whose id starts with this (default: "
                         "stage8.statistics., or stage8. with --mutants)")
     parser.add_argument("--grader", default=str(ROOT / "build/release/bin/raystep-grade"))
     args = parser.parse_args()
 
     folder = "mutants" if args.mutants else "alternatives"
-    entries = sorted((CORPUS / folder).glob("8-*.diff"))
-    if not args.mutants:
+    entries = sorted((CORPUS / folder).glob(args.entries + ".diff"))
+    if not args.mutants and args.entries == "8-*":
         entries = [None] + entries
     with tempfile.TemporaryDirectory() as work_text:
         work = pathlib.Path(work_text)

@@ -4,7 +4,10 @@
 // hundreds of streams in one query and judges the distribution of what comes back, never the
 // values, since a student may consume a stream in any order. The film radiance and the occluder
 // are the probe's own, made from the query's parameters, so that the grader knows the exact
-// integral each mean estimates.
+// integral each mean estimates. Where the student's code asks them something, the answer hands
+// back what it asked (the film points, the shadow rays) as data, never a count: the grader checks
+// that data against its own scene and derives every figure from it, since a count kept in this
+// process is only what the student's code, which runs here too, lets it be.
 
 #include <cmath>
 #include <stdexcept>
@@ -130,6 +133,20 @@ OccludedFunction occluder_from(const Json& j) {
     };
 }
 
+// A shadow ray as it was traced, and what the blocker answered.
+Json traced_shadow_ray(const Ray& shadow, bool blocked) {
+    return Json{{"ray", ray(shadow)}, {"blocked", blocked}};
+}
+
+// `occluded` that also writes each ray it is asked about, and its answer, into `traced`.
+OccludedFunction recording(const OccludedFunction& occluded, Json& traced) {
+    return [&occluded, &traced](const Ray& shadow) {
+        const bool blocked = occluded(shadow);
+        traced.push_back(traced_shadow_ray(shadow, blocked));
+        return blocked;
+    };
+}
+
 PerspectiveCamera perspective_camera_from(const Json& j) {
     PerspectiveCamera c;
     c.eye = vec3_from(j.at("eye"));
@@ -189,9 +206,7 @@ void add_sampling_calls(CallTable& table) {
         return rays_through(orthographic_camera_from(a.at("camera")), a.at("films"),
                             orthographic_ray_through);
     };
-    // Per stream the colour, how many times the radiance was asked, and how many of the film
-    // points asked lay outside the pixel [i, i + 1] x [j, j + 1]: closed, since i + u with u just
-    // below 1 may round to i + 1.
+    // Per stream the colour and the film points the radiance was asked about, in order.
     table["pixel_colour"] = [](const Json& a) {
         const FilmRadiance radiance = film_radiance_from(a.at("radiance"));
         const int i = integer_from(a.at("i"));
@@ -199,15 +214,13 @@ void add_sampling_calls(CallTable& table) {
         const SamplePattern pattern = pattern_from(a.at("pattern"));
         const int count = integer_from(a.at("count"));
         return per_stream(a, [&](RandomStream& r) {
-            int calls = 0;
-            int outside = 0;
-            const FilmRadiance counted = [&](const Vec2& film) {
-                ++calls;
-                if (!(film.x >= i && film.x <= i + 1 && film.y >= j && film.y <= j + 1)) ++outside;
+            Json films = Json::array();
+            const FilmRadiance recorded = [&](const Vec2& film) {
+                films.push_back(point(film));
                 return radiance(film);
             };
-            const Color colour = pixel_colour(counted, i, j, pattern, count, r);
-            return Json{{"colour", vec3(colour)}, {"calls", calls}, {"outside", outside}};
+            const Color colour = pixel_colour(recorded, i, j, pattern, count, r);
+            return Json{{"colour", vec3(colour)}, {"films", std::move(films)}};
         });
     };
     table["sample_quad_light"] = [](const Json& a) {
@@ -215,7 +228,7 @@ void add_sampling_calls(CallTable& table) {
                                               vec3_from(a.at("point")), point_from(a.at("u")),
                                               integer_from(a.at("sample_count"))));
     };
-    // Per stream the colour and the shadow rays traced.
+    // Per stream the colour and the shadow rays traced, in order.
     table["quad_light_shading"] = [](const Json& a) {
         const Material material = material_from(a.at("material"));
         const SurfacePoint p = surface_point_from(a.at("point"));
@@ -225,14 +238,50 @@ void add_sampling_calls(CallTable& table) {
         const OccludedFunction blocker = occluder_from(a.at("blocker"));
         const RayOffset offset = ray_offset_from(a.at("offset"));
         return per_stream(a, [&](RandomStream& r) {
-            int shadow_rays = 0;
-            const OccludedFunction counted = [&](const Ray& ray) {
-                ++shadow_rays;
-                return blocker(ray);
+            Json traced = Json::array();
+            const Color colour = quad_light_shading(material, p, light, pattern, count, r,
+                                                    recording(blocker, traced), offset);
+            return Json{{"colour", vec3(colour)}, {"shadow_rays", std::move(traced)}};
+        });
+    };
+    // A pixel of a floor under a quad light: pixel_colour over a film radiance that shades the
+    // floor point under each film point with quad_light_shading, nothing blocking. The film point
+    // (i + x, j + y) is the point corner + x edge1 + y edge2, its normal edge1 x edge2 normalized.
+    // Each stream is the pixel's one stream, handed to pixel_colour and then to every
+    // quad_light_shading in turn, as a RandomStream& parameter promises a caller may: right code
+    // draws new numbers for every film sample's light samples. Per stream the colour, and per
+    // film sample, in order, its film point and the shadow rays its shading traced.
+    table["pixel_colour_with_quad_light"] = [](const Json& a) {
+        const int i = integer_from(a.at("i"));
+        const int j = integer_from(a.at("j"));
+        const SamplePattern pattern = pattern_from(a.at("pattern"));
+        const int count = integer_from(a.at("count"));
+        const Json& floor = a.at("floor");
+        const Vec3 corner = vec3_from(floor.at("corner"));
+        const Vec3 edge1 = vec3_from(floor.at("edge1"));
+        const Vec3 edge2 = vec3_from(floor.at("edge2"));
+        const Vec3 normal = glm::normalize(glm::cross(edge1, edge2));
+        const Vec3 to_eye = vec3_from(a.at("to_eye"));
+        const Material material = material_from(a.at("material"));
+        const QuadLight light = quad_light_from(a.at("light"));
+        const SamplePattern light_pattern = pattern_from(a.at("light_pattern"));
+        const int light_count = integer_from(a.at("light_count"));
+        const RayOffset offset = ray_offset_from(a.at("offset"));
+        const OccludedFunction nothing = [](const Ray&) { return false; };
+        return per_stream(a, [&](RandomStream& r) {
+            Json films = Json::array();
+            const FilmRadiance radiance = [&](const Vec2& film) {
+                const SurfacePoint p{corner + (film.x - i) * edge1 + (film.y - j) * edge2,
+                                     Vec3(0.0), normal, normal, to_eye};
+                Json traced = Json::array();
+                const Color colour =
+                    quad_light_shading(material, p, light, light_pattern, light_count, r,
+                                       recording(nothing, traced), offset);
+                films.push_back(Json{{"film", point(film)}, {"shadow_rays", std::move(traced)}});
+                return colour;
             };
-            const Color colour =
-                quad_light_shading(material, p, light, pattern, count, r, counted, offset);
-            return Json{{"colour", vec3(colour)}, {"shadow_rays", shadow_rays}};
+            const Color colour = pixel_colour(radiance, i, j, pattern, count, r);
+            return Json{{"colour", vec3(colour)}, {"films", std::move(films)}};
         });
     };
 }

@@ -92,6 +92,60 @@ Wide corner_spread(const F& f, Wide value, Wide c1_low, Wide c1_high, Wide c2_lo
     return spread + 16 * kU;
 }
 
+// --- The sine-and-tangent form's rounding budget
+//
+// Fresnel's equations in angles, r_s = -sin(theta1 - theta2) / sin(theta1 + theta2) and
+// r_p = tan(theta1 - theta2) / tan(theta1 + theta2), equal the cosine form only on Snell's law,
+// and a right formula in double leaves it where it takes the two angles by different roads:
+// theta1 = acos(c) is right to an ulp, while sin(theta1) = sqrt(1 - c^2), from which Snell's law
+// gives theta2, carries the rounding of c^2. Near head-on that is a relative error up to 2^-28 in
+// sin^2(theta1) (c = 1 - e rounds c^2 by at most min(u / 2, e^2)), and the ratio theta2 / theta1,
+// all the form sees there, moves with it. Taken the other road, theta1 = asin(sqrt(1 - c^2)) near
+// grazing moves by the rounding of 1 - c^2 over cos(theta1). So the budget is the form's spread
+// over the box of both angles: theta1 by either road, theta2 = asin(eta sin(theta1)), each library
+// call and product within 2u, plus the quotients' 16u as in the cosine form.
+
+Wide fresnel_from_angles(Wide theta1, Wide theta2, Wide n1, Wide n2) {
+    const Wide sum = theta1 + theta2;
+    if (!(sum > 0)) {  // head-on: the limit, ((n1 - n2) / (n1 + n2))^2
+        const Wide r0 = (n1 - n2) / (n1 + n2);
+        return r0 * r0;
+    }
+    const Wide r_s = std::sin(theta1 - theta2) / std::sin(sum);
+    const Wide r_p = std::tan(theta1 - theta2) / std::tan(sum);
+    return (r_s * r_s + r_p * r_p) / 2;
+}
+
+Wide angle_form_spread(Wide value, double cos_incident, Wide n1, Wide n2) {
+    const Wide c = std::clamp<Wide>(cos_incident, 0, 1);
+    const Wide half_pi = kWidePi / 2;
+    // sin(theta1) = sqrt(1 - c^2) as a double formula has it
+    const Wide q = 1 - c * c;
+    const Wide q_error = std::min(kU / 2, (1 - c) * (1 - c)) + kU * q;
+    const Wide sin1_low = std::sqrt(std::max<Wide>(0, q - q_error)) * (1 - kU);
+    const Wide sin1_high = std::min<Wide>(1, std::sqrt(q + q_error) * (1 + kU));
+    // theta1 by acos(c) or by asin(sin(theta1))
+    const Wide by_acos = std::acos(c);
+    const Wide theta1_low = std::min(by_acos, std::asin(sin1_low)) * (1 - 2 * kU);
+    const Wide theta1_high =
+        std::min(half_pi, std::max(by_acos, std::asin(sin1_high)) * (1 + 2 * kU));
+    // theta2 by Snell's law from that sine; beyond 1 there is no theta2, and F is 1
+    const Wide eta = n1 / n2;
+    const Wide sin2_low = eta * sin1_low * (1 - 2 * kU);
+    const Wide sin2_high = eta * sin1_high * (1 + 2 * kU);
+    if (sin2_low >= 1) return 16 * kU;
+    const Wide theta2_low = std::asin(sin2_low) * (1 - 2 * kU);
+    const Wide theta2_high =
+        std::min(half_pi, std::asin(std::min<Wide>(1, sin2_high)) * (1 + 2 * kU));
+    Wide spread = 0;
+    for (const Wide theta1 : {theta1_low, theta1_high}) {
+        for (const Wide theta2 : {theta2_low, theta2_high})
+            spread =
+                std::max(spread, std::abs(fresnel_from_angles(theta1, theta2, n1, n2) - value));
+    }
+    return spread + 16 * kU;
+}
+
 // Where the probe's fake scene looks for a ray's hit: the expected origin (the surface point
 // under the error-bound rule, whose origin is a region a few ulps wide) and direction.
 Ray key_of(const ExpectedRay& e, const Vec3& point) {
@@ -131,8 +185,10 @@ ExpectedNumber expected_fresnel_exact(double cos_incident, double n1, double n2)
     const auto fresnel = [&](Wide a, Wide b) { return fresnel_from_cosines(a, b, n1, n2); };
     ExpectedNumber e;
     e.value = far.q <= 0 ? 1 : fresnel(c1, std::sqrt(far.q));
-    e.tolerance =
-        corner_spread(fresnel, e.value, c1 * (1 - 4 * kU), c1 * (1 + 4 * kU), far.low, far.high);
+    // Every right form's budget: the cosine form's and the sine-and-tangent form's.
+    e.tolerance = std::max(
+        corner_spread(fresnel, e.value, c1 * (1 - 4 * kU), c1 * (1 + 4 * kU), far.low, far.high),
+        angle_form_spread(e.value, cos_incident, n1, n2));
     return e;
 }
 

@@ -42,7 +42,8 @@ struct ExpectedNumber {
 };
 
 /// fresnel_exact(cos_incident, n1, n2): the mean of the s and p reflectances, 1 beyond the
-/// critical angle; the tolerance spans the answers over the rounding of both cosines.
+/// critical angle; the tolerance spans every right form's answers over its rounding: the cosine
+/// form's over both cosines, the sine-and-tangent form's over both angles.
 ExpectedNumber expected_fresnel_exact(double cos_incident, double n1, double n2);
 
 /// fresnel_schlick(cos_incident, n1, n2), with the cosine on the less dense side.

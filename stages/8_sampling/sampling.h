@@ -19,7 +19,10 @@ namespace raystep {
 // (jittering). The same samples serve the pixel (antialiasing) and an area light (soft shadows).
 //
 // Random numbers come only from the RandomStream the caller hands in: a render is then the same
-// for any thread count, and a grader can compare your samples with what a seed implies.
+// for any thread count, and a grader can compare your samples with what a seed implies. Draw
+// them from that stream itself, never from a copy of it: a caller may hand the same stream on to
+// its next call (a pixel's film points, then each film sample's light samples in turn) and must
+// get new numbers there.
 
 /// The n x n jittered samples of [0, 1)^2: for each stratum [a/n, (a+1)/n) x [b/n, (b+1)/n),
 /// a, b in [0, n), one point uniform in it. n^2 points in any order. Throws std::domain_error

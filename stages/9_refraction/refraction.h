@@ -34,12 +34,13 @@ std::optional<Vec3> refract(const Vec3& incident, const Vec3& normal, double eta
 
 /// The Fresnel reflectance of a dielectric interface for unpolarised light, the mean of the s
 /// and p reflectances, with cos_incident = cos(theta1) in [0, 1] on the side of index n1 and
-/// n2 the far side's index. 1 under total internal reflection.
+/// n2 the far side's index. 1 under total internal reflection. A cosine computed as V . N may
+/// round a little above 1: it counts as 1 (a sine taken as sqrt(1 - cos^2) must not be NaN).
 double fresnel_exact(double cos_incident, double n1, double n2);
 
 /// Schlick's approximation R0 + (1 - R0)(1 - cos)^5, R0 = ((n1 - n2)/(n1 + n2))^2, with cos the
 /// cosine on the less dense side: cos(theta1) when n1 <= n2, cos(theta2) when leaving a denser
-/// medium, and 1 under total internal reflection.
+/// medium, and 1 under total internal reflection. cos_incident as for fresnel_exact.
 double fresnel_schlick(double cos_incident, double n1, double n2);
 
 /// One solid a ray is inside: which object (the renderer's numbering) and its index.

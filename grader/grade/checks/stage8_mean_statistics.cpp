@@ -1,7 +1,10 @@
 // Stage 8's statistical checks of means (stage8_statistics.cpp says how the checks judge): a
 // pixel's colour over film radiances whose exact mean the grader knows (an edge's coverage, a
 // ramp), with the variance that stratification must bring, and a quad light's soft shadow over a
-// point against the light's integral, with a blocker over a known part of it.
+// point against the light's integral, with a blocker over a known part of it. Each answer hands
+// back what the student's code asked (the film points, the shadow rays), and the grader takes the
+// colour those make itself before any statistic: a colour they do not explain, a film point
+// outside the pixel or a shadow ray to a sample behind the surface fails the case outright.
 
 #include <algorithm>
 #include <array>
@@ -19,6 +22,7 @@
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/sample_statistics.h"
 #include "grader/grade/checks/stage8_queries.h"
+#include "grader/grade/checks/stage8_shadow_rays.h"
 #include "grader/grade/checks/stage8_statistics.h"
 #include "grader/grade/checks/statistics_seed.h"
 #include "grader/oracle/sampling_oracle.h"
@@ -34,19 +38,33 @@ using probe::Json;
 constexpr int kPixelI = 3;
 constexpr int kPixelJ = 5;
 
+// What the probe's radiance may answer at a film point: one value, or either side of an edge
+// that the point lies on within rounding.
+struct FilmValues {
+    double low = 0.0;
+    double high = 0.0;
+};
+
 // A film radiance of the probe's (app/probe/sampling_calls.cpp) and what the grader knows of it.
 struct FilmCase {
     std::string text;
     Json radiance;
-    std::function<double(const Vec2&)> at;  ///< its value at a film point
-    double mean = 0.0;                      ///< its exact mean over the pixel
+    std::function<FilmValues(const Vec2&)> at;  ///< its value at a film point
+    double mean = 0.0;                          ///< its exact mean over the pixel
     /// The exact variance of the jittered estimate with n x n strata.
     std::function<double(int n)> jittered_variance;
 };
 
+// The probe computes a film radiance in double: within 1e-12 of an edge it may fall on either
+// side, and a ramp's value is the grader's within 1e-12 of its size.
+constexpr double kFilmRounding = 1e-12;
+
 FilmCase constant_film(double value) {
     return {"constant " + full_text(value), Json{{"kind", "constant"}, {"value", value}},
-            [value](const Vec2&) { return value; }, value, [](int) { return 0.0; }};
+            [value](const Vec2&) {
+                return FilmValues{value, value};
+            },
+            value, [](int) { return 0.0; }};
 }
 
 // An edge through `through` at `angle` (radians) to the x axis of the film: bright on the side
@@ -80,7 +98,10 @@ FilmCase edge_film(const Vec2& through, double angle, double bright, double dark
                  {"dark", dark}},
             [=](const Vec2& film) {
                 const Vec2 d = film - through;
-                return d.x * normal.x + d.y * normal.y >= 0.0 ? bright : dark;
+                const double side = d.x * normal.x + d.y * normal.y;
+                if (std::abs(side) <= kFilmRounding) return FilmValues{dark, bright};
+                const double value = side >= 0.0 ? bright : dark;
+                return FilmValues{value, value};
             },
             dark + (bright - dark) * share, variance};
 }
@@ -95,7 +116,11 @@ FilmCase ramp_film(double value, const Vec2& gradient) {
     };
     return {"a ramp " + full_text(value) + " + " + point_text(gradient) + " . film",
             Json{{"kind", "ramp"}, {"value", value}, {"gradient", point_json(gradient)}},
-            [=](const Vec2& film) { return value + gradient.x * film.x + gradient.y * film.y; },
+            [=](const Vec2& film) {
+                const double at = value + gradient.x * film.x + gradient.y * film.y;
+                const double rounding = kFilmRounding * (1 + std::abs(at));
+                return FilmValues{at - rounding, at + rounding};
+            },
             mean, variance};
 }
 
@@ -116,25 +141,42 @@ std::string pixel_call(const FilmCase& film, SamplePattern pattern, int count) {
            std::to_string(count) + ")";
 }
 
-// Per stream: the radiance asked `count` times, every film point inside the pixel, and the three
-// channels alike (the probe's radiance is grey). Returns the red channel of each stream, or the
-// problem.
-std::string read_pixel_answers(const Json& answers, int count, std::vector<double>& colours) {
+// Per stream: the radiance asked at `count` film points, each inside the pixel, and the colour
+// their mean, the three channels alike (the probe's radiance is grey). The grader reads the film
+// points the probe hands back and takes the radiance's values there itself, so the count and the
+// colour come from data it checks, not from the probe's word. Returns the red channel of each
+// stream, or the problem.
+std::string read_pixel_answers(const Json& answers, const FilmCase& film, int count,
+                               std::vector<double>& colours) {
     for (const Json& stream : answers) {
-        const int calls = stream.at("calls").get<int>();
-        if (calls != count) {
-            return "the radiance asked " + std::to_string(calls) + " times, not " +
+        const std::vector<Vec2> films = points_from(stream.at("films"));
+        if (films.size() != static_cast<std::size_t>(count)) {
+            return "the radiance asked at " + std::to_string(films.size()) + " film points, not " +
                    std::to_string(count);
         }
-        const int outside = stream.at("outside").get<int>();
-        if (outside != 0) {
-            return std::to_string(outside) + " of the film points outside the pixel [" +
-                   std::to_string(kPixelI) + ", " + std::to_string(kPixelI + 1) + "] x [" +
-                   std::to_string(kPixelJ) + ", " + std::to_string(kPixelJ + 1) + "]";
+        double low = 0.0;
+        double high = 0.0;
+        for (const Vec2& f : films) {
+            // Closed: i + u with u just below 1 may round to i + 1.
+            if (!(f.x >= kPixelI && f.x <= kPixelI + 1 && f.y >= kPixelJ && f.y <= kPixelJ + 1)) {
+                return "the film point " + point_text(f) + " outside the pixel [" +
+                       std::to_string(kPixelI) + ", " + std::to_string(kPixelI + 1) + "] x [" +
+                       std::to_string(kPixelJ) + ", " + std::to_string(kPixelJ + 1) + "]";
+            }
+            const FilmValues values = film.at(f);
+            low += values.low;
+            high += values.high;
         }
         const Vec3 colour = probe::vec3_from(stream.at("colour"));
         if (!(colour.x == colour.y && colour.y == colour.z)) {
             return "the channels of a grey radiance apart: " + full_text(colour);
+        }
+        // The mean of `count` values in double: within `count` roundings of its size.
+        const double rounding = 1e-12 * (1 + std::abs(high / count));
+        if (!(colour.x >= low / count - rounding && colour.x <= high / count + rounding)) {
+            return "the colour " + full_text(colour.x) + ", where the film points asked make " +
+                   full_text(low / count) +
+                   (high > low ? " to " + full_text(high / count) : std::string());
         }
         colours.push_back(colour.x);
     }
@@ -147,11 +189,11 @@ ProbeCase pixel_exact_case(const FilmCase& film, SamplePattern pattern, int coun
                            std::uint64_t seed, StreamCounter& streams) {
     return {pixel_call(film, pattern, count) + ": " + full_text(exact) + " from every stream",
             {"pixel_colour", pixel_query(film, pattern, count, seed, streams.next(20))},
-            [count, exact](const ProbeAnswer& answer) {
+            [film, count, exact](const ProbeAnswer& answer) {
                 const std::string want = full_text(exact) + " from every stream";
                 if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
                 std::vector<double> colours;
-                const std::string problem = read_pixel_answers(answer.value, count, colours);
+                const std::string problem = read_pixel_answers(answer.value, film, count, colours);
                 if (!problem.empty()) return wrong(want, problem);
                 for (double c : colours) {
                     if (!(std::abs(c - exact) <= 1e-12 * std::max(1.0, std::abs(exact)))) {
@@ -174,7 +216,7 @@ ProbeCase pixel_mean_case(const FilmCase& film, SamplePattern pattern, int count
     return {pixel_call(film, pattern, count) + ": the mean over " + std::to_string(kMeanStreams) +
                 " streams" + (variance_test ? ", and its variance that of stratified samples" : ""),
             {"pixel_colour", pixel_query(film, pattern, count, seed, streams.next(kMeanStreams))},
-            [count, exact = film.mean, variance_test, jittered_variance,
+            [film, count, exact = film.mean, variance_test, jittered_variance,
              alpha](const ProbeAnswer& answer) {
                 const std::string want =
                     "a mean within " + full_text(two_sided_normal_bound(alpha)) +
@@ -182,7 +224,7 @@ ProbeCase pixel_mean_case(const FilmCase& film, SamplePattern pattern, int count
                     (variance_test ? ", a variance near " + full_text(jittered_variance) : "");
                 if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
                 std::vector<double> colours;
-                const std::string problem = read_pixel_answers(answer.value, count, colours);
+                const std::string problem = read_pixel_answers(answer.value, film, count, colours);
                 if (!problem.empty()) return wrong(want, problem);
                 const MeanEstimate estimate = estimate_mean(colours, kDeviationFloor);
                 const std::string got = "the mean " + full_text(estimate.mean) +
@@ -213,8 +255,10 @@ std::vector<ProbeCase> make_pixel_cases() {
     // The regular pattern's exact answer: the mean at the 3 x 3 centres.
     double regular_sum = 0.0;
     for (int b = 0; b < 3; ++b) {
-        for (int a = 0; a < 3; ++a)
-            regular_sum += ramp.at({kPixelI + (a + 0.5) / 3, kPixelJ + (b + 0.5) / 3});
+        for (int a = 0; a < 3; ++a) {
+            const FilmValues at = ramp.at({kPixelI + (a + 0.5) / 3, kPixelJ + (b + 0.5) / 3});
+            regular_sum += (at.low + at.high) / 2;
+        }
     }
     return {
         pixel_exact_case(constant, SamplePattern::jittered, 16, 0.7, seed, streams),
@@ -250,14 +294,10 @@ const SurfacePoint kFloorPoint = surface_at({0.3, 0, -0.2}, {0, 1, 0}, {1, 1, 0.
 const SurfacePoint kWallPoint = surface_at({0, 1, 0.1}, {1, 0, 0}, {1, 0.2, 0.3});
 // Above the light, facing it: the light's dark side.
 const SurfacePoint kAbovePoint = surface_at({0.2, 3, 0.1}, {0, -1, 0}, {0.1, -1, 0});
+// Under the floor, facing down: the whole light behind the surface.
+const SurfacePoint kBelowPoint = surface_at({0.3, 0, -0.2}, {0, -1, 0}, {1, -1, 0.5});
 
 const RayOffset kOffset{OffsetRule::along_normal, 1e-9};
-
-Json parallelogram(const Vec3& corner, const Vec3& edge1, const Vec3& edge2) {
-    return {{"corner", probe::vec3(corner)},
-            {"edge1", probe::vec3(edge1)},
-            {"edge2", probe::vec3(edge2)}};
-}
 
 // What blocks the shadow rays: the part u.x < blocked_below of the light, moved 1% of the way
 // towards the point (from the point it covers exactly that part, and a shadow ray meets it just
@@ -265,32 +305,42 @@ Json parallelogram(const Vec3& corner, const Vec3& edge1, const Vec3& edge2) {
 // plane around the point catches a shadow ray that starts on the surface with nothing to keep
 // it from hitting the surface at t = 0 (shadow acne); a ceiling half a unit beyond the light
 // catches one that is not bounded at the light sample's distance.
-Json blocker_json(const SurfacePoint& point, double blocked_below) {
-    Json parts = Json::array();
+std::vector<Parallelogram> blockers(const SurfacePoint& point, double blocked_below) {
+    std::vector<Parallelogram> parts;
     if (blocked_below > 0.0) {
         const Vec3 corner = point.position + 0.99 * (kLight.corner - point.position);
-        parts.push_back(
-            parallelogram(corner, 0.99 * blocked_below * kLight.edge1, 0.99 * kLight.edge2));
+        parts.push_back({corner, 0.99 * blocked_below * kLight.edge1, 0.99 * kLight.edge2});
     }
     const Vec3 tangent = glm::normalize(glm::cross(point.normal, {0.6, 0.0, 0.8}));
     const Vec3 bitangent = glm::cross(point.normal, tangent);
-    parts.push_back(parallelogram(point.position - 10.0 * tangent - 10.0 * bitangent,
-                                  20.0 * tangent, 20.0 * bitangent));
-    parts.push_back(parallelogram({-10, kLight.corner.y + 0.5, -10}, {0, 0, 20}, {20, 0, 0}));
+    parts.push_back(
+        {point.position - 10.0 * tangent - 10.0 * bitangent, 20.0 * tangent, 20.0 * bitangent});
+    parts.push_back({{-10, kLight.corner.y + 0.5, -10}, {0, 0, 20}, {20, 0, 0}});
     return parts;
 }
 
-Json shading_query(const SurfacePoint& point, double blocked_below, SamplePattern pattern,
-                   int count, std::uint64_t seed, const Json& streams) {
-    return {{"material", probe::material(shaded_material())},
-            {"point", probe::surface_point(point)},
-            {"light", quad_light_json(kLight)},
+// The call a case makes: the shaded material, kLight, kOffset and the blockers above.
+QuadLightCall shading_call_of(const SurfacePoint& point, double blocked_below, int count) {
+    return {shaded_material(), point, kLight, count, kOffset, blockers(point, blocked_below)};
+}
+
+Json shading_query(const QuadLightCall& call, SamplePattern pattern, std::uint64_t seed,
+                   const Json& streams) {
+    Json parts = Json::array();
+    for (const Parallelogram& p : call.blockers) {
+        parts.push_back({{"corner", probe::vec3(p.corner)},
+                         {"edge1", probe::vec3(p.edge1)},
+                         {"edge2", probe::vec3(p.edge2)}});
+    }
+    return {{"material", probe::material(call.material)},
+            {"point", probe::surface_point(call.point)},
+            {"light", quad_light_json(call.light)},
             {"pattern", std::string(sample_pattern_name(pattern))},
-            {"count", count},
+            {"count", call.sample_count},
             {"seed", seed},
             {"streams", streams},
-            {"blocker", blocker_json(point, blocked_below)},
-            {"offset", probe::ray_offset(kOffset)}};
+            {"blocker", std::move(parts)},
+            {"offset", probe::ray_offset(call.offset)}};
 }
 
 std::string shading_call(const SurfacePoint& point, double blocked_below, SamplePattern pattern,
@@ -303,11 +353,28 @@ std::string shading_call(const SurfacePoint& point, double blocked_below, Sample
            ")";
 }
 
-std::vector<Vec3> shading_colours(const Json& answers) {
-    std::vector<Vec3> colours;
-    for (const Json& stream : answers)
-        colours.push_back(probe::vec3_from(stream.at("colour")));
-    return colours;
+// Per stream: the rays the probe hands back are shadow rays of the call, none of them to a sample
+// behind the surface (it adds nothing, so a right quad_light_shading traces no ray for it), and
+// the colour is what the samples that got through make. Each stream's colour goes into
+// `colours`; returns the first problem, or empty.
+std::string read_shading_answers(const Json& answers, const QuadLightCall& call,
+                                 std::vector<Vec3>& colours) {
+    for (const Json& stream : answers) {
+        const ShadowRayReading reading =
+            read_shadow_rays(call, traced_shadow_rays(stream.at("shadow_rays")));
+        if (!reading.problem.empty()) return reading.problem;
+        if (reading.behind > 0) {
+            return std::to_string(reading.behind) + " of " +
+                   std::to_string(reading.samples.size()) +
+                   " shadow rays traced to light samples behind the surface (N . L <= 0), which "
+                   "add nothing";
+        }
+        const Vec3 colour = probe::vec3_from(stream.at("colour"));
+        const std::string problem = colour_problem(colour, reading.colour, reading.tolerance);
+        if (!problem.empty()) return problem;
+        colours.push_back(colour);
+    }
+    return "";
 }
 
 // The light's integral over its part not blocked, seen from `point`, by the midpoint rule on
@@ -333,16 +400,18 @@ Color light_integral(const SurfacePoint& point, double blocked_below) {
 ProbeCase shading_mean_case(const SurfacePoint& point, double blocked_below, SamplePattern pattern,
                             int count, std::uint64_t seed, StreamCounter& streams, double alpha) {
     const Color exact = light_integral(point, blocked_below);
+    const QuadLightCall call = shading_call_of(point, blocked_below, count);
     return {shading_call(point, blocked_below, pattern, count) + ": the mean over " +
                 std::to_string(kMeanStreams) + " streams",
-            {"quad_light_shading",
-             shading_query(point, blocked_below, pattern, count, seed, streams.next(kMeanStreams))},
-            [exact, alpha](const ProbeAnswer& answer) {
+            {"quad_light_shading", shading_query(call, pattern, seed, streams.next(kMeanStreams))},
+            [call, exact, alpha](const ProbeAnswer& answer) {
                 const double bound = two_sided_normal_bound(alpha);
                 const std::string want =
                     "a mean within " + full_text(bound) + " standard errors of " + full_text(exact);
                 if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
-                const std::vector<Vec3> colours = shading_colours(answer.value);
+                std::vector<Vec3> colours;
+                const std::string problem = read_shading_answers(answer.value, call, colours);
+                if (!problem.empty()) return wrong(want, problem);
                 Vec3 mean;
                 Vec3 error;
                 bool consistent = true;
@@ -366,15 +435,18 @@ ProbeCase shading_mean_case(const SurfacePoint& point, double blocked_below, Sam
 ProbeCase shading_exact_case(const SurfacePoint& point, double blocked_below, SamplePattern pattern,
                              int count, const Color& exact, std::uint64_t seed,
                              StreamCounter& streams) {
+    const QuadLightCall call = shading_call_of(point, blocked_below, count);
     return {shading_call(point, blocked_below, pattern, count) + ": " + full_text(exact) +
                 " from every stream",
-            {"quad_light_shading",
-             shading_query(point, blocked_below, pattern, count, seed, streams.next(20))},
-            [exact](const ProbeAnswer& answer) {
+            {"quad_light_shading", shading_query(call, pattern, seed, streams.next(20))},
+            [call, exact](const ProbeAnswer& answer) {
                 const std::string want = full_text(exact) + " from every stream";
                 if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
+                std::vector<Vec3> colours;
+                const std::string problem = read_shading_answers(answer.value, call, colours);
+                if (!problem.empty()) return wrong(want, problem);
                 const double scale = std::max({exact.x, exact.y, exact.z, 1e-300});
-                for (const Vec3& colour : shading_colours(answer.value)) {
+                for (const Vec3& colour : colours) {
                     if (!(glm::length(colour - exact) <= 1e-10 * scale)) {
                         return wrong(want, full_text(colour));
                     }
@@ -401,6 +473,9 @@ std::vector<ProbeCase> make_shading_cases() {
                            regular_quad_light_sum(material, kFloorPoint, kLight, 3, 0.4), seed,
                            streams),
         shading_exact_case(kAbovePoint, 0.0, SamplePattern::jittered, 16, Color(0.0), seed,
+                           streams),
+        // The whole light behind the surface: nothing, and no shadow ray.
+        shading_exact_case(kBelowPoint, 0.0, SamplePattern::jittered, 16, Color(0.0), seed,
                            streams),
     };
 }

@@ -41,12 +41,15 @@ Json point_json(const Vec2& p) {
     return Json::array({probe::number(p.x), probe::number(p.y)});
 }
 
+Vec2 point_from(const Json& j) {
+    if (!j.is_array() || j.size() != 2) throw std::invalid_argument("a point is [x, y]");
+    return {probe::number_from(j.at(0)), probe::number_from(j.at(1))};
+}
+
 std::vector<Vec2> points_from(const Json& j) {
     std::vector<Vec2> points;
-    for (const Json& p : j.get_ref<const Json::array_t&>()) {
-        if (p.size() != 2) throw std::invalid_argument("a point is [x, y]");
-        points.push_back({probe::number_from(p.at(0)), probe::number_from(p.at(1))});
-    }
+    for (const Json& p : j.get_ref<const Json::array_t&>())
+        points.push_back(point_from(p));
     return points;
 }
 

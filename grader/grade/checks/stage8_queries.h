@@ -19,6 +19,9 @@ probe::Json perspective_camera_json(const PerspectiveCamera& camera);
 probe::Json orthographic_camera_json(const OrthographicCamera& camera);
 probe::Json point_json(const Vec2& p);
 
+/// A point [x, y] as a call answers it; throws (an unreadable answer) otherwise.
+Vec2 point_from(const probe::Json& j);
+
 /// Points [[x, y], ...] as a call answers them; throws (an unreadable answer) otherwise.
 std::vector<Vec2> points_from(const probe::Json& j);
 

@@ -3,8 +3,9 @@
 // by their values. Each check asks for hundreds of streams of the grader's seed
 // (statistics_seed()) in one query per case and runs a few tests on what comes back:
 //
-// - what holds for every stream (one point per stratum, the radiance asked `count` times, no film
-//   point outside the pixel, a dark side that adds nothing): deterministic, no false fails;
+// - what holds for every stream (one point per stratum and below its far edge, the film points
+//   and shadow rays handed back and the colour they make, no shadow ray behind the surface, no
+//   light sample shared by two film samples): deterministic, no false fails;
 // - a chi-square test of pooled points against the exact uniform distribution, or a z-test of a
 //   mean over streams against the exact value the grader integrates, or a one-sided test of a
 //   variance against the exact variance of stratified sampling.
@@ -12,11 +13,13 @@
 // A check's false-fail rate is kCheckAlpha: it runs m tests, each at kCheckAlpha / m
 // (Bonferroni), so that a right submission loses a check's points on at most that share of
 // seeds. The measured rates, on the reference and on every stage-8 alternative over many seeds,
-// and the command that measures them: docs/measurements/stage8-checks.md.
+// each check's power against the bugs it is for, and the commands that measure them:
+// docs/measurements/stage8-checks.md.
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -27,6 +30,7 @@
 #include "grader/grade/checks/stage8_statistics.h"
 #include "grader/grade/checks/stage_checks.h"
 #include "grader/grade/checks/statistics_seed.h"
+#include "grader/grade/checks/stream_with_draw.h"
 
 namespace raystep::grade {
 
@@ -84,18 +88,36 @@ Json jittered_query(int n, std::uint64_t seed, const Json& streams) {
     return {{"strata", n}, {"seed", seed}, {"streams", streams}};
 }
 
+// Every stream's points one per stratum of n x n.
+std::function<Judgement(const ProbeAnswer&)> stratified_judge(int n, const std::string& want) {
+    return [n, want](const ProbeAnswer& answer) {
+        if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
+        for (const Json& stream : answer.value) {
+            const std::string problem = stratification_problem(points_from(stream), n);
+            if (!problem.empty()) return wrong(want, problem);
+        }
+        return right();
+    };
+}
+
 ProbeCase stratified_case(int n, std::uint64_t seed, StreamCounter& streams) {
     const std::string want = "n^2 = " + std::to_string(n * n) + " points, one in each stratum";
     return {"jittered_samples(" + std::to_string(n) + "): one point per stratum, 64 streams",
             {"jittered_samples", jittered_query(n, seed, streams.next(64))},
-            [n, want](const ProbeAnswer& answer) {
-                if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
-                for (const Json& stream : answer.value) {
-                    const std::string problem = stratification_problem(points_from(stream), n);
-                    if (!problem.empty()) return wrong(want, problem);
-                }
-                return right();
-            },
+            stratified_judge(n, want),
+            ""};
+}
+
+// samples(jittered, n^2) is jittered_samples(n): one point per stratum, not a fall through to
+// random points.
+ProbeCase samples_stratified_case(int n, std::uint64_t seed, StreamCounter& streams) {
+    const std::string want = "n^2 = " + std::to_string(n * n) + " points, one in each stratum";
+    return {"samples(jittered, " + std::to_string(n * n) + "): one point per stratum, 64 streams",
+            {"samples", Json{{"pattern", "jittered"},
+                             {"count", n * n},
+                             {"seed", seed},
+                             {"streams", streams.next(64)}}},
+            stratified_judge(n, want),
             ""};
 }
 
@@ -123,33 +145,102 @@ ProbeCase offsets_uniform_case(int n, int stream_count, std::uint64_t seed, Stre
             ""};
 }
 
-// Offsets of different strata of one stream independent: the x offsets of strata paired in
-// stratum order, (0, 1), (2, 3), ..., binned as points. One random offset reused for every
-// stratum puts them all on the diagonal.
-ProbeCase strata_independent_case(int n, int stream_count, std::uint64_t seed,
-                                  StreamCounter& streams, double alpha) {
-    return {"jittered_samples(" + std::to_string(n) + "): strata of one stream independent, " +
-                std::to_string(stream_count) + " streams",
+// Offsets of neighbouring strata of one stream independent, along rows (strata (a, b) and
+// (a + 1, b), a even) or along columns ((a, b) and (a, b + 1), b even): each coordinate's pairs
+// of offsets binned as points, one chi-square test for x and one for y. An offset drawn once for
+// a whole row (the same y all along it) or column puts that coordinate's pairs on the diagonal,
+// and one offset for every stratum puts both there.
+ProbeCase neighbours_independent_case(int n, bool along_rows, int stream_count, std::uint64_t seed,
+                                      StreamCounter& streams, double alpha) {
+    const std::string along = along_rows ? "rows" : "columns";
+    return {"jittered_samples(" + std::to_string(n) + "): neighbouring strata along " + along +
+                " independent in x and in y, " + std::to_string(stream_count) + " streams",
             {"jittered_samples", jittered_query(n, seed, streams.next(stream_count))},
-            [n, alpha](const ProbeAnswer& answer) {
+            [n, along_rows, alpha](const ProbeAnswer& answer) {
                 const std::string want =
-                    "the offsets of two strata independent, chi-square p >= " + full_text(alpha);
+                    "the offsets of neighbouring strata independent, chi-square p >= " +
+                    full_text(alpha) + " for x and for y";
                 if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
-                std::vector<Vec2> pairs;
+                std::vector<Vec2> x_pairs;
+                std::vector<Vec2> y_pairs;
                 for (const Json& stream : answer.value) {
-                    std::vector<double> by_stratum(static_cast<std::size_t>(n) * n, 0.5);
+                    std::vector<Vec2> by_stratum(static_cast<std::size_t>(n) * n, Vec2(0.5));
                     for (const Vec2& p : points_from(stream)) {
                         const StratumPlace place = place_of(p, n);
                         if (place.a < 0 || place.a >= n || place.b < 0 || place.b >= n) continue;
-                        by_stratum[static_cast<std::size_t>(place.b) * n + place.a] =
-                            place.offset.x;
+                        by_stratum[static_cast<std::size_t>(place.b) * n + place.a] = place.offset;
                     }
-                    for (std::size_t k = 0; k + 1 < by_stratum.size(); k += 2)
-                        pairs.push_back({by_stratum[k], by_stratum[k + 1]});
+                    const auto at = [&](int a, int b) {
+                        return by_stratum[static_cast<std::size_t>(b) * n + a];
+                    };
+                    for (int b = 0; b < n; ++b) {
+                        for (int a = 0; a < n; ++a) {
+                            const bool first =
+                                along_rows ? a % 2 == 0 && a + 1 < n : b % 2 == 0 && b + 1 < n;
+                            if (!first) continue;
+                            const Vec2 one = at(a, b);
+                            const Vec2 other = along_rows ? at(a + 1, b) : at(a, b + 1);
+                            x_pairs.push_back({one.x, other.x});
+                            y_pairs.push_back({one.y, other.y});
+                        }
+                    }
                 }
-                const double p =
-                    chi_square_p_value(uniform_square_chi_square(pairs, kBins), kBins * kBins - 1);
-                return p >= alpha ? right() : wrong(want, p_text(p, alpha));
+                const double p_x = chi_square_p_value(uniform_square_chi_square(x_pairs, kBins),
+                                                      kBins * kBins - 1);
+                const double p_y = chi_square_p_value(uniform_square_chi_square(y_pairs, kBins),
+                                                      kBins * kBins - 1);
+                if (p_x >= alpha && p_y >= alpha) return right();
+                return wrong(want, "x: " + p_text(p_x, alpha) + "; y: " + p_text(p_y, alpha));
+            },
+            ""};
+}
+
+// The stratum column (or row) of a coordinate as the handout and the public tests decide it:
+// the boundaries k / n, k = 1 .. n - 1, computed in double, at or below it.
+int stratum_by_double_edges(double x, int n) {
+    int stratum = 0;
+    for (int k = 1; k < n; ++k)
+        stratum += x >= static_cast<double>(k) / n ? 1 : 0;
+    return stratum;
+}
+
+// The extremes of a stream, 0 and 1 - 2^-53, at every draw up to 3 n^2 (a stream of its own for
+// each): whichever stratum and coordinate a right pattern puts them in, the point stays in
+// [0, 1)^2 and below its stratum's far edge (a + 1.0) / n, the handout's clamp. Without the
+// clamp a + (1 - 2^-53) rounds to a + 1, onto the next stratum's edge, or onto 1.
+ProbeCase stratum_edge_case(int n, std::uint64_t seed) {
+    Json chosen = Json::array();
+    for (const double value : {0.0, 1.0 - 0x1p-53}) {
+        for (int draw = 0; draw < 3 * n * n; ++draw)
+            chosen.push_back(stream_with_draw(seed, static_cast<std::uint64_t>(draw), value));
+    }
+    const std::string want =
+        "n^2 = " + std::to_string(n * n) + " points in [0, 1)^2, one below each stratum's far edge";
+    return {"jittered_samples(" + std::to_string(n) + "): 0 and 1 - 2^-53 at every draw, " +
+                std::to_string(chosen.size()) + " streams",
+            {"jittered_samples", jittered_query(n, seed, chosen)},
+            [n, want](const ProbeAnswer& answer) {
+                if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
+                for (const Json& stream : answer.value) {
+                    const std::vector<Vec2> points = points_from(stream);
+                    if (points.size() != static_cast<std::size_t>(n) * n) {
+                        return wrong(want, std::to_string(points.size()) + " points");
+                    }
+                    std::vector<int> seen(points.size(), 0);
+                    for (const Vec2& p : points) {
+                        if (!(p.x >= 0 && p.x < 1 && p.y >= 0 && p.y < 1)) {
+                            return wrong(want, "the point " + point_text(p) + " outside [0, 1)^2");
+                        }
+                        const int a = stratum_by_double_edges(p.x, n);
+                        const int b = stratum_by_double_edges(p.y, n);
+                        if (++seen[static_cast<std::size_t>(b) * n + a] > 1) {
+                            return wrong(want, "two points in stratum (" + std::to_string(a) +
+                                                   ", " + std::to_string(b) + "), one of them " +
+                                                   point_text(p));
+                        }
+                    }
+                }
+                return right();
             },
             ""};
 }
@@ -178,18 +269,23 @@ ProbeCase streams_case(const std::string& call, const Json& args_without_streams
             ""};
 }
 
-std::vector<ProbeCase> jittered_cases() {
+std::vector<ProbeCase> make_jittered_cases() {
     const std::uint64_t seed = statistics_seed();
     StreamCounter streams;
-    constexpr int tests = 3;
+    // Two uniform offsets, and x and y along rows and along columns.
+    constexpr int tests = 6;
     const double alpha = kCheckAlpha / tests;
     std::vector<ProbeCase> cases;
     for (int n : {1, 2, 3, 4, 7})
         cases.push_back(stratified_case(n, seed, streams));
     cases.push_back(offsets_uniform_case(4, 500, seed, streams, alpha));
     cases.push_back(offsets_uniform_case(2, 2000, seed, streams, alpha));
-    cases.push_back(strata_independent_case(4, 500, seed, streams, alpha));
+    cases.push_back(neighbours_independent_case(4, true, 500, seed, streams, alpha));
     cases.push_back(streams_case("jittered_samples", Json{{"strata", 3}}, seed, streams));
+    cases.push_back(neighbours_independent_case(4, false, 500, seed, streams, alpha));
+    cases.push_back(samples_stratified_case(4, seed, streams));
+    for (int n : {3, 4})
+        cases.push_back(stratum_edge_case(n, seed));
     return cases;
 }
 
@@ -263,11 +359,16 @@ std::vector<ProbeCase> random_cases() {
 
 }  // namespace
 
+std::vector<ProbeCase> jittered_cases() {
+    return make_jittered_cases();
+}
+
 std::vector<CheckDefinition> stage8_statistical_checks() {
     const std::string rate = " (false-fail rate 1e-4)";
     return {
         case_check("stage8.statistics.jittered", 8, "oracle",
-                   "jittered samples: one per stratum, uniform and independent offsets, from the "
+                   "jittered samples: one per stratum and below its far edge, from samples() too, "
+                   "uniform offsets, neighbours independent along rows and columns, from the "
                    "stream handed in" +
                        rate,
                    jittered_cases),
@@ -281,9 +382,15 @@ std::vector<CheckDefinition> stage8_statistical_checks() {
                    pixel_cases),
         case_check("stage8.statistics.quad_light_shading", 8, "oracle",
                    "soft shadows: the mean over seeds against the light's integral, a blocker "
-                   "over half of it, a light half behind the surface, its dark side" +
+                   "over half of it, a light half and wholly behind the surface (no shadow ray "
+                   "there), its dark side" +
                        rate,
                    shading_cases),
+        case_check("stage8.statistics.film_and_light", 8, "oracle",
+                   "a pixel under a quad light: light samples of its own for each film sample, "
+                   "independent of the film points" +
+                       rate,
+                   film_and_light_cases),
     };
 }
 

@@ -9,7 +9,8 @@
 namespace raystep::grade {
 
 // What stage 8's statistical checks share (stage8_statistics.cpp: the sample patterns;
-// stage8_mean_statistics.cpp: the means of pixel_colour and quad_light_shading).
+// stage8_mean_statistics.cpp: the means of pixel_colour and quad_light_shading;
+// stage8_film_light_statistics.cpp: a pixel's film and light samples together).
 
 // Each statistical check's false-fail rate: at 1e-4, a right submission graded on 100 seeds
 // keeps full marks on all four checks with probability 0.96 at worst; the mutants miss their
@@ -43,9 +44,16 @@ class StreamCounter {
     std::uint64_t first_ = 0;
 };
 
+/// The cases of "stage8.statistics.jittered", drawn at statistics_seed() (stage8_statistics.cpp).
+std::vector<ProbeCase> jittered_cases();
+
 /// The cases of "stage8.statistics.pixel_colour" and "stage8.statistics.quad_light_shading",
 /// drawn at statistics_seed() (stage8_mean_statistics.cpp).
 std::vector<ProbeCase> pixel_cases();
 std::vector<ProbeCase> shading_cases();
+
+/// The cases of "stage8.statistics.film_and_light": film and light samples of one pixel drawn
+/// from its one stream (stage8_film_light_statistics.cpp).
+std::vector<ProbeCase> film_and_light_cases();
 
 }  // namespace raystep::grade

@@ -5,7 +5,9 @@
 // cases (hidden: normal incidence, grazing, at and one ulp either side of the critical angle,
 // eta 1 and far from 1, Brewster's angle, normals off the axes) and on seeded random ones. The
 // media are exact, on named cases. radiance_with_refraction runs over fake scenes
-// (stage9_radiance_cases.h). Every case is judged by a data judge, so the public ones go into
+// (stage9_radiance_cases.h). Three edges of the contract that a bug may break alone are checks of
+// their own: leaving a solid's latest entry, the shading normal's cosine, and a cosine that rounds
+// above 1. Every case is judged by a data judge, so the public ones go into
 // the student release as data and the others are judged by the same code.
 
 #include <cmath>
@@ -235,13 +237,9 @@ std::vector<PublicCase> hidden_cases() {
         after_crossing_case({kWater, kGlass, kGlass}, kGlass, false, {kWater, kGlass}),
         after_crossing_case({kGlass, kOtherGlass}, kGlass, false, {kOtherGlass}),
         after_crossing_case({kOtherGlass, kWater, kGlass}, kOtherGlass, false, {kWater, kGlass}),
-        // The refracted ray: each offset rule, a bent shading normal, far from the origin,
-        // total internal reflection
+        // The refracted ray: each offset rule, far from the origin, total internal reflection
         refracted_ray_case(floor_point({1, 0, 2}, {-1, 1, 0}), 1.0, 1.5, kAlongNormal),
         refracted_ray_case(floor_point({1, 0, 2}, {-1, 1, 0}), 1.0, 1.5, kErrorBound),
-        refracted_ray_case(floor_point({0, 0, 0}, {1, 2, 0.5}, {0.2, 1, 0}), 1.0, 1.33,
-                           kAlongNormal),
-        refracted_ray_case(floor_point({0, 0, 0}, {1, 2, 0.5}, {0.2, 1, 0}), 1.5, 1.0, kErrorBound),
         refracted_ray_case(floor_point({1e6, 0, -1e6}, {0.3, 1, -0.2}), 2.4, 1.0,
                            {OffsetRule::along_normal, 1e-3}),
         refracted_ray_case(floor_point({1e6, 0, -1e6}, {0.3, 1, -0.2}), 1.0, 2.4, kErrorBound),
@@ -250,6 +248,54 @@ std::vector<PublicCase> hidden_cases() {
         unbounded_case(floor_point({1, 0, 2}, {-1, 1, 0}), 1.0, 1.5, kAlongNormal),
     };
     for (PublicCase& c : stage9_hidden_radiance_cases())
+        cases.push_back(std::move(c));
+    return cases;
+}
+
+// --- The contract's edges that a check of their own holds (the rubric takes all its points for
+// one wrong case: each is one promise, kept or broken)
+
+// Leaving a solid the stack holds twice, another solid entered between: its latest entry goes.
+std::vector<PublicCase> latest_entry_cases() {
+    std::vector<PublicCase> cases = {
+        after_crossing_case({kGlass, kWater, kGlass}, kGlass, false, {kGlass, kWater}),
+        after_crossing_case({kGlass, kWater, kGlass, kDiamond}, kGlass, false,
+                            {kGlass, kWater, kDiamond}),
+        after_crossing_case({kWater, kGlass, kDiamond, kGlass, kWater}, kGlass, false,
+                            {kWater, kGlass, kDiamond, kWater}),
+    };
+    for (PublicCase& c : stage9_latest_entry_radiance_cases())
+        cases.push_back(std::move(c));
+    return cases;
+}
+
+// A shading normal bent from the geometric one: the refracted ray bends about it, and F takes
+// its cosine from it.
+std::vector<PublicCase> shading_normal_cases() {
+    std::vector<PublicCase> cases = {
+        refracted_ray_case(floor_point({0, 0, 0}, {1, 2, 0.5}, {0.2, 1, 0}), 1.0, 1.33,
+                           kAlongNormal),
+        refracted_ray_case(floor_point({0, 0, 0}, {1, 2, 0.5}, {0.2, 1, 0}), 1.5, 1.0, kErrorBound),
+    };
+    for (PublicCase& c : stage9_shading_normal_radiance_cases())
+        cases.push_back(std::move(c));
+    return cases;
+}
+
+// A cosine that rounds above 1, as V . N of two equal unit vectors may: no NaN from a sine taken
+// as sqrt(1 - cos^2), in either Fresnel formula, in Snell's law, or in the recursion.
+std::vector<PublicCase> cosine_above_one_cases() {
+    const double above_one = std::nextafter(1.0, 2.0);
+    const Vec3 v = unit_vector_squaring_above_one();
+    std::vector<PublicCase> cases = {
+        fresnel_case(false, above_one, 1.0, 1.5),
+        fresnel_case(false, above_one, 1.5, 1.0),
+        fresnel_case(true, above_one, 1.0, 1.5),
+        fresnel_case(true, above_one, 1.5, 1.0),
+        refract_case(-v, v, 1 / 1.5),
+        refract_case(-v, v, 1.5),
+    };
+    for (PublicCase& c : stage9_cosine_above_one_radiance_cases())
         cases.push_back(std::move(c));
     return cases;
 }
@@ -371,7 +417,7 @@ PublicCheck stage9_sample_check() {
 }
 
 std::vector<CheckDefinition> stage9_checks() {
-    return stage_case_checks(
+    std::vector<CheckDefinition> checks = stage_case_checks(
         {9, kPublicName, [] { return data_judged_cases(public_cases()); },
          "the critical angle, grazing and head-on light, Brewster's angle, nested and "
          "overlapping media, F once, black weights and bounces cut",
@@ -379,6 +425,17 @@ std::vector<CheckDefinition> stage9_checks() {
          "random refractions, reflectances, refracted rays and trees of glass, against long "
          "double",
          oracle_cases});
+    checks.push_back(case_check("stage9.hidden.latest_entry", 9, "unit",
+                                "leaving a solid entered twice, another between, removes its "
+                                "latest entry",
+                                [] { return data_judged_cases(latest_entry_cases()); }));
+    checks.push_back(case_check("stage9.hidden.shading_normal", 9, "unit",
+                                "Fresnel's cosine and the refracted ray from a bent shading normal",
+                                [] { return data_judged_cases(shading_normal_cases()); }));
+    checks.push_back(case_check("stage9.hidden.cosine_above_one", 9, "unit",
+                                "a cosine that rounds above 1 gives no NaN",
+                                [] { return data_judged_cases(cosine_above_one_cases()); }));
+    return checks;
 }
 
 }  // namespace raystep::grade

@@ -137,6 +137,25 @@ MediumHit surface(int k, const Vec3& to_eye, const Vec3& normal, const Color& lo
     return {{scene_point(k, to_eye, normal), local, ks}, kt, solid, entering};
 }
 
+// A clear glass surface whose shading normal is bent from the geometric one.
+MediumHit bent_glass(int k, const Vec3& to_eye, const Vec3& normal, const Vec3& shading_normal,
+                     bool entering) {
+    MediumHit hit = surface(k, to_eye, normal, Color(0.1), Color(0), Color(1), kGlass, entering);
+    hit.shaded.point.shading_normal = glm::normalize(shading_normal);
+    return hit;
+}
+
+// Clear glass seen head-on with V = N = unit_vector_squaring_above_one(), kept as they are:
+// normalizing that vector again could round it to another.
+MediumHit head_on_glass_above_one(int k, bool entering) {
+    const Vec3 v = unit_vector_squaring_above_one();
+    MediumHit hit = surface(k, v, v, Color(0.1), Color(0), Color(1), kGlass, entering);
+    hit.shaded.point.normal = v;
+    hit.shaded.point.shading_normal = v;
+    hit.shaded.point.to_eye = v;
+    return hit;
+}
+
 // An opaque, matte surface: it adds its local colour and sends nothing on.
 MediumHit matte(int k, const Color& local) {
     return surface(k, {0, 1, 0}, {0, 1, 0}, local, Color(0), Color(0), kGlass, true);
@@ -239,6 +258,60 @@ std::vector<PublicCase> stage9_hidden_radiance_cases() {
         // Glass in one channel only: both weights are green, neither is black.
         radiance_case(head_on_glass(Color(0), kGreen), kEye, 3, {}, true, kAlongRay),
     };
+}
+
+std::vector<PublicCase> stage9_latest_entry_radiance_cases() {
+    const MediumStack glass_water_glass{kGlass, kWater, kGlass};
+    return {
+        // Inside glass, water, glass, leaving the glass: the ray goes on in water, 1.5 to 1.33.
+        radiance_case(
+            listed({surface(0, {1, 2, 0}, {0, 1, 0}, Color(0), Color(0), Color(1), kGlass, false),
+                    matte(1, kRed), matte(2, kBlue)}),
+            kEye, 1, glass_water_glass, false, kAlongRay),
+        // Then leaving the water too: from 1.33 back into the first glass's 1.5.
+        radiance_case(
+            listed({surface(0, {1, 2, 0}, {0, 1, 0}, Color(0), Color(0), Color(1), kGlass, false),
+                    matte(1, kRed),
+                    surface(2, {1, 3, 0}, {0, 1, 0}, Color(0), Color(0), Color(1), kWater, false),
+                    matte(3, kGreen), matte(4, kBlue)}),
+            kEye, 3, glass_water_glass, true, kAlongNormal),
+    };
+}
+
+std::vector<PublicCase> stage9_shading_normal_radiance_cases() {
+    const auto scene = [](const MediumHit& hit) {
+        return listed({hit, matte(1, kRed), matte(2, kBlue)});
+    };
+    // cos(theta1) from the shading normal against the geometric one: 0.51 and 0.71 into glass
+    // (F 0.085 and 0.050), 0.82 and 0.95 out of it (F 0.088 and 0.041); the reflected and the
+    // refracted rays leave at least 0.29 off the geometric tangent plane, each on its own side.
+    const MediumHit entering = bent_glass(0, {1, 1, 0}, {0, 1, 0}, {-0.25, 1, 0}, true);
+    const MediumHit leaving = bent_glass(0, {1, 3, 0}, {0, 1, 0}, {-0.3, 1, 0}, false);
+    const MediumHit entering_3d = bent_glass(0, {1, 2, 0.5}, {0, 1, 0}, {0.2, 1, -0.3}, true);
+    const MediumHit leaving_3d = bent_glass(0, {-1, 3, 0.5}, {0, 1, 0}, {0.25, 1, 0.2}, false);
+    return {
+        radiance_case(scene(entering), kEye, 1, {}, false, kAlongNormal),
+        radiance_case(scene(leaving), kEye, 1, {kGlass}, false, kErrorBound),
+        radiance_case(scene(entering_3d), kEye, 1, {}, true, kAlongRay),
+        radiance_case(scene(leaving_3d), kEye, 1, {kGlass}, true, kAlongNormal),
+    };
+}
+
+std::vector<PublicCase> stage9_cosine_above_one_radiance_cases() {
+    const auto scene = [](bool entering) {
+        return listed({head_on_glass_above_one(0, entering), matte(1, kRed), matte(2, kBlue)});
+    };
+    return {
+        radiance_case(scene(true), kEye, 1, {}, false, kAlongRay),
+        radiance_case(scene(false), kEye, 1, {kGlass}, false, kAlongNormal),
+        radiance_case(scene(true), kEye, 1, {}, true, kErrorBound),
+        radiance_case(scene(false), kEye, 1, {kGlass}, true, kAlongRay),
+    };
+}
+
+Vec3 unit_vector_squaring_above_one() {
+    const double c = 0.5773502691896258;  // 1 / sqrt(3) rounded: its square rounds up
+    return {c, c, c};
 }
 
 PublicCase stage9_random_radiance_case(PortableRandom& random, int k) {

@@ -28,7 +28,9 @@ std::vector<CheckDefinition> stage8_statistical_checks();
 /// The render checks of sampled scenes, each view rendered at several seeds and compared tile by
 /// tile with the reference's mean (noisy_render_checks.cpp).
 std::vector<CheckDefinition> noisy_render_checks();
-/// Stage 9's checks, "stage9.unit", "stage9.hidden" and "stage9.oracle" (stage9_checks.cpp).
+/// Stage 9's checks, "stage9.unit", "stage9.hidden" and "stage9.oracle", then three contract
+/// edges of their own, "stage9.hidden.latest_entry", "shading_normal" and "cosine_above_one"
+/// (stage9_checks.cpp).
 std::vector<CheckDefinition> stage9_checks();
 std::vector<CheckDefinition> render_checks();
 
