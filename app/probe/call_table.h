@@ -34,9 +34,9 @@ void add_refraction_calls(CallTable& table);
 /// anything else.
 BvhSplit bvh_split_from(const Json& j);
 
-/// Every call above: what `raystep grade` answers a public case with. The stage-4 calls that
-/// count a structure's primitive tests need the linker's help (grader/probe/stage3_test_count.h),
-/// so only the grader's probe, linked for that, has them (grader/probe/accel_work_calls.h).
+/// Every call above: what `raystep grade` answers a public case with. Stage 4's structure as data
+/// and its timed workloads are for the grader's checks alone, which a release does not run, so
+/// only the grader's probe has them (grader/probe/accel_work_calls.h).
 CallTable stage_calls();
 
 }  // namespace raystep::probe

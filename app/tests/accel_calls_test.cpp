@@ -30,8 +30,8 @@ TEST_CASE("accel calls: every structure answers as closest_hit does, and no work
         ray_list.push_back(probe::ray(rays.back()));
     }
     const probe::CallTable calls = probe::stage_calls();
-    for (const char* work :
-         {"bvh_work", "grid_work", "bvh_workload", "grid_workload", "brute_force_workload"}) {
+    for (const char* work : {"bvh_structure", "grid_structure", "bvh_workload", "grid_workload",
+                             "brute_force_workload"}) {
         CHECK(calls.count(work) == 0);
     }
     const Json primitives = probe::primitive_list(list);

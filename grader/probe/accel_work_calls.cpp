@@ -1,11 +1,16 @@
-// Stage 4 work calls: build a BVH or a grid over the primitives given and report the primitive
-// tests each ray cost, counted by the probe itself (stage3_test_count.h). A workload call answers
-// the same rays `repeat` times (with a BVH, a grid, or no structure at all) and returns only a
-// checksum: the grader times the whole probe from outside. The structure's answers themselves are
-// app/probe/accel_calls.cpp's.
+// Stage 4's calls that only the grader's probe has: a structure handed back as data (its nodes or
+// cells), for the grader to check and walk itself; and the timed workloads, whose time the grader
+// takes from the kernel, outside this process (docs/instructor.md, "What student code can touch").
+// The structure's answers themselves are app/probe/accel_calls.cpp's.
+//
+// A workload answers the base rays `repeat` times, each pass with every ray moved a little by
+// numbers drawn for that pass: no ray is asked twice, so a structure that remembers answers gains
+// nothing, and only the hits are returned, a checksum against the reference's.
 
 #include "grader/probe/accel_work_calls.h"
-#include "grader/probe/stage3_test_count.h"
+
+#include "app/protocol/structure_json.h"
+#include "base/math/portable_random.h"
 #include "stages/4_accel/bvh.h"
 #include "stages/4_accel/uniform_grid.h"
 
@@ -13,29 +18,40 @@ namespace raystep::probe {
 
 namespace {
 
-// What each ray cost the structure in primitive tests, as the probe counts them (never as the
-// structure reports them), and how many rays it answered with a hit or as occluded.
-template <class Structure>
-Json count_work(const Structure& structure, const Json& a) {
-    const bool occluded = a.value("occluded", false);
-    Json tests = Json::array();
-    std::size_t hits = 0;
-    for (const Ray& r : rays_from(a.at("rays"))) {
-        const std::uint64_t before = stage3_tests_counted();
-        hits += occluded ? structure.occluded(r) : structure.closest_hit(r).has_value();
-        tests.push_back(stage3_tests_counted() - before);
-    }
-    return Json{{"tests", tests}, {"hits", hits}};
+// How far each pass moves the base rays: every origin coordinate by up to `origin`, every
+// direction component by up to `direction`, drawn from PortableRandom(seed, pass).
+struct Jitter {
+    std::uint64_t seed = 0;
+    double origin = 0.0;
+    double direction = 0.0;
+};
+
+Jitter jitter_from(const Json& j) {
+    const Json& seed = field(j, "seed");
+    if (!seed.is_number_unsigned()) throw std::invalid_argument("a seed is a whole number");
+    return {seed.get<std::uint64_t>(), number_from(field(j, "origin")),
+            number_from(field(j, "direction"))};
 }
 
-// The same rays `repeat` times, counting hits so that no work can be optimized away.
+Vec3 moved(const Vec3& v, double by, PortableRandom& random) {
+    return v + by * random.point(1.0);
+}
+
+// The base rays `repeat` times, each pass's moved by its own numbers; the number of hits.
 template <class Structure>
 Json run_workload(const Structure& structure, const Json& a) {
-    const std::vector<Ray> rays = rays_from(a.at("rays"));
-    const int repeat = a.at("repeat").get<int>();
+    const std::vector<Ray> rays = rays_from(field(a, "rays"));
+    const Jitter jitter = jitter_from(field(a, "jitter"));
+    const int repeat = integer_from(field(a, "repeat"));
     std::size_t hits = 0;
-    for (int k = 0; k < repeat; ++k) {
-        for (const Ray& r : rays)
+    std::vector<Ray> pass_rays = rays;
+    for (int pass = 0; pass < repeat; ++pass) {
+        PortableRandom random(jitter.seed, static_cast<std::uint64_t>(pass));
+        for (std::size_t k = 0; k < rays.size(); ++k) {
+            pass_rays[k].origin = moved(rays[k].origin, jitter.origin, random);
+            pass_rays[k].direction = moved(rays[k].direction, jitter.direction, random);
+        }
+        for (const Ray& r : pass_rays)
             hits += structure.closest_hit(r).has_value();
     }
     return hits;
@@ -52,13 +68,13 @@ struct BruteForce {
 }  // namespace
 
 void add_accel_work_calls(CallTable& table) {
-    table["bvh_work"] = [](const Json& a) {
+    table["bvh_structure"] = [](const Json& a) {
         const Bvh bvh(primitive_list_from(a.at("primitives")), bvh_split_from(a.at("split")));
-        return count_work(bvh, a);
+        return bvh_nodes(bvh.nodes());
     };
-    table["grid_work"] = [](const Json& a) {
+    table["grid_structure"] = [](const Json& a) {
         const UniformGrid grid(primitive_list_from(a.at("primitives")));
-        return count_work(grid, a);
+        return uniform_grid_data(grid.cells());
     };
     table["bvh_workload"] = [](const Json& a) {
         const Bvh bvh(primitive_list_from(a.at("primitives")), bvh_split_from(a.at("split")));

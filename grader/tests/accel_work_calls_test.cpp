@@ -1,8 +1,11 @@
 // The grader's probe answers every stage-4 call of its protocol (grader/probe/README.md): the
 // structure's answers, which app/probe/accel_calls.cpp gives it as it gives `raystep grade`, and
-// the work calls, which it alone has (grader/probe/accel_work_calls.cpp).
+// the structure as data and the timed workloads, which it alone has
+// (grader/probe/accel_work_calls.cpp).
 
+#include "app/protocol/structure_json.h"
 #include "base/testing/catch.h"
+#include "grader/grade/checks/stage4_structure.h"
 #include "grader/grade/probe_client.h"
 
 using namespace raystep;
@@ -15,12 +18,13 @@ TEST_CASE("the reference probe answers every stage-4 call of the protocol") {
     const probe::Json scene = {{"primitives", probe::primitive_list(list)},
                                {"rays", rays},
                                {"split", "sah"},
-                               {"repeat", 2}};
+                               {"repeat", 2},
+                               {"jitter", {{"seed", 9}, {"origin", 1e-3}, {"direction", 1e-4}}}};
     const std::vector<grade::ProbeQuery> queries = {
         {"bvh", scene},
         {"grid", scene},
-        {"bvh_work", scene},
-        {"grid_work", scene},
+        {"bvh_structure", scene},
+        {"grid_structure", scene},
         {"bvh_workload", scene},
         {"grid_workload", scene},
         {"brute_force_workload", scene},
@@ -39,7 +43,10 @@ TEST_CASE("the reference probe answers every stage-4 call of the protocol") {
     // The triangle at t = 5 is the first hit, for the structures and the work counts alike
     CHECK(probe::primitive_hit_from(session.answers[0].value[0])->hit.t == 5.0);
     CHECK(probe::primitive_hit_from(session.answers[1].value[0])->hit.t == 5.0);
-    CHECK(session.answers[2].value.at("hits") == 1);
+    // The structures as data are the reference's, whole
+    CHECK_FALSE(grade::bvh_problem(probe::bvh_nodes_from(session.answers[2].value), list));
+    CHECK_FALSE(grade::grid_problem(probe::uniform_grid_data_from(session.answers[3].value), list));
+    // Two passes of the ray, moved a little each time: the triangle both times
     CHECK(session.answers[4].value == 2);
     CHECK(session.answers[7].value.at("enter") == 4.0);
     CHECK(session.answers[8].value == probe::Json::array({3, 3, 3}));

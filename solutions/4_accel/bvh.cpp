@@ -248,4 +248,42 @@ std::size_t Bvh::node_count() const {
     return impl_->nodes.size();
 }
 
+namespace {
+
+// Appends `child`, whose box is `box`, and everything below it to `out`; returns its index there.
+// A leaf of the wide tree is a child entry, not a node, and becomes a node of its own here.
+std::size_t append_node_data(const Bvh::Impl& bvh, const BvhChild& child, const Aabb& box,
+                             std::vector<BvhNodeData>& out) {
+    const std::size_t index = out.size();
+    out.push_back({box, {}, {}});
+    if (child.count > 0) {
+        for (std::uint32_t slot = child.index; slot < child.index + child.count; ++slot)
+            out[index].primitives.push_back(bvh.slots[slot]);
+        return index;
+    }
+    const BvhNode& node = bvh.nodes[child.index];
+    for (int c = 0; c < BvhNode::kWidth; ++c) {
+        const Aabb child_box{Vec3(node.planes[0][c], node.planes[2][c], node.planes[4][c]),
+                             Vec3(node.planes[1][c], node.planes[3][c], node.planes[5][c])};
+        if (child_box.empty()) continue;  // an unused child
+        const std::size_t appended =
+            append_node_data(bvh, {node.child[c], node.count[c]}, child_box, out);
+        out[index].children.push_back(appended);
+    }
+    return index;
+}
+
+}  // namespace
+
+std::vector<BvhNodeData> Bvh::nodes() const {
+    std::vector<BvhNodeData> data;
+    if (impl_->slots.empty()) return data;
+    append_node_data(*impl_, impl_->root, impl_->root_box, data);
+    // The root's box is kept in double and its children's in float, rounded outward, which can
+    // reach an ulp of float past it: the root handed over holds them too
+    for (const std::size_t child : data[0].children)
+        data[0].box.add(data[child].box);
+    return data;
+}
+
 }  // namespace raystep

@@ -236,4 +236,14 @@ glm::ivec3 UniformGrid::resolution() const {
     return impl_->layout.resolution;
 }
 
+UniformGridData UniformGrid::cells() const {
+    UniformGridData data;
+    data.bounds = impl_->layout.box;
+    data.resolution = impl_->layout.resolution;
+    data.cells.resize(impl_->layout.cell_count());
+    for (std::size_t cell = 0; cell < data.cells.size(); ++cell)
+        data.cells[cell].assign(impl_->cells.begin(cell), impl_->cells.end(cell));
+    return data;
+}
+
 }  // namespace raystep

@@ -55,4 +55,11 @@ std::size_t Bvh::node_count() const {
     RAYSTEP_TODO(4, "Bvh::node_count", "Building a BVH");
 }
 
+std::vector<BvhNodeData> Bvh::nodes() const {
+    // Your nodes as the grader reads them, root first: each one's box, and its children's indices
+    // into this list (an inner node) or its primitives' numbers (a leaf), spheres first, then
+    // triangles, as closest_hit numbers them. With the flat array above, node k becomes entry k.
+    RAYSTEP_TODO(4, "Bvh::nodes", "Handing the structure over");
+}
+
 }  // namespace raystep

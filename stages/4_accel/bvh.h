@@ -1,7 +1,9 @@
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "stages/3_intersect/intersect.h"
 #include "stages/4_accel/aabb.h"
@@ -13,6 +15,14 @@ namespace raystep {
 enum class BvhSplit {
     median,  ///< at the median of the primitives' centroids along the box's longest axis
     sah,     ///< where the surface area heuristic's estimated cost is lowest
+};
+
+/// One node of a BVH as plain data (Bvh::nodes): the grader checks a tree through these and walks
+/// it with a traversal of its own, and they are what to print when a tree looks wrong.
+struct BvhNodeData {
+    Aabb box;  ///< holds the boxes of its children, or of its primitives in a leaf
+    std::vector<std::size_t> children;    ///< indices into Bvh::nodes(); empty in a leaf
+    std::vector<std::size_t> primitives;  ///< a leaf's: spheres 0 to S - 1, then triangles from S
 };
 
 /// A bounding volume hierarchy over the spheres and triangles of a PrimitiveList (planes are
@@ -37,6 +47,11 @@ class Bvh {
 
     /// The number of nodes, for reports.
     std::size_t node_count() const;
+
+    /// The tree as data, the root first: every node the walk visits, with the box it tests there,
+    /// and every primitive in some leaf. Empty for a tree over nothing. docs/stage4.md, "Handing
+    /// the structure over".
+    std::vector<BvhNodeData> nodes() const;
 
     struct Impl;
 

@@ -1,7 +1,9 @@
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -10,6 +12,18 @@
 #include "stages/4_accel/traversal.h"
 
 namespace raystep {
+
+/// A uniform grid as plain data (UniformGrid::cells): the grader checks a grid through it and walks
+/// it with a 3D-DDA of its own.
+struct UniformGridData {
+    /// The grid's box: cell (i, j, k) runs from bounds.min + (i, j, k) * size to one size further,
+    /// size = bounds.extent() / resolution.
+    Aabb bounds;
+    glm::ivec3 resolution{0};
+    /// Each cell's primitives (spheres 0 to S - 1, then triangles from S), the cells in order of
+    /// i + resolution.x * (j + resolution.y * k): x fastest, then y, then z.
+    std::vector<std::vector<std::size_t>> cells;
+};
 
 /// A uniform grid over the spheres and triangles of a PrimitiveList (planes stay outside), walked
 /// cell by cell along the ray with the 3D-DDA of Amanatides and Woo (1987). Its layout is the
@@ -33,6 +47,10 @@ class UniformGrid {
 
     /// Cells along x, y and z.
     glm::ivec3 resolution() const;
+
+    /// The grid as data: its box, its resolution and what each cell lists, every primitive in
+    /// every cell its box overlaps. docs/stage4.md, "Handing the structure over".
+    UniformGridData cells() const;
 
     struct Impl;
 

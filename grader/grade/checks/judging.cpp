@@ -52,7 +52,7 @@ std::vector<CheckDefinition> stage_case_checks(const StageCases& cases) {
 }
 
 std::vector<WorkloadTime> timed_workloads(const std::vector<WorkloadRun>& runs,
-                                          const std::string& call, int repeat) {
+                                          const std::string& call, int repeat, int most_rounds) {
     std::vector<WorkloadTime> timed(runs.size());
     const auto run_once = [&](std::size_t p, int passes) {
         probe::Json a = runs[p].args;
@@ -69,18 +69,18 @@ std::vector<WorkloadTime> timed_workloads(const std::vector<WorkloadRun>& runs,
         } else if (passes > 0) {
             timed[p].checksum = session.answers[0].value;
         }
-        return session.run.wall_seconds;
+        return session.run.cpu_seconds;
     };
     std::vector<double> best(runs.size(), HUGE_VAL);
     std::vector<double> setup(runs.size(), HUGE_VAL);
     std::vector<double> previous;
     int rounds = 0;
-    while (rounds < kMostTimedRounds) {
+    while (rounds < std::min(most_rounds, kMostTimedRounds)) {
         std::vector<double> current(runs.size(), 1.0);
         for (std::size_t p = 0; p < runs.size(); ++p) {
             if (!timed[p].answered) continue;
             const double start = run_once(p, 0);
-            const double passes = run_once(p, repeat);
+            const double passes = run_once(p, runs[p].repeat >= 0 ? runs[p].repeat : repeat);
             setup[p] = std::min(setup[p], start);
             best[p] = std::min(best[p], passes);
             current[p] = std::max(1e-6, passes - start);

@@ -42,8 +42,10 @@ struct StageCases {
 /// kind "oracle", each a case_check.
 std::vector<CheckDefinition> stage_case_checks(const StageCases& cases);
 
-/// A workload timed from outside the probe: the best of its rounds' runs minus the same run with
-/// no passes (starting, reading the input, building), and the checksum the passes answered.
+/// A workload timed from outside the probe, in CPU time as the kernel accounted it for the probe's
+/// whole run (every thread; a probe may start no process): the best of its rounds' runs minus the
+/// same run with no passes (starting, reading the input, building), and the checksum the passes
+/// answered.
 struct WorkloadTime {
     double seconds = 0.0;
     int rounds = 0;  ///< the rounds timed_workloads ran, all programs alike
@@ -61,15 +63,17 @@ WorkloadTime timed_workload(const std::filesystem::path& program, const std::str
 struct WorkloadRun {
     std::filesystem::path program;
     probe::Json args;
+    int repeat = -1;  ///< the passes this program runs; -1 for the call's `repeat`
 };
 
 /// The same for several programs, timed in turn: each round runs every program once, so that a
 /// load that comes and goes (another job on the machine) slows them alike and their ratio holds;
 /// timed one after the other, a load during one program's runs alone skews it. Two rounds at
-/// least; then another, up to kMostTimedRounds, until two rounds in a row give every program's
+/// least; then another, up to `most_rounds` (kMostTimedRounds, 5, by default), until two rounds in
+/// a row give every program's
 /// time against the first's within kRoundAgreement of each other (judging.cpp says why).
 std::vector<WorkloadTime> timed_workloads(const std::vector<WorkloadRun>& runs,
-                                          const std::string& call, int repeat);
+                                          const std::string& call, int repeat, int most_rounds = 5);
 
 /// Appends `count` generated cases, the k-th (k from 0) made by `make(random, k)` from a
 /// generator of its own, PortableRandom(seed, i) with i the index the case gets in `cases`, so

@@ -26,21 +26,22 @@ std::vector<PublicCase> grid_resolution_cases();
 /// triangles, its planes left out, as the reference's brute force finds it.
 std::optional<PrimitiveHit> structure_answer(const Ray& ray, const PrimitiveList& primitives);
 
-/// What a structure must do less of than brute force (stage4_work.cpp): a scene, fresh rays, and
-/// which structure and query answers them.
+/// What a structure must do less of than brute force (stage4_work.cpp): which structure, and the
+/// check that asks.
 struct WorkQuery {
     std::string check_id;  ///< the check that asks, for the reproduce command
     std::string call;      ///< "bvh" or "grid"
     std::string split;     ///< the BVH's split, "sah" or "median"; empty for the grid
-    bool occluded = false;
 };
 
-/// The primitive tests the submission's structure makes per ray, counted by the probe at stage 3's
-/// functions, against the reference structure's on the same scene and rays. Passed when the
-/// submission makes at most four times the reference's tests, or a 16th of brute force's, whichever
-/// is more (stage4_work.cpp says why); failed with the count and
-/// the dearest ray as a counterexample otherwise, or when it finds hits without testing anything
-/// through stage 3.
+/// Whether the submission's structure does a structure's work, measured from outside its probe:
+/// the structure handed back as data (Bvh::nodes, UniformGrid::cells), checked and walked by the
+/// grader, costs at most four times the reference's tests and nodes per ray, or a 16th of brute
+/// force's; and its own walk, in CPU time on rays new every pass, takes at most seven times as
+/// long through 96 walls as through one, and 40 times the reference's (stage4_work.cpp says why
+/// each).
+/// Measured once per probe and structure; failed with the reason otherwise, or not implemented
+/// when nodes() or cells() is a stub.
 CheckMeasure measure_work(const GradingContext& context, const BuiltProbe& probe,
                           const WorkQuery& query);
 

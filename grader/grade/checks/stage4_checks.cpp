@@ -468,7 +468,7 @@ CheckMeasure measure_structure(const GradingContext& context, const BuiltProbe& 
     }
 
     // Right answers earn their points only from a structure that does less work than brute force
-    const CheckMeasure work = measure_work(context, probe, {id, call, split, occluded});
+    const CheckMeasure work = measure_work(context, probe, {id, call, split});
     for (const auto& [name, value] : work.metrics)
         measure.metrics[name] = value;
     if (work.outcome == Outcome::passed) {
@@ -483,11 +483,12 @@ CheckMeasure measure_structure(const GradingContext& context, const BuiltProbe& 
     return measure;
 }
 
-// The structure's speed against the reference's on the same rays, in the same run, scored; and
-// against no structure at all (stage 3's closest_hit over every primitive), reported. A structure
-// whose hits differ from the reference's earns nothing for speed: fast and wrong is not fast. Nor
-// does one that does brute force's work: the workload asks the same rays pass after pass, and a
-// structure that remembers its answers would be fast there alone.
+// The structure's speed against the reference's on the same rays, in the same run, scored by the
+// kernel's account of each probe's CPU time; and against no structure at all (stage 3's
+// closest_hit over every primitive, run by the reference probe), reported. The rays change every
+// pass, so a structure that remembers answers gains nothing. A structure whose hits differ from
+// the reference's earns nothing for speed: fast and wrong is not fast. Nor does one that does not
+// do a structure's work (measure_work).
 CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& probe,
                            const std::string& structure) {
     if (!probe.program) return not_compiled(probe);
@@ -510,7 +511,9 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
         if (k < kBruteForceRays) brute_force_rays.push_back(rays.back());
     }
     const Json primitives = probe::primitive_list(scene.primitives);
-    const Json args = {{"primitives", primitives}, {"rays", rays}, {"split", "sah"}};
+    const Json jitter = {{"seed", 0x5BEED}, {"origin", 1e-3}, {"direction", 1e-4}};
+    const Json args = {
+        {"primitives", primitives}, {"rays", rays}, {"split", "sah"}, {"jitter", jitter}};
     const std::string call = structure + "_workload";
     const std::vector<WorkloadTime> timed =
         timed_workloads({{context.reference_probe, args}, {*probe.program, args}}, call, kPasses);
@@ -537,18 +540,18 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
         return measure;
     }
     const CheckMeasure work = measure_work(
-        context, probe,
-        {"stage4.speed." + structure, structure, structure == "bvh" ? "sah" : "", false});
+        context, probe, {"stage4.speed." + structure, structure, structure == "bvh" ? "sah" : ""});
     if (work.outcome != Outcome::passed) {
         measure.outcome = Outcome::failed;
         measure.summary =
-            "a structure that does brute force's work earns nothing for speed: " + work.summary;
+            "a structure that does not do a structure's work earns nothing for speed: " +
+            work.summary;
         measure.counterexamples = work.counterexamples;
         return measure;
     }
-    const WorkloadTime brute_force =
-        timed_workload(*probe.program, "brute_force_workload",
-                       {{"primitives", primitives}, {"rays", brute_force_rays}}, 1);
+    const WorkloadTime brute_force = timed_workload(
+        context.reference_probe, "brute_force_workload",
+        {{"primitives", primitives}, {"rays", brute_force_rays}, {"jitter", jitter}}, 1);
     const double ratio = reference.seconds / student.seconds;
     const double per_ray = student.seconds / (double(kPasses) * kRays);
     const double brute_force_ratio =
@@ -556,13 +559,14 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
     measure.fraction = std::min(1.0, ratio);
     measure.metrics = {{"speed against the reference", ratio},
                        {"speed against brute force", brute_force_ratio},
-                       {"reference seconds", reference.seconds},
-                       {"submission seconds", student.seconds},
+                       {"reference CPU seconds", reference.seconds},
+                       {"submission CPU seconds", student.seconds},
                        {"timed rounds", static_cast<double>(student.rounds)}};
-    char text[240];
+    char text[260];
     std::snprintf(text, sizeof text,
-                  " traced %d rays through %zu primitives %d times at %.2f times the reference's "
-                  "speed (best of %d rounds) and %.0f times brute force's",
+                  " traced %d rays through %zu primitives %d times, new rays every pass, at %.2f "
+                  "times the reference's speed in CPU time (best of %d rounds) and %.0f times "
+                  "brute force's",
                   kRays, scene.primitives.triangles.size() + scene.primitives.spheres.size(),
                   kPasses, ratio, student.rounds, brute_force_ratio);
     measure.summary = "the " + structure + text;
@@ -595,10 +599,15 @@ PublicCheck stage4_grid_resolution_public_check() {
 std::vector<CheckDefinition> stage4_checks() {
     const auto structure = [](const std::string& id, const std::string& name,
                               const std::string& call, const std::string& split, bool occluded) {
-        return CheckDefinition{
-            id, 4, "oracle", name, [=](const GradingContext& context, const BuiltProbe& probe) {
-                return measure_structure(context, probe, id, call, split, occluded);
-            }};
+        return CheckDefinition{id,
+                               4,
+                               "oracle",
+                               name,
+                               [=](const GradingContext& context, const BuiltProbe& probe) {
+                                   return measure_structure(context, probe, id, call, split,
+                                                            occluded);
+                               },
+                               true};
     };
     return {
         {"stage4.unit.slab", 4, "unit", kSlabName,

@@ -1,8 +1,8 @@
 // Stage 4's sample for the student release: the queries the "stage4.oracle" checks ask (the BVH
 // with either split and the grid, closest hit and occluded), on one small scene drawn from seeds
 // those checks do not use, each answer decided by the reference's brute force (structure_answer)
-// when the release is written. The grader's checks also count the primitive tests a structure
-// makes, which only its probe can (grader/probe/stage3_test_count.h): the sample judges answers
+// when the release is written. The grader's checks also take the structure as data and time its
+// walk, which only its probe can (grader/probe/accel_work_calls.h): the sample judges answers
 // alone, and says so.
 //
 // The t of a hit. The grader runs a structure on the reference's stage 3 and demands brute
@@ -153,7 +153,8 @@ PublicCheck stage4_sample_check() {
     return sample_check(4,
                         "the BVH's and the grid's closest hit and occluded against brute force: "
                         "the same primitive, t within 1e-9 (on your own stage 3; the grader, on "
-                        "the reference's, demands the very t and counts the primitive tests)",
+                        "the reference's, demands the very t, checks the structure your nodes() or "
+                        "cells() hand over and times your walk)",
                         std::move(cases));
 }
 

@@ -1,35 +1,48 @@
-// A structure earns its points by doing less work than brute force. The work is counted where a
-// submission cannot fake it: its stage-4 probe takes stage 3 from the reference, so every primitive
-// test the structure makes is a call into stage 3's public functions, and the probe counts those
-// calls itself (grader/probe/stage3_test_count.cpp; closest_hit over a list counts as a test per
-// primitive). The structure's own TraversalStats are never read. The reference structure's count
-// on the same scene and rays comes from the reference, run here in the grader.
+// A structure earns its points by doing less work than brute force, and nothing that runs in the
+// probe's process can say how much work that is: a submission's code runs there before, during and
+// after the protocol, and can write any counter (docs/instructor.md, "What student code can
+// touch"). So the work is measured twice, from outside:
 //
-// No ray may cost more tests than the structure holds primitives: each is tested at most once
-// per query (a grid lists a primitive in every cell it overlaps, and must not test it in each).
+// 1. The structure, handed back as data (Bvh::nodes, UniformGrid::cells), is checked here against
+//    the primitives (stage4_structure.h) and walked here by the lecture's traversal: the nodes and
+//    primitive tests per ray are the grader's count, on the strewn scene below, against the
+//    reference structure's walked the same way. The allowance: kWorkAllowance times the
+//    reference's count, or one per kBruteForceShare primitives per ray, whichever is more; the
+//    second is room for a right structure of a plainer design (a median split, larger leaves, a
+//    coarser grid). A single leaf of everything, a grid of one cell, or a tree that is not one
+//    fails here.
+// 2. The submission's own walk, timed by the kernel (the probe's CPU time, every thread of it,
+//    taken by the sandbox when the probe ends) on rays that change every pass, through kWalls
+//    walls that no ray crosses without a hit, from above and from below. Against its own walk of
+//    such rays through one wall: a walk that visits the nearer node first and stops at the
+//    nearest hit takes about as long (a tree a few levels deeper, a finer grid); one that goes on
+//    past the hit visits every wall behind it, and one that visits children in a fixed order
+//    takes the far half of every node first for rays from one side. The ratio is the walk's own,
+//    whatever its constant costs. Allowed: kDepthAllowance. And against the reference's walk of
+//    the same rays, so that brute force hidden behind a good structure, or a sort of every box
+//    for every ray, fails too. Allowed: kTraversalAllowance, far above what a plain but right walk
+//    takes and far below those. A grid without a mailbox is not caught here: with this course's
+//    primitives a test costs about what a mailbox's lookup does, so the time cannot tell
+//    (docs/measurements/stage4-work.md).
 //
-// The rays are fresh (their own seed, asked once each), so a structure that remembers the answers
-// to rays it has seen gains nothing. The allowance over all the rays: kWorkAllowance times the
-// reference's tests, or a test per kBruteForceShare primitives per ray, whichever is more. The
-// first keeps a structure near the reference's quality; the second is room for a right structure
-// of a plainer design (a median split where the reference prices SAH cuts, larger leaves, a
-// coarser grid), whose count on a scene where the reference needs a handful of tests can be many
-// times the reference's and still a small share of brute force's. Brute force makes a test per
-// primitive per ray, kBruteForceShare times the floor, and fails by that margin
-// (docs/measurements/stage4-work.md has the counts).
+// Both are measured once per structure (the BVH with each split, the grid) and shared by the checks
+// that ask: the closest hit, occluded and speed checks of one structure stand on the same work.
+// docs/measurements/stage4-work.md has the counts and times behind the allowances.
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <iterator>
-#include <optional>
+#include <future>
+#include <map>
+#include <mutex>
 
+#include "app/protocol/structure_json.h"
 #include "base/math/portable_random.h"
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage4_cases.h"
-#include "stages/4_accel/bvh.h"
-#include "stages/4_accel/uniform_grid.h"
+#include "grader/grade/checks/stage4_structure.h"
+#include "grader/grade/checks/stage4_work_scenes.h"
 
 namespace raystep::grade {
 
@@ -39,107 +52,21 @@ using probe::Json;
 
 constexpr double kWorkAllowance = 4.0;
 constexpr double kBruteForceShare = 16.0;
-constexpr std::uint64_t kWorkSeed = 0x3017C;
-constexpr int kTriangles = 1500;
-constexpr int kSpheres = 150;
-constexpr int kRays = 400;
+constexpr double kTraversalAllowance = 40.0;
+constexpr double kDepthAllowance = 7.0;
+constexpr int kWalls = 96;  // in the walls scene the walk is timed on
+// The timed walks' length: long enough that the CPU time of a start (a few ms, which the 0-pass
+// run takes away) varies by a few per cent of it; the first run's passes, which estimate it; and
+// a bound on the passes of a walk so cheap that the estimate rounds to nothing.
+constexpr double kTimedSeconds = 0.25;
+constexpr int kCalibrationPasses = 2;
+constexpr int kMostPasses = 1000;
 
-struct WorkScene {
-    std::string name;
-    PrimitiveList primitives;
-    std::vector<Ray> rays;
-};
-
-// Small primitives strewn through a cube, met by rays from a sphere around it; a quarter of the
-// rays start beyond 0 and a quarter stop short, so that a walk must keep to [t_min, t_max].
-WorkScene work_scene() {
-    WorkScene scene;
-    scene.name = "the work scene (" + std::to_string(kTriangles) + " triangles and " +
-                 std::to_string(kSpheres) + " spheres from seed " + std::to_string(kWorkSeed) + ")";
-    PortableRandom random(kWorkSeed);
-    for (int k = 0; k < kTriangles; ++k) {
-        const Vec3 c = random.point(1.0);
-        scene.primitives.triangles.push_back({c, c + random.point(0.1), c + random.point(0.1)});
-    }
-    for (int k = 0; k < kSpheres; ++k)
-        scene.primitives.spheres.push_back({random.point(1.0), random.uniform(0.01, 0.08)});
-    for (int k = 0; k < kRays; ++k) {
-        const Vec3 origin = 3.0 * random.unit_vector();
-        Ray ray{origin, random.point(0.8) - origin};
-        if (k % 4 == 1) ray.t_min = random.uniform(0.3, 0.8);
-        if (k % 4 == 2) ray.t_max = random.uniform(0.5, 1.2);
-        scene.rays.push_back(ray);
-    }
-    return scene;
-}
-
-// Four squares of two triangles each, stacked 0.1 apart over [0, 10]^2, and rays between them,
-// parallel to them: each ray meets nothing, and crosses cells that all list the same triangles. A
-// structure that tests a primitive once per cell it lists it in tests each several times.
-WorkScene stacked_quads() {
-    WorkScene scene;
-    scene.name = "four stacked squares of two triangles, rays between them";
-    for (int level = 0; level < 4; ++level) {
-        const double z = 0.1 * level;
-        const Vec3 a(0, 0, z), b(10, 0, z), c(10, 10, z), d(0, 10, z);
-        scene.primitives.triangles.push_back({a, b, c});
-        scene.primitives.triangles.push_back({a, c, d});
-    }
-    for (int level = 0; level < 3; ++level) {
-        const double z = 0.1 * level + 0.05;
-        for (int k = 0; k < 10; ++k) {
-            const double across = 0.5 + k;
-            scene.rays.push_back({Vec3(-1, across, z), Vec3(1, 0, 0)});
-            scene.rays.push_back({Vec3(across, 11, z), Vec3(0, -1, 0)});
-            scene.rays.push_back({Vec3(-1, -1 + 0.3 * k, z), Vec3(1, 0.9, 0)});
-        }
-    }
-    return scene;
-}
-
-// The counts of an answer to a work query with `rays` rays, or nullopt when it is not one.
-std::optional<std::vector<std::uint64_t>> counts_from(const ProbeAnswer& answer, std::size_t rays) {
-    const Json& value = answer.value;
-    const bool readable = answer.kind == ProbeAnswer::Kind::result && value.is_object() &&
-                          value.contains("tests") && value.at("tests").is_array() &&
-                          value.at("tests").size() == rays &&
-                          std::all_of(value.at("tests").begin(), value.at("tests").end(),
-                                      [](const Json& n) { return n.is_number_unsigned(); }) &&
-                          value.contains("hits") && value.at("hits").is_number_unsigned();
-    if (!readable) return std::nullopt;
-    return value.at("tests").get<std::vector<std::uint64_t>>();
-}
-
-// The reference structure's tests for each ray, as its TraversalStats count them: the reference
-// is trusted, and it counts one per call of a stage-3 test, as the probe does.
-std::vector<std::uint64_t> reference_tests(const WorkScene& scene, const WorkQuery& query) {
-    std::vector<std::uint64_t> tests;
-    const auto count = [&](const auto& structure) {
-        for (const Ray& ray : scene.rays) {
-            TraversalStats stats;
-            if (query.occluded) {
-                structure.occluded(ray, &stats);
-            } else {
-                structure.closest_hit(ray, &stats);
-            }
-            tests.push_back(stats.primitive_tests);
-        }
-    };
-    if (query.call == "bvh") {
-        count(Bvh(scene.primitives, query.split == "median" ? BvhSplit::median : BvhSplit::sah));
-    } else {
-        count(UniformGrid(scene.primitives));
-    }
-    return tests;
-}
-
-// Why a run gave no readable answer, in a few words.
-std::string why_unanswered(const ProbeSession& session, const ProbeAnswer& answer) {
-    if (!answer.message.empty()) return answer.message;
-    if (session.run.timed_out) return "it ran out of time";
-    if (session.run.signal != 0)
-        return "it crashed with signal " + std::to_string(session.run.signal);
-    return "no readable answer";
+Json ray_list(const std::vector<Ray>& rays) {
+    Json list = Json::array();
+    for (const Ray& ray : rays)
+        list.push_back(probe::ray(ray));
+    return list;
 }
 
 CheckMeasure failed(std::string summary) {
@@ -149,128 +76,266 @@ CheckMeasure failed(std::string summary) {
     return measure;
 }
 
+// Why a run gave no readable answer, in a few words.
+std::string why_unanswered(const ProbeSession& session, const ProbeAnswer& answer) {
+    if (!answer.message.empty()) return answer.message;
+    if (session.run.timed_out) return "it ran out of time";
+    if (session.run.signal != 0) {
+        const std::string limit = limit_of_signal(session.run.signal);
+        return "it died of signal " + std::to_string(session.run.signal) +
+               (limit.empty() ? "" : ": " + limit);
+    }
+    return "no readable answer";
+}
+
+double mean(const std::vector<std::uint64_t>& counts) {
+    double sum = 0.0;
+    for (const std::uint64_t count : counts)
+        sum += double(count);
+    return counts.empty() ? 0.0 : sum / double(counts.size());
+}
+
+// 1. The structure as data, checked and walked here, against the reference structure's walk.
+CheckMeasure measure_structure_data(const GradingContext& context, const BuiltProbe& probe,
+                                    const WorkQuery& query) {
+    const WorkScene scene = strewn_scene();
+    Json args = {{"primitives", probe::primitive_list(scene.primitives)}};
+    if (!query.split.empty()) args["split"] = query.split;
+    ProbeRunLimits limits;
+    limits.cpu_seconds = 30;
+    limits.wall = std::chrono::seconds(60);
+    const ProbeSession session =
+        ask_probe(*probe.program, {{query.call + "_structure", args}}, limits);
+    const ProbeAnswer& answer = session.answers[0];
+    if (answer.kind == ProbeAnswer::Kind::not_implemented) {
+        CheckMeasure measure;
+        measure.outcome = Outcome::not_implemented;
+        measure.summary = answer.message;
+        return measure;
+    }
+    const bool bvh = query.call == "bvh";
+    const std::string what = bvh ? "Bvh::nodes()" : "UniformGrid::cells()";
+    if (answer.kind != ProbeAnswer::Kind::result) {
+        return failed("the structure could not be read as data from " + what + " (" +
+                      why_unanswered(session, answer) + ")");
+    }
+
+    // Checked, then walked here; the reference's structure walked the same way
+    const BvhSplit split = query.split == "median" ? BvhSplit::median : BvhSplit::sah;
+    std::optional<std::string> problem;
+    WalkCost cost;
+    WalkCost reference;
+    try {
+        if (bvh) {
+            const std::vector<BvhNodeData> nodes = probe::bvh_nodes_from(answer.value);
+            problem = bvh_problem(nodes, scene.primitives);
+            if (!problem) cost = walk_bvh(nodes, scene.primitives, scene.rays);
+            reference =
+                walk_bvh(Bvh(scene.primitives, split).nodes(), scene.primitives, scene.rays);
+        } else {
+            const UniformGridData grid = probe::uniform_grid_data_from(answer.value);
+            problem = grid_problem(grid, scene.primitives);
+            if (!problem) cost = walk_grid(grid, scene.primitives, scene.rays);
+            reference =
+                walk_grid(UniformGrid(scene.primitives).cells(), scene.primitives, scene.rays);
+        }
+    } catch (const std::exception& error) {
+        problem = std::string("its data cannot be read: ") + error.what();
+    }
+    if (problem) {
+        CheckMeasure measure = failed("the structure that " + what + " hands over is not a " +
+                                      (bvh ? "BVH" : "grid") + " over its primitives: " + *problem);
+        measure.counterexamples.push_back(
+            {scene.name,
+             bvh ? "a tree whose boxes hold every primitive"
+                 : "a grid whose cells list every "
+                   "primitive they overlap",
+             *problem, context.reproduce + " --check " + query.check_id,
+             "// build the structure over the grader's scene and check " + what});
+        return measure;
+    }
+
+    // Against the reference's walk and brute force's
+    const double brute_force =
+        double(scene.primitives.spheres.size() + scene.primitives.triangles.size());
+    const double floor = brute_force / kBruteForceShare;
+    const double tests = mean(cost.tests);
+    const double nodes = mean(cost.nodes);
+    const double reference_tests = mean(reference.tests);
+    const double reference_nodes = mean(reference.nodes);
+    const double allowed_tests = std::max(kWorkAllowance * reference_tests, floor);
+    const double allowed_nodes = std::max(kWorkAllowance * reference_nodes, floor);
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "walked by the grader, the structure costs %.1f primitive tests and %.1f %s per "
+                  "ray through %.0f primitives, where the reference's costs %.1f and %.1f",
+                  tests, nodes, bvh ? "nodes" : "cells", brute_force, reference_tests,
+                  reference_nodes);
+    CheckMeasure measure;
+    measure.metrics = {{"primitive tests per ray (grader's walk)", tests},
+                       {std::string(bvh ? "nodes" : "cells") + " per ray (grader's walk)", nodes},
+                       {"reference's primitive tests per ray", reference_tests}};
+    measure.summary = text;
+    if (tests <= allowed_tests && nodes <= allowed_nodes) {
+        measure.outcome = Outcome::passed;
+        measure.fraction = 1.0;
+        return measure;
+    }
+    char allowance[160];
+    std::snprintf(allowance, sizeof allowance,
+                  ": more than the %.1f tests and %.1f %s a structure may cost", allowed_tests,
+                  allowed_nodes, bvh ? "nodes" : "cells");
+    measure.outcome = Outcome::failed;
+    measure.summary += allowance;
+    return measure;
+}
+
+// The arguments of a timed walk of `scene` through the structure `call` (the BVH by the SAH).
+Json timed_walk(const WorkScene& scene, const std::string& call) {
+    Json args = {{"primitives", probe::primitive_list(scene.primitives)},
+                 {"rays", ray_list(scene.rays)},
+                 {"jitter", {{"seed", kTraversalSeed}, {"origin", 1e-3}, {"direction", 1e-4}}}};
+    if (call == "bvh") args["split"] = "sah";
+    return args;
+}
+
+// 2. The submission's own walk, timed by the kernel: through the walls, from above and from below,
+// against its own walk through one wall (the depth allowance), and against the reference's walk
+// (the absolute one).
+CheckMeasure measure_traversal_time(const GradingContext& context, const BuiltProbe& probe,
+                                    const std::string& call) {
+    constexpr int kRounds = 2;  // the allowances stand far from right and wrong walks alike
+    const WorkScene above = walls_scene(kWalls, Side::above);
+    const WorkScene below = walls_scene(kWalls, Side::below);
+    const WorkScene wall = walls_scene(1, Side::both);
+    std::vector<WorkloadRun> runs = {{context.reference_probe, timed_walk(above, call)},
+                                     {*probe.program, timed_walk(above, call)},
+                                     {*probe.program, timed_walk(below, call)},
+                                     {*probe.program, timed_walk(wall, call)}};
+    // Each run gets the passes that make its walk take about kTimedSeconds, from a first run of
+    // kCalibrationPasses: a cheap walk is then timed as closely as a dear one, and a dear walk
+    // costs the grade no more than a cheap one. The times compared are per pass.
+    const std::vector<WorkloadTime> first =
+        timed_workloads(runs, call + "_workload", kCalibrationPasses, 1);
+    for (std::size_t k = 0; k < runs.size(); ++k) {
+        const double per_pass = std::max(1e-6, first[k].seconds / kCalibrationPasses);
+        runs[k].repeat = static_cast<int>(std::clamp(
+            std::ceil(kTimedSeconds / per_pass), double(kCalibrationPasses), double(kMostPasses)));
+    }
+    std::vector<WorkloadTime> timed = first;
+    if (std::all_of(first.begin(), first.end(), [](const WorkloadTime& t) { return t.answered; })) {
+        timed = timed_workloads(runs, call + "_workload", 0, kRounds);
+        for (std::size_t k = 0; k < runs.size(); ++k)
+            timed[k].seconds /= runs[k].repeat;
+    }
+    const WorkScene* const scenes[] = {&above, &above, &below, &wall};
+
+    // Every run answered, and from above as the reference did
+    for (std::size_t k = 1; k < timed.size(); ++k) {
+        if (!timed[k].not_implemented.empty()) {
+            CheckMeasure stub;
+            stub.outcome = Outcome::not_implemented;
+            stub.summary = timed[k].not_implemented;
+            return stub;
+        }
+    }
+    if (!timed[0].answered) {
+        CheckMeasure error = failed("the reference did not answer the timed walk");
+        error.grader_error = true;
+        return error;
+    }
+    for (std::size_t k = 1; k < timed.size(); ++k) {
+        if (timed[k].answered) continue;
+        return failed("its own walk did not finish the timed rays of " + scenes[k]->name +
+                      " within the time limit: a walk that does not stop at the nearest hit, or "
+                      "tests every primitive, is that slow");
+    }
+    // The checksums of the first runs, where every program ran the same passes
+    if (first[1].checksum != first[0].checksum) {
+        return failed("its own walk found " + first[1].checksum.dump() +
+                      " hits on the timed rays of " + above.name + ", where the reference finds " +
+                      first[0].checksum.dump());
+    }
+
+    // The ratios against their allowances: the dearer side through the walls
+    const double walls_seconds = std::max(timed[1].seconds, timed[2].seconds);
+    const double depth = walls_seconds / timed[3].seconds;
+    const double against_reference = timed[1].seconds / timed[0].seconds;
+    CheckMeasure measure;
+    measure.metrics = {
+        {"walk CPU time, " + std::to_string(kWalls) + " walls against 1", depth},
+        {"walk CPU time, from above against from below", timed[1].seconds / timed[2].seconds},
+        {"walk CPU time against the reference's", against_reference}};
+    char text[400];
+    std::snprintf(text, sizeof text,
+                  "its own walk (%zu rays a pass, new every pass, CPU time per pass) took %.2f "
+                  "times as long through %d walls, from the dearer side, as through one, and "
+                  "%.2f times the reference's",
+                  above.rays.size(), depth, kWalls, against_reference);
+    measure.summary = text;
+    std::string broken;
+    if (depth > kDepthAllowance) {
+        broken = ": more than the " + std::to_string(int(kDepthAllowance)) +
+                 " times a walk that visits the nearer node first and stops at the nearest hit "
+                 "may take for the walls behind it";
+    } else if (against_reference > kTraversalAllowance) {
+        broken = ": more than the " + std::to_string(int(kTraversalAllowance)) +
+                 " times the reference's that a structure's walk may take (testing every "
+                 "primitive takes that)";
+    }
+    measure.outcome = broken.empty() ? Outcome::passed : Outcome::failed;
+    measure.fraction = broken.empty() ? 1.0 : 0.0;
+    measure.summary += broken;
+    return measure;
+}
+
+// `measure()`, once per `key` in this grader: checks that stand on the same measurement share it,
+// and may ask for it at once from several threads.
+template <class Measure>
+CheckMeasure measured_once(const std::string& key, Measure measure) {
+    static std::mutex mutex;
+    static std::map<std::string, std::shared_future<CheckMeasure>> measured;
+    std::promise<CheckMeasure> promise;
+    std::shared_future<CheckMeasure> result;
+    bool first = false;
+    {
+        const std::lock_guard<std::mutex> lock(mutex);
+        const auto found = measured.find(key);
+        if (found == measured.end()) {
+            result = promise.get_future().share();
+            measured.emplace(key, result);
+            first = true;
+        } else {
+            result = found->second;
+        }
+    }
+    if (first) {
+        try {
+            promise.set_value(measure());
+        } catch (...) {
+            promise.set_exception(std::current_exception());
+        }
+    }
+    return result.get();
+}
+
 }  // namespace
 
 CheckMeasure measure_work(const GradingContext& context, const BuiltProbe& probe,
                           const WorkQuery& query) {
     if (!probe.program) return not_compiled(probe);
-    const WorkScene scenes[] = {work_scene(), stacked_quads()};
-    std::vector<ProbeQuery> queries;
-    for (const WorkScene& scene : scenes) {
-        Json rays = Json::array();
-        for (const Ray& ray : scene.rays)
-            rays.push_back(probe::ray(ray));
-        Json args = {{"primitives", probe::primitive_list(scene.primitives)},
-                     {"rays", rays},
-                     {"occluded", query.occluded}};
-        if (!query.split.empty()) args["split"] = query.split;
-        queries.push_back({query.call + "_work", args});
-    }
-    ProbeRunLimits limits;
-    limits.cpu_seconds = 30;
-    limits.wall = std::chrono::seconds(60);
-    const ProbeSession session = ask_probe(*probe.program, queries, limits);
-    std::vector<std::vector<std::uint64_t>> counted;
-    std::size_t hits = 0;
-    for (std::size_t s = 0; s < std::size(scenes); ++s) {
-        const ProbeAnswer& answer = session.answers[s];
-        std::optional<std::vector<std::uint64_t>> tests =
-            counts_from(answer, scenes[s].rays.size());
-        if (!tests) {
-            return failed(
-                "the structure did not answer the rays whose primitive tests are "
-                "counted (" +
-                why_unanswered(session, answer) + ")");
-        }
-        counted.push_back(std::move(*tests));
-        hits += answer.value.at("hits").get<std::size_t>();
-    }
-
-    // No ray may cost more tests than there are primitives: each is tested at most once
-    for (std::size_t s = 0; s < std::size(scenes); ++s) {
-        const WorkScene& scene = scenes[s];
-        const std::uint64_t held =
-            scene.primitives.spheres.size() + scene.primitives.triangles.size();
-        const auto most = std::max_element(counted[s].begin(), counted[s].end());
-        if (*most <= held) continue;
-        CheckMeasure measure =
-            failed("the structure tested the same primitive more than once in one query (" +
-                   std::to_string(*most) + " tests of " + std::to_string(held) +
-                   " primitives for one ray), so it earns nothing for its answers. A primitive "
-                   "listed in several cells or nodes must be tested once per query: keep a "
-                   "mailbox of the primitives this query has tested, as docs/stage4.md's "
-                   "\"Mailboxing\" section shows");
-        const std::size_t k = static_cast<std::size_t>(most - counted[s].begin());
-        measure.counterexamples.push_back(
-            {scene.name + ", ray " + std::to_string(k) + ": " + ray_text(scene.rays[k]),
-             "at most " + std::to_string(held) + " primitive tests, one per primitive",
-             std::to_string(*most) + " primitive tests: some primitive tested more than once",
-             context.reproduce + " --check " + query.check_id,
-             "// count the stage-3 calls your structure makes for " + cpp(scene.rays[k])});
-        return measure;
-    }
-
-    // Against the reference and brute force on the strewn scene
-    const WorkScene& scene = scenes[0];
-    const std::vector<std::uint64_t>& tests = counted[0];
-    const std::vector<std::uint64_t> reference = reference_tests(scene, query);
-    const std::uint64_t brute_force =
-        scene.primitives.spheres.size() + scene.primitives.triangles.size();
-    const auto allowed = [brute_force](double reference_tests) {
-        return std::max(kWorkAllowance * reference_tests, double(brute_force) / kBruteForceShare);
-    };
-    std::uint64_t student_total = 0;
-    std::uint64_t reference_total = 0;
-    std::size_t dearest = 0;
-    double dearest_excess = -HUGE_VAL;
-    for (std::size_t k = 0; k < scene.rays.size(); ++k) {
-        student_total += tests[k];
-        reference_total += reference[k];
-        const double excess = double(tests[k]) - allowed(double(reference[k]));
-        if (excess > dearest_excess) {
-            dearest_excess = excess;
-            dearest = k;
-        }
-    }
-    const double per_ray = double(student_total) / double(scene.rays.size());
-    const double reference_per_ray = double(reference_total) / double(scene.rays.size());
-    char text[240];
-    std::snprintf(text, sizeof text,
-                  "%.1f primitive tests per ray through %llu primitives, where the reference makes "
-                  "%.1f and brute force %llu",
-                  per_ray, static_cast<unsigned long long>(brute_force), reference_per_ray,
-                  static_cast<unsigned long long>(brute_force));
-    if (hits > 0 && student_total == 0) {
-        return failed(
-            "the structure answered " + std::to_string(hits) +
-            " rays with a hit without testing a primitive through stage 3's functions "
-            "(intersect_sphere, intersect_triangle, closest_hit), the tests the grader counts");
-    }
-    CheckMeasure measure;
-    measure.metrics = {{"primitive tests per ray", per_ray},
-                       {"reference's primitive tests per ray", reference_per_ray},
-                       {"brute force's primitive tests per ray", double(brute_force)}};
-    if (per_ray <= allowed(reference_per_ray)) {
-        measure.outcome = Outcome::passed;
-        measure.fraction = 1.0;
-        measure.summary = text;
-        return measure;
-    }
-    measure.outcome = Outcome::failed;
-    char allowance[120];
-    std::snprintf(allowance, sizeof allowance, ": more than the %.1f a structure may make",
-                  allowed(reference_per_ray));
-    measure.summary = std::string(text) + allowance + ", so it earns nothing for its answers";
-    const Ray& ray = scene.rays[dearest];
-    measure.counterexamples.push_back(
-        {scene.name + ", ray " + std::to_string(dearest) + ": " + ray_text(ray),
-         "at most " +
-             std::to_string(static_cast<std::uint64_t>(allowed(double(reference[dearest])))) +
-             " primitive tests (the reference makes " + std::to_string(reference[dearest]) + ")",
-         std::to_string(tests[dearest]) + " primitive tests",
-         context.reproduce + " --check " + query.check_id,
-         "// count the stage-3 calls your structure makes for " + cpp(ray)});
-    return measure;
+    // The structure of each split on its own; the walk, which both splits share, once
+    const std::string program = probe.program->string() + "\n" + query.call;
+    const CheckMeasure data = measured_once(program + "\n" + query.split, [&] {
+        return measure_structure_data(context, probe, query);
+    });
+    if (data.outcome != Outcome::passed) return data;
+    CheckMeasure time =
+        measured_once(program, [&] { return measure_traversal_time(context, probe, query.call); });
+    for (const auto& [name, value] : data.metrics)
+        time.metrics[name] = value;
+    time.summary = data.summary + "; " + time.summary;
+    return time;
 }
 
 }  // namespace raystep::grade

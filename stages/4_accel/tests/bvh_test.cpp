@@ -366,3 +366,53 @@ TEST_CASE("Bvh::closest_hit: the SAH tree is no slower to walk than the median t
     CHECK(sah_cost.nodes + 2 * sah_cost.primitive_tests <=
           median_cost.nodes + 2 * median_cost.primitive_tests);
 }
+
+TEST_CASE(
+    "Bvh::nodes: a tree from the root, each box holding what lies below it, every primitive in a "
+    "leaf",
+    "[stage4]") {
+    PortableRandom random(11);
+    const PrimitiveList list = random_scene(random, 300);
+    const std::size_t count = list.spheres.size() + list.triangles.size();
+    const auto box_of = [&](std::size_t id) {
+        return id < list.spheres.size() ? bounds_of(list.spheres[id])
+                                        : bounds_of(list.triangles[id - list.spheres.size()]);
+    };
+    const auto holds = [](const Aabb& outer, const Aabb& inner) {
+        return outer.min.x <= inner.min.x && outer.min.y <= inner.min.y &&
+               outer.min.z <= inner.min.z && outer.max.x >= inner.max.x &&
+               outer.max.y >= inner.max.y && outer.max.z >= inner.max.z;
+    };
+    for (const BvhSplit split : kSplits) {
+        CAPTURE(split_name(split));
+        const std::vector<BvhNodeData> nodes = Bvh(list, split).nodes();
+        REQUIRE_FALSE(nodes.empty());
+        std::vector<int> parents(nodes.size(), 0);
+        std::vector<int> leaves_holding(count, 0);
+        for (std::size_t k = 0; k < nodes.size(); ++k) {
+            CAPTURE(k);
+            CHECK((nodes[k].children.empty() || nodes[k].primitives.empty()));
+            for (const std::size_t child : nodes[k].children) {
+                REQUIRE(child < nodes.size());
+                ++parents[child];
+                CHECK(holds(nodes[k].box, nodes[child].box));
+            }
+            for (const std::size_t id : nodes[k].primitives) {
+                REQUIRE(id < count);
+                ++leaves_holding[id];
+                CHECK(holds(nodes[k].box, box_of(id)));
+            }
+        }
+        // Node 0 is the root: no one's child; every other node has exactly one parent
+        CHECK(parents[0] == 0);
+        for (std::size_t k = 1; k < nodes.size(); ++k) {
+            CAPTURE(k);
+            CHECK(parents[k] == 1);
+        }
+        for (std::size_t id = 0; id < count; ++id) {
+            CAPTURE(id);
+            CHECK(leaves_holding[id] >= 1);
+        }
+    }
+    CHECK(Bvh(PrimitiveList{}, BvhSplit::sah).nodes().empty());
+}

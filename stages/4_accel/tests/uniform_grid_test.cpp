@@ -8,6 +8,7 @@
 // A grid must give exactly closest_hit's answer: the same primitive and the same t, compared
 // with ==. Both call the same stage-3 tests; only the order differs.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -98,6 +99,50 @@ TEST_CASE("UniformGrid::resolution: grid_resolution of the primitives' bounds", 
         grid_resolution(bounds, list.spheres.size() + list.triangles.size());
     CHECK(UniformGrid(list).resolution() == expected);
     CHECK(UniformGrid(PrimitiveList{}).resolution() == glm::ivec3(1, 1, 1));
+}
+
+TEST_CASE("UniformGrid::cells: every primitive is listed in every cell its box overlaps",
+          "[stage4]") {
+    PortableRandom random(12);
+    const PrimitiveList list = random_scene(random, 300);
+    const UniformGrid grid(list);
+    const UniformGridData data = grid.cells();
+    REQUIRE(data.resolution == grid.resolution());
+    const glm::ivec3 n = data.resolution;
+    REQUIRE(data.cells.size() == static_cast<std::size_t>(n.x) * n.y * n.z);
+    const Vec3 size = data.bounds.extent() / Vec3(n);
+    const auto listed = [&](int x, int y, int z, std::size_t id) {
+        const std::vector<std::size_t>& cell =
+            data.cells[(static_cast<std::size_t>(z) * n.y + y) * n.x + x];
+        return std::find(cell.begin(), cell.end(), id) != cell.end();
+    };
+    const std::size_t count = list.spheres.size() + list.triangles.size();
+    for (std::size_t id = 0; id < count; ++id) {
+        CAPTURE(id);
+        const Aabb box = id < list.spheres.size()
+                             ? bounds_of(list.spheres[id])
+                             : bounds_of(list.triangles[id - list.spheres.size()]);
+        // The cells from the one holding the box's min corner to the one holding its max corner
+        glm::ivec3 low;
+        glm::ivec3 high;
+        for (int axis = 0; axis < 3; ++axis) {
+            const auto cell = [&](double x) {
+                return std::clamp(
+                    static_cast<int>(std::floor((x - data.bounds.min[axis]) / size[axis])), 0,
+                    n[axis] - 1);
+            };
+            low[axis] = cell(box.min[axis]);
+            high[axis] = cell(box.max[axis]);
+        }
+        for (int z = low.z; z <= high.z; ++z) {
+            for (int y = low.y; y <= high.y; ++y) {
+                for (int x = low.x; x <= high.x; ++x) {
+                    CAPTURE(x, y, z);
+                    CHECK(listed(x, y, z, id));
+                }
+            }
+        }
+    }
 }
 
 TEST_CASE("UniformGrid::closest_hit: equals closest_hit on random scenes, from outside and inside",

@@ -307,4 +307,21 @@ std::size_t Bvh::node_count() const {
     return impl_->nodes.size();
 }
 
+std::vector<BvhNodeData> Bvh::nodes() const {
+    std::vector<BvhNodeData> data;
+    for (const Impl::Node& node : impl_->nodes) {
+        BvhNodeData entry;
+        entry.box = node.box;
+        if (node.left >= 0) {
+            entry.children = {static_cast<std::size_t>(node.left),
+                              static_cast<std::size_t>(node.right)};
+        } else {
+            for (std::uint32_t k = node.first; k < node.first + node.count; ++k)
+                entry.primitives.push_back(impl_->order[k]);
+        }
+        data.push_back(entry);
+    }
+    return data;
+}
+
 }  // namespace raystep

@@ -271,4 +271,15 @@ glm::ivec3 UniformGrid::resolution() const {
     return impl_->resolution;
 }
 
+UniformGridData UniformGrid::cells() const {
+    UniformGridData data;
+    data.bounds = impl_->box;
+    data.resolution = impl_->resolution;
+    data.cells.resize(impl_->first.empty() ? 0 : impl_->first.size() - 1);
+    for (std::size_t cell = 0; cell < data.cells.size(); ++cell)
+        data.cells[cell].assign(impl_->ids.begin() + impl_->first[cell],
+                                impl_->ids.begin() + impl_->first[cell + 1]);
+    return data;
+}
+
 }  // namespace raystep

@@ -1,0 +1,42 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "stages/3_intersect/intersect.h"
+
+namespace raystep::grade {
+
+// The scenes stage 4's work is measured on (stage4_work.cpp): one to walk a structure handed over
+// as data, one to time the submission's own walk.
+
+/// Primitives and the rays asked about them, with a name for reports.
+struct WorkScene {
+    std::string name;
+    PrimitiveList primitives;
+    std::vector<Ray> rays;
+};
+
+/// 1,500 small triangles and 150 small spheres strewn through [-1, 1]^3, met by 400 rays from a
+/// sphere of radius 3 around it; a quarter of the rays start beyond 0 and a quarter stop short,
+/// so that a walk must keep to [t_min, t_max].
+WorkScene strewn_scene();
+
+/// Where a walls scene's rays come from: above the walls (z > 1, looking down), below them, or
+/// half from each side.
+enum class Side { above, below, both };
+
+/// The traversal seed: the walls scene's rays, and the jitter of every timed pass.
+inline constexpr std::uint64_t kTraversalSeed = 0x7A1C;
+
+/// `layers` walls across the unit cube, each an 8 x 8 mesh of small squares (two triangles each)
+/// that no ray crosses without a hit, spread evenly in z (one lies at z = 0.5), and a speck at two
+/// opposite corners so that every number of walls fills the same cube; 4,000 rays from a sphere
+/// of radius 2 around it, on `side`, towards its middle. A walk that stops at the nearest hit
+/// visits a wall's worth of nodes or cells whatever the number of walls; one that goes on visits
+/// every wall behind; one that visits a node's children in a fixed order, not the nearer first,
+/// takes the far walls first for rays from one side.
+WorkScene walls_scene(int layers, Side side);
+
+}  // namespace raystep::grade
