@@ -32,7 +32,7 @@ bool in_range(const Ray& ray, double t) {
     return t >= ray.t_min && t <= ray.t_max && std::isfinite(t);
 }
 
-// docs/stage3.md, "Method 3": beta (p0 - p1) + gamma (p0 - p2) + t D = p0 - A
+// docs/stage3.md, "Method 3: Cramer's rule": beta (p0 - p1) + gamma (p0 - p2) + t D = p0 - A
 bool cramer_hits(const Ray& ray, const Triangle& tri) {
     const Vec3 c0 = tri.p0 - tri.p1;
     const Vec3 c1 = tri.p0 - tri.p2;
