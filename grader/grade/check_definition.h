@@ -45,9 +45,6 @@ struct CheckDefinition {
     std::string kind;  ///< "unit", "oracle", "render", "speed"
     std::string name;
     std::function<CheckMeasure(const GradingContext&, const BuiltProbe&)> measure;
-    /// It times the submission's probe beside the reference probe (GradingContext::
-    /// reference_probe): the speed checks, and stage 4's structure checks, which time a walk.
-    bool times_against_reference = false;
 };
 
 /// Every check, stage by stage (grader/grade/checks/).

@@ -599,15 +599,10 @@ PublicCheck stage4_grid_resolution_public_check() {
 std::vector<CheckDefinition> stage4_checks() {
     const auto structure = [](const std::string& id, const std::string& name,
                               const std::string& call, const std::string& split, bool occluded) {
-        return CheckDefinition{id,
-                               4,
-                               "oracle",
-                               name,
-                               [=](const GradingContext& context, const BuiltProbe& probe) {
-                                   return measure_structure(context, probe, id, call, split,
-                                                            occluded);
-                               },
-                               true};
+        return CheckDefinition{
+            id, 4, "oracle", name, [=](const GradingContext& context, const BuiltProbe& probe) {
+                return measure_structure(context, probe, id, call, split, occluded);
+            }};
     };
     return {
         {"stage4.unit.slab", 4, "unit", kSlabName,

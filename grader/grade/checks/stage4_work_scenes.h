@@ -30,7 +30,7 @@ enum class Side { above, below, both };
 /// The traversal seed: the walls scene's rays, and the jitter of every timed pass.
 inline constexpr std::uint64_t kTraversalSeed = 0x7A1C;
 
-/// `layers` walls across the unit cube, each an 8 x 8 mesh of small squares (two triangles each)
+/// `layers` walls across the unit cube, each a 4 x 4 mesh of squares (two triangles each)
 /// that no ray crosses without a hit, spread evenly in z (one lies at z = 0.5), and a speck at two
 /// opposite corners so that every number of walls fills the same cube; 4,000 rays from a sphere
 /// of radius 2 around it, on `side`, towards its middle. A walk that stops at the nearest hit
