@@ -1,5 +1,6 @@
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -23,6 +24,15 @@ namespace raystep::probe {
 // which the grader scores as a wrong answer.
 
 using Json = nlohmann::json;
+
+/// The deepest that arrays and objects may nest in a line the other side sent: every value of the
+/// protocol nests a few levels, and a line nested hundreds of thousands deep would exhaust the
+/// stack of whatever walks it (nlohmann's dump is recursive), so it is refused before parsing.
+inline constexpr int kDeepestNesting = 64;
+
+/// Whether JSON text nests arrays and objects deeper than kDeepestNesting (what lies in strings
+/// is skipped, escapes included). Reads the text once; never throws.
+bool nested_too_deep(const std::string& text);
 
 Json number(double x);
 double number_from(const Json& j);

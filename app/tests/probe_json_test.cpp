@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "app/protocol/probe_json.h"
 #include "base/testing/catch.h"
@@ -33,4 +34,19 @@ TEST_CASE("field: an object's field, or an error naming the one that is missing"
     CHECK(field(object, "width") == 4);
     CHECK_THROWS_WITH(field(object, "height"), "expected a field 'height'");
     CHECK_THROWS_WITH(field(Json::array({1, 2}), "width"), "expected a field 'width'");
+}
+
+TEST_CASE("nested_too_deep: refuses a line nested past the protocol's depth, wherever it nests",
+          "[app]") {
+    const auto nested = [](int depth, char open, char close) {
+        return std::string(static_cast<std::size_t>(depth), open) +
+               std::string(static_cast<std::size_t>(depth), close);
+    };
+    CHECK_FALSE(raystep::probe::nested_too_deep(R"({"id":0,"result":[[1,2],[3,{"a":[4]}]]})"));
+    CHECK_FALSE(raystep::probe::nested_too_deep(nested(raystep::probe::kDeepestNesting, '[', ']')));
+    CHECK(raystep::probe::nested_too_deep(nested(raystep::probe::kDeepestNesting + 1, '[', ']')));
+    CHECK(raystep::probe::nested_too_deep(R"({"id":0,"result":)" + nested(300000, '[', ']') + "}"));
+    // Brackets inside strings, escaped quotes included, are text, not nesting
+    const std::string quoted = "\"" + nested(100, '[', ']') + "\\\"" + nested(100, '{', '}') + "\"";
+    CHECK_FALSE(raystep::probe::nested_too_deep(R"({"id":0,"threw":{"message":)" + quoted + "}}"));
 }

@@ -60,6 +60,13 @@ ProbeSession ask_probe(const std::filesystem::path& program, const std::vector<P
     for (std::string line; next < queries.size() && std::getline(lines, line);) {
         if (lines.eof() && answers.back() != '\n') break;  // cut mid-line
         ProbeAnswer& answer = session.answers[next];
+        if (probe::nested_too_deep(line)) {
+            answer = probe::malformed_reply(
+                line, "nested deeper than " + std::to_string(probe::kDeepestNesting) +
+                          " levels, which no answer of the protocol is");
+            ++next;
+            continue;
+        }
         try {
             const probe::Json parsed = probe::Json::parse(line);
             if (!parsed.is_object() || parsed.value("id", probe::Json()) != probe::Json(next)) {

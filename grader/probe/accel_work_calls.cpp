@@ -3,28 +3,21 @@
 // takes from the kernel, outside this process (docs/instructor.md, "What student code can touch").
 // The structure's answers themselves are app/probe/accel_calls.cpp's.
 //
-// A workload answers the base rays `repeat` times, each pass with every ray moved a little by
-// numbers drawn for that pass: no ray is asked twice, so a structure that remembers answers gains
-// nothing, and only the hits are returned, a checksum against the reference's.
+// A workload is the timed walk of timed_walk.h: the base rays and the shadow rays `repeat` times,
+// each pass's moved a little by numbers of its own, so that a structure that remembers answers
+// gains nothing; it answers with the digest of every answer, which the grader checks against the
+// reference's.
 
 #include "grader/probe/accel_work_calls.h"
 
 #include "app/protocol/structure_json.h"
-#include "base/math/portable_random.h"
+#include "grader/probe/timed_walk.h"
 #include "stages/4_accel/bvh.h"
 #include "stages/4_accel/uniform_grid.h"
 
 namespace raystep::probe {
 
 namespace {
-
-// How far each pass moves the base rays: every origin coordinate by up to `origin`, every
-// direction component by up to `direction`, drawn from PortableRandom(seed, pass).
-struct Jitter {
-    std::uint64_t seed = 0;
-    double origin = 0.0;
-    double direction = 0.0;
-};
 
 Jitter jitter_from(const Json& j) {
     const Json& seed = field(j, "seed");
@@ -33,28 +26,11 @@ Jitter jitter_from(const Json& j) {
             number_from(field(j, "direction"))};
 }
 
-Vec3 moved(const Vec3& v, double by, PortableRandom& random) {
-    return v + by * random.point(1.0);
-}
-
-// The base rays `repeat` times, each pass's moved by its own numbers; the number of hits.
+// The timed walk of timed_walk.h through `structure`: its digest.
 template <class Structure>
 Json run_workload(const Structure& structure, const Json& a) {
-    const std::vector<Ray> rays = rays_from(field(a, "rays"));
-    const Jitter jitter = jitter_from(field(a, "jitter"));
-    const int repeat = integer_from(field(a, "repeat"));
-    std::size_t hits = 0;
-    std::vector<Ray> pass_rays = rays;
-    for (int pass = 0; pass < repeat; ++pass) {
-        PortableRandom random(jitter.seed, static_cast<std::uint64_t>(pass));
-        for (std::size_t k = 0; k < rays.size(); ++k) {
-            pass_rays[k].origin = moved(rays[k].origin, jitter.origin, random);
-            pass_rays[k].direction = moved(rays[k].direction, jitter.direction, random);
-        }
-        for (const Ray& r : pass_rays)
-            hits += structure.closest_hit(r).has_value();
-    }
-    return hits;
+    return timed_walk(structure, rays_from(field(a, "rays")), rays_from(field(a, "shadow_rays")),
+                      jitter_from(field(a, "jitter")), integer_from(field(a, "repeat")));
 }
 
 // No structure: stage 3's closest_hit over every primitive, the baseline a structure must beat.
@@ -63,6 +39,7 @@ struct BruteForce {
     std::optional<PrimitiveHit> closest_hit(const Ray& ray) const {
         return raystep::closest_hit(ray, primitives);
     }
+    bool occluded(const Ray& ray) const { return closest_hit(ray).has_value(); }
 };
 
 }  // namespace

@@ -231,9 +231,10 @@ bool bubblewrap_available() {
 std::string limit_of_signal(int signal) {
     switch (signal) {
         case SIGSYS:
-            return "it made a system call the sandbox forbids: starting a process, or asking for "
-                   "memory outside its address space (shared memory, message queues, memfd), "
-                   "which the memory limit could not count";
+            return "it made a system call the sandbox forbids: asking for memory outside its "
+                   "address space (shared memory, message queues, memfd), which the memory limit "
+                   "could not count, or in a probe starting a process or making a file, folder or "
+                   "link";
         case SIGXFSZ:
             return "it wrote a file past the sandbox's file size limit (a probe may write none)";
         case SIGXCPU:

@@ -16,11 +16,14 @@ namespace raystep::grade {
 /// SIGSYS: a probe or a compiler has no use for any of them, and the report can then name the
 /// rule it broke.
 ///
-/// With `single_process`, also starting a process (fork, vfork, clone without CLONE_THREAD), which
-/// kills the program the same way; threads still start, and clone3, whose flags a filter cannot
-/// read, answers ENOSYS, so that the C library starts them through clone. A program that cannot
-/// start a process does all its work in its own address space, and its CPU time, as the kernel
-/// accounts it at its exit, is all of the run's (SandboxRun::cpu_seconds).
+/// With `single_process` (a probe), also starting a process (fork, vfork, clone without
+/// CLONE_THREAD) and making a name in a file system (creat, open with O_CREAT or O_TMPFILE, mkdir,
+/// mknod, link, symlink, rename, bind), each of which kills the program the same way; threads
+/// still start, and clone3 and openat2, whose flags a filter cannot read, answer ENOSYS, so that
+/// the C library goes through clone and openat. A program that cannot start a process does all
+/// its work in its own address space, and its CPU time, as the kernel accounts it at its exit, is
+/// all of the run's (SandboxRun::cpu_seconds); one that makes no name holds no inode (a folder of
+/// no bytes costs memory that no size limit counts).
 ///
 /// On an architecture the filter does not know, it is empty and nothing is refused:
 /// filter_architecture() says so.

@@ -7,6 +7,7 @@
 #include "base/testing/catch.h"
 #include "grader/grade/checks/stage4_structure.h"
 #include "grader/grade/probe_client.h"
+#include "grader/probe/timed_walk.h"
 
 using namespace raystep;
 
@@ -18,6 +19,7 @@ TEST_CASE("the reference probe answers every stage-4 call of the protocol") {
     const probe::Json scene = {{"primitives", probe::primitive_list(list)},
                                {"rays", rays},
                                {"split", "sah"},
+                               {"shadow_rays", rays},
                                {"repeat", 2},
                                {"jitter", {{"seed", 9}, {"origin", 1e-3}, {"direction", 1e-4}}}};
     const std::vector<grade::ProbeQuery> queries = {
@@ -46,8 +48,16 @@ TEST_CASE("the reference probe answers every stage-4 call of the protocol") {
     // The structures as data are the reference's, whole
     CHECK_FALSE(grade::bvh_problem(probe::bvh_nodes_from(session.answers[2].value), list));
     CHECK_FALSE(grade::grid_problem(probe::uniform_grid_data_from(session.answers[3].value), list));
-    // Two passes of the ray, moved a little each time: the triangle both times
-    CHECK(session.answers[4].value == 2);
+    // Two passes of the ray, moved a little each time: the digest of the triangle's hit and the
+    // occlusion, both times, as the grader's own walk of the reference finds it
+    const probe::Jitter jitter{9, 1e-3, 1e-4};
+    const std::vector<Ray> ray_list = probe::rays_from(rays);
+    CHECK(session.answers[4].value ==
+          probe::timed_walk(Bvh(list, BvhSplit::sah), ray_list, ray_list, jitter, 2));
+    CHECK(session.answers[5].value ==
+          probe::timed_walk(UniformGrid(list), ray_list, ray_list, jitter, 2));
+    CHECK(session.answers[4].value !=
+          probe::timed_walk(Bvh(list, BvhSplit::sah), ray_list, ray_list, jitter, 1));
     CHECK(session.answers[7].value.at("enter") == 4.0);
     CHECK(session.answers[8].value == probe::Json::array({3, 3, 3}));
 }

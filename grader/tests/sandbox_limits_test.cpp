@@ -173,6 +173,28 @@ TEST_CASE("run_sandboxed: a single-process run may start threads, but a fork end
 }
 
 TEST_CASE(
+    "run_sandboxed: a single-process run reads files but making any name (file, folder, link, "
+    "O_TMPFILE, socket path) ends it with SIGSYS",
+    "[sandbox]") {
+    const bool isolate = GENERATE(false, true);
+    const std::string mode = GENERATE("file", "folder", "link", "tmpfile", "socket");
+    CAPTURE(isolate, mode);
+    if (!can_run(isolate)) return;
+    if (filter_architecture().empty()) {
+        WARN("no system call filter on this architecture: nothing to test");
+        return;
+    }
+    SandboxPolicy policy = test_policy(isolate);
+    policy.single_process = true;
+
+    const HostileRun named = run_hostile({hostile("make_names"), mode}, "", policy);
+    CAPTURE(named.run.output, named.run.errors);
+    CHECK(named.run.signal == SIGSYS);
+    CHECK(named.run.output == "read: yes\n");
+    check_contained(named, isolate);
+}
+
+TEST_CASE(
     "run_sandboxed: a single-process run's CPU time counts all its threads, through bubblewrap "
     "too",
     "[sandbox]") {

@@ -67,6 +67,9 @@ std::vector<WorkloadTime> timed_workloads(const std::vector<WorkloadRun>& runs,
                 timed[p].not_implemented = session.answers[0].message;
             }
         } else if (passes > 0) {
+            if (!timed[p].checksum.is_null() && timed[p].checksum != session.answers[0].value) {
+                timed[p].same_answers = false;
+            }
             timed[p].checksum = session.answers[0].value;
         }
         return session.run.cpu_seconds;

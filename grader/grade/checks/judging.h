@@ -51,6 +51,9 @@ struct WorkloadTime {
     int rounds = 0;  ///< the rounds timed_workloads ran, all programs alike
     probe::Json checksum;
     bool answered = true;  ///< false when a run ended without an answer (a stub, crash or timeout)
+    /// false when the runs with passes did not all answer the same: the checksum is then none of
+    /// them, and the time not one of a right walk's
+    bool same_answers = true;
     std::string not_implemented;  ///< a stub's message, when a stub was why
 };
 

@@ -503,17 +503,30 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
     constexpr int kRays = 20000;
     constexpr int kPasses = 20;
     constexpr int kBruteForceRays = 1000;  // each costs a test per primitive: a few suffice
+    // Each ray also as a shadow ray cut short before the scene (every origin lies 3 from the
+    // middle, the scene within 1.8 of it): the walk's occluded is timed too
     Json rays = Json::array();
+    Json shadow_rays = Json::array();
     Json brute_force_rays = Json::array();
+    Json brute_force_shadow_rays = Json::array();
     for (int k = 0; k < kRays; ++k) {
         const Vec3 origin = 3.0 * random.unit_vector();
-        rays.push_back(probe::ray({origin, random.point(0.8) - origin}));
-        if (k < kBruteForceRays) brute_force_rays.push_back(rays.back());
+        Ray ray{origin, random.point(0.8) - origin};
+        rays.push_back(probe::ray(ray));
+        ray.t_max = 0.25;
+        shadow_rays.push_back(probe::ray(ray));
+        if (k < kBruteForceRays) {
+            brute_force_rays.push_back(rays.back());
+            brute_force_shadow_rays.push_back(shadow_rays.back());
+        }
     }
     const Json primitives = probe::primitive_list(scene.primitives);
     const Json jitter = {{"seed", 0x5BEED}, {"origin", 1e-3}, {"direction", 1e-4}};
-    const Json args = {
-        {"primitives", primitives}, {"rays", rays}, {"split", "sah"}, {"jitter", jitter}};
+    const Json args = {{"primitives", primitives},
+                       {"rays", rays},
+                       {"shadow_rays", shadow_rays},
+                       {"split", "sah"},
+                       {"jitter", jitter}};
     const std::string call = structure + "_workload";
     const std::vector<WorkloadTime> timed =
         timed_workloads({{context.reference_probe, args}, {*probe.program, args}}, call, kPasses);
@@ -532,11 +545,14 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
                 : "the reference did not answer the workload";
         return measure;
     }
-    if (student.checksum != reference.checksum) {
+    if (student.checksum != reference.checksum || !student.same_answers) {
         measure.outcome = Outcome::failed;
-        measure.summary = "the " + structure + " found " + student.checksum.dump() +
-                          " hits where the reference finds " + reference.checksum.dump() +
-                          ": a structure with wrong answers earns nothing for speed";
+        measure.summary = "the " + structure +
+                          " answered the timed rays otherwise than the reference (the digest of "
+                          "its answers is " +
+                          student.checksum.dump() + ", the reference's " +
+                          reference.checksum.dump() +
+                          "): a structure with wrong answers earns nothing for speed";
         return measure;
     }
     const CheckMeasure work = measure_work(
@@ -549,9 +565,12 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
         measure.counterexamples = work.counterexamples;
         return measure;
     }
-    const WorkloadTime brute_force = timed_workload(
-        context.reference_probe, "brute_force_workload",
-        {{"primitives", primitives}, {"rays", brute_force_rays}, {"jitter", jitter}}, 1);
+    const WorkloadTime brute_force = timed_workload(context.reference_probe, "brute_force_workload",
+                                                    {{"primitives", primitives},
+                                                     {"rays", brute_force_rays},
+                                                     {"shadow_rays", brute_force_shadow_rays},
+                                                     {"jitter", jitter}},
+                                                    1);
     const double ratio = reference.seconds / student.seconds;
     const double per_ray = student.seconds / (double(kPasses) * kRays);
     const double brute_force_ratio =

@@ -19,7 +19,10 @@
 //    past the hit visits every wall behind it; one that visits children in a fixed order takes the
 //    far half of every node first for rays from one side; and one that tests every primitive, or
 //    sorts every box for every ray, takes time in proportion to the walls. The ratio is the walk's
-//    own, whatever its constant costs, and needs no reference beside it. Allowed: kDepthAllowance.
+//    own, whatever its constant costs. Allowed: kDepthAllowance. And since a program that can
+//    tell the one-wall runs from the others could slow those on purpose, the walk through the
+//    walls also against the reference's walk of such rays, timed in the grader: brute force takes
+//    hundreds of times it, however the runs compare. Allowed: kBruteForceAllowance.
 //    A grid without a mailbox is not caught here: with this course's primitives a test costs
 //    about what a mailbox's lookup does, so no time can tell (docs/measurements/stage4-work.md).
 //
@@ -30,17 +33,18 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <future>
 #include <map>
 #include <mutex>
 
 #include "app/protocol/structure_json.h"
-#include "base/math/portable_random.h"
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage4_cases.h"
 #include "grader/grade/checks/stage4_structure.h"
 #include "grader/grade/checks/stage4_work_scenes.h"
+#include "grader/probe/timed_walk.h"
 
 namespace raystep::grade {
 
@@ -51,6 +55,7 @@ using probe::Json;
 constexpr double kWorkAllowance = 4.0;
 constexpr double kBruteForceShare = 16.0;
 constexpr double kDepthAllowance = 10.0;
+constexpr double kBruteForceAllowance = 40.0;
 constexpr int kWalls = 192;  // in the walls scene the walk is timed on
 // The timed runs' length: long enough that the CPU time of a start (a few ms, which the run with
 // no passes takes away) varies by a few per cent of it; the first run's passes; the rounds, whose
@@ -190,14 +195,47 @@ CheckMeasure measure_structure_data(const GradingContext& context, const BuiltPr
     return measure;
 }
 
+// How far every pass moves the timed rays (timed_walk.h): a thousandth of the scene's size, and a
+// ten-thousandth of a direction's length, far too little to change what a ray meets.
+const probe::Jitter kJitter = {kTraversalSeed, 1e-3, 1e-4};
+
+// A scene's shadow rays: its rays, each cut short before the scene (every origin lies some 2 from
+// the unit cube's centre and every direction about as long, so t 0.25 ends well outside it). A walk
+// answers them from its first box; brute force tests every primitive.
+std::vector<Ray> shadow_rays(const WorkScene& scene) {
+    std::vector<Ray> shadows = scene.rays;
+    for (Ray& ray : shadows)
+        ray.t_max = 0.25;
+    return shadows;
+}
+
 // The arguments of a timed walk of `scene` through the structure `call` (the BVH by the SAH).
-Json timed_walk(const WorkScene& scene, const std::string& call) {
-    Json args = {{"primitives", probe::primitive_list(scene.primitives)},
-                 {"rays", ray_list(scene.rays)},
-                 {"jitter", {{"seed", kTraversalSeed}, {"origin", 1e-3}, {"direction", 1e-4}}}};
+Json walk_arguments(const WorkScene& scene, const std::string& call) {
+    Json args = {
+        {"primitives", probe::primitive_list(scene.primitives)},
+        {"rays", ray_list(scene.rays)},
+        {"shadow_rays", ray_list(shadow_rays(scene))},
+        {"jitter",
+         {{"seed", kJitter.seed}, {"origin", kJitter.origin}, {"direction", kJitter.direction}}}};
     if (call == "bvh") args["split"] = "sah";
     return args;
 }
+
+// The reference structure for `call` over the scene, and what its timed walk answers.
+struct ReferenceWalk {
+    const WorkScene& scene;
+    std::string call;
+
+    std::uint64_t digest(int passes) const {
+        const std::vector<Ray> shadows = shadow_rays(scene);
+        if (call == "bvh") {
+            return probe::timed_walk(Bvh(scene.primitives, BvhSplit::sah), scene.rays, shadows,
+                                     kJitter, passes);
+        }
+        return probe::timed_walk(UniformGrid(scene.primitives), scene.rays, shadows, kJitter,
+                                 passes);
+    }
+};
 
 // The CPU time of one run of the probe on `workload` with `passes` passes, as the kernel accounts
 // it for the single-process probe; nullopt when the run gave no result (a stub, a crash, a
@@ -233,6 +271,34 @@ std::optional<int> calibrated_passes(const BuiltProbe& probe, const std::string&
     }
 }
 
+// The reference structure's walk of `scene` per pass, timed here in the grader (its thread's CPU
+// time): the best of kTimedRounds runs of about kTimedSeconds. The grader is the reference's own
+// program, so no probe need run for it.
+double reference_per_pass(const ReferenceWalk& reference) {
+    const auto thread_seconds = [] {
+        timespec now{};
+        clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
+        return double(now.tv_sec) + 1e-9 * double(now.tv_nsec);
+    };
+    const double start = thread_seconds();
+    reference.digest(0);  // the build alone
+    const double build = thread_seconds() - start;
+    int passes = 1;
+    while (passes < kMostPasses) {
+        const double before = thread_seconds();
+        reference.digest(passes);
+        if (thread_seconds() - before - build >= kTimedSeconds) break;
+        passes *= 2;
+    }
+    double best = HUGE_VAL;
+    for (int round = 0; round < kTimedRounds; ++round) {
+        const double before = thread_seconds();
+        reference.digest(passes);
+        best = std::min(best, thread_seconds() - before - build);
+    }
+    return std::max(best, 1e-9) / passes;
+}
+
 // 2. The submission's own walk, timed by the kernel through the walls, from above and from below,
 // against its own walk through one wall.
 CheckMeasure measure_traversal_time(const BuiltProbe& probe, const std::string& call) {
@@ -241,6 +307,7 @@ CheckMeasure measure_traversal_time(const BuiltProbe& probe, const std::string& 
     const WorkScene wall = walls_scene(1, Side::both);
     const std::string workload = call + "_workload";
     const WorkScene* const scenes[] = {&above, &below, &wall};
+    const ReferenceWalk references[] = {{above, call}, {below, call}, {wall, call}};
     Json args[3];
     int passes[3];
     ProbeAnswer answer;
@@ -257,24 +324,37 @@ CheckMeasure measure_traversal_time(const BuiltProbe& probe, const std::string& 
                       "can be that slow");
     };
     for (int k = 0; k < 3; ++k) {
-        args[k] = timed_walk(*scenes[k], call);
+        args[k] = walk_arguments(*scenes[k], call);
         const std::optional<int> calibrated = calibrated_passes(probe, workload, args[k], answer);
         if (!calibrated) return unanswered(*scenes[k]);
         passes[k] = *calibrated;
     }
 
     // The scenes in turn, round after round, each time with its run of no passes: a load that
-    // comes and goes slows them alike, and the best of the rounds is the quietest
+    // comes and goes slows them alike, and the best of the rounds is the quietest. Every answer,
+    // the digest of every hit of every pass, must be the reference's.
+    std::uint64_t expected[3];
+    for (int k = 0; k < 3; ++k)
+        expected[k] = references[k].digest(passes[k]);
     double start[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
     double run[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
     for (int round = 0; round < kTimedRounds; ++round) {
         for (int k = 0; k < 3; ++k) {
-            const std::optional<double> empty = cpu_seconds(probe, workload, args[k], 0, answer);
-            const std::optional<double> full =
-                empty ? cpu_seconds(probe, workload, args[k], passes[k], answer) : std::nullopt;
-            if (!full) return unanswered(*scenes[k]);
-            start[k] = std::min(start[k], *empty);
-            run[k] = std::min(run[k], *full);
+            for (const int asked : {0, passes[k]}) {
+                const std::optional<double> seconds =
+                    cpu_seconds(probe, workload, args[k], asked, answer);
+                if (!seconds) return unanswered(*scenes[k]);
+                const std::uint64_t digest = asked == 0 ? probe::kEmptyDigest : expected[k];
+                if (answer.value != Json(digest)) {
+                    return failed("its own walk answered the timed rays of " + scenes[k]->name +
+                                  " otherwise than the reference: the digest of its " +
+                                  std::to_string(asked) + " passes' answers is " +
+                                  answer_text(answer) + ", the reference's " +
+                                  std::to_string(digest));
+                }
+                (asked == 0 ? start[k] : run[k]) =
+                    std::min(asked == 0 ? start[k] : run[k], *seconds);
+            }
         }
     }
     double per_pass[3];
@@ -282,28 +362,32 @@ CheckMeasure measure_traversal_time(const BuiltProbe& probe, const std::string& 
         per_pass[k] = std::max(run[k] - start[k], 1e-6) / passes[k];
 
     const double depth = std::max(per_pass[0], per_pass[1]) / per_pass[2];
+    // Against the reference with nothing taken away: a program that slowed its runs of no passes
+    // on purpose could shrink the difference above, never its whole time
+    const double against_reference = run[0] / passes[0] / reference_per_pass(references[0]);
     CheckMeasure measure;
-    measure.metrics = {
-        {"walk CPU time, " + std::to_string(kWalls) + " walls against 1", depth},
-        {"walk CPU time, from above against from below", per_pass[0] / per_pass[1]},
-        {"walk CPU time per ray, microseconds", 1e6 * per_pass[0] / double(above.rays.size())}};
+    measure.metrics = {{"walk CPU time, " + std::to_string(kWalls) + " walls against 1", depth},
+                       {"walk CPU time, from above against from below", per_pass[0] / per_pass[1]},
+                       {"walk CPU time against the reference's, in the grader", against_reference}};
     char text[300];
     std::snprintf(text, sizeof text,
                   "its own walk (%zu rays a pass, new every pass, CPU time per pass) took %.2f "
-                  "times as long through %d walls, from the dearer side, as through one",
-                  above.rays.size(), depth, kWalls);
+                  "times as long through %d walls, from the dearer side, as through one, and "
+                  "%.1f times the reference's",
+                  above.rays.size(), depth, kWalls, against_reference);
     measure.summary = text;
-    if (depth <= kDepthAllowance) {
-        measure.outcome = Outcome::passed;
-        measure.fraction = 1.0;
-        return measure;
+    std::string broken;
+    if (depth > kDepthAllowance) {
+        broken = ": more than the " + std::to_string(int(kDepthAllowance)) +
+                 " times a walk that visits the nearer node first and stops at the nearest hit "
+                 "may take for the walls behind it";
+    } else if (against_reference > kBruteForceAllowance) {
+        broken = ": more than the " + std::to_string(int(kBruteForceAllowance)) +
+                 " times the reference's that any structure's walk takes (testing every "
+                 "primitive takes hundreds)";
     }
-    char broken[200];
-    std::snprintf(broken, sizeof broken,
-                  ": more than the %.0f times a walk that visits the nearer node first and stops "
-                  "at the nearest hit may take for the walls behind it",
-                  kDepthAllowance);
-    measure.outcome = Outcome::failed;
+    measure.outcome = broken.empty() ? Outcome::passed : Outcome::failed;
+    measure.fraction = broken.empty() ? 1.0 : 0.0;
     measure.summary += broken;
     return measure;
 }
