@@ -222,6 +222,12 @@ while IFS=$'\t' read -r name command points may_fail; do
             "$stage are worth ${expected_points:-nothing} ($public_points)"
         problems=$((problems + 1))
     fi
+    # The command grader reads max-score with parseInt: 1.5 points would be paid as 1.
+    if ! [[ "$points" =~ ^[0-9]+$ ]]; then
+        echo "FAIL workflow step '$name' gives $points points: GitHub Classroom's command grader" \
+            "pays whole points only (parseInt), so a stage's public checks must add up to one"
+        problems=$((problems + 1))
+    fi
     # On the stubs: exit 1, the checks not run named (the pipeline's all run), every check run not
     # implemented.
     if [ "$exit_code" -ne 1 ] ||
