@@ -219,7 +219,12 @@ TEST_CASE("run_sandboxed: unbounded allocation stops at the address-space limit"
     CAPTURE(isolate);
     if (!can_run(isolate)) return;
 
-    const HostileRun allocate = run_hostile({hostile("allocate")}, "", test_policy(isolate));
+    // Touching 256 MiB of fresh pages is kernel time, which a loaded machine stretches past the
+    // usual 1 s: the limit under test is the address space, so time is not allowed to end it first.
+    SandboxPolicy policy = test_policy(isolate);
+    policy.limits.cpu_seconds = 10;
+    policy.limits.wall = std::chrono::seconds(30);
+    const HostileRun allocate = run_hostile({hostile("allocate")}, "", policy);
     CAPTURE(allocate.run.exit_code, allocate.run.errors);
     CHECK(allocate.run.signal == SIGABRT);  // std::bad_alloc, uncaught
     CHECK_FALSE(allocate.run.timed_out);

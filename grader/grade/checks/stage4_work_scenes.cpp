@@ -39,7 +39,7 @@ WorkScene strewn_scene() {
 
 WorkScene walls_scene(int layers, Side side) {
     constexpr int kSide = 4;
-    constexpr int kRays = 4000;
+    constexpr int kRays = 1000;
     WorkScene scene;
     scene.name = "the walls scene (" + std::to_string(layers) + (layers == 1 ? " wall" : " walls") +
                  " of " + std::to_string(2 * kSide * kSide) + " triangles, rays from " +

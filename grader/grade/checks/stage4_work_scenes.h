@@ -32,8 +32,9 @@ inline constexpr std::uint64_t kTraversalSeed = 0x7A1C;
 
 /// `layers` walls across the unit cube, each a 4 x 4 mesh of squares (two triangles each)
 /// that no ray crosses without a hit, spread evenly in z (one lies at z = 0.5), and a speck at two
-/// opposite corners so that every number of walls fills the same cube; 4,000 rays from a sphere
-/// of radius 2 around it, on `side`, towards its middle. A walk that stops at the nearest hit
+/// opposite corners so that every number of walls fills the same cube; 1,000 rays from a sphere
+/// of radius 2 around it, on `side`, towards its middle (few, since every timed run parses them
+/// before its first pass; the passes make the time). A walk that stops at the nearest hit
 /// visits a wall's worth of nodes or cells whatever the number of walls; one that goes on visits
 /// every wall behind; one that visits a node's children in a fixed order, not the nearer first,
 /// takes the far walls first for rays from one side.
