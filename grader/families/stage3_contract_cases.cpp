@@ -3,20 +3,11 @@
 #include <cmath>
 #include <limits>
 
+#include "grader/families/undecided_case.h"
+
 namespace raystep {
 
 namespace {
-
-RayCase one(const Ray& ray, const CaseShape& shape) {
-    return RayCase{0, ray, {CasePrimitive{shape, {}}}, false};
-}
-
-RayCase many(const Ray& ray, const std::vector<CaseShape>& shapes) {
-    RayCase c{0, ray, {}, false};
-    for (const CaseShape& shape : shapes)
-        c.primitives.push_back({shape, {}});
-    return c;
-}
 
 // A triangle in the plane coordinate `axis` = 0.5, its normal along +axis (sign 1) or -axis
 // (sign -1), its vertices lifted off that plane by tilt times (0, 1, -0.5): a tilt of 0 puts the
@@ -80,37 +71,42 @@ CaseFamily contract_family() {
         0,
         "t ranges, triangles in coordinate planes, nearest of several, ties, slivers",
         {
-            one({{0.3, -0.2, 5}, {0, 0, -1}}, in_z),
-            one({{3, 0, 5}, {0, 0, -1}}, in_z),
-            one({{-0.2, 0.5, 5}, {0.05, -0.1, -1}}, in_z),
-            one({{5, 0.1, 0.1}, {-1, 0, 0}}, in_x),
-            one({{5, 0.9, 0.9}, {-1, 0, 0}}, in_x),
-            one({{-4, -0.3, -0.5}, {1, 0.02, 0.03}}, in_x),
-            one({{0.1, 2, -0.2}, {0, -1, 0}}, in_y),
-            one({{0.9, 2, 0.9}, {0, -1, 0}}, in_y),
-            one({{0, 0, -5}, {0, 0, 1}}, unit),
-            one({{0, 0, 5}, {0, 0, -1}, 0.0, 3.0}, at_z3),
-            many({{0, 0, -5}, {0, 0, 1}}, {far_sphere, in_z, at_z3}),
-            many({{0.1, 0.1, 20}, {0, 0, -1}}, {far_sphere, in_z, at_z15}),
-            many({{0.1, 0.1, 20}, {0, 0, -1}, 0.0, 8.0}, {far_sphere, in_z, at_z15}),
-            many({{0.1, 0.1, 20}, {0, 0, -1}, 6.0, inf}, {far_sphere, in_z, at_z15}),
-            many({{0.1, 0.1, 20}, {0, 0, -1}, 12.0, inf}, {far_sphere, in_z, at_z15}),
-            one({{1.0275703435596424, 0.78125, 3.2150703435596424},
+            undecided_case({{0.3, -0.2, 5}, {0, 0, -1}}, in_z),
+            undecided_case({{3, 0, 5}, {0, 0, -1}}, in_z),
+            undecided_case({{-0.2, 0.5, 5}, {0.05, -0.1, -1}}, in_z),
+            undecided_case({{5, 0.1, 0.1}, {-1, 0, 0}}, in_x),
+            undecided_case({{5, 0.9, 0.9}, {-1, 0, 0}}, in_x),
+            undecided_case({{-4, -0.3, -0.5}, {1, 0.02, 0.03}}, in_x),
+            undecided_case({{0.1, 2, -0.2}, {0, -1, 0}}, in_y),
+            undecided_case({{0.9, 2, 0.9}, {0, -1, 0}}, in_y),
+            undecided_case({{0, 0, -5}, {0, 0, 1}}, unit),
+            undecided_case({{0, 0, 5}, {0, 0, -1}, 0.0, 3.0}, at_z3),
+            undecided_case_of_all({{0, 0, -5}, {0, 0, 1}}, {far_sphere, in_z, at_z3}),
+            undecided_case_of_all({{0.1, 0.1, 20}, {0, 0, -1}}, {far_sphere, in_z, at_z15}),
+            undecided_case_of_all({{0.1, 0.1, 20}, {0, 0, -1}, 0.0, 8.0},
+                                  {far_sphere, in_z, at_z15}),
+            undecided_case_of_all({{0.1, 0.1, 20}, {0, 0, -1}, 6.0, inf},
+                                  {far_sphere, in_z, at_z15}),
+            undecided_case_of_all({{0.1, 0.1, 20}, {0, 0, -1}, 12.0, inf},
+                                  {far_sphere, in_z, at_z15}),
+            undecided_case(
+                {{1.0275703435596424, 0.78125, 3.2150703435596424},
                  {-0.7071067811865475, -0.0, -0.7071067811865475}},
                 Triangle{{-0.875, 0.625, 0.875}, {-1.3125, 0.9374999999999999, 1.3125}, {0, 0, 0}}),
-            one({{-0.6853907864998738, -0.28125, 3.0582815729997477},
-                 {0.4472135954999579, -0.0, -0.8944271909999159}},
-                Triangle{{0.875, -0.375, 0.5},
-                         {0.4375, -0.18749999999999997, 0.24999999999999997},
-                         {0, 0, 0}}),
+            undecided_case({{-0.6853907864998738, -0.28125, 3.0582815729997477},
+                            {0.4472135954999579, -0.0, -0.8944271909999159}},
+                           Triangle{{0.875, -0.375, 0.5},
+                                    {0.4375, -0.18749999999999997, 0.24999999999999997},
+                                    {0, 0, 0}}),
         }};
     for (int axis = 0; axis < 3; ++axis) {
         for (const double sign : {1.0, -1.0}) {
             for (const double tilt : {0.0, 1e-3, 1e-9}) {
                 family.cases.push_back(
-                    one(along_axis(axis, sign), axis_triangle(axis, sign, tilt)));
+                    undecided_case(along_axis(axis, sign), axis_triangle(axis, sign, tilt)));
             }
-            family.cases.push_back(one(along_axis(axis, -sign), axis_triangle(axis, sign, 0.0)));
+            family.cases.push_back(
+                undecided_case(along_axis(axis, -sign), axis_triangle(axis, sign, 0.0)));
         }
     }
     const Plane z0{{0, 0, 0}, {0, 0, 1}};
@@ -118,8 +114,10 @@ CaseFamily contract_family() {
     for (const double d_dot_n : {1e-7, 1e-9, 1e-11, 1e-13}) {
         // From above z = 0 going down, and from below the tilted plane going up; both cross at
         // t = 1, up to the rounding of the inputs.
-        family.cases.push_back(one({{-0.4, 0.2, d_dot_n}, {1, 0.5, -d_dot_n}, 0.5, 2.0}, z0));
-        family.cases.push_back(one({{-0.5, 0.5, -d_dot_n}, {1, -1, d_dot_n}, 0.5, 2.0}, tilted));
+        family.cases.push_back(
+            undecided_case({{-0.4, 0.2, d_dot_n}, {1, 0.5, -d_dot_n}, 0.5, 2.0}, z0));
+        family.cases.push_back(
+            undecided_case({{-0.5, 0.5, -d_dot_n}, {1, -1, d_dot_n}, 0.5, 2.0}, tilted));
     }
     number(family);
     return family;
@@ -157,21 +155,25 @@ CaseFamily exact_family() {
         0,
         "the contract on cases no rounding can move: edges, tangents, two sides, the domain",
         {
-            one({{1, 0, -5}, {0, 0, 1}}, unit),                       // tangent: a double root
-            one({{0, -0.5, -5}, {0, 0, 1}}, Sphere{{0, 0, 0}, 0.5}),  // tangent from below
-            one({{0.5, -1, 5}, {0, 0, -1}}, in_z),                    // on the edge p0 p1
-            one({{1, -1, 5}, {0, 0, -1}}, in_z),                      // on the vertex p1
-            one({{0.5, 2, -1}, {0, -1, 0}}, in_y),                    // on the edge p2 p0
-            one({{0.25, -0.25, -5}, {0, 0, 1}}, in_z),                // from behind
-            one({{0, 0, 0}, {0, 0, 1}}, at_z3),                       // from behind
-            one(nearly_parallel(-24), z0),
-            one(nearly_parallel(-40), z0),
-            one(nearly_parallel(-50), z0),
-            one({{0, 0, 5 * big}, {0, 0, -big}}, Plane{{0, 0, 3 * big}, {0, 0, small}}),
-            one({{0.25 * big, -0.25 * big, 5 * big}, {0, 0, -big}}, scaled(in_z, big)),
-            one({{0.25 * small, -0.25 * small, 5 * small}, {0, 0, -small}}, scaled(in_z, small)),
-            one({{0, 0, -5 * sphere_big}, {0, 0, sphere_big}}, Sphere{{0, 0, 0}, sphere_big}),
-            one({{0, 0, -5 * sphere_small}, {0, 0, sphere_small}}, Sphere{{0, 0, 0}, sphere_small}),
+            undecided_case({{1, 0, -5}, {0, 0, 1}}, unit),  // tangent: a double root
+            undecided_case({{0, -0.5, -5}, {0, 0, 1}},
+                           Sphere{{0, 0, 0}, 0.5}),                // tangent from below
+            undecided_case({{0.5, -1, 5}, {0, 0, -1}}, in_z),      // on the edge p0 p1
+            undecided_case({{1, -1, 5}, {0, 0, -1}}, in_z),        // on the vertex p1
+            undecided_case({{0.5, 2, -1}, {0, -1, 0}}, in_y),      // on the edge p2 p0
+            undecided_case({{0.25, -0.25, -5}, {0, 0, 1}}, in_z),  // from behind
+            undecided_case({{0, 0, 0}, {0, 0, 1}}, at_z3),         // from behind
+            undecided_case(nearly_parallel(-24), z0),
+            undecided_case(nearly_parallel(-40), z0),
+            undecided_case(nearly_parallel(-50), z0),
+            undecided_case({{0, 0, 5 * big}, {0, 0, -big}}, Plane{{0, 0, 3 * big}, {0, 0, small}}),
+            undecided_case({{0.25 * big, -0.25 * big, 5 * big}, {0, 0, -big}}, scaled(in_z, big)),
+            undecided_case({{0.25 * small, -0.25 * small, 5 * small}, {0, 0, -small}},
+                           scaled(in_z, small)),
+            undecided_case({{0, 0, -5 * sphere_big}, {0, 0, sphere_big}},
+                           Sphere{{0, 0, 0}, sphere_big}),
+            undecided_case({{0, 0, -5 * sphere_small}, {0, 0, sphere_small}},
+                           Sphere{{0, 0, 0}, sphere_small}),
         }};
     number(family);
     return family;

@@ -7,6 +7,7 @@
 
 #include "grader/families/collinear_triangles.h"
 #include "grader/families/dyadic_hits.h"
+#include "grader/families/undecided_case.h"
 
 namespace raystep {
 
@@ -24,17 +25,6 @@ constexpr double kInf = HUGE_VAL;
 const Sphere kUnit{{0, 0, 0}, 1};
 const Plane kAtZ3{{0, 0, 3}, {0, 0, 1}};
 const Triangle kInZ{{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}};
-
-RayCase one(const Ray& ray, const CaseShape& shape) {
-    return RayCase{0, ray, {CasePrimitive{shape, {}}}, false};
-}
-
-RayCase many(const Ray& ray, const std::vector<CaseShape>& shapes) {
-    RayCase c{0, ray, {}, false};
-    for (const CaseShape& shape : shapes)
-        c.primitives.push_back({shape, {}});
-    return c;
-}
 
 int random_axis(PortableRandom& random) {
     return static_cast<int>(random.integer(0, 2));
@@ -103,7 +93,7 @@ RayCase range_end_case(PortableRandom& random, std::size_t) {
                 ray.t_min = far + quarter_steps(random);
                 break;
         }
-        return one(ray, sphere);
+        return undecided_case(ray, sphere);
     }
     Ray ray = dyadic_ray_to(random, point, axis, false, t);
     if (kind == 3) {
@@ -112,8 +102,8 @@ RayCase range_end_case(PortableRandom& random, std::size_t) {
         const bool at_t_max = random.unit() < 0.5;
         const Vec3 other = point + (at_t_max ? beyond : -beyond) * ray.direction;
         (at_t_max ? ray.t_max : ray.t_min) = t;
-        return many(ray, {dyadic_triangle_around(random, point, axis),
-                          dyadic_plane_through(random, other, axis)});
+        return undecided_case_of_all(ray, {dyadic_triangle_around(random, point, axis),
+                                           dyadic_plane_through(random, other, axis)});
     }
     // The hit at t_min or t_max, or a step beyond either (a miss)
     const double step = random.unit() < 0.25 ? quarter_steps(random) / 2.0 : 0.0;
@@ -124,8 +114,8 @@ RayCase range_end_case(PortableRandom& random, std::size_t) {
         ray.t_max = t - step;
         if (random.unit() < 0.5) ray.t_min = ray.t_max / 2.0;
     }
-    if (kind == 0) return one(ray, dyadic_plane_through(random, point, axis));
-    return one(ray, dyadic_triangle_around(random, point, axis));
+    if (kind == 0) return undecided_case(ray, dyadic_plane_through(random, point, axis));
+    return undecided_case(ray, dyadic_triangle_around(random, point, axis));
 }
 
 // Primitives of kind 0 (sphere), 1 (triangle) or 2 (plane) that the ray along `axis` meets at
@@ -170,7 +160,7 @@ RayCase tie_case(PortableRandom& random, std::size_t) {
     const Vec3 farther = point + quarter_steps(random) * ray.direction;
     shapes.push_back(met_at(random, kind, farther, axis, sign));
     shuffle(random, shapes);
-    return many(ray, shapes);
+    return undecided_case_of_all(ray, shapes);
 }
 
 // A ray lying in a plane, or in a triangle's plane (through the triangle or beside it), from
@@ -193,7 +183,7 @@ RayCase in_plane_case(PortableRandom& random, std::size_t) {
         direction[u] = sign * std::ldexp(1.0, static_cast<int>(random.integer(-2, 2)));
         const Vec3 crossing = point + quarter_steps(random) * direction;
         const CaseShape crossed = met_at(random, random.unit() < 0.5 ? 0 : 2, crossing, u, sign);
-        return many(Ray{point - t * direction, direction}, {lying_in, crossed});
+        return undecided_case_of_all(Ray{point - t * direction, direction}, {lying_in, crossed});
     }
     // In the plane, its larger component a power of two (dyadic_hits.h says why)
     Vec3 direction(0.0);
@@ -203,7 +193,7 @@ RayCase in_plane_case(PortableRandom& random, std::size_t) {
     if (random.unit() < 0.5) std::swap(direction[u], direction[v]);
     Vec3 through = point;
     if (kind == 1) through[u] += dyadic(random, 8.0);  // beside the triangle, or not
-    return one(Ray{through - t * direction, direction}, lying_in);
+    return undecided_case(Ray{through - t * direction, direction}, lying_in);
 }
 
 // Of every eight cases, five collinear triangles that Cramer's rule (the even ones) or
@@ -214,16 +204,17 @@ RayCase degenerate_case(PortableRandom& random, std::size_t k) {
     switch (k % 8) {
         case 6: {  // a zero direction against every kind
             const Vec3 origin = random.point(4.0);
-            return many(Ray{origin, Vec3(0.0)},
-                        {Triangle{random.point(2.0), random.point(2.0), random.point(2.0)},
-                         Sphere{random.point(2.0), random.uniform(0.1, 2.0)},
-                         Plane{random.point(2.0), random.unit_vector()}});
+            return undecided_case_of_all(
+                Ray{origin, Vec3(0.0)},
+                {Triangle{random.point(2.0), random.point(2.0), random.point(2.0)},
+                 Sphere{random.point(2.0), random.uniform(0.1, 2.0)},
+                 Plane{random.point(2.0), random.unit_vector()}});
         }
         case 7: {  // a zero radius and a zero normal, the ray aimed at each
             const Vec3 target = random.point(2.0);
             const Vec3 origin = target + random.unit_vector() * random.uniform(2.0, 8.0);
-            return many(Ray{origin, target - origin},
-                        {Sphere{target, 0.0}, Plane{target, Vec3(0.0)}});
+            return undecided_case_of_all(Ray{origin, target - origin},
+                                         {Sphere{target, 0.0}, Plane{target, Vec3(0.0)}});
         }
         case 5: {  // a repeated vertex, the ray aimed at the segment
             const Vec3 p = random.point(2.0);
@@ -234,71 +225,73 @@ RayCase degenerate_case(PortableRandom& random, std::size_t k) {
             const Triangle repeated = which == 0   ? Triangle{p, p, q}
                                       : which == 1 ? Triangle{p, q, q}
                                                    : Triangle{p, q, p};
-            return one(Ray{origin, target - origin}, repeated);
+            return undecided_case(Ray{origin, target - origin}, repeated);
         }
         default:
             break;
     }
     const CollinearCase drawn =
         collinear_case(random, k % 2 == 0 ? SolveForm::cramer : SolveForm::moller_trumbore);
-    if (random.unit() < 0.5) return one(drawn.ray, drawn.triangle);
+    if (random.unit() < 0.5) return undecided_case(drawn.ray, drawn.triangle);
     // A plane the ray crosses beyond the triangle: closest_hit's answer
     const Vec3 d = drawn.ray.direction;
     const Plane behind{drawn.ray.origin + random.uniform(1.5, 4.0) * d,
                        -d + 0.3 * glm::length(d) * random.unit_vector()};
-    return many(drawn.ray, {drawn.triangle, behind});
+    return undecided_case_of_all(drawn.ray, {drawn.triangle, behind});
 }
 
 }  // namespace
 
 CaseFamily range_end_family(std::uint64_t seed, std::size_t count) {
-    return drawn("range-ends",
-                 "hits exactly at t_min or t_max, which are in the range, or just beyond them",
-                 seed,
-                 {
-                     one({{0, 0, 5}, {0, 0, -1}, 0.0, 2.0}, kAtZ3),         // t = t_max
-                     one({{0, 0, 5}, {0, 0, -1}, 2.0, kInf}, kAtZ3),        // t = t_min
-                     one({{0, 0, -5}, {0, 0, 1}, 4.0, kInf}, kUnit),        // near root at t_min
-                     one({{0, 0, -5}, {0, 0, 1}, 0.0, 4.0}, kUnit),         // near root at t_max
-                     one({{0, 0, -5}, {0, 0, 1}, 5.0, 6.0}, kUnit),         // far root at t_max
-                     one({{0, 0, -5}, {0, 0, 1}, 6.0, kInf}, kUnit),        // far root at t_min
-                     one({{0.25, -0.25, 5}, {0, 0, -1}, 0.0, 5.0}, kInZ),   // t = t_max
-                     one({{0.25, -0.25, 5}, {0, 0, -1}, 5.0, kInf}, kInZ),  // t = t_min
-                     one({{0.25, -0.25, 5}, {0, 0, -1}, 6.0, kInf}, kInZ),  // before t_min
-                     one({{0.25, -0.25, 5}, {0, 0, -1}, 0.0, 4.0}, kInZ),   // beyond t_max
-                     one({{0.25, -0.25, 5}, {0, 0, 1}}, kInZ),              // behind the origin
-                     one({{0, 0, -5}, {0, 0, 1}, 0.0, 3.0}, kUnit),   // both roots beyond t_max
-                     one({{0, 0, -5}, {0, 0, 1}, 4.5, kInf}, kUnit),  // the near root before t_min
-                     one({{0, 0, -5}, {0, 0, 1}, 6.5, kInf}, kUnit),  // both before t_min
-                     one({{0, 0, 5}, {0, 0, 1}}, kUnit),              // behind the origin
-                     one({{0, 0, 5}, {0, 0, -1}, 0.0, 1.0}, kAtZ3),   // beyond t_max
-                     one({{0, 0, 5}, {0, 0, -1}, 2.5, kInf}, kAtZ3),  // before t_min
-                 },
-                 count, range_end_case, kRangeEndSalt);
+    return drawn(
+        "range-ends", "hits exactly at t_min or t_max, which are in the range, or just beyond them",
+        seed,
+        {
+            undecided_case({{0, 0, 5}, {0, 0, -1}, 0.0, 2.0}, kAtZ3),         // t = t_max
+            undecided_case({{0, 0, 5}, {0, 0, -1}, 2.0, kInf}, kAtZ3),        // t = t_min
+            undecided_case({{0, 0, -5}, {0, 0, 1}, 4.0, kInf}, kUnit),        // near root at t_min
+            undecided_case({{0, 0, -5}, {0, 0, 1}, 0.0, 4.0}, kUnit),         // near root at t_max
+            undecided_case({{0, 0, -5}, {0, 0, 1}, 5.0, 6.0}, kUnit),         // far root at t_max
+            undecided_case({{0, 0, -5}, {0, 0, 1}, 6.0, kInf}, kUnit),        // far root at t_min
+            undecided_case({{0.25, -0.25, 5}, {0, 0, -1}, 0.0, 5.0}, kInZ),   // t = t_max
+            undecided_case({{0.25, -0.25, 5}, {0, 0, -1}, 5.0, kInf}, kInZ),  // t = t_min
+            undecided_case({{0.25, -0.25, 5}, {0, 0, -1}, 6.0, kInf}, kInZ),  // before t_min
+            undecided_case({{0.25, -0.25, 5}, {0, 0, -1}, 0.0, 4.0}, kInZ),   // beyond t_max
+            undecided_case({{0.25, -0.25, 5}, {0, 0, 1}}, kInZ),              // behind the origin
+            undecided_case({{0, 0, -5}, {0, 0, 1}, 0.0, 3.0}, kUnit),  // both roots beyond t_max
+            undecided_case({{0, 0, -5}, {0, 0, 1}, 4.5, kInf},
+                           kUnit),  // the near root before t_min
+            undecided_case({{0, 0, -5}, {0, 0, 1}, 6.5, kInf}, kUnit),  // both before t_min
+            undecided_case({{0, 0, 5}, {0, 0, 1}}, kUnit),              // behind the origin
+            undecided_case({{0, 0, 5}, {0, 0, -1}, 0.0, 1.0}, kAtZ3),   // beyond t_max
+            undecided_case({{0, 0, 5}, {0, 0, -1}, 2.5, kInf}, kAtZ3),  // before t_min
+        },
+        count, range_end_case, kRangeEndSalt);
 }
 
 CaseFamily tie_family(std::uint64_t seed, std::size_t count) {
     const Sphere far_sphere{{0, 0, 10}, 1};
     const Sphere under_z0{{0.25, -0.25, -1}, 1};  // touches z = 0 at (0.25, -0.25, 0)
     const Plane z0{{0, 0, 0}, {0, 0, 1}};
-    return drawn("ties", "primitives met at the same t: the first in closest_hit's order wins",
-                 seed,
-                 {
-                     many({{0, 0, -5}, {0, 0, 1}}, {kUnit, kUnit}),
-                     many({{0.25, -0.25, 5}, {0, 0, -1}}, {kInZ, kInZ, kInZ}),
-                     many({{0, 0, 5}, {0, 0, -1}}, {kAtZ3, kAtZ3}),
-                     many({{0, 0, -5}, {0, 0, 1}}, {far_sphere, kUnit, kInZ, kUnit, kInZ}),
-                     many({{0.25, -0.25, 5}, {0, 0, -1}}, {z0, kInZ, under_z0}),  // the sphere wins
-                     many({{0.25, -0.25, 5}, {0, 0, -1}}, {z0, kInZ}),  // the triangle wins
-                 },
-                 count, tie_case, kTieSalt);
+    return drawn(
+        "ties", "primitives met at the same t: the first in closest_hit's order wins", seed,
+        {
+            undecided_case_of_all({{0, 0, -5}, {0, 0, 1}}, {kUnit, kUnit}),
+            undecided_case_of_all({{0.25, -0.25, 5}, {0, 0, -1}}, {kInZ, kInZ, kInZ}),
+            undecided_case_of_all({{0, 0, 5}, {0, 0, -1}}, {kAtZ3, kAtZ3}),
+            undecided_case_of_all({{0, 0, -5}, {0, 0, 1}}, {far_sphere, kUnit, kInZ, kUnit, kInZ}),
+            undecided_case_of_all({{0.25, -0.25, 5}, {0, 0, -1}},
+                                  {z0, kInZ, under_z0}),                        // the sphere wins
+            undecided_case_of_all({{0.25, -0.25, 5}, {0, 0, -1}}, {z0, kInZ}),  // the triangle wins
+        },
+        count, tie_case, kTieSalt);
 }
 
 CaseFamily in_plane_family(std::uint64_t seed, std::size_t count) {
     return drawn("rays-in-plane", "rays lying in a plane or a triangle's plane: a miss", seed,
                  {
-                     one({{0, 0, 3}, {1, 0, 0}}, kAtZ3),
-                     one({{-5, -0.5, 0}, {1, 0, 0}}, kInZ),
+                     undecided_case({{0, 0, 3}, {1, 0, 0}}, kAtZ3),
+                     undecided_case({{-5, -0.5, 0}, {1, 0, 0}}, kInZ),
                  },
                  count, in_plane_case, kInPlaneSalt);
 }
@@ -310,10 +303,10 @@ CaseFamily degenerate_family(std::uint64_t seed, std::size_t count) {
                  "miss, never a NaN",
                  seed,
                  {
-                     many({{0, 0, 5}, {0, 0, 0}}, {kUnit, kInZ, kAtZ3}),
-                     one({{0, 0, 5}, {0, 0, -1}}, Sphere{{0, 0, 0}, 0.0}),
-                     one({{1, 1, 5}, {0, 0, -1}}, collinear),
-                     one({{0, 0, 5}, {0, 0, -1}}, Plane{{0, 0, 0}, {0, 0, 0}}),
+                     undecided_case_of_all({{0, 0, 5}, {0, 0, 0}}, {kUnit, kInZ, kAtZ3}),
+                     undecided_case({{0, 0, 5}, {0, 0, -1}}, Sphere{{0, 0, 0}, 0.0}),
+                     undecided_case({{1, 1, 5}, {0, 0, -1}}, collinear),
+                     undecided_case({{0, 0, 5}, {0, 0, -1}}, Plane{{0, 0, 0}, {0, 0, 0}}),
                  },
                  count, degenerate_case, kDegenerateSalt);
 }

@@ -15,6 +15,7 @@
 #include "grader/families/stage3_contract_cases.h"
 #include "grader/families/stage3_contract_edges.h"
 #include "grader/oracle/decide_cases.h"
+#include "grader/tests/score_in_process.h"
 #include "solutions/3_intersect/intersect_methods.h"
 
 using namespace raystep;
@@ -31,13 +32,6 @@ CaseFamily decided(CaseFamily (*family)(std::uint64_t, std::size_t), std::uint64
     decide_cases(cases);
     if (exact) tighten_exact_family(cases);
     return cases;
-}
-
-MethodScore score(const Stage3Method& method, const CaseFamily& cases) {
-    std::vector<CaseAnswer> answers;
-    for (const RayCase& ray_case : cases.cases)
-        answers.push_back(run_method(method, ray_case));
-    return score_family(method, cases, answers);
 }
 
 template <typename Shape>
@@ -144,7 +138,7 @@ TEST_CASE("contract edges: every right form of every function passes every case,
              {decided(range_end_family, seed, true), decided(tie_family, seed, true),
               decided(in_plane_family, seed, true), decided(degenerate_family, seed, false)}) {
             for (const Stage3Method& form : forms) {
-                const MethodScore s = score(form, family);
+                const MethodScore s = score_in_process(form, family);
                 CAPTURE(seed, family.name, form.name);
                 CAPTURE(s.counterexamples.empty() ? "" : s.counterexamples.front().detail);
                 CHECK(s.passed == s.cases);
@@ -188,7 +182,7 @@ TEST_CASE(
         const CaseFamily family = decided(range_end_family, seed, true);
         for (std::size_t k = 0; k < open_forms.size(); ++k) {
             CAPTURE(seed, k);
-            const MethodScore s = score(open_forms[k], family);
+            const MethodScore s = score_in_process(open_forms[k], family);
             CHECK(s.passed < s.cases);
         }
     }
@@ -216,7 +210,7 @@ TEST_CASE("contract edges: a ray lying in a plane taken as a hit fails rays-in-p
           "[oracle]") {
     const Stage3Method in_plane_hits = method("intersect_plane", plane_in_plane_hits);
     for (std::uint64_t seed = 1; seed <= kSeeds; ++seed) {
-        const MethodScore s = score(in_plane_hits, decided(in_plane_family, seed, true));
+        const MethodScore s = score_in_process(in_plane_hits, decided(in_plane_family, seed, true));
         CAPTURE(seed);
         CHECK(s.count(Verdict::false_hit) >= 2);
     }
@@ -228,7 +222,7 @@ TEST_CASE(
     "[oracle]") {
     const Stage3Method cramer = method("intersect_triangle_cramer", cramer_without_normal_test);
     for (std::uint64_t seed = 1; seed <= kSeeds; ++seed) {
-        const MethodScore s = score(cramer, decided(degenerate_family, seed, false));
+        const MethodScore s = score_in_process(cramer, decided(degenerate_family, seed, false));
         CAPTURE(seed);
         CHECK(s.count(Verdict::not_finite) >= 1);
     }

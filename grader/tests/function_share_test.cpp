@@ -7,22 +7,14 @@
 #include "app/tests/probe_answers.h"
 #include "base/testing/catch.h"
 #include "grader/grade/checks/function_share.h"
+#include "grader/tests/hand_made_cases.h"
 
 using namespace raystep::grade;
+using raystep::grade::hand_made::session;
+using raystep::grade::hand_made::wants_one;
 using raystep::testing::result_answer;
 
 namespace {
-
-// A case that passes when the answer is the number 1.
-ProbeCase wants_one(const std::string& name) {
-    return {name,
-            {"dot", {}},
-            [](const ProbeAnswer& answer) {
-                if (answer.kind != ProbeAnswer::Kind::result) return wrong("1", "");
-                return answer.value == 1.0 ? right() : wrong("1", answer.value.dump());
-            },
-            ""};
-}
 
 // Cases of three functions: four of "plane", one of "sphere", one of "closest_hit", in order.
 std::vector<ProbeCase> three_functions(FunctionShare& share) {
@@ -32,12 +24,6 @@ std::vector<ProbeCase> three_functions(FunctionShare& share) {
     cases.push_back(share.counted(wants_one("sphere case"), "sphere"));
     cases.push_back(share.counted(wants_one("closest case"), "closest_hit"));
     return cases;
-}
-
-ProbeSession session(std::vector<ProbeAnswer> answers) {
-    ProbeSession made;
-    made.answers = std::move(answers);
-    return made;
 }
 
 std::vector<ProbeAnswer> all_right(std::size_t count) {

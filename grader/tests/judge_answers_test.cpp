@@ -8,8 +8,11 @@
 #include "app/tests/probe_answers.h"
 #include "base/testing/catch.h"
 #include "grader/grade/check_definition.h"
+#include "grader/tests/hand_made_cases.h"
 
 using namespace raystep::grade;
+using raystep::grade::hand_made::session;
+using raystep::grade::hand_made::wants_one;
 using raystep::testing::result_answer;
 
 namespace {
@@ -19,17 +22,6 @@ ProbeAnswer stub_answer(const std::string& function) {
     answer.kind = ProbeAnswer::Kind::not_implemented;
     answer.message = "stage 1: " + function + " is not implemented yet, see docs/stage1.md";
     return answer;
-}
-
-// A case that passes when the answer is the number 1.
-ProbeCase wants_one(const std::string& name) {
-    return {name,
-            {"dot", {}},
-            [](const ProbeAnswer& answer) {
-                if (answer.kind != ProbeAnswer::Kind::result) return wrong("1", "");
-                return answer.value == 1.0 ? right() : wrong("1", answer.value.dump());
-            },
-            name + "({1, 0, 0}, {1, 0, 0})"};
 }
 
 std::vector<ProbeCase> cases(std::size_t count) {
@@ -44,12 +36,6 @@ std::vector<std::size_t> every(std::size_t count) {
     for (std::size_t k = 0; k < count; ++k)
         asked.push_back(k);
     return asked;
-}
-
-ProbeSession session(std::vector<ProbeAnswer> answers) {
-    ProbeSession made;
-    made.answers = std::move(answers);
-    return made;
 }
 
 GradingContext context() {

@@ -16,6 +16,7 @@
 #include "grader/families/stage3_families.h"
 #include "grader/oracle/decide_cases.h"
 #include "grader/oracle/exact_intersection.h"
+#include "grader/tests/score_in_process.h"
 #include "solutions/3_intersect/intersect_methods.h"
 
 using namespace raystep;
@@ -61,13 +62,6 @@ Stage3Method sphere_method(const char* name,
     Stage3Method method{name, Stage3Method::Kind::sphere};
     method.sphere = test;
     return method;
-}
-
-MethodScore score(const Stage3Method& method, const CaseFamily& cases) {
-    std::vector<CaseAnswer> answers;
-    for (const RayCase& ray_case : cases.cases)
-        answers.push_back(run_method(method, ray_case));
-    return score_family(method, cases, answers);
 }
 
 // Ray-plane that calls a ray parallel when |D . N| is below 10^-exponent, as a student's
@@ -192,7 +186,7 @@ TEST_CASE("score: the handout's sphere, normal (P - C) / r, passes every sphere 
     for (const char* name : kSphereFamilies) {
         CAPTURE(name);
         const CaseFamily cases = decided(name, 11, 300);
-        const MethodScore s = score(method, cases);
+        const MethodScore s = score_in_process(method, cases);
         CHECK(s.passed == s.cases);
         for (const RayCase& ray_case : cases.cases) {
             for (const CasePrimitive& primitive : ray_case.primitives) {
@@ -213,7 +207,7 @@ TEST_CASE(
     const Stage3Method lecture = sphere_method("intersect_sphere", intersect_sphere_stable_roots);
     for (const char* name : {"tiny-spheres", "far-spheres"}) {
         CAPTURE(name);
-        const MethodScore s = score(lecture, decided(name, 11, 300));
+        const MethodScore s = score_in_process(lecture, decided(name, 11, 300));
         CHECK(s.count(Verdict::false_hit) > 0);
         CHECK(s.exact_false_hits > 0);
     }
@@ -275,7 +269,7 @@ TEST_CASE("contract cases: every reference method passes them, the exact ones wi
     for (const CaseFamily* family : {&contract, &exact}) {
         for (const Stage3Method& method : methods) {
             CAPTURE(family->name, method.name);
-            const MethodScore s = score(method, *family);
+            const MethodScore s = score_in_process(method, *family);
             const std::string first_failure =
                 s.counterexamples.empty() ? "" : s.counterexamples.front().detail;
             CAPTURE(first_failure);
@@ -303,16 +297,16 @@ TEST_CASE("contract cases: they fail a plane epsilon and a projection by the sig
         return method;
     };
     // The oracle's cases reach D . N = 1e-13; only the exact ones go below its grazing bound.
-    CHECK(score(plane(plane_with_parallel_epsilon<6>), contract).passed <
-          score(plane(intersect_plane), contract).passed);
-    CHECK(score(plane(plane_with_parallel_epsilon<12>), contract).passed <
-          score(plane(intersect_plane), contract).passed);
-    CHECK(score(plane(plane_with_parallel_epsilon<15>), exact).passed <
-          score(plane(intersect_plane), exact).passed);
+    CHECK(score_in_process(plane(plane_with_parallel_epsilon<6>), contract).passed <
+          score_in_process(plane(intersect_plane), contract).passed);
+    CHECK(score_in_process(plane(plane_with_parallel_epsilon<12>), contract).passed <
+          score_in_process(plane(intersect_plane), contract).passed);
+    CHECK(score_in_process(plane(plane_with_parallel_epsilon<15>), exact).passed <
+          score_in_process(plane(intersect_plane), exact).passed);
 
     Stage3Method signed_axis{"intersect_triangle_projection", Stage3Method::Kind::triangle};
     signed_axis.triangle = projection_by_signed_axis;
-    const MethodScore s = score(signed_axis, contract);
+    const MethodScore s = score_in_process(signed_axis, contract);
     // Every triangle whose normal lies on or next to a negative axis: three tilts and a ray from
     // behind, on each axis.
     CHECK(s.cases - s.passed >= 12);

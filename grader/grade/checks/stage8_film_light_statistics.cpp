@@ -18,6 +18,7 @@
 #include "app/grade/value_text.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/sample_statistics.h"
+#include "grader/grade/checks/stage8_light_scene.h"
 #include "grader/grade/checks/stage8_queries.h"
 #include "grader/grade/checks/stage8_shadow_rays.h"
 #include "grader/grade/checks/stage8_statistics.h"
@@ -44,21 +45,12 @@ const Vec3 kFloorCorner{-0.5, 0, -0.5};
 const Vec3 kFloorEdge1{0, 0, 1};
 const Vec3 kFloorEdge2{1, 0, 0};
 const Vec3 kToEye = glm::normalize(Vec3{2, 2, 1});
-const QuadLight kLight{{-1, 2, -1}, {0, 0, 2}, {2, 0, 0}, {5, 2.5, 1.25}, 0};
 // Along the ray: the origin is the point itself, so the grader's point is the ray's.
 const RayOffset kOffset{OffsetRule::along_ray, 1e-9};
 
 // Two samples drawn independently coincide within 1e-9 in both coordinates with probability
 // 4e-18; a number reused comes back within rounding, 1e-15 of the unit square.
 constexpr double kSameSample = 1e-9;
-
-Material floor_material() {
-    Material m;
-    m.diffuse = {0.6, 0.5, 0.4};
-    m.specular = {0.3, 0.3, 0.3};
-    m.shininess = 20;
-    return m;
-}
 
 // The floor point under a film point, as the probe makes it.
 SurfacePoint floor_point(const Vec2& film) {
@@ -77,8 +69,8 @@ Json lit_pixel_query(std::uint64_t seed, const Json& streams) {
               {"edge1", probe::vec3(kFloorEdge1)},
               {"edge2", probe::vec3(kFloorEdge2)}}},
             {"to_eye", probe::vec3(kToEye)},
-            {"material", probe::material(floor_material())},
-            {"light", quad_light_json(kLight)},
+            {"material", probe::material(shading_check_material())},
+            {"light", quad_light_json(kShadingCheckLight)},
             {"light_pattern", "jittered"},
             {"light_count", kLightSide * kLightSide},
             {"offset", probe::ray_offset(kOffset)},
@@ -111,8 +103,8 @@ std::string read_lit_pixel(const Json& stream, LitPixel& pixel) {
         if (!(f.x >= kPixelI && f.x <= kPixelI + 1 && f.y >= kPixelJ && f.y <= kPixelJ + 1)) {
             return "the film point " + point_text(f) + " outside the pixel";
         }
-        const QuadLightCall call{floor_material(), floor_point(f), kLight,
-                                 light_count,      kOffset,        {}};
+        const QuadLightCall call{
+            shading_check_material(), floor_point(f), kShadingCheckLight, light_count, kOffset, {}};
         const ShadowRayReading reading =
             read_shadow_rays(call, traced_shadow_rays(film.at("shadow_rays")));
         if (!reading.problem.empty()) return reading.problem;

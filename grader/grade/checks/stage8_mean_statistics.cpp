@@ -21,6 +21,7 @@
 #include "app/grade/value_text.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/sample_statistics.h"
+#include "grader/grade/checks/stage8_light_scene.h"
 #include "grader/grade/checks/stage8_queries.h"
 #include "grader/grade/checks/stage8_shadow_rays.h"
 #include "grader/grade/checks/stage8_statistics.h"
@@ -273,22 +274,12 @@ std::vector<ProbeCase> make_pixel_cases() {
 
 // --- quad_light_shading
 
-// A light 2 above the floor facing down, 2 x 2; a point on the floor seen from above.
-const QuadLight kLight{{-1, 2, -1}, {0, 0, 2}, {2, 0, 0}, {5, 2.5, 1.25}, 0};
-
-Material shaded_material() {
-    Material m;
-    m.diffuse = {0.6, 0.5, 0.4};
-    m.specular = {0.3, 0.3, 0.3};
-    m.shininess = 20;
-    return m;
-}
-
 SurfacePoint surface_at(const Vec3& position, const Vec3& normal, const Vec3& to_eye) {
     const Vec3 n = glm::normalize(normal);
     return {position, Vec3(0.0), n, n, glm::normalize(to_eye)};
 }
 
+// A point on the floor seen from above, under the light of stage8_light_scene.h.
 const SurfacePoint kFloorPoint = surface_at({0.3, 0, -0.2}, {0, 1, 0}, {1, 1, 0.5});
 // On a wall x = 0 under the light's middle: half the light lies behind the wall's plane.
 const SurfacePoint kWallPoint = surface_at({0, 1, 0.1}, {1, 0, 0}, {1, 0.2, 0.3});
@@ -308,20 +299,22 @@ const RayOffset kOffset{OffsetRule::along_normal, 1e-9};
 std::vector<Parallelogram> blockers(const SurfacePoint& point, double blocked_below) {
     std::vector<Parallelogram> parts;
     if (blocked_below > 0.0) {
-        const Vec3 corner = point.position + 0.99 * (kLight.corner - point.position);
-        parts.push_back({corner, 0.99 * blocked_below * kLight.edge1, 0.99 * kLight.edge2});
+        const Vec3 corner = point.position + 0.99 * (kShadingCheckLight.corner - point.position);
+        parts.push_back({corner, 0.99 * blocked_below * kShadingCheckLight.edge1,
+                         0.99 * kShadingCheckLight.edge2});
     }
     const Vec3 tangent = glm::normalize(glm::cross(point.normal, {0.6, 0.0, 0.8}));
     const Vec3 bitangent = glm::cross(point.normal, tangent);
     parts.push_back(
         {point.position - 10.0 * tangent - 10.0 * bitangent, 20.0 * tangent, 20.0 * bitangent});
-    parts.push_back({{-10, kLight.corner.y + 0.5, -10}, {0, 0, 20}, {20, 0, 0}});
+    parts.push_back({{-10, kShadingCheckLight.corner.y + 0.5, -10}, {0, 0, 20}, {20, 0, 0}});
     return parts;
 }
 
-// The call a case makes: the shaded material, kLight, kOffset and the blockers above.
+// The call a case makes: the shaded material, kShadingCheckLight, kOffset and the blockers above.
 QuadLightCall shading_call_of(const SurfacePoint& point, double blocked_below, int count) {
-    return {shaded_material(), point, kLight, count, kOffset, blockers(point, blocked_below)};
+    return {shading_check_material(),      point, kShadingCheckLight, count, kOffset,
+            blockers(point, blocked_below)};
 }
 
 Json shading_query(const QuadLightCall& call, SamplePattern pattern, std::uint64_t seed,
@@ -345,9 +338,9 @@ Json shading_query(const QuadLightCall& call, SamplePattern pattern, std::uint64
 
 std::string shading_call(const SurfacePoint& point, double blocked_below, SamplePattern pattern,
                          int count) {
-    return "quad_light_shading(light at " + full_text(kLight.corner) + " + u " +
-           full_text(kLight.edge1) + " + v " + full_text(kLight.edge2) + ", point " +
-           full_text(point.position) + " normal " + full_text(point.normal) + ", " +
+    return "quad_light_shading(light at " + full_text(kShadingCheckLight.corner) + " + u " +
+           full_text(kShadingCheckLight.edge1) + " + v " + full_text(kShadingCheckLight.edge2) +
+           ", point " + full_text(point.position) + " normal " + full_text(point.normal) + ", " +
            std::string(sample_pattern_name(pattern)) + ", " + std::to_string(count) + ", " +
            (blocked_below > 0 ? "blocked for u < " + full_text(blocked_below) : "nothing blocks") +
            ")";
@@ -389,8 +382,8 @@ Color light_integral(const SurfacePoint& point, double blocked_below) {
     const std::lock_guard<std::mutex> lock(mutex);
     const auto found = known.find(key);
     if (found != known.end()) return found->second;
-    const Color integral =
-        quad_light_integral(shaded_material(), point, kLight, blocked_below, 1024);
+    const Color integral = quad_light_integral(shading_check_material(), point, kShadingCheckLight,
+                                               blocked_below, 1024);
     known.emplace(key, integral);
     return integral;
 }
@@ -462,16 +455,17 @@ std::vector<ProbeCase> make_shading_cases() {
     // Four means of three channels each.
     constexpr int tests = 12;
     const double alpha = kCheckAlpha / tests;
-    const Material material = shaded_material();
+    const Material material = shading_check_material();
     return {
         shading_mean_case(kFloorPoint, 0.0, SamplePattern::jittered, 16, seed, streams, alpha),
         shading_mean_case(kFloorPoint, 0.5, SamplePattern::jittered, 16, seed, streams, alpha),
         shading_mean_case(kFloorPoint, 0.5, SamplePattern::random, 9, seed, streams, alpha),
         shading_mean_case(kWallPoint, 0.0, SamplePattern::jittered, 16, seed, streams, alpha),
         // Blocked below 0.4, not 0.5: the middle column of centres lies at u.x = 0.5 exactly.
-        shading_exact_case(kFloorPoint, 0.4, SamplePattern::regular, 9,
-                           regular_quad_light_sum(material, kFloorPoint, kLight, 3, 0.4), seed,
-                           streams),
+        shading_exact_case(
+            kFloorPoint, 0.4, SamplePattern::regular, 9,
+            regular_quad_light_sum(material, kFloorPoint, kShadingCheckLight, 3, 0.4), seed,
+            streams),
         shading_exact_case(kAbovePoint, 0.0, SamplePattern::jittered, 16, Color(0.0), seed,
                            streams),
         // The whole light behind the surface: nothing, and no shadow ray.
