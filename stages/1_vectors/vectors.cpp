@@ -1,5 +1,5 @@
 // Stage 1: vector math. Handout: docs/stage1.md. Replace each RAYSTEP_TODO with your code;
-// run the stage's tests with `ctest --test-dir build/release -L stage1`.
+// run the stage's tests with `ctest --preset student -L stage1`.
 
 #include "stages/1_vectors/vectors.h"
 

@@ -1,7 +1,7 @@
-// Public tests for stage 1. Run them with `ctest --preset release -L stage1`, or run
-// build/release/bin/raystep_stage1_tests directly to see every failure in full.
+// Public tests for stage 1. Run them with `ctest --preset student -L stage1`, or run
+// build/student/bin/raystep_stage1_tests directly to see every failure in full.
 //
-// One function's tests alone: `build/release/bin/raystep_stage1_tests "normalize:*"`.
+// One function's tests alone: `build/student/bin/raystep_stage1_tests "normalize:*"`.
 //
 // The loops call your function before the CHECK, not inside it: an exception outside a CHECK
 // ends the test at once, so a stub is reported once rather than a thousand times. Where several

@@ -1,5 +1,5 @@
-// Public tests for stage 2, cameras. Run them with `ctest --preset release -L stage2`, one
-// function's with `build/release/bin/raystep_stage2_tests "perspective_ray:*"`.
+// Public tests for stage 2, cameras. Run them with `ctest --preset student -L stage2`, one
+// function's with `build/student/bin/raystep_stage2_tests "perspective_ray:*"`.
 //
 // The ray tests build their cameras by hand, so perspective_ray and orthographic_ray can be tested
 // before make_perspective_camera and make_orthographic_camera work. Each test calls your function

@@ -1,5 +1,5 @@
-// Public tests for stage 2, rays. Run them with `ctest --preset release -L stage2`, Ray::at's
-// alone with `build/release/bin/raystep_stage2_tests "Ray::at:*"`. A failure prints the ray.
+// Public tests for stage 2, rays. Run them with `ctest --preset student -L stage2`, Ray::at's
+// alone with `build/student/bin/raystep_stage2_tests "Ray::at:*"`. A failure prints the ray.
 
 #include <string>
 

@@ -1,6 +1,6 @@
 // Public tests for stage 3, planes, spheres and the closest hit; the triangle tests are in
-// triangle_test.cpp. Run them with `ctest --preset release -L stage3`, one function's with
-// `build/release/bin/raystep_stage3_tests "intersect_sphere:*"`.
+// triangle_test.cpp. Run them with `ctest --preset student -L stage3`, one function's with
+// `build/student/bin/raystep_stage3_tests "intersect_sphere:*"`.
 //
 // Each test calls your function before its CHECKs: a stub ends the test case at its first call
 // and is reported once. A failure prints the ray and the primitive it was given.

@@ -1,5 +1,5 @@
-// Public tests for stage 4, the slab test. Run them with `ctest --preset release -L stage4`,
-// these alone with `build/release/bin/raystep_stage4_tests "intersect_aabb:*"`.
+// Public tests for stage 4, the slab test. Run them with `ctest --preset student -L stage4`,
+// these alone with `build/student/bin/raystep_stage4_tests "intersect_aabb:*"`.
 //
 // Each test calls intersect_aabb before its CHECKs: a stub ends the test case at its first call
 // and is reported once. A failure prints the ray and the box.

@@ -1,5 +1,5 @@
 // Public tests for stage 4, the grid's resolution. Run them with
-// `build/release/bin/raystep_stage4_tests "grid_resolution:*"`.
+// `build/student/bin/raystep_stage4_tests "grid_resolution:*"`.
 //
 // Each check calls grid_resolution before its CHECKs: a stub ends the test case at its first call
 // and is reported once. A failure prints the box and the number of primitives.

@@ -1,5 +1,5 @@
-// Public tests for stage 4, the uniform grid. Run them with `ctest --preset release -L stage4`,
-// one method's with `build/release/bin/raystep_stage4_tests "UniformGrid::occluded:*"`. Every
+// Public tests for stage 4, the uniform grid. Run them with `ctest --preset student -L stage4`,
+// one method's with `build/student/bin/raystep_stage4_tests "UniformGrid::occluded:*"`. Every
 // UniformGrid test builds a grid first, so the constructor comes before the rest.
 //
 // Each test calls your code before its CHECKs: a stub ends the test case at its first call and

@@ -1,6 +1,6 @@
-// Public tests for stage 5. Run them with `ctest --preset release -L stage5`, or run
-// build/release/bin/raystep_stage5_tests directly to see every failure in full; one function's
-// tests with `build/release/bin/raystep_stage5_tests "normal_to_world:*"`.
+// Public tests for stage 5. Run them with `ctest --preset student -L stage5`, or run
+// build/student/bin/raystep_stage5_tests directly to see every failure in full; one function's
+// tests with `build/student/bin/raystep_stage5_tests "normal_to_world:*"`.
 
 #include <cmath>
 #include <stdexcept>

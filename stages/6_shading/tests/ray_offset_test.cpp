@@ -1,5 +1,5 @@
 // Public tests for stage 6, rays that leave a surface: spawn_ray under each offset rule and
-// shadow_ray. Run them with `ctest --preset release -L stage6`.
+// shadow_ray. Run them with `ctest --preset student -L stage6`.
 //
 // Each test calls your function before its CHECKs, so a stub is reported once. The rules fix the
 // origin and the t range exactly, so most checks here are ==.

@@ -1,5 +1,5 @@
 // Public tests for stage 6, lights and the local model. Run them with
-// `ctest --preset release -L stage6`, or run build/release/bin/raystep_stage6_tests to see every
+// `ctest --preset student -L stage6`, or run build/student/bin/raystep_stage6_tests to see every
 // failure in full.
 //
 // Each test calls your function before its CHECKs: an exception outside a CHECK ends the test at

@@ -1,5 +1,5 @@
 // Public tests for stage 7, recursive reflection. Run them with
-// `ctest --preset release -L stage7`, or build/release/bin/raystep_stage7_tests.
+// `ctest --preset student -L stage7`, or build/student/bin/raystep_stage7_tests.
 //
 // radiance is tested without a scene: the ShadeFunction here is a lambda that plays the scene
 // (two mirrors facing each other, a single surface, nothing at all), records the rays it is

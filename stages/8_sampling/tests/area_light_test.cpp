@@ -1,6 +1,6 @@
 // Public tests for stage 8, area lights and soft shadows. Run them with
-// `ctest --preset release -L stage8`, one function's with
-// `build/release/bin/raystep_stage8_tests "sample_quad_light:*"`.
+// `ctest --preset student -L stage8`, one function's with
+// `build/student/bin/raystep_stage8_tests "sample_quad_light:*"`.
 //
 // sample_quad_light is held against numbers worked by hand: a light straight overhead, its back,
 // a tilted one. quad_light_shading is tested without a scene: the OccludedFunction is a lambda

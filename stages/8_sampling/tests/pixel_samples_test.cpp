@@ -1,6 +1,6 @@
 // Public tests for stage 8, antialiasing: rays through any point of the film, and a pixel's mean
-// over its samples. Run them with `ctest --preset release -L stage8`, one function's with
-// `build/release/bin/raystep_stage8_tests "pixel_colour:*"`.
+// over its samples. Run them with `ctest --preset student -L stage8`, one function's with
+// `build/student/bin/raystep_stage8_tests "pixel_colour:*"`.
 //
 // The rays are held against your stage-2 perspective_ray and orthographic_ray at pixel centres,
 // and against hand-worked points elsewhere. pixel_colour is tested without a scene: the

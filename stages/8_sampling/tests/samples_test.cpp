@@ -1,6 +1,6 @@
 // Public tests for stage 8, sample patterns over the unit square. Run them with
-// `ctest --preset release -L stage8`, one function's with
-// `build/release/bin/raystep_stage8_tests "jittered_samples:*"`.
+// `ctest --preset student -L stage8`, one function's with
+// `build/student/bin/raystep_stage8_tests "jittered_samples:*"`.
 //
 // Your samples need not be the reference's: you may draw the numbers in another order. So the
 // tests ask what any right pattern does: how many points, in which strata, and spread how. The

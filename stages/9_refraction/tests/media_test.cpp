@@ -1,6 +1,6 @@
 // Public tests for stage 9, entering and leaving solids. Run them with
-// `ctest --preset release -L stage9`, one function's with
-// `build/release/bin/raystep_stage9_tests "after_crossing:*"`.
+// `ctest --preset student -L stage9`, one function's with
+// `build/student/bin/raystep_stage9_tests "after_crossing:*"`.
 //
 // A ray's media are a stack of the solids it is inside, in the order it entered them. The cases
 // follow one ray through air, a glass holding water holding an ice cube, and two overlapping

@@ -1,6 +1,6 @@
 // Public tests for stage 9, Snell's law and the Fresnel reflectance. Run them with
-// `ctest --preset release -L stage9`, one function's with
-// `build/release/bin/raystep_stage9_tests "refract:*"`.
+// `ctest --preset student -L stage9`, one function's with
+// `build/student/bin/raystep_stage9_tests "refract:*"`.
 //
 // Every case is worked by hand in its message: the angles are chosen so that sines and cosines
 // are simple (45, 60 degrees, Brewster's angle of glass), and the tolerances are a few units of

@@ -1,6 +1,6 @@
 // Public tests for stage 9, the refracted ray and radiance through glass. Run them with
-// `ctest --preset release -L stage9`, one function's with
-// `build/release/bin/raystep_stage9_tests "radiance_with_refraction:*"`.
+// `ctest --preset student -L stage9`, one function's with
+// `build/student/bin/raystep_stage9_tests "radiance_with_refraction:*"`.
 //
 // radiance_with_refraction is tested without a scene, as stage 7's radiance is: the
 // MediumShadeFunction here is a lambda that plays the scene (a glass surface, a slab of glass,
