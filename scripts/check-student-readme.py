@@ -6,8 +6,9 @@
 RELEASE is a student release already built by its scripts/setup.sh. This plays the student who
 has written every stage: it copies the files each stage's manifest.txt lists, and nothing else,
 from MODEL_STAGES (a right submission's stages/ folder) into RELEASE, then runs each line of the
-```sh blocks of RELEASE/README.md and of every stages/*/README.md, in order, from RELEASE's root,
-and holds its exit code and output against what the line promises (EXPECTED below). A README
+```sh blocks of RELEASE/README.md and of every stages/*/README.md, then each command a stage's
+source or test file names in its opening comment, in order, from RELEASE's root, and holds its
+exit code and output against what the line promises (EXPECTED below). A README
 line that no entry of EXPECTED knows fails too, so that a new command cannot go unchecked.
 Prints one line per command with its time, and exits 1 when any command failed."""
 
@@ -60,6 +61,22 @@ def readme_commands(release: pathlib.Path):
                 yield readme.relative_to(release), number, command
 
 
+# A command in a source file's opening comment: in backquotes, a build's program or ctest.
+SOURCE_COMMAND = re.compile(r"`((?:ctest|build/)[^`]*)`")
+
+
+def source_comment_commands(release: pathlib.Path):
+    """(file, line number, command) for each command the opening // comment of a stage's source
+    and test files names: the first directions a student reads."""
+    for source in sorted(release.glob("stages/*/**/*.cpp")) + sorted(release.glob("stages/*/*.h")):
+        lines = source.read_text(encoding="utf-8").splitlines()
+        for number, line in enumerate(lines, start=1):
+            if not line.startswith("//"):
+                break
+            for command in SOURCE_COMMAND.findall(line):
+                yield source.relative_to(release), number, command
+
+
 def write_the_stages(release: pathlib.Path, model: pathlib.Path):
     """Copies the model's manifest files into the release: what a student's edits amount to."""
     copied = 0
@@ -89,7 +106,8 @@ def main() -> int:
     release, model = pathlib.Path(sys.argv[1]).resolve(), pathlib.Path(sys.argv[2]).resolve()
     print(f"wrote {write_the_stages(release, model)} stage files from {model}")
     failures = 0
-    for readme, number, command in readme_commands(release):
+    commands = list(readme_commands(release)) + list(source_comment_commands(release))
+    for readme, number, command in commands:
         where = f"{readme}:{number}"
         expected = expectation(command)
         if expected is None:
