@@ -8,7 +8,8 @@ has written every stage: it copies the files each stage's manifest.txt lists, an
 from MODEL_STAGES (a right submission's stages/ folder) into RELEASE, then runs each line of the
 ```sh blocks of RELEASE/README.md and of every stages/*/README.md, then each command a stage's
 source or test file names in its opening comment, in order, from RELEASE's root, and holds its
-exit code and output against what the line promises (EXPECTED below). A README
+exit code and output against what the line promises (EXPECTED below). Last, as a student's `git
+status` would: the commands may leave no file git lists but the stage files written. A README
 line that no entry of EXPECTED knows fails too, so that a new command cannot go unchecked.
 Prints one line per command with its time, and exits 1 when any command failed."""
 
@@ -104,6 +105,11 @@ def main() -> int:
         print(__doc__, file=sys.stderr)
         return 2
     release, model = pathlib.Path(sys.argv[1]).resolve(), pathlib.Path(sys.argv[2]).resolve()
+    git = ["git", "-C", str(release), "-c", "user.name=raystep", "-c", "user.email=raystep@localhost"]
+    if not (release / ".git").exists():
+        subprocess.run(git + ["init", "-q"], check=True)
+        subprocess.run(git + ["add", "-A"], check=True)
+        subprocess.run(git + ["commit", "-q", "-m", "the release"], check=True)
     print(f"wrote {write_the_stages(release, model)} stage files from {model}")
     failures = 0
     commands = list(readme_commands(release)) + list(source_comment_commands(release))
@@ -133,6 +139,15 @@ def main() -> int:
             failures += 1
         else:
             print(f"ok   {where}: `{command}` ({seconds:.1f} s)")
+    status = subprocess.run(git + ["status", "--porcelain", "--untracked-files=all"],
+                            capture_output=True, text=True, check=True).stdout.splitlines()
+    left = [line for line in status if not line[3:].startswith("stages/")]
+    if left:
+        print("FAIL the commands left files that git status lists (.gitignore):")
+        print("\n".join("  " + line for line in left[:20]))
+        failures += 1
+    else:
+        print("ok   git status lists nothing but the stage files written")
     if failures:
         print(f"{failures} README command(s) did not do what they promise")
         return 1
