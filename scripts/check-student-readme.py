@@ -106,7 +106,8 @@ def main() -> int:
         print(__doc__, file=sys.stderr)
         return 2
     release, model = pathlib.Path(sys.argv[1]).resolve(), pathlib.Path(sys.argv[2]).resolve()
-    git = ["git", "-C", str(release), "-c", "user.name=raystep", "-c", "user.email=raystep@localhost"]
+    git = ["git", "-C", str(release), "-c", "user.name=raystep",
+           "-c", "user.email=raystep@localhost"]
     if not (release / ".git").exists():
         subprocess.run(git + ["init", "-q"], check=True)
         subprocess.run(git + ["add", "-A"], check=True)

@@ -72,7 +72,7 @@ int main() {
     std::fflush(answers);
     const CallTable table = all_calls();
     // A query can be megabytes (stage 4's timed scenes); stdio's shared buffer would hand them to
-    // getline a character at a time, a third of a timed run's start
+    // getline a character at a time, much of a timed run's start (docs/measurements/stage4-work.md)
     std::ios::sync_with_stdio(false);
     std::string line;
     while (std::getline(std::cin, line)) {
