@@ -5,8 +5,11 @@
 # and tinyobjloader, for the `raystep` command that renders. CGAL, Embree and the rest are the
 # instructor's: only the grader and the benchmarks use them.
 
+# Each platform's list is a file of the repository: scripts/install-deps.sh (Debian's and Ubuntu's
+# packages), Brewfile (Homebrew's formulae), vcpkg.json (vcpkg's ports, installed while the student
+# presets configure when VCPKG_ROOT is set: cmake/RaystepVcpkg.cmake). README.md has the commands.
 set(RAYSTEP_INSTALL_HINT
-    "Debian/Ubuntu: scripts/install-deps.sh; macOS: brew install glm catch2 openimageio cli11 tinyobjloader nlohmann-json cpp-httplib; Windows: vcpkg install glm catch2 openimageio cli11 tinyobjloader nlohmann-json cpp-httplib")
+    "Debian/Ubuntu: scripts/install-deps.sh --student; macOS: brew bundle --no-upgrade (the Brewfile); Windows: set VCPKG_ROOT to your vcpkg, and the student presets install vcpkg.json's libraries (README.md)")
 
 # GLM is headers only. Packagings of GLM 0.9.9 differ: some install a CMake configuration with
 # glm::glm, some one whose target is plain `glm`, some none at all; the headers are all it takes.
@@ -58,7 +61,23 @@ if(TARGET tinyobjloader::tinyobjloader_double)
 elseif(TARGET tinyobjloader::tinyobjloader)
     target_link_libraries(raystep_tinyobjloader INTERFACE tinyobjloader::tinyobjloader)
 else()
-    message(FATAL_ERROR "tinyobjloader was not found. ${RAYSTEP_INSTALL_HINT}")
+    # We found no Homebrew formula of tinyobjloader (Brewfile), and another system may lack it
+    # too: its source is fetched once into the build folder, pinned to the commit of its tag
+    # v2.0.0rc13 (the version Debian 13 and vcpkg ship), and compiled with doubles. SOURCE_SUBDIR
+    # names a folder with no CMakeLists.txt, so that only the one source file below is built.
+    message(STATUS "tinyobjloader was not found: fetching its source (v2.0.0rc13) with git")
+    include(FetchContent)
+    FetchContent_Declare(raystep_tinyobjloader_source
+        GIT_REPOSITORY https://github.com/tinyobjloader/tinyobjloader.git
+        GIT_TAG 2945a967c5303b2c8c14174117c45f3302591150
+        SOURCE_SUBDIR raystep-no-project)
+    FetchContent_MakeAvailable(raystep_tinyobjloader_source)
+    add_library(raystep_tinyobjloader_fetched STATIC
+                ${raystep_tinyobjloader_source_SOURCE_DIR}/tiny_obj_loader.cc)
+    target_include_directories(raystep_tinyobjloader_fetched SYSTEM
+                               PUBLIC ${raystep_tinyobjloader_source_SOURCE_DIR})
+    target_compile_definitions(raystep_tinyobjloader_fetched PUBLIC TINYOBJLOADER_USE_DOUBLE)
+    target_link_libraries(raystep_tinyobjloader INTERFACE raystep_tinyobjloader_fetched)
 endif()
 
 find_package(Threads REQUIRED)

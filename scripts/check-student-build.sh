@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # What students meet, checked.
 #   1. A student release, as `raystep-grade release` writes it (no solutions/, studies/ or
-#      grader/, the student's README, the reference images in scenes/), built as its README says
+#      grader/, no workflow but Classroom's, each platform's list of libraries, the student's
+#      README, the reference images in scenes/), built as its README says
 #      (scripts/setup.sh), and scripts/test.sh run as it says.
 #      Every public test must fail with a NotImplemented message and no test binary may crash;
 #      `raystep render` and `raystep trace` must stop with the message of the stub that stopped
@@ -54,6 +55,20 @@ if [ "$scripts" != "install-deps.sh setup.sh test.sh " ]; then
     echo "FAIL the release's scripts/ holds $scripts; a student's are install-deps.sh setup.sh test.sh"
     exit 1
 fi
+# The release's only workflow is Classroom's: the instructor's (.github/, the student platforms
+# workflow) would run, and fail, on every push of a student's.
+workflows=$(cd "$release/.github/workflows" && ls | tr '\n' ' ')
+if [ "$workflows" != "classroom.yml " ]; then
+    echo "FAIL the release's .github/workflows/ holds $workflows; a student's holds classroom.yml"
+    exit 1
+fi
+# Each platform's list of libraries and the presets that use them (README.md, "Set up and build").
+for file in Brewfile vcpkg.json CMakePresets.json cmake/RaystepVcpkg.cmake; do
+    if [ ! -f "$release/$file" ]; then
+        echo "FAIL the release has no $file, which its README's set-up needs"
+        exit 1
+    fi
+done
 if ! grep -q "^scripts/setup.sh$" "$release/README.md"; then
     echo "FAIL the release's README.md is not the student's (docs/student-README.md)"
     exit 1

@@ -11,6 +11,12 @@ source or test file names in its opening comment, in order, from RELEASE's root,
 exit code and output against what the line promises (EXPECTED below). Last, as a student's `git
 status` would: the commands may leave no file git lists but the stage files written. A README
 line that no entry of EXPECTED knows fails too, so that a new command cannot go unchecked.
+
+A block for one platform names it after its language (```sh macos, ```powershell windows-vs;
+PLATFORMS below). This check runs on Linux: it runs the linux blocks and skips every other
+platform's, saying so line by line; the student platforms workflow runs those on their systems
+(.github/workflows/student-platforms.yml in the instructor's repository). A platform it does not
+know fails, so that a misspelt one is never skipped unseen.
 Prints one line per command with its time, and exits 1 when any command failed."""
 
 import pathlib
@@ -45,22 +51,35 @@ EXPECTED = [
     (RAYSTEP + r" submit", {0}, r"^wrote \S*submission\.zip \(\d+ files(?![\s\S]*warning)"),
 ]
 
-FENCE = re.compile(r"^```(\w*)\s*$")
+FENCE = re.compile(r"^```(\w*)(?:[ \t]+(\S+))?\s*$")
+# The platforms a README block may be for, and what the skip line calls them. This check runs
+# the linux blocks and the blocks for no platform.
+PLATFORMS = {
+    "linux": "Linux",
+    "macos": "macOS with Homebrew",
+    "windows-vs": "Windows with vcpkg and Visual Studio's generator",
+    "windows-ninja": "Windows with vcpkg and Ninja",
+}
+RUN_HERE = {None, "linux"}
 
 
 def readme_commands(release: pathlib.Path):
-    """(README, line number, command) for each line of each ```sh block, the top README first."""
+    """(README, line number, command, platform) for each line of each ```sh block and of each
+    block for a platform, the top README first; platform is None for a block for every one."""
     readmes = [release / "README.md"] + sorted(release.glob("stages/*/README.md"))
     for readme in readmes:
-        language = None
+        block = None
         for number, line in enumerate(readme.read_text(encoding="utf-8").splitlines(), start=1):
             fence = FENCE.match(line)
             if fence:
-                language = None if language is not None else fence.group(1)
+                block = None if block is not None else fence.groups()
                 continue
             command = line.split("  #")[0].strip()
-            if language == "sh" and command:
-                yield readme.relative_to(release), number, command
+            if block is None or not command:
+                continue
+            language, platform = block
+            if language == "sh" or platform is not None:
+                yield readme.relative_to(release), number, command, platform
 
 
 # A command in a source file's opening comment: in backquotes, a build's program or ctest.
@@ -114,9 +133,20 @@ def main() -> int:
         subprocess.run(git + ["commit", "-q", "-m", "the release"], check=True)
     print(f"wrote {write_the_stages(release, model)} stage files from {model}")
     failures = 0
-    commands = list(readme_commands(release)) + list(source_comment_commands(release))
-    for readme, number, command in commands:
+    commands = list(readme_commands(release)) + [
+        (source, number, command, None)
+        for source, number, command in source_comment_commands(release)]
+    for readme, number, command, platform in commands:
         where = f"{readme}:{number}"
+        if platform not in RUN_HERE:
+            if platform not in PLATFORMS:
+                print(f"FAIL {where}: `{command}` is in a block for '{platform}', which is not a "
+                      f"platform this check knows ({', '.join(PLATFORMS)})")
+                failures += 1
+            else:
+                print(f"skip {where}: `{command}`, for {PLATFORMS[platform]}: not run on this "
+                      "Linux; the student platforms workflow runs it there")
+            continue
         expected = expectation(command)
         if expected is None:
             print(f"FAIL {where}: no check knows what `{command}` should do; add it to EXPECTED")

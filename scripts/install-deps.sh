@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what raystep needs on Debian or Ubuntu, and only what is missing. Elsewhere it prints
-# the list and stops: install the same libraries with your package manager (README.md).
+# the list and stops: install the same libraries with your package manager (README.md; on macOS
+# the Brewfile lists them, on Windows vcpkg.json).
 #
 #   scripts/install-deps.sh             everything: building, the tests, the demos, the bench
 #   scripts/install-deps.sh --grading   only what grading needs (Gradescope's setup.sh)
@@ -53,6 +54,12 @@ case "${1:-}" in
 esac
 
 if ! command -v apt-get >/dev/null || ! command -v dpkg-query >/dev/null; then
+    if [ "$(uname -s)" = Darwin ]; then
+        echo "This is macOS: the Brewfile lists what to install, and README.md says how:" >&2
+        echo "  brew bundle --no-upgrade" >&2
+        echo "  cmake --preset student && cmake --build --preset student" >&2
+        exit 1
+    fi
     echo "This is not a Debian or Ubuntu system. Install these (or your system's equivalents):" >&2
     printf '  %s\n' "${packages[@]}" >&2
     exit 1

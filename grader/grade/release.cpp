@@ -31,12 +31,15 @@ const fs::path kClassroomWorkflow = "release/github/classroom.yml";
 const fs::path kReleaseWorkflow = ".github/workflows/classroom.yml";
 
 // What a student's repository leaves out, relative to the repository's root: the instructor's
-// folders, guide, README and scripts. Of scripts/ only the students' own are kept, so that an
+// folders, guide, README and scripts, and the instructor's .github/ (its workflows build the
+// grader: in a student's repository they would run, and fail, on every push; the release's own
+// workflow is written there below). Of scripts/ only the students' own are kept, so that an
 // instructor's script added later stays out without anyone listing it.
 bool withheld(const fs::path& relative) {
     const std::string first = relative.begin()->string();
     if (first == "solutions" || first == "studies" || first == "grader" || first == ".git" ||
-        first == ".ci" || first == "build" || first == "out" || first == "release") {
+        first == ".ci" || first == ".github" || first == "build" || first == "out" ||
+        first == "release") {
         return true;
     }
     if (first == "scripts" && relative != "scripts") {

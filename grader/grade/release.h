@@ -17,9 +17,10 @@ struct ReleaseSummary {
 
 /// Writes the student starter repository into `output` (which must not exist, or be empty):
 /// the repository at `source` without solutions/, grader/ (the hidden checks, the rubric, the
-/// corpus), docs/instructor.md, .git, .ci, builds and the libcgal-demo meshes copied into scenes/
-/// (Debian's package, not ours to hand out); release/github/classroom.yml as
-/// .github/workflows/classroom.yml, GitHub Classroom's autograding; every scene's views, as its
+/// corpus), docs/instructor.md, .git, .ci, the instructor's .github, builds and the libcgal-demo
+/// meshes copied into scenes/ (Debian's package, not ours to hand out);
+/// release/github/classroom.yml as .github/workflows/classroom.yml, GitHub Classroom's
+/// autograding, the release's only workflow; every scene's views, as its
 /// `# views:` line names them, rendered with the reference into
 /// scenes/<stage>/reference/<scene>.<view>.png, so that students compare their renders with the
 /// reference's without having its code; and grading/, the public checks as data with the rubric
