@@ -27,8 +27,9 @@ import subprocess
 import sys
 import xml.etree.ElementTree as ElementTree
 
-STUB_MESSAGE = re.compile(
-    r"stage [0-9]+: [A-Za-z_:]+ is not implemented yet, see docs/stage[0-9]+\.md")
+# Matched with every space taken out, of the output too: Catch2's console report wraps its lines at
+# 80 columns, breaking the message at a space or after a slash ("see docs/\n  stage3.md").
+STUB_MESSAGE = re.compile(r"stage[0-9]+:[A-Za-z_:]+isnotimplementedyet,seedocs/stage[0-9]+\.md")
 # Catch2 2 and 3 both end their console report with "test cases: ..." (or "All tests passed"),
 # also after a fatal signal, which they report as "... due to a fatal error condition: SIGSEGV".
 FINISHED = re.compile(r"^(test cases:|All tests passed)", re.MULTILINE)
@@ -49,7 +50,7 @@ def stub_problem(status: str, output: str):
         return "passed although every stage is a stub" if status == "run" else f"status {status}"
     if CRASHED.search(output) or not FINISHED.search(output):
         return "crashed, or stopped before Catch2 finished its report"
-    if not STUB_MESSAGE.search(output):
+    if not STUB_MESSAGE.search(re.sub(r"\s+", "", output)):
         return "failed without a NotImplemented message"
     return None
 
