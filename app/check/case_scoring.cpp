@@ -30,6 +30,8 @@ struct CaseFindings {
     Verdict verdict = Verdict::pass;
     std::string detail;
     std::vector<double> t_ulps;
+    std::size_t hits_at_t_zero = 0;
+    double largest_t_error_at_zero = 0.0;
     std::size_t near_boundary_hits = 0;
     std::size_t near_boundary_misses = 0;
     bool exact_false_hit = false;
@@ -141,7 +143,14 @@ void check_measurements(const Expectation& e, const Hit& hit, bool triangle, con
                 " within " + exact_text(e.barycentric_tolerance) + ", got " +
                 barycentric_text(hit.beta, hit.gamma));
     }
-    if (e.hit) findings.t_ulps.push_back(ulp_distance(hit.t, expected.t));
+    if (!e.hit) return;
+    if (std::abs(expected.t) <= e.t_tolerance) {
+        ++findings.hits_at_t_zero;
+        findings.largest_t_error_at_zero =
+            std::max(findings.largest_t_error_at_zero, std::abs(hit.t - expected.t));
+    } else {
+        findings.t_ulps.push_back(ulp_distance(hit.t, expected.t));
+    }
 }
 
 // Rules 2 to 4 for a test of one kind of primitive.
@@ -372,6 +381,9 @@ MethodScore score_family(const Stage3Method& method, const CaseFamily& family,
                                              std::move(findings.detail), case_text(ray_case)});
         }
         score.t_ulps.insert(score.t_ulps.end(), findings.t_ulps.begin(), findings.t_ulps.end());
+        score.hits_at_t_zero += findings.hits_at_t_zero;
+        score.largest_t_error_at_zero =
+            std::max(score.largest_t_error_at_zero, findings.largest_t_error_at_zero);
         score.near_boundary_hits += findings.near_boundary_hits;
         score.near_boundary_misses += findings.near_boundary_misses;
         score.exact_false_hits += findings.exact_false_hit ? 1 : 0;

@@ -56,7 +56,13 @@ struct MethodScore {
     std::size_t exact_false_misses = 0;
     /// For every primitive whose exact answer is a hit (near a boundary or not) and which the
     /// method also reported hit: |t - expected t| in units in the last place.
+    /// Hits whose exact t lies within its tolerance of 0 (a ray that starts on the surface, or a
+    /// sliver whose tolerance is wider than its t) are counted apart, with their largest
+    /// |t - expected t|: an ulp of a t that small is so small that a right answer can sit 1e15 of
+    /// them away, and would look like a failure in t_ulps.
     std::vector<double> t_ulps;
+    std::size_t hits_at_t_zero = 0;
+    double largest_t_error_at_zero = 0.0;
     bool not_implemented = false;  ///< the method is still a stub: nothing was scored
     std::string not_implemented_message;
     std::vector<Counterexample> counterexamples;  ///< the first few failures, in case order

@@ -55,6 +55,25 @@ void print_counterexamples(std::FILE* out, const MethodScore& score, const std::
     }
 }
 
+// Hits whose exact t is 0 within its tolerance stay out of the ulp columns (MethodScore): said
+// under the table, with the absolute error, which does mean something there.
+void print_hits_at_t_zero(std::FILE* out, const std::vector<MethodScore>& scores) {
+    bool any = false;
+    for (const MethodScore& score : scores) {
+        if (score.not_implemented || score.hits_at_t_zero == 0) continue;
+        if (!any) {
+            std::fprintf(out,
+                         "hits whose exact t is 0 within its tolerance (a ray that starts on "
+                         "the surface, a sliver's wide tolerance), left out of the t ulps "
+                         "columns, where a right t can be 1e15 ulps of 0 away:\n");
+            any = true;
+        }
+        std::fprintf(out, "  %s on %s: %zu hits, largest |t - exact t| %.3g\n",
+                     score.method.c_str(), score.family.c_str(), score.hits_at_t_zero,
+                     score.largest_t_error_at_zero);
+    }
+}
+
 }  // namespace
 
 UlpSummary summarize_ulps(std::vector<double> ulps) {
@@ -114,6 +133,7 @@ void print_check_report(std::FILE* out, const std::vector<MethodScore>& scores,
                      median.c_str(), p99.c_str(), max.c_str());
     }
 
+    print_hits_at_t_zero(out, scores);
     for (const MethodScore& score : scores) {
         if (has_failures(score)) print_counterexamples(out, score, rerun);
     }

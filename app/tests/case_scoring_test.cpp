@@ -485,6 +485,24 @@ TEST_CASE("score_family: a hit where the exact answer is a miss adds no t error"
     CHECK(scored.t_ulps.empty());
 }
 
+TEST_CASE("score_family: a hit expected at t = 0 is measured in t, not in ulps of 0", "[app]") {
+    // A ray that starts on the surface: its exact t is 0, and a right answer 1e-17 from it is
+    // 4e18 ulps of 0 away. It is counted apart, with its error, so that the ulp figures of a
+    // right method stay small; a hit away from 0 is measured in ulps as before.
+    CaseFamily family{"origins-on-surface",
+                      1,
+                      "",
+                      {make_case({{kTriangle, expect_triangle_hit(0.0, 0.25, 0.25)}}),
+                       make_case({{kTriangle, expect_triangle_hit(5.0, 0.25, 0.25)}})}};
+    const MethodScore scored = score_family(
+        kTriangleTest, family,
+        {answer({hit_at(1e-17, kUp, 0.25, 0.25)}), answer({hit_at(5.0, kUp, 0.25, 0.25)})});
+    CHECK(scored.passed == 2);
+    CHECK(scored.hits_at_t_zero == 1);
+    CHECK(scored.largest_t_error_at_zero == 1e-17);
+    CHECK(scored.t_ulps == std::vector<double>{0.0});
+}
+
 TEST_CASE("score_family: a stub makes the whole method not implemented", "[app]") {
     CaseFamily family{"stubs", 1, "", {}};
     for (std::uint64_t k = 0; k < 3; ++k) {

@@ -116,6 +116,24 @@ TEST_CASE("print_check_report: one row per method and family with its counts", "
                                                                    "-", "-", "-"});
 }
 
+TEST_CASE("print_check_report: hits at t = 0 are named under the table with their t error",
+          "[app]") {
+    MethodScore on_surface;
+    on_surface.method = "intersect_plane";
+    on_surface.family = "origins-on-surface";
+    on_surface.cases = 26;
+    on_surface.passed = 26;
+    on_surface.hits_at_t_zero = 26;
+    on_surface.largest_t_error_at_zero = 3.1e-17;
+    const std::string text = report({on_surface});
+    CAPTURE(text);
+    CHECK(row(text, "intersect_plane") ==
+          std::vector<std::string>{"intersect_plane", "origins-on-surface", "26", "100.0%", "0",
+                                   "0", "0", "0", "-", "-", "-"});
+    CHECK(text.find("intersect_plane on origins-on-surface: 26 hits, largest |t - exact t| "
+                    "3.1e-17") != std::string::npos);
+}
+
 TEST_CASE("print_check_report: the pass rate rounds down, so 100% means all passed", "[app]") {
     MethodScore almost = leaky_score();
     almost.passed = 999;
