@@ -1,23 +1,27 @@
 #!/usr/bin/env python3
-"""Every command a student release's READMEs name works, as written, once the stages are written.
+"""Every command a student release's READMEs and handouts name works, as written, once the
+stages are written.
 
     scripts/check-student-readme.py RELEASE MODEL_STAGES
 
 RELEASE is a student release already built by its scripts/setup.sh. This plays the student who
 has written every stage: it copies the files each stage's manifest.txt lists, and nothing else,
-from MODEL_STAGES (a right submission's stages/ folder) into RELEASE, then runs each line of the
-```sh blocks of RELEASE/README.md and of every stages/*/README.md, then each command a stage's
-source or test file names in its opening comment, in order, from RELEASE's root, and holds its
-exit code and output against what the line promises (EXPECTED below). Last, as a student's `git
-status` would: the commands may leave no file git lists but the stage files written. A README
-line that no entry of EXPECTED knows fails too, so that a new command cannot go unchecked.
+from MODEL_STAGES (a right submission's stages/ folder) into RELEASE, then runs each command of
+the ```sh blocks of RELEASE/README.md, every stages/*/README.md and every docs/*.md (a line ending
+in a backslash goes on on the next), then each command a stage's source or test file names in its
+opening comment, in order, from RELEASE's root, and holds its exit code and output against what
+the command promises (EXPECTED below). Last, as a student's `git status` would: the commands may
+leave no file git lists but the stage files written. A command that no entry of EXPECTED knows
+fails too, so that a new command cannot go unchecked.
 
 A block for one platform names it after its language (```sh macos, ```powershell windows-vs;
 PLATFORMS below). This check runs on Linux: it runs the linux blocks and skips every other
-platform's, saying so line by line; the student platforms workflow runs those on their systems
-(.github/workflows/student-platforms.yml in the instructor's repository). A platform it does not
-know fails, so that a misspelt one is never skipped unseen.
-Prints one line per command with its time, and exits 1 when any command failed."""
+platform's, saying so command by command; the student platforms workflow runs those on their
+systems (.github/workflows/student-platforms.yml in the instructor's repository). A block tagged
+instructor (```sh instructor) holds commands that need the instructor's repository (the reference
+build, the oracle, the bench), and so does every block of docs/lecturer.md, the lecturer's guide:
+they are skipped and listed too. A tag it does not know fails, so that a misspelt one is never
+skipped unseen. Prints one line per command with its time, and exits 1 when any command failed."""
 
 import pathlib
 import re
@@ -37,13 +41,19 @@ EXPECTED = [
     (r"ctest --preset student .*", {0}, r"100% tests passed"),
     (r"build/student/bin/raystep_stage[1-9]_tests( .*)?", {0}, r"All tests passed"),
     (RAYSTEP + r" render .* -o (?P<made>\S+)", {0}, r"^wrote "),
+    # Without -o, under out/, which git ignores: the file it names must be there.
+    (RAYSTEP + r" render .*", {0}, r"^wrote (?P<made>out/\S+) "),
+    (RAYSTEP + r" info .*", {0}, r"views"),
+    # The page's server runs until stopped: it must say where the page is within TIMEOUT seconds.
+    (RAYSTEP + r" view .*", {"timeout"}, r"open http://127\.0\.0\.1:\d+/"),
+    (r"cmake --build --preset student", {0}, r""),
     (RAYSTEP + r" compare .*", {0}, r"^pass"),
     (RAYSTEP + r" trace .* --compare", {0}, r"^the traces are the same$"),
     # An example traces a pixel that shows something: a hit, then the view's value.
     (RAYSTEP + r" trace .*", {0}, r"^closest_hit: (?!miss)[\s\S]*^value: "),
     # A right triangle test that is not watertight lets some rays through shared edges (the
     # families' leaks), so a right stage 3 need not pass every case: exit 1, nothing a stub.
-    (RAYSTEP + r" check --stage 3", {0, 1}, r"^\d+ of \d+ checks passed[^;]*$"),
+    (RAYSTEP + r" check --stage 3( .*)?", {0, 1}, r"^\d+ of \d+ checks passed[^;]*$"),
     # Every stage written: every public check passes, and the hidden ones are named.
     (RAYSTEP + r" grade( --stage [0-9])?", {0},
      r"^Hidden checks exist and are not run here[\s\S]*^Total: (\d+) / \1 points"),
@@ -52,34 +62,51 @@ EXPECTED = [
 ]
 
 FENCE = re.compile(r"^```(\w*)(?:[ \t]+(\S+))?\s*$")
-# The platforms a README block may be for, and what the skip line calls them. This check runs
-# the linux blocks and the blocks for no platform.
+# The tags a README block may carry after its language, and what the skip line calls them. This
+# check runs the linux blocks and the blocks with no tag.
 PLATFORMS = {
     "linux": "Linux",
     "macos": "macOS with Homebrew",
     "windows-vs": "Windows with vcpkg and Visual Studio's generator",
     "windows-ninja": "Windows with vcpkg and Ninja",
+    "instructor": "the instructor's repository",
 }
 RUN_HERE = {None, "linux"}
+LECTURER_GUIDE = pathlib.Path("docs/lecturer.md")
+TIMEOUT = 20
 
 
 def readme_commands(release: pathlib.Path):
-    """(README, line number, command, platform) for each line of each ```sh block and of each
-    block for a platform, the top README first; platform is None for a block for every one."""
-    readmes = [release / "README.md"] + sorted(release.glob("stages/*/README.md"))
-    for readme in readmes:
+    """(page, line number, command, tag) for each command of each ```sh block and of each block
+    for a platform, the top README first; tag is None for a block for every platform."""
+    pages = ([release / "README.md"] + sorted(release.glob("stages/*/README.md")) +
+             sorted(release.glob("docs/*.md")))
+    for page in pages:
+        where = page.relative_to(release)
         block = None
-        for number, line in enumerate(readme.read_text(encoding="utf-8").splitlines(), start=1):
+        command, first = "", 0
+        for number, line in enumerate(page.read_text(encoding="utf-8").splitlines(), start=1):
             fence = FENCE.match(line)
             if fence:
                 block = None if block is not None else fence.groups()
                 continue
-            command = line.split("  #")[0].strip()
-            if block is None or not command:
+            if block is None:
                 continue
-            language, platform = block
-            if language == "sh" or platform is not None:
-                yield readme.relative_to(release), number, command, platform
+            language, tag = block
+            if where == LECTURER_GUIDE:
+                tag = "instructor"
+            if language != "sh" and tag is None:
+                continue
+            text = line.split("  #")[0].strip()
+            if not command and (not text or text.startswith("#")):
+                continue
+            if not command:
+                first = number
+            if text.endswith("\\"):
+                command += text[:-1].strip() + " "
+                continue
+            yield where, first, command + text, tag
+            command = ""
 
 
 # A command in a source file's opening comment: in backquotes, a build's program or ctest.
@@ -95,7 +122,7 @@ def source_comment_commands(release: pathlib.Path):
             if not line.startswith("//"):
                 break
             for command in SOURCE_COMMAND.findall(line):
-                yield source.relative_to(release), number, command
+                yield source.relative_to(release), number, command, None
 
 
 def write_the_stages(release: pathlib.Path, model: pathlib.Path):
@@ -133,19 +160,16 @@ def main() -> int:
         subprocess.run(git + ["commit", "-q", "-m", "the release"], check=True)
     print(f"wrote {write_the_stages(release, model)} stage files from {model}")
     failures = 0
-    commands = list(readme_commands(release)) + [
-        (source, number, command, None)
-        for source, number, command in source_comment_commands(release)]
-    for readme, number, command, platform in commands:
+    commands = list(readme_commands(release)) + list(source_comment_commands(release))
+    for readme, number, command, tag in commands:
         where = f"{readme}:{number}"
-        if platform not in RUN_HERE:
-            if platform not in PLATFORMS:
-                print(f"FAIL {where}: `{command}` is in a block for '{platform}', which is not a "
-                      f"platform this check knows ({', '.join(PLATFORMS)})")
+        if tag not in RUN_HERE:
+            if tag not in PLATFORMS:
+                print(f"FAIL {where}: `{command}` is in a block tagged '{tag}', which this check "
+                      f"does not know ({', '.join(PLATFORMS)})")
                 failures += 1
             else:
-                print(f"skip {where}: `{command}`, for {PLATFORMS[platform]}: not run on this "
-                      "Linux; the student platforms workflow runs it there")
+                print(f"skip {where}: `{command}`, for {PLATFORMS[tag]}: not run here")
             continue
         expected = expectation(command)
         if expected is None:
@@ -154,14 +178,21 @@ def main() -> int:
             continue
         match, code, output_pattern = expected
         start = time.monotonic()
-        run = subprocess.run(["bash", "-c", command], cwd=release, capture_output=True, text=True)
+        try:
+            run = subprocess.run(["bash", "-c", command], cwd=release, capture_output=True,
+                                 text=True, timeout=TIMEOUT if "timeout" in code else None)
+            returncode, output = run.returncode, run.stdout + run.stderr
+        except subprocess.TimeoutExpired as stopped:
+            returncode = "timeout"
+            output = "".join(part.decode() if isinstance(part, bytes) else part or ""
+                             for part in (stopped.stdout, stopped.stderr))
         seconds = time.monotonic() - start
-        output = run.stdout + run.stderr
-        made = match.groupdict().get("made")
+        printed = re.search(output_pattern, output, re.MULTILINE)
+        made = match.groupdict().get("made") or (printed.groupdict().get("made") if printed else None)
         problems = []
-        if run.returncode not in code:
-            problems.append(f"exit {run.returncode}, expected {' or '.join(map(str, code))}")
-        if not re.search(output_pattern, output, re.MULTILINE):
+        if returncode not in code:
+            problems.append(f"exit {returncode}, expected {' or '.join(map(str, code))}")
+        if not printed:
             problems.append(f"no line matching {output_pattern!r}")
         if made and not (release / made).is_file():
             problems.append(f"{made} was not written")

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "app/cli/output_path.h"
 #include "app/cli/render_command.h"
 #include "app/compare/noisy_render_comparison.h"
 #include "app/compare/reference_image.h"
@@ -162,13 +163,14 @@ int run_compare(const CompareArguments& arguments) {
     if (arguments.scene.empty() && arguments.image.empty())
         throw std::runtime_error("compare: give an IMAGE, or --scene SCENE");
     if (!arguments.scene.empty()) {
-        // The render is written beside its scene as `<scene>.<view>.png`, where the reference of
-        // the same name is found in the reference/ folder beside it.
+        // The render is written as render writes it, out/<stage>/<scene>.<view>.png, and held
+        // against the reference of the same name in the reference/ folder beside the scene.
         const fs::path scene = arguments.scene;
         const std::string view = arguments.view.empty() ? only_view(scene) : arguments.view;
-        const fs::path image = scene.parent_path() / (scene.stem().string() + "." + view + ".png");
+        const std::string file_name = scene.stem().string() + "." + view + ".png";
         // Found before rendering, so that a missing reference costs no render.
-        const fs::path reference = find_reference_image(image, "");
+        const fs::path reference = find_reference_image(scene.parent_path() / file_name, "");
+        const fs::path image = default_output(scene, file_name);
         RenderArguments render;
         render.scene = arguments.scene;
         render.output = image.string();

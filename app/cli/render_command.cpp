@@ -8,6 +8,7 @@
 #include <thread>
 #include <vector>
 
+#include "app/cli/output_path.h"
 #include "app/compare/reference_trace.h"
 #include "app/render/pixel_record.h"
 #include "app/render/render_pixel.h"
@@ -27,7 +28,8 @@ CLI::App* add_render_command(CLI::App& app, RenderArguments& arguments) {
         ->check(CLI::ExistingFile);
     command->add_option("-o,--output", arguments.output,
                         "Image file; its extension picks the format (.png, .exr, ...). "
-                        "Default: the scene's 'output', else SCENE with .png");
+                        "Default: under out/, the scene's 'output', else SCENE.VIEW.png "
+                        "(out/stage6/cornell-box.full.png)");
     command->add_option("--threads", arguments.threads, "Worker threads (default: all cores)")
         ->check(CLI::Range(1, 1024));
     command
@@ -61,9 +63,11 @@ int run_render(const RenderArguments& arguments) {
 
     std::filesystem::path output = arguments.output;
     if (output.empty()) {
-        output = scene.output.empty()
-                     ? std::filesystem::path(arguments.scene).replace_extension(".png")
-                     : std::filesystem::path(scene.output);
+        const std::filesystem::path scene_file = arguments.scene;
+        output = default_output(scene_file, scene.output.empty()
+                                                ? scene_file.stem().string() + "." +
+                                                      std::string(view_name(view)) + ".png"
+                                                : scene.output);
     }
 
     RenderOptions options;
