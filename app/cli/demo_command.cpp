@@ -4,8 +4,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <stdexcept>
 
 #include "app/demo/demo_list.h"
+#include "app/demo/demo_size.h"
 #include "app/demo/label_text.h"
 #include "base/image/image_io.h"
 
@@ -14,7 +16,7 @@ namespace raystep {
 namespace {
 
 void print_list() {
-    std::printf("demos (raystep demo NAME [-o FILE]):\n");
+    std::printf("demos (raystep demo NAME [-o FILE] [--size WxH]):\n");
     for (const DemoEntry& demo : demo_list()) {
         std::printf("  %-18s %.*s\n", std::string(demo.name).c_str(),
                     static_cast<int>(demo.description.size()), demo.description.data());
@@ -25,11 +27,28 @@ void print_list() {
 
 CLI::App* add_demo_command(CLI::App& app, DemoArguments& arguments) {
     CLI::App* command = app.add_subcommand(
-        "demo", "Render a labelled 640 x 480 image of one lecture idea; without NAME, list them");
+        "demo", "Render a labelled image of one lecture idea; without NAME, list them");
     command->add_option("name", arguments.name, "The demo to render")
         ->check(CLI::IsMember(demo_names()));
     command->add_option("-o,--output", arguments.output,
                         "Image file; its extension picks the format. Default: demo-NAME.png");
+    command
+        ->add_option("--size", arguments.size,
+                     "Image size in pixels, WIDTHxHEIGHT, from " +
+                         demo_size_text(kSmallestDemoSize) + " to " +
+                         demo_size_text(kLargestDemoSize) +
+                         "; the text grows with the height (1920x1080 for a projector). "
+                         "Default: 640x480")
+        ->check(CLI::Validator(
+            [](std::string& text) {
+                try {
+                    parse_demo_size(text);
+                    return std::string();
+                } catch (const std::invalid_argument& problem) {
+                    return std::string(problem.what());
+                }
+            },
+            "WxH"));
     command->add_flag("--list", arguments.list, "List the demos with what each shows");
     return command;
 }
@@ -54,7 +73,7 @@ int run_demo(const DemoArguments& arguments) {
     }
 
     const auto start = std::chrono::steady_clock::now();
-    const DemoSize size;
+    const DemoSize size = arguments.size.empty() ? DemoSize{} : parse_demo_size(arguments.size);
     const Image image = draw_figure(demo.make(size), size, font);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -6,10 +6,11 @@
 
 namespace raystep {
 
-/// `raystep demo [NAME] [-o FILE] [--list]`
+/// `raystep demo [NAME] [-o FILE] [--size WxH] [--list]`
 struct DemoArguments {
     std::string name;    ///< empty: list the demos
     std::string output;  ///< empty: demo-NAME.png in the current folder
+    std::string size;    ///< WIDTHxHEIGHT, checked by parse_demo_size; empty: 640 x 480
     bool list = false;
 };
 

@@ -10,16 +10,28 @@ namespace raystep {
 
 namespace {
 
-// Strip heights and text sizes in pixels, chosen for a 640 x 480 image on a lecture-hall
-// projector: the title readable from the back, captions from the middle. Smaller images (the
-// tests') keep the strips and get smaller panels.
-constexpr int kTitleHeight = 32;
-constexpr int kTitleText = 20;
-constexpr int kCaptionHeight = 24;
-constexpr int kCaptionText = 15;
-constexpr int kScaleHeight = 44;
-constexpr int kScaleText = 13;
-constexpr int kMargin = 8;
+// Text for the back row of a lecture hall. Screen-sizing rules put the farthest seat about six
+// image heights from the screen for presentation graphics; from there a caption whose font size
+// (its em) is a 26th of the image's height has capitals (0.73 em in DejaVu Sans) of 16 minutes of
+// arc, the smallest that human-factors guides give for reading a label (NUREG-0700), and a title
+// at a 20th has them at 21 minutes, those guides' preferred size. On a 640 x 480 image that is 18
+// and 24 pixels; on 1920 x 1080, 42 and 54. app/tests/demo/demo_size_test.py measures the
+// captions' height in a written figure.
+constexpr double kCaptionTextPerHeight = 1.0 / 26;
+constexpr double kTitleTextPerHeight = 1.0 / 20;
+// A strip is its line of text and three tenths of it above and below.
+constexpr double kStripPerText = 1.6;
+// The margins and the colour bar are drawn to a 480-line layout and scaled with the image: in its
+// pixels (FigureTextSizes::unit). The bar's strip is the bar, its ticks, and a line of numbers
+// at the captions' size with a quarter of it above and below. The bar ends short of the right
+// edge by half the widest number, "100,000".
+constexpr double kMargin = 8;
+constexpr double kScaleLabelWidth = 150;
+constexpr double kBarTop = 6;
+constexpr double kBarHeight = 14;
+constexpr double kTickHeight = 4;
+constexpr double kNumberWidth = 100;
+constexpr double kNumberLinePerText = 1.5;
 
 const Color kStripColour(0.1, 0.1, 0.12);
 const Color kCaptionTextColour(0.9, 0.9, 0.9);
@@ -51,14 +63,21 @@ void paste(Image& image, const Image& panel, int x0, int y0) {
     }
 }
 
+int pixels(double length, double unit) {
+    return static_cast<int>(std::lround(length * unit));
+}
+
 // The bar of the scale across the strip at y0, a tick and a number at each power of ten.
-void draw_scale(Image& image, const LogHeatScale& scale, int y0,
+void draw_scale(Image& image, const LogHeatScale& scale, int y0, const FigureTextSizes& sizes,
                 const std::optional<LabelFont>& font) {
-    const int label_width = 150;
-    const int bar_x0 = kMargin + label_width;
-    const int bar_x1 = image.width() - 5 * kMargin;  // room for half the last number
-    const int bar_y0 = y0 + 6;
-    const int bar_height = 14;
+    const double u = sizes.unit;
+    const int margin = pixels(kMargin, u);
+    const int label_width = pixels(kScaleLabelWidth, u);
+    const int bar_x0 = margin + label_width;
+    const int bar_x1 = image.width() - pixels(kNumberWidth / 2 + kMargin, u);
+    const int bar_y0 = y0 + pixels(kBarTop, u);
+    const int bar_height = pixels(kBarHeight, u);
+    const int number_line = static_cast<int>(std::lround(kNumberLinePerText * sizes.scale_text));
     if (bar_x1 <= bar_x0) return;  // an image too narrow for a bar: the caption says the range
     const double log_top = std::log10(scale.top);
     for (int i = bar_x0; i < bar_x1; ++i) {
@@ -68,20 +87,35 @@ void draw_scale(Image& image, const LogHeatScale& scale, int y0,
     for (int exponent = 0; exponent <= static_cast<int>(std::floor(log_top)); ++exponent) {
         const int x =
             bar_x0 + static_cast<int>(std::lround(exponent / log_top * (bar_x1 - 1 - bar_x0)));
-        fill(image, x, bar_y0 + bar_height, 1, 4, kCaptionTextColour);
+        fill(image, x, bar_y0 + bar_height, std::max(1, pixels(1, u)), pixels(kTickHeight, u),
+             kCaptionTextColour);
         if (font) {
             draw_text(image, *font, thousands(static_cast<std::uint64_t>(std::pow(10.0, exponent))),
-                      x, bar_y0 + bar_height + 12, kScaleText, 60, TextAlign::centre,
+                      x, bar_y0 + bar_height + pixels(kTickHeight, u) + number_line / 2,
+                      sizes.scale_text, pixels(kNumberWidth, u), TextAlign::centre,
                       kCaptionTextColour);
         }
     }
     if (font) {
-        draw_text(image, *font, scale.quantity, kMargin, y0 + kScaleHeight / 2, kScaleText,
-                  label_width - kMargin, TextAlign::left, kCaptionTextColour);
+        draw_text(image, *font, scale.quantity, margin, y0 + sizes.scale_strip / 2,
+                  sizes.scale_text, label_width - margin, TextAlign::left, kCaptionTextColour);
     }
 }
 
 }  // namespace
+
+FigureTextSizes figure_text_sizes(int height) {
+    FigureTextSizes sizes{};
+    sizes.unit = height / 480.0;
+    sizes.caption_text = static_cast<int>(std::lround(height * kCaptionTextPerHeight));
+    sizes.title_text = static_cast<int>(std::lround(height * kTitleTextPerHeight));
+    sizes.caption_strip = static_cast<int>(std::lround(sizes.caption_text * kStripPerText));
+    sizes.title_strip = static_cast<int>(std::lround(sizes.title_text * kStripPerText));
+    sizes.scale_text = sizes.caption_text;
+    sizes.scale_strip = pixels(kBarTop + kBarHeight + kTickHeight, sizes.unit) +
+                        static_cast<int>(std::lround(kNumberLinePerText * sizes.scale_text));
+    return sizes;
+}
 
 PanelSize panel_size(const DemoSize& size, int panels, bool scale) {
     if (panels < 1 || panels > 8) {
@@ -89,8 +123,10 @@ PanelSize panel_size(const DemoSize& size, int panels, bool scale) {
                                     std::to_string(panels));
     }
     const int rows = rows_for(panels);
-    const int free_height = size.height - kTitleHeight - (scale ? kScaleHeight : 0);
-    const PanelSize panel{size.width / columns_for(panels), free_height / rows - kCaptionHeight};
+    const FigureTextSizes sizes = figure_text_sizes(size.height);
+    const int free_height = size.height - sizes.title_strip - (scale ? sizes.scale_strip : 0);
+    const PanelSize panel{size.width / columns_for(panels),
+                          free_height / rows - sizes.caption_strip};
     if (panel.width < 1 || panel.height < 1) {
         throw std::invalid_argument("a " + std::to_string(size.width) + " x " +
                                     std::to_string(size.height) + " image is too small for " +
@@ -103,13 +139,15 @@ Image draw_figure(const DemoFigure& figure, const DemoSize& size,
                   const std::optional<LabelFont>& font) {
     const int count = static_cast<int>(figure.panels.size());
     const PanelSize panel = panel_size(size, count, figure.scale.has_value());
+    const FigureTextSizes sizes = figure_text_sizes(size.height);
+    const int margin = pixels(kMargin, sizes.unit);
     Image image(size.width, size.height);
     fill(image, 0, 0, size.width, size.height, kStripColour);
 
     // The title across the top
     if (font) {
-        draw_text(image, *font, figure.title, size.width / 2, kTitleHeight / 2, kTitleText,
-                  size.width - 2 * kMargin, TextAlign::centre);
+        draw_text(image, *font, figure.title, size.width / 2, sizes.title_strip / 2,
+                  sizes.title_text, size.width - 2 * margin, TextAlign::centre);
     }
 
     // Each panel with its caption under it, row by row; a short last row is centred
@@ -126,18 +164,18 @@ Image draw_figure(const DemoFigure& figure, const DemoSize& size,
         const int row_start =
             k / columns == last_row ? (size.width - in_last_row * panel.width) / 2 : 0;
         const int x0 = row_start + (k % columns) * panel.width;
-        const int y0 = kTitleHeight + (k / columns) * (panel.height + kCaptionHeight);
+        const int y0 = sizes.title_strip + (k / columns) * (panel.height + sizes.caption_strip);
         paste(image, p.image, x0, y0);
         if (font) {
             draw_text(image, *font, p.caption, x0 + panel.width / 2,
-                      y0 + panel.height + kCaptionHeight / 2, kCaptionText,
-                      panel.width - 2 * kMargin, TextAlign::centre, kCaptionTextColour);
+                      y0 + panel.height + sizes.caption_strip / 2, sizes.caption_text,
+                      panel.width - 2 * margin, TextAlign::centre, kCaptionTextColour);
         }
     }
 
     // The colour scale along the bottom
     if (figure.scale) {
-        draw_scale(image, *figure.scale, size.height - kScaleHeight, font);
+        draw_scale(image, *figure.scale, size.height - sizes.scale_strip, sizes, font);
     }
     return image;
 }

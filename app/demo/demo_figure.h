@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "app/demo/demo_size.h"
 #include "app/demo/label_text.h"
 #include "base/image/image.h"
 
@@ -11,13 +12,8 @@ namespace raystep {
 
 // A demo's result before it becomes one image: a title, one to eight panels each with a caption,
 // and for heat maps the colour scale. The demos render their panels at panel_size; draw_figure
-// lays everything out and writes the labels.
-
-/// The whole image a demo writes, in pixels.
-struct DemoSize {
-    int width = 640;
-    int height = 480;
-};
+// lays everything out and writes the labels, their strips and text in proportion to the image's
+// height, so that a figure for a 1080-line projector has captions as legible as a 480-line one's.
 
 /// One image of a figure and the line under it that says what it shows.
 struct DemoPanel {
@@ -47,9 +43,23 @@ struct PanelSize {
 /// The size of each panel of a figure of `panels` panels on an image of `size`: one panel fills
 /// the width, two stand side by side, three or four make two rows of two, five or six two rows
 /// of three, seven or eight two rows of four; the title, the captions and, when `scale`, the
-/// colour bar take the rest. Throws std::invalid_argument for no panels, more than eight, or an
-/// image too small to hold them.
+/// colour bar take the rest (figure_text_sizes). Throws std::invalid_argument for no panels, more
+/// than eight, or an image too small to hold them.
 PanelSize panel_size(const DemoSize& size, int panels, bool scale);
+
+/// The heights in pixels of a figure's strips and of the text in them.
+struct FigureTextSizes {
+    int title_strip;
+    int title_text;
+    int caption_strip;
+    int caption_text;  ///< the font's size (its em), as draw_text takes it
+    int scale_strip;
+    int scale_text;
+    double unit;  ///< one pixel of the 480-line layout the rest is drawn to: height / 480
+};
+/// The text sizes of a figure `height` pixels high, each in proportion to it: captions at a 26th of
+/// the height, the title at a 20th, for the back row of a lecture hall (demo_figure.cpp).
+FigureTextSizes figure_text_sizes(int height);
 
 /// The figure as one image of `size`. Without a font the strips for the title, captions and
 /// numbers stay blank.

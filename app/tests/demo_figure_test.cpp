@@ -37,26 +37,46 @@ DemoFigure two_panel_figure(const DemoSize& size) {
 
 }  // namespace
 
+TEST_CASE("figure_text_sizes: captions at a 26th of the height, titles at a 20th, for a hall",
+          "[app]") {
+    const FigureTextSizes lecture = figure_text_sizes(480);
+    CHECK(lecture.caption_text == 18);
+    CHECK(lecture.title_text == 24);
+    CHECK(lecture.caption_strip == 29);  // the text and three tenths of it above and below
+    CHECK(lecture.title_strip == 38);
+    CHECK(lecture.scale_strip == 24 + 27);  // bar and ticks, then a line of numbers
+    const FigureTextSizes projector = figure_text_sizes(1080);
+    CHECK(projector.caption_text == 42);
+    CHECK(projector.title_text == 54);
+    CHECK(projector.caption_strip == 67);
+    CHECK(projector.unit == Approx(2.25));
+}
+
 TEST_CASE("panel_size: one panel fills the width, two share it, four to eight make two rows",
           "[app]") {
     const DemoSize size{640, 480};
-    // 480 = title 32 + panels + captions 24 each (+ the colour bar's 44)
+    // 480 = title 38 + panels + captions 29 each (+ the colour bar's 51)
     CHECK(panel_size(size, 1, false).width == 640);
-    CHECK(panel_size(size, 1, false).height == 480 - 32 - 24);
+    CHECK(panel_size(size, 1, false).height == 480 - 38 - 29);
     CHECK(panel_size(size, 2, true).width == 320);
-    CHECK(panel_size(size, 2, true).height == 480 - 32 - 44 - 24);
+    CHECK(panel_size(size, 2, true).height == 480 - 38 - 51 - 29);
     CHECK(panel_size(size, 4, false).width == 320);
-    CHECK(panel_size(size, 4, false).height == (480 - 32) / 2 - 24);
+    CHECK(panel_size(size, 4, false).height == (480 - 38) / 2 - 29);
     CHECK(panel_size(size, 6, false).width == 640 / 3);
-    CHECK(panel_size(size, 6, false).height == (480 - 32) / 2 - 24);
+    CHECK(panel_size(size, 6, false).height == (480 - 38) / 2 - 29);
     CHECK(panel_size(size, 7, false).width == 640 / 4);
     CHECK(panel_size(size, 8, false).width == 640 / 4);
+    // At 1920 x 1080 the strips grow with the height: title 86, captions 67
+    CHECK(panel_size({1920, 1080}, 2, false).height == 1080 - 86 - 67);
 }
 
 TEST_CASE("panel_size: no panels, nine panels or no room for them are refused", "[app]") {
     CHECK_THROWS_AS(panel_size({640, 480}, 0, false), std::invalid_argument);
     CHECK_THROWS_AS(panel_size({640, 480}, 9, false), std::invalid_argument);
-    CHECK_THROWS_AS(panel_size({640, 60}, 2, true), std::invalid_argument);
+    // The strips shrink with the image: what runs out first is a pixel for each panel
+    CHECK_THROWS_AS(panel_size({640, 1}, 8, false), std::invalid_argument);
+    CHECK_THROWS_AS(panel_size({3, 480}, 8, false), std::invalid_argument);
+    CHECK_NOTHROW(panel_size({4, 480}, 8, false));
 }
 
 TEST_CASE("draw_figure: the panels side by side under the title, at the stated size", "[app]") {
@@ -65,10 +85,12 @@ TEST_CASE("draw_figure: the panels side by side under the title, at the stated s
     REQUIRE(image.width() == 320);
     REQUIRE(image.height() == 240);
     const PanelSize panel = panel_size(size, 2, false);
-    CHECK(image.at(0, 32) == Color(1, 0, 0));
-    CHECK(image.at(panel.width - 1, 32 + panel.height - 1) == Color(1, 0, 0));
-    CHECK(image.at(panel.width, 32) == Color(0, 0, 1));
-    CHECK(image.at(319, 32 + panel.height - 1) == Color(0, 0, 1));
+    const int top = figure_text_sizes(240).title_strip;  // 19
+    CHECK(image.at(0, top) == Color(1, 0, 0));
+    CHECK(image.at(panel.width - 1, top + panel.height - 1) == Color(1, 0, 0));
+    CHECK(image.at(panel.width, top) == Color(0, 0, 1));
+    CHECK(image.at(319, top + panel.height - 1) == Color(0, 0, 1));
+    CHECK(image.at(0, top - 1) != Color(1, 0, 0));
 }
 
 TEST_CASE("draw_figure: with a font the title strip holds text, without one it stays blank",
@@ -78,9 +100,9 @@ TEST_CASE("draw_figure: with a font the title strip holds text, without one it s
     if (!font) {
         WARN("no font: install fonts-dejavu-core to test the labels; tried " + label_fonts_tried());
     } else {
-        CHECK(marked_pixels(draw_figure(two_panel_figure(size), size, font), 0, 32) > 50);
+        CHECK(marked_pixels(draw_figure(two_panel_figure(size), size, font), 0, 19) > 50);
     }
-    CHECK(marked_pixels(draw_figure(two_panel_figure(size), size, std::nullopt), 0, 32) == 0);
+    CHECK(marked_pixels(draw_figure(two_panel_figure(size), size, std::nullopt), 0, 19) == 0);
 }
 
 TEST_CASE("draw_figure: a panel of the wrong size is a programming error", "[app]") {
@@ -97,10 +119,13 @@ TEST_CASE("draw_figure: a heat map's scale is drawn along the bottom, cold to ho
     figure.panels.push_back({"", filled_image(panel.width, panel.height, Color(0.0))});
     figure.scale = LogHeatScale{1e5, "steps"};
     const Image image = draw_figure(figure, size, std::nullopt);
-    // The bar's row, 6 pixels into the 44-pixel strip: black at its left end, white at its right
-    const int row = 240 - 44 + 10;
-    CHECK(image.at(150 + 8, row) == Color(0.0));
-    CHECK(image.at(320 - 5 * 8 - 1, row) == Color(1.0));
+    // At 240 lines every length is half the 480-line layout's: the bar starts 3 rows into the
+    // strip and is 7 high; it runs from 79 (margin 4 + label 75) to 290 (29 short of the edge,
+    // for half the last number and the margin). Black at its left end, white at its right.
+    const int row = 240 - figure_text_sizes(240).scale_strip + 3 + 3;
+    CHECK(image.at(79, row) == Color(0.0));
+    CHECK(image.at(78, row) != Color(0.0));
+    CHECK(image.at(290, row) == Color(1.0));
 }
 
 TEST_CASE("log_heat_colour: black at 1 or less and for NaN, white at the top", "[app]") {

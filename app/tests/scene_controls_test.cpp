@@ -1,5 +1,6 @@
 #include "app/view/scene_controls.h"
 
+#include <filesystem>
 #include <limits>
 #include <map>
 #include <string>
@@ -28,16 +29,58 @@ std::string value_of(const std::vector<SceneControl>& controls, const std::strin
 
 }  // namespace
 
-TEST_CASE("scene_controls: the offset where a light casts shadows, the samples, the seed",
+TEST_CASE("scene_controls: the offset where a light casts shadows, the samples where it samples",
           "[app]") {
     const std::vector<SceneControl> lit = scene_controls(lit_scene());
     CHECK(value_of(lit, "offset") == "error-bound");
-    CHECK(value_of(lit, "spp") == "1");
+    CHECK(value_of(lit, "spp") == "(none)");  // one sample per pixel: no stage 8
+    CHECK(value_of(lit, "seed") == "(none)");
     CHECK(value_of(lit, "lightsamples") == "(none)");  // no quad light
     CHECK(value_of(lit, "ior") == "(none)");           // nothing transmits
+    const std::vector<SceneControl> sampled = scene_controls(lit_scene("spp 4\n"));
+    CHECK(value_of(sampled, "spp") == "4");
+    CHECK(value_of(sampled, "pixelsampling") == "jittered");
+    CHECK(value_of(sampled, "seed") != "(none)");
     const std::vector<SceneControl> dark = scene_controls(
         parse_scene("size 4 4\ncamera 0 0 4 0 0 0 0 1 0 45\nsphere 0 0 0 1\n", "dark.test", "."));
-    CHECK(value_of(dark, "offset") == "(none)");
+    CHECK(dark.empty());
+}
+
+TEST_CASE("scene_controls: the lecture scenes get the controls of the stages they use", "[app]") {
+    const auto names_of = [](const std::string& relative) {
+        const Scene scene = load_scene(std::string(RAYSTEP_SOURCE_DIR) + "/scenes/" + relative);
+        std::string names;
+        for (const SceneControl& control : scene_controls(scene))
+            names += (names.empty() ? "" : " ") + control.name;
+        return names;
+    };
+    // Stage 2: rays from a camera, nothing to light or sample
+    CHECK(names_of("stage2/perspective-wide.test").empty());
+    // Stage 6: a point light's shadows
+    CHECK(names_of("stage6/cornell-box.test") == "offset epsilon");
+    // Stage 8: an area light, sampled
+    CHECK(names_of("demos/soft-shadows.test") ==
+          "offset epsilon spp pixelsampling seed lightsamples lightstratify");
+    // Stage 8's antialiasing: samples per pixel, no light
+    CHECK(names_of("demos/aliasing.test") == "spp pixelsampling seed");
+    // Stage 9: glass under a point light
+    CHECK(names_of("stage9/glass-sphere.test") == "offset epsilon ior");
+}
+
+TEST_CASE("scene_controls: no scene of stages 2 to 7 shows a stage-8 or stage-9 control", "[app]") {
+    for (int stage = 2; stage <= 7; ++stage) {
+        const std::filesystem::path folder = std::filesystem::path(RAYSTEP_SOURCE_DIR) / "scenes" /
+                                             ("stage" + std::to_string(stage));
+        for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+            if (entry.path().extension() != ".test") continue;
+            CAPTURE(entry.path().string());
+            for (const SceneControl& control : scene_controls(load_scene(entry.path().string()))) {
+                CAPTURE(control.name);
+                CHECK((control.name == "offset" || control.name == "epsilon"));
+                CHECK(stage >= 3);  // stage 2's scenes have no lights: no control at all
+            }
+        }
+    }
 }
 
 TEST_CASE("apply_scene_controls: every sample count a scene file may ask for is taken back",

@@ -7,6 +7,7 @@
 
 #include "base/scene/ray_offset.h"
 #include "base/scene/sample_pattern.h"
+#include "base/scene/scene_features.h"
 
 namespace raystep {
 
@@ -61,9 +62,8 @@ bool transmits(const Material& material) {
 
 std::vector<SceneControl> scene_controls(const Scene& scene) {
     std::vector<SceneControl> controls;
-    const bool lit = !scene.point_lights.empty() || !scene.directional_lights.empty() ||
-                     !scene.spot_lights.empty() || !scene.quad_lights.empty();
-    if (lit) {
+    const SceneFeatures features = scene_features(scene);
+    if (features.uses_lights()) {
         controls.push_back({"offset",
                             "shadow-ray offset",
                             "choice",
@@ -75,15 +75,17 @@ std::vector<SceneControl> scene_controls(const Scene& scene) {
                             {},
                             number_text(scene.ray_offset.epsilon)});
     }
-    controls.push_back(
-        {"spp", "samples per pixel", "number", {}, std::to_string(scene.samples_per_pixel)});
-    controls.push_back({"pixelsampling",
-                        "pixel sampling",
-                        "choice",
-                        {"jittered", "regular", "random"},
-                        std::string(sample_pattern_name(scene.pixel_sampling))});
-    controls.push_back({"seed", "seed", "number", {}, std::to_string(scene.seed)});
-    if (!scene.quad_lights.empty()) {
+    if (features.uses_sampling()) {
+        controls.push_back(
+            {"spp", "samples per pixel", "number", {}, std::to_string(scene.samples_per_pixel)});
+        controls.push_back({"pixelsampling",
+                            "pixel sampling",
+                            "choice",
+                            {"jittered", "regular", "random"},
+                            std::string(sample_pattern_name(scene.pixel_sampling))});
+        controls.push_back({"seed", "seed", "number", {}, std::to_string(scene.seed)});
+    }
+    if (features.quad_lights > 0) {
         controls.push_back({"lightsamples",
                             "light samples per quad light",
                             "number",
@@ -95,14 +97,16 @@ std::vector<SceneControl> scene_controls(const Scene& scene) {
                             {"on", "off"},
                             scene.light_stratify ? "on" : "off"});
     }
-    for (const Material& material : scene.materials) {
-        if (transmits(material)) {
-            controls.push_back({"ior",
-                                "index of refraction of every glass",
-                                "number",
-                                {},
-                                number_text(material.index)});
-            break;
+    if (features.uses_refraction()) {
+        for (const Material& material : scene.materials) {
+            if (transmits(material)) {
+                controls.push_back({"ior",
+                                    "index of refraction of every glass",
+                                    "number",
+                                    {},
+                                    number_text(material.index)});
+                break;
+            }
         }
     }
     return controls;

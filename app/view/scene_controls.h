@@ -11,7 +11,8 @@ namespace raystep {
 // The controls of `raystep view`: what a lecturer turns while the class watches, each a setting
 // of the scene file that the page overrides for the next render without editing the file. They
 // are the parameters of the lecture demos: the shadow-ray offset of shadow-acne, the samples of
-// aliasing and soft-shadows, the index of refraction.
+// aliasing and soft-shadows, the index of refraction. A scene gets those of the stages it uses
+// (its SceneFeatures), so that a stage-2 scene shows no stage-8 sampling.
 
 /// One control as the page draws it.
 struct SceneControl {
@@ -22,9 +23,11 @@ struct SceneControl {
     std::string scene_value;  ///< the scene's own setting, as the control shows it
 };
 
-/// The controls that apply to `scene`: the ray offset where a light casts shadows; samples per
-/// pixel, their pattern and the seed; light samples where there is a quad light; the index of
-/// refraction where a material transmits.
+/// The controls of what `scene` uses, by its scene_features: the ray offset where a light casts
+/// shadows (stage 6); samples per pixel, their pattern and the seed where it samples (stage 8:
+/// more than one sample per pixel, or a quad light); light samples where there is a quad light;
+/// the index of refraction where something transmits (stage 9). None for a scene of stages 1 to
+/// 5, which has no setting that a control could change.
 std::vector<SceneControl> scene_controls(const Scene& scene);
 
 /// The scene with the controls' values in place of its own settings. An empty value keeps the

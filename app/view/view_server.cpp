@@ -8,6 +8,7 @@
 #include <fstream>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <thread>
 
 #include <httplib.h>
@@ -15,6 +16,7 @@
 
 #include "app/compare/reference_image.h"
 #include "app/demo/demo_list.h"
+#include "app/demo/demo_size.h"
 #include "app/demo/label_text.h"
 #include "app/trace/pixel_trace.h"
 #include "app/view/display_pixels.h"
@@ -266,9 +268,18 @@ void send_reference(const ViewSession& session, ReferenceFiles& references,
     response.set_content(bytes.str(), "image/png");
 }
 
+// The demo's figure at the size the page asks for: the room it has on the screen, in the screen's
+// pixels, so that a projector shows text drawn for it rather than a small figure scaled up.
 void send_demo(const httplib::Request& request, httplib::Response& response) {
     const DemoEntry& demo = find_demo(request.get_param_value("name"));
-    const DemoSize size;
+    DemoSize size;
+    if (request.has_param("size")) {
+        try {
+            size = parse_demo_size(request.get_param_value("size"));
+        } catch (const std::invalid_argument& problem) {
+            throw std::invalid_argument(std::string("size: ") + problem.what());
+        }
+    }
     // With a value of the demo's own parameter, the demo at that value alone.
     const std::string parameter(demo.parameter.name);
     const bool with_value = !parameter.empty() && request.has_param(parameter.c_str());
@@ -278,7 +289,10 @@ void send_demo(const httplib::Request& request, httplib::Response& response) {
                     size, find_label_font());
     LiveRender::Tile whole{{0, 0, image.width(), image.height()}, {}};
     append_display_pixels(image, whole.rect, whole.pixels);
-    send_frame(response, json{{"name", std::string(demo.name)}}, {whole});
+    send_frame(
+        response,
+        json{{"name", std::string(demo.name)}, {"width", size.width}, {"height", size.height}},
+        {whole});
 }
 
 // Answers std::invalid_argument with 400 and its message, anything else with 500: a stub's

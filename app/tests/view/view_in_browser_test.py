@@ -159,16 +159,22 @@ def main():
         generation = wait_for_render(browser, generation)
 
         # A control value the server refuses stays said, its field marked, while the image is
-        # the last render's; a value it takes renders again.
-        set_control(browser, "spp", "abc")
-        browser.wait_until("document.querySelector('#controls [name=spp]')"
+        # the last render's; a value it takes renders again. The scene's controls are its
+        # point light's shadow-ray offset: it has no sampling to turn.
+        names = browser.evaluate("[...document.querySelectorAll('#controls [name]')]"
+                                 ".map((c) => c.name)")
+        assert names == ["offset", "epsilon"], names
+        set_control(browser, "offset", "along-ray")
+        generation = wait_for_render(browser, generation)
+        set_control(browser, "epsilon", "abc")
+        browser.wait_until("document.querySelector('#controls [name=epsilon]')"
                            ".classList.contains('refused')")
         time.sleep(1.5)  # three of the tiles' polls, which used to write over it
         status = browser.evaluate("document.getElementById('status').textContent")
-        assert status.startswith("not rendered: control spp"), status
-        set_control(browser, "spp", "1")
+        assert status.startswith("not rendered: control epsilon"), status
+        set_control(browser, "epsilon", "1e-4")
         generation = wait_for_render(browser, generation)
-        assert not browser.evaluate("document.querySelector('#controls [name=spp]')"
+        assert not browser.evaluate("document.querySelector('#controls [name=epsilon]')"
                                     ".classList.contains('refused')")
 
         # An edit of the scene file renders again without a click; a broken one shows file:line
@@ -195,8 +201,9 @@ def main():
                          "'#demo-list select[aria-label=\"triangle test\"]');"
                          "s.value = 'intersect_triangle_halfspaces';"
                          "s.dispatchEvent(new Event('change')); })()")
-        browser.wait_until("document.getElementById('demo-caption').textContent === 'raystep "
-                           "demo watertight (triangle test: intersect_triangle_halfspaces)'")
+        browser.wait_until("(() => { const c = document.getElementById('demo-caption')"
+                           ".textContent; return c.startsWith('raystep demo watertight --size ') "
+                           "&& c.endsWith(' (triangle test: intersect_triangle_halfspaces)'); })()")
         browser.evaluate("[...document.querySelectorAll('#demo-list div')].find((d) => "
                          "d.textContent.includes('shadow-acne:')).querySelectorAll('button')[1]"
                          ".click()")

@@ -75,6 +75,19 @@ def check_a_bad_control_value_is_a_message_not_a_render():
             assert status == 400 and words in body, (query, status, body)
 
 
+def check_a_demo_is_drawn_at_the_size_the_page_asks_and_a_bad_size_is_a_message():
+    # The page asks for its figure at the room it has on the screen (view.js, demoRequestSize).
+    with Served([SCENE]) as view:
+        header, tiles = view.frame("/api/demo?name=ray-directions&size=800x450")
+        assert (header["width"], header["height"]) == (800, 450), header
+        assert tiles[0][0] == (0, 0, 800, 450), tiles[0][0]
+        for size, words in (("800", b"size: '800' has no 'x'"),
+                            ("100x100", b"size: '100x100' is too small"),
+                            ("8000x4500", b"size: '8000x4500' is too large")):
+            status, _, body = view.request("/api/demo?name=ray-directions&size=" + size)
+            assert status == 400 and words in body, (size, status, body)
+
+
 def check_a_scene_s_own_sample_count_and_epsilon_0_are_controls_it_takes():
     # The page sends the scene's own values back: any spp a scene may ask for (up to 2^16) is
     # one the control takes; and epsilon 0 is the shadow-acne lecture's first case.

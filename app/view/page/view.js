@@ -13,8 +13,10 @@ const page = {
   sequence: 0,             // the last tile drawn
   renderState: "idle",
   selected: null,          // the clicked pixel, {x, y}
+  zoom: 1,                 // the images' zoom as drawn: screen pixels (CSS) per image pixel
   windowZoom: null,        // the zoom chosen in the window; null: fitted to it
   zoomBeforeFullScreen: null,
+  fullScreenZoom: null,    // the zoom chosen in full screen; null: as large as fits
   controls: {},            // the controls' values as the form holds them
   referenceRequest: 0,     // counts showReference's calls: only the latest may draw
   traceRequest: 0,         // counts trace requests: only the latest may fill the panel
@@ -80,13 +82,14 @@ async function loadState() {
   document.querySelector("aside").hidden = !state.scene.file;
   sizeCanvas($("render"), state.scene.width || 1, state.scene.height || 1);
   fitZoomToWindow();
+  layout();
   return state;
 }
 
 // Until the zoom is chosen, the largest whole zoom at which the render and the reference beside
 // it fit beside the side panel.
 function fitZoomToWindow() {
-  if (page.windowZoom !== null || !page.scene || !page.scene.width) return;
+  if (page.windowZoom !== null || !page.scene || !page.scene.width || isFullScreen()) return;
   const beside = $("reference-mode").value === "beside" ? 2 : 1;
   const room = window.innerWidth - document.querySelector("aside").offsetWidth - 80;
   const zoom = Math.floor(room / (beside * page.scene.width));
@@ -138,6 +141,12 @@ function fillControls(controls) {
     form.append(label);
   }
   page.controls = controlValues();
+  // Only what the scene uses has a control (app/view/scene_controls.h): a scene of stages 1 to 5
+  // has none, and says so.
+  form.hidden = controls.length === 0;
+  $("controls-hint").hidden = controls.length === 0;
+  $("no-controls").hidden = controls.length !== 0;
+  document.body.dataset.controls = String(controls.length);
 }
 
 // A scene that does not load: its error, file:line, and nothing left of what it showed before
@@ -190,7 +199,7 @@ function showRenderError(message) {
   if (message) setStatus("not rendered: " + message + " (the image is the last render)");
 }
 
-function sizeCanvas(canvas, width, height, zoom = Number($("zoom").value)) {
+function sizeCanvas(canvas, width, height, zoom = page.zoom) {
   if (canvas.width !== width) canvas.width = width;
   if (canvas.height !== height) canvas.height = height;
   canvas.style.width = width * zoom + "px";
@@ -290,6 +299,7 @@ async function showReference() {
     $("reference-caption").textContent = page.view;
     $("reference-source").textContent = `(${page.scene.reference_source})`;
     applySlider();
+    layout();
   } catch (error) {
     if (request === page.referenceRequest) $("reference-caption").textContent = error.message;
   }
@@ -321,7 +331,7 @@ function pixelAt(event) {
 function placeMarker() {
   const marker = $("marker");
   if (!page.selected) { marker.hidden = true; return; }
-  const zoom = Number($("zoom").value);
+  const zoom = page.zoom;
   marker.hidden = false;
   marker.style.left = page.selected.x * zoom - 1 + "px";
   marker.style.top = page.selected.y * zoom - 1 + "px";
@@ -470,18 +480,70 @@ function demoParameterControl(demo) {
   return select;
 }
 
+// The demos take the scene's place while they are shown, so that the figure is drawn where the
+// window shows it, not under the render.
+function showDemos(shown) {
+  $("demos").hidden = !shown;
+  document.querySelector("main").hidden = shown;
+  $("show-demos").setAttribute("aria-pressed", String(shown));
+  if (shown) window.scrollTo(0, 0);
+  layout();
+}
+
+// The room the figure has: its column's width, and the window's height under the header and the
+// caption.
+function demoRoom() {
+  const figure = $("demo-figure");
+  const top = Math.max(0, $("demo-canvas").getBoundingClientRect().top -
+                              figure.getBoundingClientRect().top);
+  const header = document.querySelector("header").offsetHeight;
+  return { width: figure.clientWidth,
+           height: window.innerHeight - header - top - 2 * emPixels() };
+}
+
+// The page's text height in CSS pixels: the gaps and paddings of view.css are in it.
+function emPixels() {
+  return parseFloat(getComputedStyle(document.body).fontSize) || 14;
+}
+
+// The size to ask the server for: the room in the screen's own pixels, 4:3 to 16:9, from 320 x 240
+// (the smallest the server draws, app/demo/demo_size.h) to 1920 x 1080, past which a figure takes
+// long to render and the page waits for it. A projector shows text drawn at its size, not a small
+// figure scaled up, nor a large one scaled down.
+function demoRequestSize() {
+  const room = demoRoom();
+  const ratio = window.devicePixelRatio || 1;
+  let width = Math.max(1, room.width) * ratio;
+  let height = Math.max(1, room.height) * ratio;
+  if (width > height * 16 / 9) width = height * 16 / 9;
+  if (width < height * 4 / 3) height = width * 3 / 4;
+  const scale = Math.max(Math.min(1, 1920 / width, 1080 / height), 320 / width, 240 / height);
+  return `${Math.round(width * scale)}x${Math.round(height * scale)}`;
+}
+
+// The figure whole in its room: scaled down (or up) to the largest size that fits.
+function fitDemoFigure() {
+  const canvas = $("demo-canvas");
+  if ($("demos").hidden || $("demo-figure").hidden || canvas.width <= 1) return;
+  const room = demoRoom();
+  const scale = Math.max(0.05, Math.min(room.width / canvas.width, room.height / canvas.height));
+  canvas.style.width = Math.floor(canvas.width * scale) + "px";
+  canvas.style.height = Math.floor(canvas.height * scale) + "px";
+}
+
 async function showDemoFigure(demo, choice = "") {
   $("demo-figure").hidden = false;
   $("demo-caption").textContent = `rendering ${demo.name}...`;
-  const params = { name: demo.name };
+  const params = { name: demo.name, size: demoRequestSize() };
   if (choice) params[demo.parameter.name] = choice;
   try {
     const frame = await readFrame(await api("demo", params));
     const tile = frame.images[0];
     sizeCanvas($("demo-canvas"), tile.image.width, tile.image.height, 1);
     $("demo-canvas").getContext("2d").putImageData(tile.image, 0, 0);
-    $("demo-caption").textContent = `raystep demo ${demo.name}` +
+    $("demo-caption").textContent = `raystep demo ${demo.name} --size ${params.size}` +
                                     (choice ? ` (${demo.parameter.label}: ${choice})` : "");
+    fitDemoFigure();
     $("demo-figure").scrollIntoView({ block: "nearest" });
   } catch (error) {
     $("demo-caption").textContent = `${demo.name} stopped: ${error.message}`;
@@ -496,7 +558,7 @@ async function exploreDemo(demo) {
     if (element.name in preset) element.value = preset[element.name];
   }
   page.controls = controlValues();
-  $("demos").hidden = true;
+  showDemos(false);
   await startRender();
 }
 
@@ -535,11 +597,23 @@ async function watchServer() {
 // ---- zoom and full screen ---------------------------------------------------------------------
 
 function setZoom(zoom) {
+  drawAtZoom(zoom);
+  // The list holds 1x to 4x, and the zoom drawn when it is another (fitted to full screen).
   const select = $("zoom");
-  if (![...select.options].some((option) => option.value === String(zoom))) {
-    select.append(new Option(zoom + "x", String(zoom)));
+  const value = String(page.zoom);
+  for (const option of [...select.options]) {
+    if (!["1", "2", "3", "4", value].includes(option.value)) option.remove();
   }
-  select.value = String(zoom);
+  if (![...select.options].some((option) => option.value === value)) {
+    const label = Number.isInteger(page.zoom) ? value : page.zoom.toFixed(2);
+    select.append(new Option(label + "x", value));
+  }
+  select.value = value;
+}
+
+// The images at `zoom`, the list left as it is: for the trials of fitFullScreen.
+function drawAtZoom(zoom) {
+  page.zoom = Number(zoom);
   for (const id of ["render", "reference", "reference-overlay"]) {
     const canvas = $(id);
     sizeCanvas(canvas, canvas.width, canvas.height);
@@ -547,15 +621,63 @@ function setZoom(zoom) {
   placeMarker();
 }
 
-// The largest whole zoom at which the render, and the reference beside it, fit the screen: whole,
-// so that each pixel stays a square of the same size.
-function fittingZoom() {
+function isFullScreen() {
+  return document.body.classList.contains("full-screen");
+}
+
+// What changes the room the images have (the window's size, the browser's zoom, full screen, the
+// reference's place, a new scene) sizes them again.
+function layout() {
+  const header = document.querySelector("header");
+  document.documentElement.style.setProperty("--header-height", header.offsetHeight + "px");
+  fitFullScreen();
+  fitDemoFigure();
+}
+
+// True when something of the images or the controls is outside the window, or the page scrolls.
+function overflowsWindow() {
+  const root = document.documentElement;
+  if (root.scrollHeight > window.innerHeight + 1 || root.scrollWidth > window.innerWidth + 1) {
+    return true;
+  }
+  const aside = document.querySelector("aside");
+  const asideLeft = aside.offsetParent ? aside.getBoundingClientRect().left : window.innerWidth;
+  const outside = [...document.querySelectorAll("#images canvas, #slider")].some((element) => {
+    if (!element.offsetParent) return false;
+    const box = element.getBoundingClientRect();
+    return box.bottom > window.innerHeight + 0.5 || box.right > asideLeft + 0.5 ||
+           box.left < -0.5;
+  });
+  // The reference beside the render, not over it.
+  const reference = $("reference");
+  return outside || (Boolean(reference.offsetParent) &&
+                     reference.getBoundingClientRect().left <
+                         $("render").getBoundingClientRect().right - 0.5);
+}
+
+// In full screen: the images as large as fits beside the controls, at the zoom chosen in full
+// screen at most. Whole zooms from 1 up, so that each image pixel stays a square of the same
+// size; below 1 where even 1x does not fit (a small window, or the browser zoomed in). The room
+// is measured with the images at their smallest, then the zoom is taken down until nothing
+// overflows: captions wrap and the header's height varies, and this way neither is assumed.
+function fitFullScreen() {
+  if (!isFullScreen() || document.querySelector("main").hidden) return;
   const canvas = $("render");
-  const beside = $("reference-mode").value === "beside" ? 2 : 1;
-  const width = (window.innerWidth - 40) / (beside * canvas.width);
-  const height = (window.innerHeight - $("render").getBoundingClientRect().top - 40) /
-                 canvas.height;
-  return Math.max(1, Math.floor(Math.min(width, height)));
+  if (!page.scene || !page.scene.width || canvas.width <= 1) return;
+  const beside = !$("reference-figure").hidden && $("reference").width > 1;
+  const gap = beside ? emPixels() : 0;
+  drawAtZoom(1 / Math.max(canvas.width, canvas.height));
+  const room = $("images").clientWidth - gap;
+  const below = $("slider").hidden ? 0 : $("slider").offsetHeight;
+  const height = window.innerHeight - canvas.getBoundingClientRect().top - below - emPixels();
+  const width = beside ? room / (canvas.width + $("reference").width) : room / canvas.width;
+  let zoom = Math.min(width, height / canvas.height, page.fullScreenZoom ?? Infinity);
+  zoom = zoom >= 1 ? Math.floor(zoom) : Math.floor(zoom * 100) / 100;
+  drawAtZoom(Math.max(zoom, 0.05));
+  while (overflowsWindow() && page.zoom > 0.05) {
+    drawAtZoom(page.zoom > 1 ? page.zoom - 1 : Math.floor(page.zoom * 95) / 100);
+  }
+  setZoom(page.zoom);
 }
 
 // ---- start -----------------------------------------------------------------------------------
@@ -565,18 +687,24 @@ window.addEventListener("DOMContentLoaded", async () => {
     const { x, y } = pixelAt(event);
     tracePixel(x, y);
   });
-  $("reference-mode").addEventListener("change", showReference);
+  $("reference-mode").addEventListener("change", () => { showReference(); layout(); });
   $("slider").addEventListener("input", applySlider);
   $("zoom").addEventListener("change", () => {
-    if (!document.fullscreenElement) page.windowZoom = $("zoom").value;
-    setZoom($("zoom").value);
+    if (isFullScreen()) {
+      page.fullScreenZoom = Number($("zoom").value);
+      setZoom(page.fullScreenZoom);
+      fitFullScreen();
+    } else {
+      page.windowZoom = $("zoom").value;
+      setZoom($("zoom").value);
+    }
   });
   $("scene-list").addEventListener("change", async () => {
     if (!$("scene-list").value) return;
     await openScene($("scene-list").value);
     await startRender();
   });
-  $("show-demos").addEventListener("click", () => { $("demos").hidden = !$("demos").hidden; });
+  $("show-demos").addEventListener("click", () => showDemos($("demos").hidden));
   $("full-screen").addEventListener("click", () => {
     if (document.fullscreenElement) {
       document.exitFullscreen();
@@ -586,12 +714,22 @@ window.addEventListener("DOMContentLoaded", async () => {
   });
   document.addEventListener("fullscreenchange", () => {
     const full = Boolean(document.fullscreenElement);
+    if (full === isFullScreen()) return;
     document.body.classList.toggle("full-screen", full);
-    if (full) page.zoomBeforeFullScreen = $("zoom").value;
-    setZoom(full ? fittingZoom() : page.zoomBeforeFullScreen);
+    if (full) {
+      page.zoomBeforeFullScreen = page.zoom;
+      page.fullScreenZoom = null;
+      // The controls are what the class reads the parameters from: open, whatever they were.
+      $("controls-box").open = true;
+    } else {
+      setZoom(page.zoomBeforeFullScreen);
+    }
+    layout();
   });
+  // The browser's zoom changes the window's size in CSS pixels, and says so by this event too.
+  window.addEventListener("resize", layout);
   const state = await loadState();
-  if (!state.scene.file) $("demos").hidden = false;
+  if (!state.scene.file) showDemos(true);
   await startRender();
   pollTiles();
   watchServer();
