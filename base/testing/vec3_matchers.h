@@ -1,24 +1,21 @@
 #pragma once
 
-// How tests compare and print vectors: a failed check shows both vectors in full precision
-// instead of "{?}" or "false".
+// How tests compare and print vectors: a failed check shows both vectors exactly (number_text.h)
+// and the tolerance at its size, instead of "{?}" or "false".
 
-#include <cstdio>
+#include <algorithm>
 #include <string>
 
 #include <glm/geometric.hpp>
 
 #include "base/math/types.h"
 #include "base/testing/catch.h"
+#include "base/testing/number_text.h"
 
 namespace Catch {
 template <>
 struct StringMaker<raystep::Vec3> {
-    static std::string convert(const raystep::Vec3& v) {
-        char text[96];
-        std::snprintf(text, sizeof text, "(%.17g, %.17g, %.17g)", v.x, v.y, v.z);
-        return text;
-    }
+    static std::string convert(const raystep::Vec3& v) { return raystep::testing::exact_text(v); }
 };
 }  // namespace Catch
 
@@ -31,16 +28,18 @@ class NearVec3 : public MatcherBase<Vec3> {
     NearVec3(const Vec3& expected, double tolerance) : expected_(expected), tolerance_(tolerance) {}
 
     bool match(const Vec3& got) const override {
-        const double scale = std::max(1.0, glm::length(expected_));
-        return glm::length(got - expected_) <= tolerance_ * scale;  // false for NaN
+        return glm::length(got - expected_) <= tolerance_ * scale();  // false for NaN
     }
 
+    /// "is within 1e-15 of (0, 0, 1)": the distance the tolerance allows, scaled by |expected|
+    /// above 1 ("is within 1.3e-13 of (3, 4, 12)" for 1e-14).
     std::string describe() const override {
-        return "is within " + Catch::StringMaker<double>::convert(tolerance_) + " of " +
-               Catch::StringMaker<Vec3>::convert(expected_);
+        return "is within " + size_text(tolerance_ * scale()) + " of " + exact_text(expected_);
     }
 
   private:
+    double scale() const { return std::max(1.0, glm::length(expected_)); }
+
     Vec3 expected_;
     double tolerance_;
 };

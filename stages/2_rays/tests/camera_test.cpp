@@ -3,7 +3,9 @@
 //
 // The ray tests build their cameras by hand, so perspective_ray and orthographic_ray can be tested
 // before make_perspective_camera and make_orthographic_camera work. Each test calls your function
-// before its CHECKs: a stub ends the test case at its first call and is reported once.
+// before its CHECKs: a stub ends the test case at its first call and is reported once. The random
+// loops REQUIRE, so a bug is reported at the first case that shows it. The cameras are built with
+// your stage-1 functions: where stage 1's tests fail, fix those first.
 
 #include <cmath>
 #include <stdexcept>
@@ -16,15 +18,17 @@
 
 #include "base/math/portable_random.h"
 #include "base/testing/catch.h"
+#include "base/testing/number_text.h"
+#include "base/testing/uses.h"
 #include "base/testing/vec3_matchers.h"
 #include "stages/2_rays/camera.h"
 
 using namespace raystep;
+using raystep::testing::exact_text;
 using raystep::testing::IsNear;
+using raystep::testing::uses;
 
 namespace {
-
-using Catch::Detail::stringify;
 
 // The camera make_perspective_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, fovy, width, height) gives,
 // built by hand: at +5 z looking at the origin, +y up, so u = +x, v = +y, w = +z.
@@ -49,17 +53,18 @@ PerspectiveCamera camera_looking(const Vec3& from, const Vec3& at, const Vec3& u
 }
 
 std::string text(const PerspectiveCamera& c) {
-    return "camera: eye " + stringify(c.eye) + ", u " + stringify(c.frame.u) + ", v " +
-           stringify(c.frame.v) + ", w " + stringify(c.frame.w) + ", half_width " +
-           stringify(c.half_width) + ", half_height " + stringify(c.half_height) + ", " +
+    return "camera: eye " + exact_text(c.eye) + ", u " + exact_text(c.frame.u) + ", v " +
+           exact_text(c.frame.v) + ", w " + exact_text(c.frame.w) + ", half_width " +
+           exact_text(c.half_width) + ", half_height " + exact_text(c.half_height) + ", " +
            std::to_string(c.width) + " x " + std::to_string(c.height) + " pixels";
 }
 
 std::string text(const OrthographicCamera& c) {
-    return "camera: eye " + stringify(c.eye) + ", u " + stringify(c.frame.u) + ", v " +
-           stringify(c.frame.v) + ", w " + stringify(c.frame.w) + ", window [" + stringify(c.left) +
-           ", " + stringify(c.right) + "] x [" + stringify(c.bottom) + ", " + stringify(c.top) +
-           "], " + std::to_string(c.width) + " x " + std::to_string(c.height) + " pixels";
+    return "camera: eye " + exact_text(c.eye) + ", u " + exact_text(c.frame.u) + ", v " +
+           exact_text(c.frame.v) + ", w " + exact_text(c.frame.w) + ", window [" +
+           exact_text(c.left) + ", " + exact_text(c.right) + "] x [" + exact_text(c.bottom) + ", " +
+           exact_text(c.top) + "], " + std::to_string(c.width) + " x " + std::to_string(c.height) +
+           " pixels";
 }
 
 // The orthographic camera at +5 z looking at the origin, +y up, over the given window.
@@ -95,6 +100,7 @@ bool is_finite(const Vec3& v) {
 }  // namespace
 
 TEST_CASE("make_perspective_camera: frame, eye and half extents", "[stage2]") {
+    INFO(uses("make_perspective_camera", "stage 1's orthonormal_frame"));
     INFO(
         "make_perspective_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 90, 200, 100): tan(45 degrees) "
         "= 1, and the image is twice as wide as tall");
@@ -112,24 +118,26 @@ TEST_CASE("make_perspective_camera: frame, eye and half extents", "[stage2]") {
 
 TEST_CASE("make_perspective_camera: agrees with the camera built by hand on random input",
           "[stage2]") {
+    INFO(uses("make_perspective_camera", "stage 1's orthonormal_frame"));
     for (int k = 0; k < 300; ++k) {
         PortableRandom random(22, static_cast<std::uint64_t>(k));  // case k, on every platform
         const auto [from, at, up, fovy, width, height] = random_camera_input(random);
         CAPTURE(k, from, at, up, fovy, width, height);
         const PerspectiveCamera c = make_perspective_camera(from, at, up, fovy, width, height);
         const PerspectiveCamera expected = camera_looking(from, at, up, fovy, width, height);
-        CHECK_THAT(c.eye, IsNear(expected.eye, 1e-15));
-        CHECK_THAT(c.frame.u, IsNear(expected.frame.u, 1e-9));
-        CHECK_THAT(c.frame.v, IsNear(expected.frame.v, 1e-9));
-        CHECK_THAT(c.frame.w, IsNear(expected.frame.w, 1e-9));
-        CHECK(c.half_width == Approx(expected.half_width).epsilon(1e-12));
-        CHECK(c.half_height == Approx(expected.half_height).epsilon(1e-12));
-        CHECK(c.width == width);
-        CHECK(c.height == height);
+        REQUIRE_THAT(c.eye, IsNear(expected.eye, 1e-15));
+        REQUIRE_THAT(c.frame.u, IsNear(expected.frame.u, 1e-9));
+        REQUIRE_THAT(c.frame.v, IsNear(expected.frame.v, 1e-9));
+        REQUIRE_THAT(c.frame.w, IsNear(expected.frame.w, 1e-9));
+        REQUIRE(c.half_width == Approx(expected.half_width).epsilon(1e-12));
+        REQUIRE(c.half_height == Approx(expected.half_height).epsilon(1e-12));
+        REQUIRE(c.width == width);
+        REQUIRE(c.height == height);
     }
 }
 
 TEST_CASE("perspective_ray: starts at the eye with a unit direction", "[stage2]") {
+    INFO(uses("perspective_ray", "stage 1's normalize"));
     const PerspectiveCamera c = front_camera(60.0, 64, 48);
     INFO(text(c));
     const Ray ray = perspective_ray(c, 10, 20);
@@ -140,6 +148,7 @@ TEST_CASE("perspective_ray: starts at the eye with a unit direction", "[stage2]"
 }
 
 TEST_CASE("perspective_ray: the centre pixel of an odd-sized image looks at lookat", "[stage2]") {
+    INFO(uses("perspective_ray", "stage 1's normalize"));
     const PerspectiveCamera c = front_camera(45.0, 101, 51);
     INFO(text(c));
     const Ray centre = perspective_ray(c, 50, 25);
@@ -147,6 +156,7 @@ TEST_CASE("perspective_ray: the centre pixel of an odd-sized image looks at look
 }
 
 TEST_CASE("perspective_ray: goes through pixel centres, not corners", "[stage2]") {
+    INFO(uses("perspective_ray", "stage 1's normalize"));
     INFO(
         "2 x 2 pixels, fovy 90: the image plane at distance 1 spans [-1, 1] x [-1, 1], and pixel "
         "(0, 0) covers its top-left quarter, whose centre is (-0.5, 0.5).");
@@ -159,6 +169,7 @@ TEST_CASE("perspective_ray: goes through pixel centres, not corners", "[stage2]"
 }
 
 TEST_CASE("perspective_ray: row 0 is the top of the image, column 0 the left", "[stage2]") {
+    INFO(uses("perspective_ray", "stage 1's normalize"));
     const PerspectiveCamera c = front_camera(45.0, 40, 30);
     INFO(text(c));
     const Vec3 top_left = perspective_ray(c, 0, 0).direction;
@@ -170,6 +181,7 @@ TEST_CASE("perspective_ray: row 0 is the top of the image, column 0 the left", "
 }
 
 TEST_CASE("perspective_ray: a non-square image widens the horizontal field of view", "[stage2]") {
+    INFO(uses("perspective_ray", "stage 1's normalize"));
     INFO("4 x 2 pixels, fovy 90: half_width = 2. Pixel column 0's centre is at x = -1.5.");
     const PerspectiveCamera c = front_camera(90.0, 4, 2);
     INFO(text(c));
@@ -180,6 +192,7 @@ TEST_CASE("perspective_ray: a non-square image widens the horizontal field of vi
 }
 
 TEST_CASE("perspective_ray: agrees with glm::lookAt and glm::perspective", "[stage2]") {
+    INFO(uses("perspective_ray", "stage 1's normalize"));
     INFO(
         "A point on each ray, projected by OpenGL's matrices, must land on its pixel's centre in "
         "normalized device coordinates.");
@@ -197,12 +210,13 @@ TEST_CASE("perspective_ray: agrees with glm::lookAt and glm::perspective", "[sta
             glm::perspective(glm::radians(fovy), double(width) / height, 0.1, 100.0) *
             glm::lookAt(from, at, up);
         const glm::dvec4 clip = clip_from_world * glm::dvec4(ray.origin + ray.direction, 1.0);
-        CHECK(clip.x / clip.w == Approx(2.0 * (i + 0.5) / width - 1.0).margin(1e-9));
-        CHECK(clip.y / clip.w == Approx(1.0 - 2.0 * (j + 0.5) / height).margin(1e-9));
+        REQUIRE(clip.x / clip.w == Approx(2.0 * (i + 0.5) / width - 1.0).margin(1e-9));
+        REQUIRE(clip.y / clip.w == Approx(1.0 - 2.0 * (j + 0.5) / height).margin(1e-9));
     }
 }
 
 TEST_CASE("perspective_ray: fovy near 0 gives distinct, finite, nearly parallel rays", "[stage2]") {
+    INFO(uses("perspective_ray", "stage 1's normalize"));
     const PerspectiveCamera c = front_camera(1e-6, 64, 64);
     INFO(text(c));
     const Vec3 left = perspective_ray(c, 0, 32).direction;
@@ -214,6 +228,7 @@ TEST_CASE("perspective_ray: fovy near 0 gives distinct, finite, nearly parallel 
 }
 
 TEST_CASE("perspective_ray: fovy near 180 gives finite rays that fan out to the side", "[stage2]") {
+    INFO(uses("perspective_ray", "stage 1's normalize"));
     const PerspectiveCamera c = front_camera(179.999, 64, 64);
     INFO(text(c));
     const Vec3 corner = perspective_ray(c, 0, 0).direction;
@@ -223,6 +238,7 @@ TEST_CASE("perspective_ray: fovy near 180 gives finite rays that fan out to the 
 }
 
 TEST_CASE("make_perspective_camera: fovy outside (0, 180) throws", "[stage2]") {
+    INFO(uses("make_perspective_camera", "stage 1's orthonormal_frame"));
     REQUIRE_THROWS_AS(make_perspective_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 0.0, 10, 10),
                       std::domain_error);
     REQUIRE_THROWS_AS(make_perspective_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 180.0, 10, 10),
@@ -233,17 +249,20 @@ TEST_CASE("make_perspective_camera: fovy outside (0, 180) throws", "[stage2]") {
 
 TEST_CASE("make_perspective_camera: up parallel to the view direction throws, not NaN",
           "[stage2]") {
+    INFO(uses("make_perspective_camera", "stage 1's orthonormal_frame"));
     INFO("Looking straight down at the floor with +y as \"up\".");
     REQUIRE_THROWS_AS(make_perspective_camera({0, 10, 0}, {0, 0, 0}, {0, 1, 0}, 45, 10, 10),
                       std::domain_error);
 }
 
 TEST_CASE("make_perspective_camera: lookfrom equal to lookat throws", "[stage2]") {
+    INFO(uses("make_perspective_camera", "stage 1's orthonormal_frame"));
     REQUIRE_THROWS_AS(make_perspective_camera({1, 1, 1}, {1, 1, 1}, {0, 1, 0}, 45, 10, 10),
                       std::domain_error);
 }
 
 TEST_CASE("make_perspective_camera: an image without pixels throws", "[stage2]") {
+    INFO(uses("make_perspective_camera", "stage 1's orthonormal_frame"));
     REQUIRE_THROWS_AS(make_perspective_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 45.0, 0, 10),
                       std::domain_error);
     REQUIRE_THROWS_AS(make_perspective_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 45.0, 10, -1),
@@ -285,6 +304,7 @@ TEST_CASE("orthographic_ray: the window follows the camera's frame", "[stage2]")
 
 TEST_CASE("make_orthographic_camera: keeps the window and takes the frame of lookfrom, lookat, up",
           "[stage2]") {
+    INFO(uses("make_orthographic_camera", "stage 1's orthonormal_frame"));
     INFO(
         "make_orthographic_camera({5, 0, 0}, {0, 0, 0}, {0, 0, 1}, -1, 2, -3, 4, 20, 10): from "
         "+x looking at the origin with up +z, w = +x, u = up x w = +y, v = w x u = +z");
@@ -303,6 +323,7 @@ TEST_CASE("make_orthographic_camera: keeps the window and takes the frame of loo
 }
 
 TEST_CASE("make_orthographic_camera: an empty window throws", "[stage2]") {
+    INFO(uses("make_orthographic_camera", "stage 1's orthonormal_frame"));
     REQUIRE_THROWS_AS(make_orthographic_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 1, 1, -1, 1, 2, 2),
                       std::domain_error);
     REQUIRE_THROWS_AS(make_orthographic_camera({0, 0, 5}, {0, 0, 0}, {0, 1, 0}, -1, 1, 1, -1, 2, 2),
@@ -310,6 +331,7 @@ TEST_CASE("make_orthographic_camera: an empty window throws", "[stage2]") {
 }
 
 TEST_CASE("make_orthographic_camera: a NaN or infinite window edge throws", "[stage2]") {
+    INFO(uses("make_orthographic_camera", "stage 1's orthonormal_frame"));
     INFO("\"left >= right\" is false for a NaN left, so that test lets NaN through to every ray.");
     const double nan = std::nan("");
     const double inf = HUGE_VAL;

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "base/testing/catch.h"
+#include "base/testing/number_text.h"
 #include "stages/2_rays/ray.h"
 
 using namespace raystep;
@@ -11,8 +12,8 @@ using namespace raystep;
 namespace {
 
 std::string text(const Ray& ray) {
-    return "ray: origin " + Catch::Detail::stringify(ray.origin) + ", direction " +
-           Catch::Detail::stringify(ray.direction);
+    using raystep::testing::exact_text;
+    return "ray: origin " + exact_text(ray.origin) + ", direction " + exact_text(ray.direction);
 }
 
 }  // namespace

@@ -4,7 +4,8 @@
 //   raystep_stage3_tests "intersect_triangle_cramer:*"
 //
 // Each check calls the method once, before its CHECKs: a stub ends the test case at its first
-// call and is reported once.
+// call and is reported once. Where a test tries several rays, it stops at the first that fails,
+// and a failure names the functions the method is built from: start with theirs.
 
 #define GLM_ENABLE_EXPERIMENTAL
 #include <algorithm>
@@ -16,11 +17,15 @@
 
 #include "base/math/portable_random.h"
 #include "base/testing/catch.h"
+#include "base/testing/number_text.h"
+#include "base/testing/uses.h"
 #include "base/testing/vec3_matchers.h"
 #include "stages/3_intersect/intersect.h"
 
 using namespace raystep;
+using raystep::testing::exact_text;
 using raystep::testing::IsNear;
+using raystep::testing::uses;
 
 namespace {
 
@@ -36,25 +41,41 @@ Ray down_at(double x, double y) {
     return {{x, y, 2}, {0, 0, -1}};
 }
 
-// What a failed check prints: the ray and the triangle it was given, in full precision.
-std::string inputs(const Ray& ray, const Triangle& triangle) {
-    using Catch::Detail::stringify;
-    return "ray: origin " + stringify(ray.origin) + ", direction " + stringify(ray.direction) +
-           ", t in [" + stringify(ray.t_min) + ", " + stringify(ray.t_max) +
-           "]\ntriangle: " + stringify(triangle.p0) + ", " + stringify(triangle.p1) + ", " +
-           stringify(triangle.p2);
+// What a method is built from, for its failures: a bug there fails the method too.
+std::string built_from(TriangleTest intersect) {
+    if (intersect == intersect_triangle_projection) {
+        return uses("intersect_triangle_projection", "stage 1's cross and dot");
+    }
+    if (intersect == intersect_triangle_halfspaces) {
+        return uses("intersect_triangle_halfspaces", "stage 1's cross, dot, perpendicular_to");
+    }
+    if (intersect == intersect_triangle_cramer) {
+        return uses("intersect_triangle_cramer", "stage 1's cross and dot");
+    }
+    return uses("intersect_triangle", "the method it calls");
 }
 
-// Whether `intersect` reports a hit for `ray`, with the inputs in the failure message.
+// What a failed check prints: the ray and the triangle it was given, in full precision.
+std::string inputs(const Ray& ray, const Triangle& triangle) {
+    return "ray: origin " + exact_text(ray.origin) + ", direction " + exact_text(ray.direction) +
+           ", t in [" + exact_text(ray.t_min) + ", " + exact_text(ray.t_max) +
+           "]\ntriangle: " + exact_text(triangle.p0) + ", " + exact_text(triangle.p1) + ", " +
+           exact_text(triangle.p2);
+}
+
+// Whether `intersect` reports a hit for `ray`, with the inputs in the failure message; a wrong
+// answer ends the test case.
 void check_hits(TriangleTest intersect, const Ray& ray, const Triangle& triangle, bool expected,
                 const char* why) {
+    INFO(built_from(intersect));
     INFO(why);
     INFO(inputs(ray, triangle));
     const bool hit = intersect(ray, triangle).has_value();
-    CHECK(hit == expected);
+    REQUIRE(hit == expected);
 }
 
 void check_interior_hit(TriangleTest intersect) {
+    INFO(built_from(intersect));
     const Ray ray = down_at(0.25, 0.5);
     INFO(
         "(0.25, 0.5, 0) = 0.25 p0 + 0.25 p1 + 0.5 p2, 2 below the origin: expected t = 2, "
@@ -69,6 +90,7 @@ void check_interior_hit(TriangleTest intersect) {
 }
 
 void check_normal_from_behind(TriangleTest intersect) {
+    INFO(built_from(intersect));
     const Triangle clockwise{{0, 0, 0}, {0, 1, 0}, {1, 0, 0}};
     const Ray ray = down_at(0.2, 0.2);
     INFO(
@@ -137,6 +159,7 @@ void check_collinear_off_axes(TriangleTest intersect) {
 }
 
 void check_agrees_with_glm(TriangleTest intersect) {
+    INFO(built_from(intersect));
     // glm's Moller-Trumbore test as the independent answer. Away from the edges (where rounding
     // may decide either way) every method must give the same answer, t and barycentrics.
     int hits = 0;
@@ -157,19 +180,18 @@ void check_agrees_with_glm(TriangleTest intersect) {
             ++hits;
         }
         // glm leaves t and the barycentrics as they were when it misses: print them on a hit only.
-        using Catch::Detail::stringify;
         INFO("random ray " << k << ": glm says "
-                           << (expected ? "a hit at t = " + stringify(t) +
-                                              ", beta = " + stringify(barycentric.x) +
-                                              ", gamma = " + stringify(barycentric.y)
+                           << (expected ? "a hit at t = " + exact_text(t) +
+                                              ", beta = " + exact_text(barycentric.x) +
+                                              ", gamma = " + exact_text(barycentric.y)
                                         : std::string("a miss")));
         INFO(inputs(ray, tri));
         const std::optional<Hit> hit = intersect(ray, tri);
         REQUIRE(hit.has_value() == expected);
         if (hit) {
-            CHECK(hit->t == Approx(t).epsilon(1e-9));
-            CHECK(hit->beta == Approx(barycentric.x).epsilon(1e-7));
-            CHECK(hit->gamma == Approx(barycentric.y).epsilon(1e-7));
+            REQUIRE(hit->t == Approx(t).epsilon(1e-9));
+            REQUIRE(hit->beta == Approx(barycentric.x).epsilon(1e-7));
+            REQUIRE(hit->gamma == Approx(barycentric.y).epsilon(1e-7));
         }
     }
     CHECK(hits > 150);  // the loop really compared hits, not just misses

@@ -2,7 +2,8 @@
 // these alone with `build/student/bin/raystep_stage4_tests "intersect_aabb:*"`.
 //
 // Each test calls intersect_aabb before its CHECKs: a stub ends the test case at its first call
-// and is reported once. A failure prints the ray and the box.
+// and is reported once. A failure prints the ray and the box; where a test tries several rays, it
+// stops at the first that fails.
 
 #include <cmath>
 #include <limits>
@@ -10,6 +11,7 @@
 
 #include "base/math/portable_random.h"
 #include "base/testing/catch.h"
+#include "base/testing/number_text.h"
 #include "base/testing/vec3_matchers.h"
 #include "stages/4_accel/aabb.h"
 
@@ -23,22 +25,23 @@ const double kInf = std::numeric_limits<double>::infinity();
 const Aabb kCube{{0, 0, 0}, {1, 1, 1}};
 
 std::string inputs(const Ray& ray, const Aabb& box) {
-    using Catch::Detail::stringify;
-    return "ray: origin " + stringify(ray.origin) + ", direction " + stringify(ray.direction) +
-           ", t in [" + stringify(ray.t_min) + ", " + stringify(ray.t_max) + "]\nbox: min " +
-           stringify(box.min) + ", max " + stringify(box.max);
+    using raystep::testing::exact_text;
+    return "ray: origin " + exact_text(ray.origin) + ", direction " + exact_text(ray.direction) +
+           ", t in [" + exact_text(ray.t_min) + ", " + exact_text(ray.t_max) + "]\nbox: min " +
+           exact_text(box.min) + ", max " + exact_text(box.max);
 }
 
 std::optional<Interval> slab(const Ray& ray, const Aabb& box) {
     return intersect_aabb(ray, 1.0 / ray.direction, box);
 }
 
-// Whether the slab test reports a hit, with the inputs in the failure message.
+// Whether the slab test reports a hit, with the inputs in the failure message; a wrong answer ends
+// the test case.
 void check_hits(const Ray& ray, const Aabb& box, bool expected, const char* why) {
     INFO(why);
     INFO(inputs(ray, box));
     const bool hit = slab(ray, box).has_value();
-    CHECK(hit == expected);
+    REQUIRE(hit == expected);
 }
 
 }  // namespace
@@ -139,8 +142,8 @@ TEST_CASE("intersect_aabb: a ray in any face's plane keeps its t_min and t_max",
                 INFO(inputs(ray, kCube));
                 const std::optional<Interval> hit = slab(ray, kCube);
                 REQUIRE(hit);
-                CHECK(hit->enter == 1.25);
-                CHECK(hit->exit == Approx(1.75));
+                REQUIRE(hit->enter == 1.25);
+                REQUIRE(hit->exit == Approx(1.75));
             }
         }
     }
@@ -179,6 +182,6 @@ TEST_CASE("intersect_aabb: rays that touch a box's edge or corner are never lost
         CAPTURE(k);
         INFO(inputs(ray, box));
         const bool hit = slab(ray, box).has_value();
-        CHECK(hit);
+        REQUIRE(hit);
     }
 }

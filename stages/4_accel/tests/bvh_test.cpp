@@ -3,22 +3,27 @@
 // Bvh first, so the constructor comes before the rest.
 //
 // Each test calls your code before its CHECKs: a stub ends the test case at its first call and
-// is reported once. A failure prints the ray.
+// is reported once. A failure prints the ray; where a test tries many rays, it stops at the first
+// that fails.
 //
 // A BVH must give exactly closest_hit's answer: the same primitive and the same t, compared
 // with ==. Both call the same stage-3 tests; only the order differs.
 
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "base/math/portable_random.h"
 #include "base/testing/catch.h"
+#include "base/testing/number_text.h"
+#include "base/testing/uses.h"
 #include "base/testing/vec3_matchers.h"
 #include "stages/4_accel/bvh.h"
 
 using namespace raystep;
+using raystep::testing::uses;
 
 namespace {
 
@@ -42,20 +47,29 @@ Ray random_ray(PortableRandom& random) {
 }
 
 std::string text(const Ray& ray) {
-    using Catch::Detail::stringify;
-    return "ray: origin " + stringify(ray.origin) + ", direction " + stringify(ray.direction) +
-           ", t in [" + stringify(ray.t_min) + ", " + stringify(ray.t_max) + "]";
+    using raystep::testing::exact_text;
+    return "ray: origin " + exact_text(ray.origin) + ", direction " + exact_text(ray.direction) +
+           ", t in [" + exact_text(ray.t_min) + ", " + exact_text(ray.t_max) + "]";
 }
 
-// The BVH's answer is closest_hit's, bit for bit.
+// "a miss", or "triangle 12 at t = 4.25".
+std::string text(const std::optional<PrimitiveHit>& hit) {
+    if (!hit) return "a miss";
+    const char* const kinds[] = {"sphere", "triangle", "plane"};
+    return kinds[static_cast<int>(hit->kind)] + (" " + std::to_string(hit->index)) +
+           " at t = " + raystep::testing::exact_text(hit->hit.t);
+}
+
+// The BVH's answer is closest_hit's, bit for bit; a difference ends the test case.
 void check_same(const Ray& ray, const std::optional<PrimitiveHit>& got,
                 const std::optional<PrimitiveHit>& expected) {
     INFO(text(ray));
+    INFO("The BVH finds " << text(got) << ", closest_hit " << text(expected));
     REQUIRE(got.has_value() == expected.has_value());
     if (!got) return;
-    CHECK(got->kind == expected->kind);
-    CHECK(got->index == expected->index);
-    CHECK(got->hit.t == expected->hit.t);
+    REQUIRE(got->kind == expected->kind);
+    REQUIRE(got->index == expected->index);
+    REQUIRE(got->hit.t == expected->hit.t);
 }
 
 const BvhSplit kSplits[] = {BvhSplit::median, BvhSplit::sah};
@@ -67,6 +81,7 @@ std::string split_name(BvhSplit split) {
 }  // namespace
 
 TEST_CASE("Bvh::closest_hit: equals closest_hit on random scenes and rays", "[stage4]") {
+    INFO(uses("Bvh", "intersect_aabb and stage 3's functions"));
     for (const BvhSplit split : kSplits) {
         for (const int seed : {1, 2, 3}) {
             PortableRandom random(static_cast<std::uint64_t>(seed));
@@ -83,6 +98,7 @@ TEST_CASE("Bvh::closest_hit: equals closest_hit on random scenes and rays", "[st
 
 TEST_CASE("Bvh::closest_hit: rays from inside the scene, axis-parallel rays, short rays",
           "[stage4]") {
+    INFO(uses("Bvh", "intersect_aabb and stage 3's functions"));
     PortableRandom random(4);
     const PrimitiveList list = random_scene(random, 300);
     for (const BvhSplit split : kSplits) {
@@ -101,6 +117,7 @@ TEST_CASE("Bvh::closest_hit: rays from inside the scene, axis-parallel rays, sho
 }
 
 TEST_CASE("Bvh::closest_hit: ties go to the primitive closest_hit picks", "[stage4]") {
+    INFO(uses("Bvh", "intersect_aabb and stage 3's functions"));
     INFO(
         "Three copies of one triangle and a sphere touching its plane at the same t: closest_hit "
         "takes the sphere (spheres come first); among triangles, the lowest index.");
@@ -118,12 +135,13 @@ TEST_CASE("Bvh::closest_hit: ties go to the primitive closest_hit picks", "[stag
         const std::optional<PrimitiveHit> first = no_sphere.closest_hit(ray);
         check_same(ray, first, closest_hit(ray, list));
         REQUIRE(first);
-        CHECK(first->index == 0);
+        REQUIRE(first->index == 0);
         list.spheres = {{{0, 0, -1}, 1.0}};
     }
 }
 
 TEST_CASE("Bvh::closest_hit: rays through edges shared by the triangles of a grid", "[stage4]") {
+    INFO(uses("Bvh", "intersect_aabb and stage 3's functions"));
     INFO(
         "A 20 x 20 grid of unit squares in z = 0, two triangles each; rays straight down through "
         "edge midpoints and vertices, where two to six triangles meet.");
@@ -149,11 +167,12 @@ TEST_CASE("Bvh::closest_hit: rays through edges shared by the triangles of a gri
 
 TEST_CASE("Bvh::closest_hit: an empty scene, one primitive, primitives all at one point",
           "[stage4]") {
+    INFO(uses("Bvh", "intersect_aabb and stage 3's functions"));
     const Ray ray{{0, 0, 5}, {0, 0, -1}};
     for (const BvhSplit split : kSplits) {
         CAPTURE(split_name(split));
         const std::optional<PrimitiveHit> in_empty = Bvh(PrimitiveList{}, split).closest_hit(ray);
-        CHECK_FALSE(in_empty);
+        REQUIRE_FALSE(in_empty);
         PrimitiveList one;
         one.spheres = {{{0, 0, 0}, 1.0}};
         check_same(ray, Bvh(one, split).closest_hit(ray), closest_hit(ray, one));
@@ -165,6 +184,7 @@ TEST_CASE("Bvh::closest_hit: an empty scene, one primitive, primitives all at on
 }
 
 TEST_CASE("Bvh::closest_hit: a list of planes only holds nothing, and never crashes", "[stage4]") {
+    INFO(uses("Bvh", "intersect_aabb and stage 3's functions"));
     PrimitiveList planes;
     planes.planes = {{{0, 0, 0}, {0, 0, 1}}, {{0, 0, 2}, {0, 1, 1}}};
     const Ray ray{{0, 0, 5}, {0, 0, -1}};
@@ -176,11 +196,12 @@ TEST_CASE("Bvh::closest_hit: a list of planes only holds nothing, and never cras
         CAPTURE(split_name(split));
         const Bvh bvh(planes, split);
         const std::optional<PrimitiveHit> hit = bvh.closest_hit(ray);
-        CHECK_FALSE(hit);
+        REQUIRE_FALSE(hit);
     }
 }
 
 TEST_CASE("Bvh::occluded: a list of planes only holds nothing, and never crashes", "[stage4]") {
+    INFO(uses("Bvh", "intersect_aabb and stage 3's functions"));
     PrimitiveList planes;
     planes.planes = {{{0, 0, 0}, {0, 0, 1}}, {{0, 0, 2}, {0, 1, 1}}};
     const Ray ray{{0, 0, 5}, {0, 0, -1}};
@@ -190,11 +211,12 @@ TEST_CASE("Bvh::occluded: a list of planes only holds nothing, and never crashes
         CAPTURE(split_name(split));
         const Bvh bvh(planes, split);
         const bool occluded = bvh.occluded(ray);
-        CHECK_FALSE(occluded);
+        REQUIRE_FALSE(occluded);
     }
 }
 
 TEST_CASE("Bvh::closest_hit: nothing before t_min, nothing after t_max", "[stage4]") {
+    INFO(uses("Bvh", "intersect_aabb and stage 3's functions"));
     INFO(
         "From z = 5 down the z axis: the sphere's front at t = 4.5 and its back at 5.5, the "
         "triangle at 7. From t_min = 6 only the triangle is left; up to t_max = 5 only the front.");
@@ -208,8 +230,8 @@ TEST_CASE("Bvh::closest_hit: nothing before t_min, nothing after t_max", "[stage
         INFO(text(late));
         const std::optional<PrimitiveHit> hit = bvh.closest_hit(late);
         REQUIRE(hit);
-        CHECK(hit->kind == PrimitiveKind::triangle);
-        CHECK(hit->hit.t == 7.0);
+        REQUIRE(hit->kind == PrimitiveKind::triangle);
+        REQUIRE(hit->hit.t == 7.0);
         const Ray inside{{0, 0, 5}, {0, 0, -1}, 5.0, 6.0};  // starts inside the sphere
         check_same(inside, bvh.closest_hit(inside), closest_hit(inside, list));
         const Ray short_ray{{0, 0, 5}, {0, 0, -1}, 0.0, 5.0};
@@ -218,6 +240,7 @@ TEST_CASE("Bvh::closest_hit: nothing before t_min, nothing after t_max", "[stage
 }
 
 TEST_CASE("Bvh: a ray that ends exactly at its hit still finds it", "[stage4]") {
+    INFO(uses("Bvh", "intersect_aabb and stage 3's functions"));
     INFO(
         "A shadow ray to a point on a surface ends at t_max = that point's t. The triangle's t and "
         "its box's entry are rounded separately, so the box can seem to start just after t_max: "
@@ -282,13 +305,14 @@ TEST_CASE("Bvh: a ray that ends exactly at its hit still finds it", "[stage4]") 
             CAPTURE(scene, r);
             check_same(ray, bvh.closest_hit(ray), first);
             INFO(text(ray));
-            CHECK(bvh.occluded(ray));
+            REQUIRE(bvh.occluded(ray));
         }
     }
     CHECK(asked > 40000);
 }
 
 TEST_CASE("Bvh::occluded: nothing after the last hit", "[stage4]") {
+    INFO(uses("Bvh", "intersect_aabb and stage 3's functions"));
     INFO(
         "From z = 5 down the z axis: the sphere from t = 4.5 to 5.5, the triangle at 7. From t_min "
         "= 7.5 nothing is left.");
@@ -301,11 +325,12 @@ TEST_CASE("Bvh::occluded: nothing after the last hit", "[stage4]") {
         CAPTURE(split_name(split));
         const Bvh bvh(list, split);
         const bool occluded = bvh.occluded(past);
-        CHECK_FALSE(occluded);
+        REQUIRE_FALSE(occluded);
     }
 }
 
 TEST_CASE("Bvh::occluded: agrees with closest_hit, before and after the first hit", "[stage4]") {
+    INFO(uses("Bvh", "intersect_aabb and stage 3's functions"));
     PortableRandom random(5);
     const PrimitiveList list = random_scene(random, 300);
     for (const BvhSplit split : kSplits) {
@@ -316,12 +341,12 @@ TEST_CASE("Bvh::occluded: agrees with closest_hit, before and after the first hi
             INFO(text(ray));
             const std::optional<PrimitiveHit> first = closest_hit(ray, list);
             const bool occluded = bvh.occluded(ray);
-            CHECK(occluded == first.has_value());
+            REQUIRE(occluded == first.has_value());
             if (first) {
                 ray.t_max = 0.5 * first->hit.t;  // stop short of it
                 INFO("t_max cut to " << ray.t_max << ", half the first hit's t");
                 const bool occluded_before = bvh.occluded(ray);
-                CHECK(occluded_before == closest_hit(ray, list).has_value());
+                REQUIRE(occluded_before == closest_hit(ray, list).has_value());
             }
         }
     }
@@ -329,6 +354,7 @@ TEST_CASE("Bvh::occluded: agrees with closest_hit, before and after the first hi
 
 TEST_CASE("Bvh::closest_hit: a ray through empty space visits few nodes and tests nothing",
           "[stage4]") {
+    INFO(uses("Bvh", "intersect_aabb and stage 3's functions"));
     PortableRandom random(6);
     const PrimitiveList list = random_scene(random, 1000);
     const Bvh bvh(list, BvhSplit::sah);
@@ -343,6 +369,7 @@ TEST_CASE("Bvh::closest_hit: a ray through empty space visits few nodes and test
 }
 
 TEST_CASE("Bvh::closest_hit: the SAH tree is no slower to walk than the median tree", "[stage4]") {
+    INFO(uses("Bvh", "intersect_aabb and stage 3's functions"));
     INFO(
         "Counted in nodes and tests, not seconds: over the same rays the SAH's estimate of the "
         "cost must not lose to the median split on a scene of clustered primitives.");
@@ -391,27 +418,27 @@ TEST_CASE(
         std::vector<int> leaves_holding(count, 0);
         for (std::size_t k = 0; k < nodes.size(); ++k) {
             CAPTURE(k);
-            CHECK((nodes[k].children.empty() || nodes[k].primitives.empty()));
+            REQUIRE((nodes[k].children.empty() || nodes[k].primitives.empty()));
             for (const std::size_t child : nodes[k].children) {
                 REQUIRE(child < nodes.size());
                 ++parents[child];
-                CHECK(holds(nodes[k].box, nodes[child].box));
+                REQUIRE(holds(nodes[k].box, nodes[child].box));
             }
             for (const std::size_t id : nodes[k].primitives) {
                 REQUIRE(id < count);
                 ++leaves_holding[id];
-                CHECK(holds(nodes[k].box, box_of(id)));
+                REQUIRE(holds(nodes[k].box, box_of(id)));
             }
         }
         // Node 0 is the root: no one's child; every other node has exactly one parent
-        CHECK(parents[0] == 0);
+        REQUIRE(parents[0] == 0);
         for (std::size_t k = 1; k < nodes.size(); ++k) {
             CAPTURE(k);
-            CHECK(parents[k] == 1);
+            REQUIRE(parents[k] == 1);
         }
         for (std::size_t id = 0; id < count; ++id) {
             CAPTURE(id);
-            CHECK(leaves_holding[id] >= 1);
+            REQUIRE(leaves_holding[id] >= 1);
         }
     }
     CHECK(Bvh(PrimitiveList{}, BvhSplit::sah).nodes().empty());

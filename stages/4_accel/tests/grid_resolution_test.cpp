@@ -2,12 +2,14 @@
 // `build/student/bin/raystep_stage4_tests "grid_resolution:*"`.
 //
 // Each check calls grid_resolution before its CHECKs: a stub ends the test case at its first call
-// and is reported once. A failure prints the box and the number of primitives.
+// and is reported once. A failure prints the box and the number of primitives, and ends the test
+// case.
 
 #include <cstddef>
 #include <limits>
 
 #include "base/testing/catch.h"
+#include "base/testing/number_text.h"
 #include "base/testing/vec3_matchers.h"
 #include "stages/4_accel/uniform_grid.h"
 
@@ -15,14 +17,18 @@ using namespace raystep;
 
 namespace {
 
-// grid_resolution(box, count) against `expected`, with the inputs in the failure message.
+// grid_resolution(box, count) against `expected`, with the inputs in the failure message; a wrong
+// answer ends the test case.
 void check_resolution(const Aabb& box, std::size_t count, const glm::ivec3& expected) {
-    INFO("box: min " << Catch::Detail::stringify(box.min) << ", max "
-                     << Catch::Detail::stringify(box.max) << ", " << count << " primitives");
+    using raystep::testing::exact_text;
+    INFO("box: min " << exact_text(box.min) << ", max " << exact_text(box.max) << ", " << count
+                     << " primitives");
     const glm::ivec3 got = grid_resolution(box, count);
-    CHECK(got.x == expected.x);
-    CHECK(got.y == expected.y);
-    CHECK(got.z == expected.z);
+    INFO("got " << got.x << " x " << got.y << " x " << got.z << " cells, expected " << expected.x
+                << " x " << expected.y << " x " << expected.z);
+    REQUIRE(got.x == expected.x);
+    REQUIRE(got.y == expected.y);
+    REQUIRE(got.z == expected.z);
 }
 
 }  // namespace

@@ -3,7 +3,8 @@
 // UniformGrid test builds a grid first, so the constructor comes before the rest.
 //
 // Each test calls your code before its CHECKs: a stub ends the test case at its first call and
-// is reported once. A failure prints the ray.
+// is reported once. A failure prints the ray; where a test tries many rays, it stops at the first
+// that fails.
 //
 // A grid must give exactly closest_hit's answer: the same primitive and the same t, compared
 // with ==. Both call the same stage-3 tests; only the order differs.
@@ -12,14 +13,18 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "base/math/portable_random.h"
 #include "base/testing/catch.h"
+#include "base/testing/number_text.h"
+#include "base/testing/uses.h"
 #include "base/testing/vec3_matchers.h"
 #include "stages/4_accel/uniform_grid.h"
 
 using namespace raystep;
+using raystep::testing::uses;
 
 namespace {
 
@@ -54,20 +59,29 @@ Ray ray_from_inside(PortableRandom& random) {
 }
 
 std::string text(const Ray& ray) {
-    using Catch::Detail::stringify;
-    return "ray: origin " + stringify(ray.origin) + ", direction " + stringify(ray.direction) +
-           ", t in [" + stringify(ray.t_min) + ", " + stringify(ray.t_max) + "]";
+    using raystep::testing::exact_text;
+    return "ray: origin " + exact_text(ray.origin) + ", direction " + exact_text(ray.direction) +
+           ", t in [" + exact_text(ray.t_min) + ", " + exact_text(ray.t_max) + "]";
 }
 
-// The grid's answer is closest_hit's, bit for bit.
+// "a miss", or "triangle 12 at t = 4.25".
+std::string text(const std::optional<PrimitiveHit>& hit) {
+    if (!hit) return "a miss";
+    const char* const kinds[] = {"sphere", "triangle", "plane"};
+    return kinds[static_cast<int>(hit->kind)] + (" " + std::to_string(hit->index)) +
+           " at t = " + raystep::testing::exact_text(hit->hit.t);
+}
+
+// The grid's answer is closest_hit's, bit for bit; a difference ends the test case.
 void check_same(const Ray& ray, const std::optional<PrimitiveHit>& got,
                 const std::optional<PrimitiveHit>& expected) {
     INFO(text(ray));
+    INFO("The grid finds " << text(got) << ", closest_hit " << text(expected));
     REQUIRE(got.has_value() == expected.has_value());
     if (!got) return;
-    CHECK(got->kind == expected->kind);
-    CHECK(got->index == expected->index);
-    CHECK(got->hit.t == expected->hit.t);
+    REQUIRE(got->kind == expected->kind);
+    REQUIRE(got->index == expected->index);
+    REQUIRE(got->hit.t == expected->hit.t);
 }
 
 // Two walls of 5 x 5 spheres of radius 0.3, in the planes x = 0 and x = 10, with empty cells
@@ -88,6 +102,7 @@ int primitive_count(const PrimitiveList& list) {
 }  // namespace
 
 TEST_CASE("UniformGrid::resolution: grid_resolution of the primitives' bounds", "[stage4]") {
+    INFO(uses("UniformGrid", "grid_resolution, intersect_aabb, stage 3's functions"));
     PortableRandom random(1);
     const PrimitiveList list = random_scene(random, 400);
     Aabb bounds;
@@ -103,6 +118,7 @@ TEST_CASE("UniformGrid::resolution: grid_resolution of the primitives' bounds", 
 
 TEST_CASE("UniformGrid::cells: every primitive is listed in every cell its box overlaps",
           "[stage4]") {
+    INFO(uses("UniformGrid", "grid_resolution, intersect_aabb, stage 3's functions"));
     PortableRandom random(12);
     const PrimitiveList list = random_scene(random, 300);
     const UniformGrid grid(list);
@@ -138,7 +154,7 @@ TEST_CASE("UniformGrid::cells: every primitive is listed in every cell its box o
             for (int y = low.y; y <= high.y; ++y) {
                 for (int x = low.x; x <= high.x; ++x) {
                     CAPTURE(x, y, z);
-                    CHECK(listed(x, y, z, id));
+                    REQUIRE(listed(x, y, z, id));
                 }
             }
         }
@@ -147,6 +163,7 @@ TEST_CASE("UniformGrid::cells: every primitive is listed in every cell its box o
 
 TEST_CASE("UniformGrid::closest_hit: equals closest_hit on random scenes, from outside and inside",
           "[stage4]") {
+    INFO(uses("UniformGrid", "grid_resolution, intersect_aabb, stage 3's functions"));
     for (const int seed : {1, 2, 3}) {
         PortableRandom random(static_cast<std::uint64_t>(seed));
         const PrimitiveList list = random_scene(random, 400);
@@ -161,6 +178,7 @@ TEST_CASE("UniformGrid::closest_hit: equals closest_hit on random scenes, from o
 
 TEST_CASE("UniformGrid::closest_hit: equals closest_hit on tiny, huge and far-off scenes",
           "[stage4]") {
+    INFO(uses("UniformGrid", "grid_resolution, intersect_aabb, stage 3's functions"));
     INFO(
         "The same scenes scaled by 1e-3 and 1e3 and moved 1e5 away: cell sizes, crossings and "
         "rounding all scale with them, and nothing may be tuned to scenes of size 10 at the "
@@ -187,6 +205,7 @@ TEST_CASE("UniformGrid::closest_hit: equals closest_hit on tiny, huge and far-of
 }
 
 TEST_CASE("UniformGrid::closest_hit: axis-parallel rays and short rays", "[stage4]") {
+    INFO(uses("UniformGrid", "grid_resolution, intersect_aabb, stage 3's functions"));
     PortableRandom random(4);
     const PrimitiveList list = random_scene(random, 300);
     const UniformGrid grid(list);
@@ -206,6 +225,7 @@ TEST_CASE("UniformGrid::closest_hit: axis-parallel rays and short rays", "[stage
 
 TEST_CASE("UniformGrid::closest_hit: rays that start on, run along or hit the planes between cells",
           "[stage4]") {
+    INFO(uses("UniformGrid", "grid_resolution, intersect_aabb, stage 3's functions"));
     INFO(
         "20 triangles in [0, 4]^3, so 4 x 4 x 4 cells whose planes are at (or, with the grid's "
         "small growth of its box, a hair from) x, y, z = 0, 1, 2, 3, 4. On each plane x, y or z = "
@@ -262,6 +282,7 @@ TEST_CASE("UniformGrid::closest_hit: rays that start on, run along or hit the pl
 }
 
 TEST_CASE("UniformGrid::closest_hit: ties go to the primitive closest_hit picks", "[stage4]") {
+    INFO(uses("UniformGrid", "grid_resolution, intersect_aabb, stage 3's functions"));
     INFO(
         "closest_hit keeps, of hits at the same t, the primitive listed first (spheres, then "
         "triangles, each in list order); the grid meets them in another order. Small spheres at "
@@ -290,7 +311,7 @@ TEST_CASE("UniformGrid::closest_hit: ties go to the primitive closest_hit picks"
             const std::optional<PrimitiveHit> hit = grid.closest_hit(ray);
             check_same(ray, hit, closest_hit(ray, list));
             REQUIRE(hit);
-            CHECK(hit->index == 0);
+            REQUIRE(hit->index == 0);
         }
     }
     {
@@ -306,6 +327,7 @@ TEST_CASE("UniformGrid::closest_hit: ties go to the primitive closest_hit picks"
 TEST_CASE(
     "UniformGrid::closest_hit: a tie met in a later cell still goes to the primitive listed first",
     "[stage4]") {
+    INFO(uses("UniformGrid", "grid_resolution, intersect_aabb, stage 3's functions"));
     INFO(
         "Triangle 1, large, and triangle 0, small, both in z = 0; spheres at the corners give the "
         "grid 5 x 5 x 1 cells, 2.44 wide. The ray comes down at a slant into cell x = 2, which "
@@ -369,13 +391,14 @@ TEST_CASE(
             TraversalStats stats;
             CAPTURE(k);
             check_same(ray, grid.closest_hit(ray, &stats), closest_hit(ray, list));
-            CHECK(stats.primitive_tests <= static_cast<std::uint64_t>(primitive_count(list)));
+            REQUIRE(stats.primitive_tests <= static_cast<std::uint64_t>(primitive_count(list)));
         }
     }
 }
 
 TEST_CASE("UniformGrid::closest_hit: empty, single, coincident, flat and lopsided scenes",
           "[stage4]") {
+    INFO(uses("UniformGrid", "grid_resolution, intersect_aabb, stage 3's functions"));
     PortableRandom random(7);
     const auto check_rays = [&](const PrimitiveList& list) {
         const UniformGrid grid(list);
@@ -456,6 +479,7 @@ TEST_CASE(
 
 TEST_CASE("UniformGrid: a ray that ends exactly at a wall between cells still finds it",
           "[stage4]") {
+    INFO(uses("UniformGrid", "grid_resolution, intersect_aabb, stage 3's functions"));
     INFO(
         "A shadow ray to a point on a surface ends at t_max = that point's t. Walls lie in the "
         "planes between cells (x, y or z = n / 2 of a 6-cell grid); the ray's crossing of such a "
@@ -506,7 +530,7 @@ TEST_CASE("UniformGrid: a ray that ends exactly at a wall between cells still fi
                 CAPTURE(n, seed, r);
                 check_same(ray, grid.closest_hit(ray), first);
                 INFO(text(ray));
-                CHECK(grid.occluded(ray));
+                REQUIRE(grid.occluded(ray));
             }
         }
     }
@@ -514,11 +538,13 @@ TEST_CASE("UniformGrid: a ray that ends exactly at a wall between cells still fi
 }
 
 TEST_CASE("UniformGrid::occluded: a grid of no primitives occludes nothing", "[stage4]") {
+    INFO(uses("UniformGrid", "grid_resolution, intersect_aabb, stage 3's functions"));
     const bool occluded = UniformGrid(PrimitiveList{}).occluded({{0, 0, 5}, {0, 0, -1}});
     CHECK_FALSE(occluded);
 }
 
 TEST_CASE("UniformGrid::occluded: a zero direction visits no cell", "[stage4]") {
+    INFO(uses("UniformGrid", "grid_resolution, intersect_aabb, stage 3's functions"));
     PortableRandom random(8);
     const UniformGrid grid(random_scene(random, 100));
     TraversalStats stats;
@@ -530,6 +556,7 @@ TEST_CASE("UniformGrid::occluded: a zero direction visits no cell", "[stage4]") 
 
 TEST_CASE("UniformGrid::occluded: agrees with closest_hit, before, at and after the first hit",
           "[stage4]") {
+    INFO(uses("UniformGrid", "grid_resolution, intersect_aabb, stage 3's functions"));
     PortableRandom random(9);
     const PrimitiveList list = random_scene(random, 300);
     const UniformGrid grid(list);
@@ -540,14 +567,14 @@ TEST_CASE("UniformGrid::occluded: agrees with closest_hit, before, at and after 
         INFO(text(ray));
         const std::optional<PrimitiveHit> first = closest_hit(ray, list);
         const bool occluded = grid.occluded(ray);
-        CHECK(occluded == first.has_value());
+        REQUIRE(occluded == first.has_value());
         if (!first) continue;
         ++hits;
         for (const double cut : {0.5, 1.0, 2.0}) {  // t_max = first t is still a hit: closed
             ray.t_max = cut * first->hit.t;
             INFO("t_max cut to " << ray.t_max << ", " << cut << " times the first hit's t");
             const bool occluded_before = grid.occluded(ray);
-            CHECK(occluded_before == closest_hit(ray, list).has_value());
+            REQUIRE(occluded_before == closest_hit(ray, list).has_value());
         }
     }
     CHECK(hits > 200);
@@ -576,6 +603,7 @@ TEST_CASE(
 
 TEST_CASE("UniformGrid::closest_hit: a ray through an empty region tests no primitive",
           "[stage4]") {
+    INFO(uses("UniformGrid", "grid_resolution, intersect_aabb, stage 3's functions"));
     INFO("Two walls of spheres, at x = 0 and x = 10; the ray crosses the gap between them.");
     const UniformGrid grid(two_walls_of_spheres());
     TraversalStats stats;
@@ -588,6 +616,7 @@ TEST_CASE("UniformGrid::closest_hit: a ray through an empty region tests no prim
 }
 
 TEST_CASE("UniformGrid::occluded: a ray through an empty region tests no primitive", "[stage4]") {
+    INFO(uses("UniformGrid", "grid_resolution, intersect_aabb, stage 3's functions"));
     INFO("Two walls of spheres, at x = 0 and x = 10; the ray crosses the gap between them.");
     const UniformGrid grid(two_walls_of_spheres());
     const Ray ray{{5, 2, -2}, {0, 0, 1}};

@@ -2,7 +2,8 @@
 // shadow_ray. Run them with `ctest --preset student -L stage6`.
 //
 // Each test calls your function before its CHECKs, so a stub is reported once. The rules fix the
-// origin and the t range exactly, so most checks here are ==.
+// origin and the t range exactly, so most checks here are ==. A loop over cases stops at the first
+// that fails.
 
 #include <algorithm>
 #include <cmath>
@@ -12,11 +13,15 @@
 
 #include "base/math/portable_random.h"
 #include "base/testing/catch.h"
+#include "base/testing/number_text.h"
+#include "base/testing/uses.h"
 #include "base/testing/vec3_matchers.h"
 #include "stages/6_shading/shading.h"
 
 using namespace raystep;
+using raystep::testing::exact_text;
 using raystep::testing::IsNear;
+using raystep::testing::uses;
 
 namespace {
 
@@ -38,18 +43,20 @@ RayOffset rule(OffsetRule r, double epsilon) {
 }  // namespace
 
 TEST_CASE("spawn_ray: along_ray starts at the point and counts hits from t = epsilon", "[stage6]") {
+    INFO(uses("spawn_ray", "stage 1's dot"));
     const Ray up = spawn_ray(on_plane_z3(), kUp, 7.0, rule(OffsetRule::along_ray, 0.25));
     const Ray down = spawn_ray(on_plane_z3(), kDown, 7.0, rule(OffsetRule::along_ray, 0.25));
     for (const Ray& ray : {up, down}) {
-        CHECK(ray.origin == Vec3(1, 2, 3));
-        CHECK(ray.t_min == 0.25);
-        CHECK(ray.t_max == 7.0);
+        REQUIRE(ray.origin == Vec3(1, 2, 3));
+        REQUIRE(ray.t_min == 0.25);
+        REQUIRE(ray.t_max == 7.0);
     }
     CHECK_THAT(up.direction, IsNear(kUp, 1e-15));
     CHECK_THAT(down.direction, IsNear(kDown, 1e-15));
 }
 
 TEST_CASE("spawn_ray: along_normal starts epsilon along the normal, t from 0", "[stage6]") {
+    INFO(uses("spawn_ray", "stage 1's dot"));
     INFO("(1, 2, 3) + 0.25 (0, 0, 1) = (1, 2, 3.25).");
     const Ray ray = spawn_ray(on_plane_z3(), kUp, 7.0, rule(OffsetRule::along_normal, 0.25));
     CHECK(ray.origin == Vec3(1, 2, 3.25));
@@ -60,6 +67,7 @@ TEST_CASE("spawn_ray: along_normal starts epsilon along the normal, t from 0", "
 
 TEST_CASE("spawn_ray: along_normal offsets to the back when the ray leaves by the back",
           "[stage6]") {
+    INFO(uses("spawn_ray", "stage 1's dot"));
     INFO(
         "n . direction = -0.8 < 0: the ray goes through the surface (a light behind it, refraction "
         "later), so the origin moves to that side: (1, 2, 3) - 0.25 (0, 0, 1) = (1, 2, 2.75).");
@@ -71,12 +79,14 @@ TEST_CASE("spawn_ray: along_normal offsets to the back when the ray leaves by th
 
 TEST_CASE("spawn_ray: along_normal with a ray in the tangent plane uses the normal as given",
           "[stage6]") {
+    INFO(uses("spawn_ray", "stage 1's dot"));
     INFO("n . direction = 0: neither side is the leaving one; the normal as the renderer gave it.");
     const Ray ray = spawn_ray(on_plane_z3(), {1, 0, 0}, 7.0, rule(OffsetRule::along_normal, 0.25));
     CHECK(ray.origin == Vec3(1, 2, 3.25));
 }
 
 TEST_CASE("spawn_ray: error_bound starts one ulp beyond the error along the normal", "[stage6]") {
+    INFO(uses("spawn_ray", "stage 1's dot"));
     INFO(
         "d = |0| 1e-12 + |0| 2e-12 + |1| 3e-12 = 3e-12. Only z moves: 3 + 3e-12, then one ulp up. "
         "epsilon is set to 0.5 to show that error_bound ignores it.");
@@ -89,6 +99,7 @@ TEST_CASE("spawn_ray: error_bound starts one ulp beyond the error along the norm
 
 TEST_CASE("spawn_ray: error_bound leaving by the back offsets down, and the ulp goes down too",
           "[stage6]") {
+    INFO(uses("spawn_ray", "stage 1's dot"));
     INFO("The normal flipped to (0, 0, -1): 3 - 3e-12, then one ulp towards -infinity.");
     const Ray ray = spawn_ray(on_plane_z3(), kDown, 7.0, rule(OffsetRule::error_bound, 0.5));
     CHECK(ray.origin == Vec3(1, 2, std::nextafter(3.0 - 3e-12, -kInf)));
@@ -98,6 +109,7 @@ TEST_CASE("spawn_ray: error_bound leaving by the back offsets down, and the ulp 
 
 TEST_CASE("spawn_ray: error_bound starts strictly beyond the error box, moves ~1 ulp sideways",
           "[stage6]") {
+    INFO(uses("spawn_ray", "stage 1's dot"));
     INFO(
         "The exact hit point can be anywhere in the box position +- error, and over that box n . "
         "(p - position) reaches at most d = sum |n_i| error_i, n the normal on the side the ray "
@@ -130,16 +142,22 @@ TEST_CASE("spawn_ray: error_bound starts strictly beyond the error box, moves ~1
         const double d = glm::dot(glm::abs(n), point.error);
         const Vec3 moved = ray.origin - point.position;
         const double along = glm::dot(moved, n);
-        CHECK(along > d);
-        CHECK(along <= d + 4 * ulp_of_size);
-        CHECK(glm::length(moved - along * n) <= 4 * ulp_of_size);
-        CHECK(ray.t_min == 0.0);
-        CHECK(ray.t_max == 5.0);
+        const double sideways = glm::length(moved - along * n);
+        // Catch prints these in fixed notation, 1e-15 as 0.0: here they are in full
+        INFO("along n " << exact_text(along) << ", above d = " << exact_text(d)
+                        << " and at most d + 4 ulps; sideways " << exact_text(sideways)
+                        << ", at most 4 ulps = " << exact_text(4 * ulp_of_size));
+        REQUIRE(along > d);
+        REQUIRE(along <= d + 4 * ulp_of_size);
+        REQUIRE(sideways <= 4 * ulp_of_size);
+        REQUIRE(ray.t_min == 0.0);
+        REQUIRE(ray.t_max == 5.0);
     }
 }
 
 TEST_CASE("spawn_ray: the error_bound offset scales with the error (x1000 error, x1000 offset)",
           "[stage6]") {
+    INFO(uses("spawn_ray", "stage 1's dot"));
     INFO(
         "This is what \"no tuning\" means: a scene 1000 times larger (or farther out) has points "
         "1000 times less precise, and the offset follows. n = (0, 0.6, 0.8), error 1e-12 and 1e-9 "
@@ -160,13 +178,15 @@ TEST_CASE("spawn_ray: the error_bound offset scales with the error (x1000 error,
 
     const double offset_precise = glm::dot(from_precise.origin - precise.position, precise.normal);
     const double offset_coarse = glm::dot(from_coarse.origin - coarse.position, coarse.normal);
-    CHECK(offset_precise == Approx(1.4e-12).epsilon(1e-2));  // + an ulp of 3 (4.4e-16) or so
-    CHECK(offset_coarse == Approx(1.4e-9).epsilon(1e-5));
-    CHECK(offset_coarse / offset_precise == Approx(1000).epsilon(1e-2));
-    CHECK(fixed_precise.origin == fixed_coarse.origin);
+    // In units of 1e-12 and 1e-9, so that a failure prints 1.4 rather than 0.0
+    REQUIRE(offset_precise * 1e12 == Approx(1.4).epsilon(1e-2));  // + an ulp of 3 (4.4e-16) or so
+    REQUIRE(offset_coarse * 1e9 == Approx(1.4).epsilon(1e-5));
+    REQUIRE(offset_coarse / offset_precise == Approx(1000).epsilon(1e-2));
+    REQUIRE(fixed_precise.origin == fixed_coarse.origin);
 }
 
 TEST_CASE("spawn_ray: error_bound leaves even a point with no rounding error", "[stage6]") {
+    INFO(uses("spawn_ray", "stage 1's dot"));
     INFO(
         "The point (1, 0, 3) exactly on the plane y = 0, error 0: d = 0, so the offset is 0, but "
         "the origin must still leave the plane (t_min is 0, and a ray starting on the plane hits "
@@ -180,6 +200,7 @@ TEST_CASE("spawn_ray: error_bound leaves even a point with no rounding error", "
 }
 
 TEST_CASE("shadow_ray: towards a point light, over exactly the light's distance", "[stage6]") {
+    INFO(uses("shadow_ray", "spawn_ray"));
     INFO(
         "The light 5 away along (0, 0.6, 0.8): the ray ends at the light, so that an object beyond "
         "the light casts no shadow.");
@@ -197,16 +218,18 @@ TEST_CASE("shadow_ray: towards a point light, over exactly the light's distance"
 }
 
 TEST_CASE("shadow_ray: towards a directional light, t_max is infinite", "[stage6]") {
+    INFO(uses("shadow_ray", "spawn_ray"));
     const LightSample sun{kUp, kInf, Color(1.0)};
     for (const OffsetRule r :
          {OffsetRule::along_ray, OffsetRule::along_normal, OffsetRule::error_bound}) {
         CAPTURE(static_cast<int>(r));
         const Ray ray = shadow_ray(on_plane_z3(), sun, rule(r, 0.25));
-        CHECK(ray.t_max == kInf);
+        REQUIRE(ray.t_max == kInf);
     }
 }
 
 TEST_CASE("shadow_ray: towards a light behind the surface, starts on the back side", "[stage6]") {
+    INFO(uses("shadow_ray", "spawn_ray"));
     INFO(
         "A light below the plane z = 3 (N . L < 0): shading gives it no term anyway, but the "
         "shadow ray must still start on the side it leaves to, like any ray through the surface.");
@@ -214,5 +237,8 @@ TEST_CASE("shadow_ray: towards a light behind the surface, starts on the back si
     const Ray along_normal = shadow_ray(on_plane_z3(), below, rule(OffsetRule::along_normal, 0.25));
     const Ray error_bound = shadow_ray(on_plane_z3(), below, rule(OffsetRule::error_bound, 0.0));
     CHECK(along_normal.origin == Vec3(1, 2, 2.75));
+    INFO("error_bound's origin z = " << exact_text(error_bound.origin.z)
+                                     << ", which must be below 3 - 3e-12 = "
+                                     << exact_text(3.0 - 3e-12));
     CHECK(error_bound.origin.z < 3.0 - 3e-12);
 }

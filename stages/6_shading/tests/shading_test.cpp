@@ -4,6 +4,7 @@
 //
 // Each test calls your function before its CHECKs: an exception outside a CHECK ends the test at
 // once, so a stub is reported once. The comments give the arithmetic, so you can redo it by hand.
+// A function built from others names them when it fails: fix theirs first.
 
 #include <cmath>
 #include <limits>
@@ -11,11 +12,13 @@
 #include <vector>
 
 #include "base/testing/catch.h"
+#include "base/testing/uses.h"
 #include "base/testing/vec3_matchers.h"
 #include "stages/6_shading/shading.h"
 
 using namespace raystep;
 using raystep::testing::IsNear;
+using raystep::testing::uses;
 
 namespace {
 
@@ -67,6 +70,7 @@ TEST_CASE("attenuation: the default (1, 0, 0) is 1 at every distance, and (0, 0,
 
 TEST_CASE("sample_light: a point light 5 away gives its unit direction, distance and dimmed colour",
           "[stage6]") {
+    INFO(uses("sample_light", "attenuation and stage 1's length and normalize"));
     INFO(
         "From (1, 1, 1) to the light at (1, 4, 5): (0, 3, 4), of length 5, so L = (0, 0.6, 0.8). "
         "Inverse-square falloff: att = 5^2 = 25, intensity = (1, 0.5, 0.25) / 25.");
@@ -78,6 +82,7 @@ TEST_CASE("sample_light: a point light 5 away gives its unit direction, distance
 }
 
 TEST_CASE("sample_light: a point light with the default attenuation keeps its colour", "[stage6]") {
+    INFO(uses("sample_light", "attenuation and stage 1's length and normalize"));
     INFO("att = 1 + 0 d + 0 d^2 = 1: the colour, unchanged, 13 away ((3, 4, 12) has length 13).");
     const PointLight light{{3, 4, 12}, {0.5, 0.25, 1}, {}};
     const LightSample sample = sample_light(light, {0, 0, 0});
@@ -87,6 +92,7 @@ TEST_CASE("sample_light: a point light with the default attenuation keeps its co
 }
 
 TEST_CASE("sample_light: a point exactly at a point light throws std::domain_error", "[stage6]") {
+    INFO(uses("sample_light", "attenuation and stage 1's length and normalize"));
     INFO("There is no direction from the light to itself: an error, never a NaN direction.");
     const PointLight light{{1, 2, 3}, {1, 1, 1}, {}};
     REQUIRE_THROWS_AS(sample_light(light, {1, 2, 3}), std::domain_error);
@@ -94,6 +100,7 @@ TEST_CASE("sample_light: a point exactly at a point light throws std::domain_err
 
 TEST_CASE("sample_light: a directional light is infinitely far, never attenuated, unit direction",
           "[stage6]") {
+    INFO(uses("sample_light", "attenuation and stage 1's length and normalize"));
     INFO("(3, 0, 4) has length 5: L = (0.6, 0, 0.8).");
     const DirectionalLight light{{3, 0, 4}, {0.5, 0.25, 1}};
     const LightSample sample = sample_light(light);
@@ -104,6 +111,7 @@ TEST_CASE("sample_light: a directional light is infinitely far, never attenuated
 
 TEST_CASE("blinn_phong: a light 60 degrees from the normal gives half the diffuse colour",
           "[stage6]") {
+    INFO(uses("blinn_phong", "stage 1's dot and normalize"));
     INFO(
         "Lambert: N . L = cos 60 = 0.5 for L = (sin 60, 0, cos 60) = (sqrt(3)/2, 0, 0.5), so I = 1 "
         "* Kd * 0.5 = (0.8, 0.4, 0.2) * 0.5. No specular (Ks = 0).");
@@ -115,6 +123,7 @@ TEST_CASE("blinn_phong: a light 60 degrees from the normal gives half the diffus
 
 TEST_CASE("blinn_phong: the highlight is max(N . H, 0)^s with the half vector H = normalize(L + V)",
           "[stage6]") {
+    INFO(uses("blinn_phong", "stage 1's dot and normalize"));
     INFO(
         "N = (0, 0, 1), L = (0, 0.6, 0.8), V = (0, 0, 1). L + V = (0, 0.6, 1.8), of squared length "
         "0.36 + 3.24 = 3.6, so N . H = 1.8 / sqrt(3.6) and (N . H)^2 = 3.24 / 3.6 = 0.9. With s = "
@@ -127,6 +136,7 @@ TEST_CASE("blinn_phong: the highlight is max(N . H, 0)^s with the half vector H 
 
 TEST_CASE("blinn_phong: diffuse and specular add, and the light's intensity scales both",
           "[stage6]") {
+    INFO(uses("blinn_phong", "stage 1's dot and normalize"));
     INFO(
         "The geometry of the highlight test: N . L = 0.8 and (N . H)^10 = 0.59049. Kd = Ks = 0.5: "
         "0.5 * 0.8 + 0.5 * 0.59049 = 0.4 + 0.295245 = 0.695245 per channel, times the intensity "
@@ -139,6 +149,7 @@ TEST_CASE("blinn_phong: diffuse and specular add, and the light's intensity scal
 
 TEST_CASE("blinn_phong: a light behind the surface adds nothing, no highlight through the back",
           "[stage6]") {
+    INFO(uses("blinn_phong", "stage 1's dot and normalize"));
     INFO(
         "L = (0, 0.6, -0.8): N . L = -0.8. The half vector of L and V = (0, 0, 1) is normalize(0, "
         "0.6, 0.2), with N . H = 0.32 > 0: without the N . L test, a highlight shows through the "
@@ -150,6 +161,7 @@ TEST_CASE("blinn_phong: a light behind the surface adds nothing, no highlight th
 
 TEST_CASE("blinn_phong: a light in the tangent plane (N . L = 0) adds nothing, shininess 0 too",
           "[stage6]") {
+    INFO(uses("blinn_phong", "stage 1's dot and normalize"));
     INFO(
         "L = (1, 0, 0) grazes the floor: N . L = 0, so no light, and no highlight either, although "
         "N . H = 1 / sqrt(2) and max(N . H, 0)^0 would be 1.");
@@ -159,6 +171,7 @@ TEST_CASE("blinn_phong: a light in the tangent plane (N . L = 0) adds nothing, s
 }
 
 TEST_CASE("blinn_phong: lights with the shading normal, not the geometric one", "[stage6]") {
+    INFO(uses("blinn_phong", "stage 1's dot and normalize"));
     INFO(
         "An interpolated normal N = (0, 0.6, 0.8) on the floor: L = (0, 0.6, 0.8) is along it, so "
         "N . L = 1 and I = Kd. The geometric normal (0, 0, 1) would give N . L = 0.8.");
@@ -170,6 +183,7 @@ TEST_CASE("blinn_phong: lights with the shading normal, not the geometric one", 
 }
 
 TEST_CASE("blinn_phong: shininess 0 makes max(N . H, 0)^0 = 1, also where N . H = 0", "[stage6]") {
+    INFO(uses("blinn_phong", "stage 1's dot and normalize"));
     INFO(
         "pow(0, 0) is 1 here (as std::pow has it). To get N . H = 0 with N . L > 0, the eye must "
         "be behind the shading normal, as an interpolated normal allows: N = (0, 0, 1) (geometric "
@@ -190,6 +204,7 @@ TEST_CASE("blinn_phong: shininess 0 makes max(N . H, 0)^0 = 1, also where N . H 
 }
 
 TEST_CASE("blinn_phong: no highlight where N . H < 0, whatever the shininess", "[stage6]") {
+    INFO(uses("blinn_phong", "stage 1's dot and normalize"));
     INFO(
         "The eye behind an interpolated normal N = (0.8, 0, 0.6) on the floor (the geometric "
         "normal (0, 0, 1) faces V = (-0.96, 0, 0.28)): L = (-0.28, 0, 0.96) gives N . L = 0.352 > "
@@ -202,12 +217,13 @@ TEST_CASE("blinn_phong: no highlight where N . H < 0, whatever the shininess", "
     for (const double shininess : {2.0, 0.5}) {
         CAPTURE(shininess);
         const Color got = blinn_phong(material(Color(0.5), Color(1.0), shininess), point, light);
-        CHECK_THAT(got, IsNear(Color(0.176), kTight));
+        REQUIRE_THAT(got, IsNear(Color(0.176), kTight));
     }
 }
 
 TEST_CASE("blinn_phong: the eye exactly opposite the light has no half vector, N . H counts as 0",
           "[stage6]") {
+    INFO(uses("blinn_phong", "stage 1's dot and normalize"));
     INFO(
         "The bent normal of the test above, N = (0.8, 0, 0.6), V = (-0.96, 0, 0.28), with the "
         "light at L = -V = (0.96, 0, -0.28): N . L = 0.768 - 0.168 = 0.6 > 0, but L + V = 0, and "
@@ -223,6 +239,7 @@ TEST_CASE("blinn_phong: the eye exactly opposite the light has no half vector, N
 }
 
 TEST_CASE("local_shading: ambient + emission + each visible light's term", "[stage6]") {
+    INFO(uses("local_shading", "blinn_phong"));
     INFO(
         "A = (0.1, 0.2, 0.3), E = (0.2, 0, 0), Kd = 0.5, Ks = 0. Light 1 straight above: N . L = "
         "1, term 0.5 * 1 * (1, 1, 1) = (0.5, 0.5, 0.5). Light 2 at 60 degrees: N . L = 0.5, term "
@@ -240,6 +257,7 @@ TEST_CASE("local_shading: ambient + emission + each visible light's term", "[sta
 }
 
 TEST_CASE("local_shading: where no light reaches, ambient + emission remain", "[stage6]") {
+    INFO(uses("local_shading", "blinn_phong"));
     INFO("In full shadow the visible list is empty: I = A + E = (0.1, 0.2, 0.3) + (0.5, 0.25, 0).");
     Material m = material(Color(1.0), Color(1.0), 8.0);
     m.ambient = {0.1, 0.2, 0.3};

@@ -4,7 +4,7 @@
 // radiance is tested without a scene: the ShadeFunction here is a lambda that plays the scene
 // (two mirrors facing each other, a single surface, nothing at all), records the rays it is
 // asked about and counts the calls. Each test calls your function before its CHECKs, so a stub
-// is reported once.
+// is reported once. A function built from others names them when it fails: fix theirs first.
 
 #include <cmath>
 #include <limits>
@@ -12,11 +12,13 @@
 #include <vector>
 
 #include "base/testing/catch.h"
+#include "base/testing/uses.h"
 #include "base/testing/vec3_matchers.h"
 #include "stages/7_recursion/recursion.h"
 
 using namespace raystep;
 using raystep::testing::IsNear;
+using raystep::testing::uses;
 
 namespace {
 
@@ -59,6 +61,7 @@ const Ray kUpward{{0, 0, 0.5}, {0, 0, 1}};
 }  // namespace
 
 TEST_CASE("radiance: a ray that misses everything is black", "[stage7]") {
+    INFO(uses("radiance", "reflected_ray"));
     int calls = 0;
     const ShadeFunction nothing = [&calls](const Ray&) -> std::optional<ShadedHit> {
         ++calls;
@@ -71,6 +74,7 @@ TEST_CASE("radiance: a ray that misses everything is black", "[stage7]") {
 
 TEST_CASE("radiance: a surface that is no mirror shows its local colour, no mirror ray traced",
           "[stage7]") {
+    INFO(uses("radiance", "reflected_ray"));
     INFO("Reflectance 0: the reflected ray would add 0 * whatever, so it must not cost a ray.");
     std::vector<Ray> asked;
     const Color got = radiance(facing_mirrors(Color(0.0), asked), kUpward, 5, kErrorBound);
@@ -79,6 +83,7 @@ TEST_CASE("radiance: a surface that is no mirror shows its local colour, no mirr
 }
 
 TEST_CASE("radiance: with no bounce left, the mirror ray is not traced", "[stage7]") {
+    INFO(uses("radiance", "reflected_ray"));
     INFO("bounces_left = 0 (maxdepth 0): the mirror shows its local colour only, one call.");
     std::vector<Ray> asked;
     const Color got = radiance(facing_mirrors(Color(0.5), asked), kUpward, 0, kErrorBound);
@@ -88,6 +93,7 @@ TEST_CASE("radiance: with no bounce left, the mirror ray is not traced", "[stage
 
 TEST_CASE("radiance: facing mirrors, reflectance 0.5, maxdepth 3: local (1 + 0.5 + 0.25 + 0.125)",
           "[stage7]") {
+    INFO(uses("radiance", "reflected_ray"));
     INFO(
         "The eye ray and 3 bounces: I = c + 0.5 (c + 0.5 (c + 0.5 c)) = 1.875 c, with c = (1, 0.5, "
         "0.25): (1.875, 0.9375, 0.46875), exact in binary. 4 calls, the rays going up, down, up, "
@@ -98,11 +104,12 @@ TEST_CASE("radiance: facing mirrors, reflectance 0.5, maxdepth 3: local (1 + 0.5
     REQUIRE(asked.size() == 4);
     for (std::size_t k = 0; k < asked.size(); ++k) {
         CAPTURE(k);
-        CHECK_THAT(asked[k].direction, IsNear(Vec3{0, 0, k % 2 == 0 ? 1.0 : -1.0}, 1e-15));
+        REQUIRE_THAT(asked[k].direction, IsNear(Vec3{0, 0, k % 2 == 0 ? 1.0 : -1.0}, 1e-15));
     }
 }
 
 TEST_CASE("radiance: the reflectance weighs each colour channel", "[stage7]") {
+    INFO(uses("radiance", "reflected_ray"));
     INFO(
         "One bounce with reflectance (1, 0.5, 0): I = c + (1, 0.5, 0) c = (1 + 1, 0.5 + 0.25, 0.25 "
         "+ 0) = (2, 0.75, 0.25). Not clamped: the image does that.");
@@ -114,6 +121,7 @@ TEST_CASE("radiance: the reflectance weighs each colour channel", "[stage7]") {
 
 TEST_CASE("radiance: a faint mirror is still a mirror: only an exactly black Ks stops it",
           "[stage7]") {
+    INFO(uses("radiance", "reflected_ray"));
     INFO(
         "Reflectance 2^-8 = 0.00390625 is not black: one bounce adds c / 256, exact in binary. A "
         "cutoff \"for speed\" (say max(Ks) < 0.01) would drop the reflection and the second ray.");
@@ -125,6 +133,7 @@ TEST_CASE("radiance: a faint mirror is still a mirror: only an exactly black Ks 
 }
 
 TEST_CASE("radiance: a mirror ray that leaves the scene adds black", "[stage7]") {
+    INFO(uses("radiance", "reflected_ray"));
     std::vector<Ray> asked;
     const Color got = radiance(mirror_then_sky(asked), {{0, 0, 1}, {0, 0, -1}}, 5, kErrorBound);
     CHECK(got == kLocal);
@@ -132,6 +141,7 @@ TEST_CASE("radiance: a mirror ray that leaves the scene adds black", "[stage7]")
 }
 
 TEST_CASE("radiance: mirror rays leave the surface by the offset rule it is given", "[stage7]") {
+    INFO(uses("radiance", "reflected_ray"));
     INFO(
         "The mirror at the origin, the eye ray coming straight down: with along_ray and epsilon "
         "0.125, the mirror ray starts at the hit point, goes straight up, counts hits from t = "
@@ -147,6 +157,7 @@ TEST_CASE("radiance: mirror rays leave the surface by the offset rule it is give
 }
 
 TEST_CASE("reflected_ray: 45-degree incidence leaves at 45 degrees on the other side", "[stage7]") {
+    INFO(uses("reflected_ray", "stage 1's reflect, stage 6's spawn_ray"));
     INFO(
         "The floor y = 0 at (2, 0, 1), normal +y, the eye up and to the left: V = (-1, 1, 0)/sqrt "
         "2. The ray came in along -V = (1, -1, 0)/sqrt 2, and d - 2 (d . n) n flips its y: R = (1, "
@@ -161,6 +172,7 @@ TEST_CASE("reflected_ray: 45-degree incidence leaves at 45 degrees on the other 
 }
 
 TEST_CASE("reflected_ray: reflects about the shading normal, not the geometric one", "[stage7]") {
+    INFO(uses("reflected_ray", "stage 1's reflect, stage 6's spawn_ray"));
     INFO(
         "Seen from straight above, V = (0, 1, 0), with an interpolated normal N = (0, 0.8, 0.6): "
         "-V = (0, -1, 0), -V . N = -0.8, R = (0, -1, 0) + 1.6 (0, 0.8, 0.6) = (0, 0.28, 0.96). "
@@ -172,6 +184,7 @@ TEST_CASE("reflected_ray: reflects about the shading normal, not the geometric o
 
 TEST_CASE("reflected_ray: with error_bound, starts beyond the point's error on the mirror's side",
           "[stage7]") {
+    INFO(uses("reflected_ray", "stage 1's reflect, stage 6's spawn_ray"));
     INFO(
         "Error 1e-9 in y on the floor y = 0: the mirror ray must start above y = 1e-9, so that it "
         "cannot find the floor again at t ~ 0.");

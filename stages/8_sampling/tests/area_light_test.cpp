@@ -5,7 +5,9 @@
 // sample_quad_light is held against numbers worked by hand: a light straight overhead, its back,
 // a tilted one. quad_light_shading is tested without a scene: the OccludedFunction is a lambda
 // that answers "nothing blocks" or "everything blocks" and records the shadow rays it is asked
-// about. Each test calls your function before its CHECKs, so a stub is reported once.
+// about. Each test calls your function before its CHECKs, so a stub is reported once. A loop over
+// cases stops at the first that fails, and a function built from others names them: fix theirs
+// first.
 
 #include <cmath>
 #include <limits>
@@ -14,11 +16,15 @@
 #include <vector>
 
 #include "base/testing/catch.h"
+#include "base/testing/number_text.h"
+#include "base/testing/uses.h"
 #include "base/testing/vec3_matchers.h"
 #include "stages/8_sampling/sampling.h"
 
 using namespace raystep;
+using raystep::testing::exact_text;
 using raystep::testing::IsNear;
+using raystep::testing::uses;
 
 namespace {
 
@@ -29,13 +35,14 @@ const double kPi = 3.14159265358979323846;
 // ac x ab, which faces down. u = (0.5, 0.5) is its centre, (0, 2, 0).
 const QuadLight kOverhead{{-0.25, 2, -0.25}, {0, 0, 0.5}, {0.5, 0, 0}, {1, 2, 4}};
 
-// Each channel of got within a relative `tolerance` of expected.
+// Each channel of got within a relative `tolerance` of expected; the first channel that is not
+// ends the test case.
 void check_colour(const Color& got, const Color& expected, double tolerance) {
-    INFO("got " << Catch::Detail::stringify(got) << ", expected "
-                << Catch::Detail::stringify(expected));
+    INFO("got " << exact_text(got) << ", expected " << exact_text(expected) << ", each within "
+                << raystep::testing::size_text(tolerance) << " x |expected|");
     for (int c = 0; c < 3; ++c) {
         CAPTURE(c);
-        CHECK(got[c] == Approx(expected[c]).epsilon(tolerance).margin(0.0));
+        REQUIRE(got[c] == Approx(expected[c]).epsilon(tolerance).margin(0.0));
     }
 }
 
@@ -57,6 +64,7 @@ const RayOffset kAlongRay{OffsetRule::along_ray, 0.125};
 
 TEST_CASE("sample_quad_light: straight overhead, radiance A / (pi d^2), cos(theta_l) = 1",
           "[stage8]") {
+    INFO(uses("sample_quad_light", "stage 1's cross, dot and length"));
     INFO(
         "From the origin to the light's centre (0, 2, 0): L = (0, 1, 0), d = 2, the light faces "
         "the point head-on. Area 0.25, one sample: intensity = (1, 2, 4) 0.25 / (pi 4) = "
@@ -68,12 +76,14 @@ TEST_CASE("sample_quad_light: straight overhead, radiance A / (pi d^2), cos(thet
 }
 
 TEST_CASE("sample_quad_light: the intensity is shared among sample_count samples", "[stage8]") {
+    INFO(uses("sample_quad_light", "stage 1's cross, dot and length"));
     INFO("The same sample as one of 4: a quarter of it, (1, 2, 4) / (64 pi).");
     const LightSample sample = sample_quad_light(kOverhead, {0, 0, 0}, {0.5, 0.5}, 4);
     check_colour(sample.intensity, Color(1, 2, 4) / (64 * kPi), 1e-14);
 }
 
 TEST_CASE("sample_quad_light: u picks the point a + u.x ab + u.y ac of the light", "[stage8]") {
+    INFO(uses("sample_quad_light", "stage 1's cross, dot and length"));
     INFO(
         "u = (0, 0) is the corner a = (-0.25, 2, -0.25): d^2 = 4.125, and the light leans away by "
         "cos(theta_l) = 2 / d. u = (0.5, 0) is a + ab / 2 = (-0.25, 2, 0): d^2 = 4.0625.");
@@ -82,13 +92,14 @@ TEST_CASE("sample_quad_light: u picks the point a + u.x ab + u.y ac of the light
         CAPTURE(u.x, u.y);
         const LightSample sample = sample_quad_light(kOverhead, {0, 0, 0}, u, 1);
         const double d = std::sqrt(y.x * y.x + y.y * y.y + y.z * y.z);
-        CHECK_THAT(sample.direction, IsNear(y / d, 1e-15));
-        CHECK(sample.distance == Approx(d).epsilon(1e-15));
+        REQUIRE_THAT(sample.direction, IsNear(y / d, 1e-15));
+        REQUIRE(sample.distance == Approx(d).epsilon(1e-15));
         check_colour(sample.intensity, Color(1, 2, 4) * 0.25 * (2 / d) / (kPi * d * d), 1e-14);
     }
 }
 
 TEST_CASE("sample_quad_light: from behind the light, the intensity is 0", "[stage8]") {
+    INFO(uses("sample_quad_light", "stage 1's cross, dot and length"));
     INFO(
         "The point (0, 4, 0) is above the light, which shines down only: cos(theta_l) < 0 counts "
         "as 0. L and d are still the way to the light: (0, -1, 0), 2.");
@@ -100,6 +111,7 @@ TEST_CASE("sample_quad_light: from behind the light, the intensity is 0", "[stag
 
 TEST_CASE("sample_quad_light: a light tilted by 60 degrees gives half, cos(theta_l) = 1/2",
           "[stage8]") {
+    INFO(uses("sample_quad_light", "stage 1's cross, dot and length"));
     INFO(
         "The overhead light turned 60 degrees about the z axis through its centre: ac = 0.5 (cos "
         "60, sin 60, 0), so ab x ac = 0.25 (-sin 60, cos 60, 0) and (ab x ac) . L / A = cos 60 = "
@@ -114,6 +126,7 @@ TEST_CASE("sample_quad_light: a light tilted by 60 degrees gives half, cos(theta
 }
 
 TEST_CASE("sample_quad_light: a point on the light throws std::domain_error", "[stage8]") {
+    INFO(uses("sample_quad_light", "stage 1's cross, dot and length"));
     INFO("From the light's own centre there is no direction to it.");
     const LightSample ahead = sample_quad_light(kOverhead, {0, 1, 0}, {0.5, 0.5}, 1);
     CHECK(ahead.distance == Approx(1.0));
@@ -122,6 +135,7 @@ TEST_CASE("sample_quad_light: a point on the light throws std::domain_error", "[
 
 TEST_CASE("quad_light_shading: a tiny light unblocked: N samples add up to one light's term",
           "[stage8]") {
+    INFO(uses("quad_light_shading", "sample_quad_light, samples, stage 6"));
     INFO(
         "A 1e-3 x 1e-3 light 2 above a matte floor point (Kd = (0.5, 0.25, 1)), shining down: "
         "every sample sees it head-on from about 2 away, so each adds Kd (1, 2, 4) A / (pi 4 N) "
@@ -143,6 +157,7 @@ TEST_CASE("quad_light_shading: a tiny light unblocked: N samples add up to one l
 }
 
 TEST_CASE("quad_light_shading: a light blocked everywhere adds black", "[stage8]") {
+    INFO(uses("quad_light_shading", "sample_quad_light, samples, stage 6"));
     INFO("Every shadow ray is blocked: no sample adds anything, and each one asked.");
     int calls = 0;
     const OccludedFunction everything = [&calls](const Ray&) {
@@ -157,6 +172,7 @@ TEST_CASE("quad_light_shading: a light blocked everywhere adds black", "[stage8]
 }
 
 TEST_CASE("quad_light_shading: samples behind the surface trace no shadow ray", "[stage8]") {
+    INFO(uses("quad_light_shading", "sample_quad_light, samples, stage 6"));
     INFO(
         "A light below the floor (y = -2, shining up): N . L < 0 for every sample, so nothing is "
         "added and no shadow ray is asked for.");
@@ -174,6 +190,7 @@ TEST_CASE("quad_light_shading: samples behind the surface trace no shadow ray", 
 }
 
 TEST_CASE("quad_light_shading: a light across the horizon: shadow rays only above it", "[stage8]") {
+    INFO(uses("quad_light_shading", "sample_quad_light, samples, stage 6"));
     INFO(
         "A 2 x 2 light in the plane x = 2, facing the floor point at the origin, from y = -1 to "
         "y = 1: with 4 x 4 jittered samples the 2 upper rows of strata are above the floor and "
@@ -190,13 +207,13 @@ TEST_CASE("quad_light_shading: a light across the horizon: shadow rays only abov
                        random, nothing, kAlongRay);
     REQUIRE(asked.size() == 8);
     for (const Ray& ray : asked) {
-        INFO("shadow ray: origin " << Catch::Detail::stringify(ray.origin) << ", direction "
-                                   << Catch::Detail::stringify(ray.direction) << ", t in ["
-                                   << ray.t_min << ", " << ray.t_max << "]");
-        CHECK(ray.origin == Vec3(0, 0, 0));
-        CHECK(ray.direction.y > 0.0);
-        CHECK(ray.t_min == 0.125);
+        INFO("shadow ray: origin " << exact_text(ray.origin) << ", direction "
+                                   << exact_text(ray.direction) << ", t in [" << ray.t_min << ", "
+                                   << ray.t_max << "]");
+        REQUIRE(ray.origin == Vec3(0, 0, 0));
+        REQUIRE(ray.direction.y > 0.0);
+        REQUIRE(ray.t_min == 0.125);
         // It ends on the plane x = 2: t_max D.x = 2.
-        CHECK(ray.t_max * ray.direction.x == Approx(2.0).epsilon(1e-14));
+        REQUIRE(ray.t_max * ray.direction.x == Approx(2.0).epsilon(1e-14));
     }
 }

@@ -7,7 +7,7 @@
 // spread is a chi-square test over many streams of a fixed seed, with a threshold that a right
 // implementation exceeds with probability below 1e-6; the seed is fixed, so the test gives the
 // same answer on every run. Each test calls your function before its CHECKs: a stub is
-// reported once.
+// reported once. A loop over streams or points stops at the first that fails.
 
 #include <algorithm>
 #include <cmath>
@@ -17,9 +17,11 @@
 #include <vector>
 
 #include "base/testing/catch.h"
+#include "base/testing/uses.h"
 #include "stages/8_sampling/sampling.h"
 
 using namespace raystep;
+using raystep::testing::uses;
 
 namespace {
 
@@ -82,7 +84,7 @@ TEST_CASE("jittered_samples: n x n points, exactly one in each stratum, all in t
             }
             for (int s = 0; s < n * n; ++s) {
                 INFO("stratum column " << s % n << ", row " << s / n);
-                CHECK(per_stratum[static_cast<std::size_t>(s)] == 1);
+                REQUIRE(per_stratum[static_cast<std::size_t>(s)] == 1);
             }
         }
     }
@@ -104,10 +106,10 @@ TEST_CASE("jittered_samples: a u of 1 - 2^-53, the largest a stream gives, stays
         std::vector<int> per_stratum(static_cast<std::size_t>(n * n), 0);
         for (const Vec2& p : points) {
             INFO("point " << text(p));
-            CHECK(in_unit_square(p));
+            REQUIRE(in_unit_square(p));
             ++per_stratum[static_cast<std::size_t>(stratum_of(p.y, n) * n + stratum_of(p.x, n))];
         }
-        CHECK(per_stratum == std::vector<int>(static_cast<std::size_t>(n * n), 1));
+        REQUIRE(per_stratum == std::vector<int>(static_cast<std::size_t>(n * n), 1));
     }
 }
 
@@ -166,7 +168,7 @@ TEST_CASE("regular_samples: the centres of the n x n strata, exactly", "[stage8]
     std::sort(points.begin(), points.end(), by_y_then_x);
     for (std::size_t k = 0; k < points.size(); ++k) {
         INFO("sorted point " << k << ": " << text(points[k]) << ", expected " << text(expected[k]));
-        CHECK(points[k] == expected[k]);
+        REQUIRE(points[k] == expected[k]);
     }
     const std::vector<Vec2> centre = regular_samples(1);
     REQUIRE(centre.size() == 1);
@@ -205,6 +207,7 @@ TEST_CASE("random_samples: fewer than 1 point throws std::domain_error", "[stage
 }
 
 TEST_CASE("samples: jittered and regular take n^2 samples as n x n strata", "[stage8]") {
+    INFO(uses("samples", "jittered_samples, regular_samples and random_samples"));
     RandomStream random(kSeed, 0);
     const std::vector<Vec2> jittered = samples(SamplePattern::jittered, 9, random);
     REQUIRE(jittered.size() == 9);
@@ -220,28 +223,30 @@ TEST_CASE("samples: jittered and regular take n^2 samples as n x n strata", "[st
     REQUIRE(regular.size() == 4);
     for (std::size_t k = 0; k < regular.size(); ++k) {
         INFO("sorted point " << k << ": " << text(regular[k]) << ", expected " << text(centres[k]));
-        CHECK(regular[k] == centres[k]);
+        REQUIRE(regular[k] == centres[k]);
     }
 }
 
 TEST_CASE("samples: random takes any count", "[stage8]") {
+    INFO(uses("samples", "jittered_samples, regular_samples and random_samples"));
     RandomStream random(kSeed, 0);
     const std::vector<Vec2> points = samples(SamplePattern::random, 5, random);
     REQUIRE(points.size() == 5);
     for (const Vec2& p : points) {
         INFO("point " << text(p));
-        CHECK(in_unit_square(p));
+        REQUIRE(in_unit_square(p));
     }
 }
 
 TEST_CASE("samples: jittered or regular with a count that is not a square throws", "[stage8]") {
+    INFO(uses("samples", "jittered_samples, regular_samples and random_samples"));
     INFO("n x n strata need count = n^2: 2, 8 and 10 have no n; std::domain_error, not n = 1.");
     RandomStream random(kSeed, 0);
     const std::vector<Vec2> sixteen = samples(SamplePattern::jittered, 16, random);
     CHECK(sixteen.size() == 16);
     for (int count : {2, 8, 10}) {
         CAPTURE(count);
-        CHECK_THROWS_AS(samples(SamplePattern::jittered, count, random), std::domain_error);
-        CHECK_THROWS_AS(samples(SamplePattern::regular, count, random), std::domain_error);
+        REQUIRE_THROWS_AS(samples(SamplePattern::jittered, count, random), std::domain_error);
+        REQUIRE_THROWS_AS(samples(SamplePattern::regular, count, random), std::domain_error);
     }
 }

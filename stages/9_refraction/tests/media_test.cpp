@@ -4,7 +4,8 @@
 //
 // A ray's media are a stack of the solids it is inside, in the order it entered them. The cases
 // follow one ray through air, a glass holding water holding an ice cube, and two overlapping
-// solids. Each test calls your function before its CHECKs: a stub is reported once.
+// solids. Each test calls your function before its CHECKs: a stub is reported once. A test of
+// several crossings stops at the first that fails.
 
 #include <string>
 
@@ -27,14 +28,14 @@ std::string text(const MediumStack& stack) {
     return out + "]";
 }
 
-// after_crossing, with the stacks in the failure message.
+// after_crossing, with the stacks in the failure message; a wrong stack ends the test case.
 void check_crossing(const MediumStack& before, const Medium& solid, bool entering,
                     const MediumStack& expected) {
     INFO("before " << text(before) << (entering ? ", entering" : ", leaving") << " solid "
                    << solid.solid);
     const MediumStack after = after_crossing(before, solid, entering);
     INFO("after " << text(after) << ", expected " << text(expected));
-    CHECK(after == expected);
+    REQUIRE(after == expected);
 }
 
 }  // namespace

@@ -5,17 +5,20 @@
 // Every case is worked by hand in its message: the angles are chosen so that sines and cosines
 // are simple (45, 60 degrees, Brewster's angle of glass), and the tolerances are a few units of
 // rounding of a double (1.1e-16 each). Each test calls your function before its CHECKs: a stub
-// is reported once.
+// is reported once. A loop over angles stops at the first that fails.
 
 #include <cmath>
 #include <optional>
 
 #include "base/testing/catch.h"
+#include "base/testing/number_matchers.h"
+#include "base/testing/uses.h"
 #include "base/testing/vec3_matchers.h"
 #include "stages/9_refraction/refraction.h"
 
 using namespace raystep;
 using raystep::testing::IsNear;
+using raystep::testing::uses;
 
 namespace {
 
@@ -36,6 +39,7 @@ const Vec3 kUp{0, 1, 0};
 }  // namespace
 
 TEST_CASE("refract: head-on, the ray goes straight through", "[stage9]") {
+    INFO(uses("refract", "stage 1's dot"));
     INFO("D = (0, -1, 0) into glass, eta = 1 / 1.5: no tangential part to scale, T = D.");
     const std::optional<Vec3> t = refract({0, -1, 0}, kUp, 1 / 1.5);
     REQUIRE(t);
@@ -44,6 +48,7 @@ TEST_CASE("refract: head-on, the ray goes straight through", "[stage9]") {
 
 TEST_CASE("refract: 45 degrees into glass obeys Snell's law, unit length, on the far side",
           "[stage9]") {
+    INFO(uses("refract", "stage 1's dot"));
     INFO(
         "From air (n1 = 1) at 45 degrees into glass (n2 = 1.5): sin(theta2) = sin 45 / 1.5 = "
         "0.4714, so T = (0.4714, -0.8819, 0): bent towards the normal, still going +x and down. "
@@ -54,14 +59,15 @@ TEST_CASE("refract: 45 degrees into glass obeys Snell's law, unit length, on the
     CAPTURE(t->x, t->y, t->z);
     const double sin1 = d.x;
     const double sin2 = t->x;  // |T| = 1, so its tangential part is sin(theta2)
-    CHECK(std::abs(1.0 * sin1 - 1.5 * sin2) <= 4e-16);
-    CHECK(std::abs(std::sqrt(t->x * t->x + t->y * t->y + t->z * t->z) - 1.0) <= 4e-16);
+    CHECK_THAT(1.0 * sin1 - 1.5 * sin2, IsNear(0.0, 4e-16));
+    CHECK_THAT(std::sqrt(t->x * t->x + t->y * t->y + t->z * t->z), IsNear(1.0, 4e-16));
     CHECK(t->y < 0.0);
     CHECK(t->z == 0.0);
 }
 
 TEST_CASE("refract: leaving glass just beyond the critical angle is total internal reflection",
           "[stage9]") {
+    INFO(uses("refract", "stage 1's dot"));
     INFO(
         "Inside glass (eta = 1.5 / 1), the critical angle is asin(1 / 1.5) = 41.81 degrees. At 42 "
         "degrees, sin^2(theta2) = 1.5^2 sin^2 42 = 1.007 > 1: no refracted ray, nullopt.");
@@ -71,6 +77,7 @@ TEST_CASE("refract: leaving glass just beyond the critical angle is total intern
 
 TEST_CASE("refract: leaving glass just below the critical angle, a grazing refracted ray",
           "[stage9]") {
+    INFO(uses("refract", "stage 1's dot"));
     INFO(
         "At 41.5 degrees, sin(theta2) = 1.5 sin 41.5 = 0.9936: theta2 = 83.5 degrees, almost along "
         "the surface, still below it and still obeying Snell's law.");
@@ -78,12 +85,13 @@ TEST_CASE("refract: leaving glass just below the critical angle, a grazing refra
     const std::optional<Vec3> t = refract(d, kUp, 1.5);
     REQUIRE(t);
     CAPTURE(t->x, t->y, t->z);
-    CHECK(std::abs(1.5 * d.x - 1.0 * t->x) <= 4e-16);
+    CHECK_THAT(1.5 * d.x - 1.0 * t->x, IsNear(0.0, 4e-16));
     CHECK(t->y < 0.0);
-    CHECK(std::abs(std::sqrt(t->x * t->x + t->y * t->y) - 1.0) <= 4e-16);
+    CHECK_THAT(std::sqrt(t->x * t->x + t->y * t->y), IsNear(1.0, 4e-16));
 }
 
 TEST_CASE("refract: eta = 1 leaves the direction as it is", "[stage9]") {
+    INFO(uses("refract", "stage 1's dot"));
     INFO(
         "The same index on both sides: nothing bends, at any angle. To within 1e-14: near "
         "grazing, cos2 = sqrt(1 - sin^2) loses the ulps of 1 that the subtraction cancels, "
@@ -93,7 +101,7 @@ TEST_CASE("refract: eta = 1 leaves the direction as it is", "[stage9]") {
         const Vec3 d = falling_at(radians(degrees));
         const std::optional<Vec3> t = refract(d, kUp, 1.0);
         REQUIRE(t);
-        CHECK_THAT(*t, IsNear(d, 1e-14));
+        REQUIRE_THAT(*t, IsNear(d, 1e-14));
     }
 }
 
@@ -150,9 +158,9 @@ TEST_CASE("fresnel_exact: reciprocity, the same F both ways through the surface"
         const double entering = fresnel_exact(std::cos(theta1), 1.0, 1.5);
         const double leaving = fresnel_exact(std::cos(theta2), 1.5, 1.0);
         CAPTURE(entering, leaving);
-        CHECK(entering == Approx(leaving).epsilon(1e-12));
-        CHECK(entering > 0.04);
-        CHECK(entering < 1.0);
+        REQUIRE(entering == Approx(leaving).epsilon(1e-12));
+        REQUIRE(entering > 0.04);
+        REQUIRE(entering < 1.0);
     }
 }
 

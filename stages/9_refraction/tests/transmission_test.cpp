@@ -7,7 +7,8 @@
 // a sky above and a floor below), records the rays it is asked about and counts the calls. A
 // made-up index of 3 makes F exactly 1/4 head-on ((3 - 1) / (3 + 1) = 1/2, squared), so that
 // the colours below are sums of powers of two and == is fair. Each test calls your function
-// before its CHECKs: a stub is reported once.
+// before its CHECKs: a stub is reported once. A loop over cases stops at the first that fails,
+// and a function built from others names them: fix theirs first.
 
 #include <algorithm>
 #include <cmath>
@@ -16,11 +17,14 @@
 #include <vector>
 
 #include "base/testing/catch.h"
+#include "base/testing/number_matchers.h"
+#include "base/testing/uses.h"
 #include "base/testing/vec3_matchers.h"
 #include "stages/9_refraction/refraction.h"
 
 using namespace raystep;
 using raystep::testing::IsNear;
+using raystep::testing::uses;
 
 namespace {
 
@@ -90,6 +94,7 @@ const Ray kDown{{0, 0, 2}, {0, 0, -1}};
 }  // namespace
 
 TEST_CASE("refracted_ray: 45 degrees into glass, on the far side, unbounded", "[stage9]") {
+    INFO(uses("refracted_ray", "refract and stage 6's spawn_ray"));
     INFO(
         "The floor y = 0 at the origin, the ray falling at 45 degrees (V = (-sin 45, cos 45, 0)), "
         "air above (n1 = 1), glass below (n2 = 1.5): sin(theta2) = sin 45 / 1.5. along_normal "
@@ -102,12 +107,13 @@ TEST_CASE("refracted_ray: 45 degrees into glass, on the far side, unbounded", "[
     CHECK(ray->origin == Vec3(0, -0.25, 0));
     CHECK(ray->t_min == 0.0);
     CHECK(ray->t_max == kInf);
-    CHECK(std::abs(ray->direction.x - h / 1.5) <= 4e-16);
+    CHECK_THAT(ray->direction.x, IsNear(h / 1.5, 4e-16));
     CHECK(ray->direction.y < 0.0);
 }
 
 TEST_CASE("refracted_ray: with error_bound, starts beyond the point's error on the far side",
           "[stage9]") {
+    INFO(uses("refracted_ray", "refract and stage 6's spawn_ray"));
     INFO(
         "Error 1e-9 in y on the floor y = 0, the ray going into it head-on: the refracted ray "
         "must start below y = -1e-9, so that it cannot find the floor again at t ~ 0.");
@@ -121,6 +127,7 @@ TEST_CASE("refracted_ray: with error_bound, starts beyond the point's error on t
 }
 
 TEST_CASE("refracted_ray: bends about the shading normal", "[stage9]") {
+    INFO(uses("refracted_ray", "refract and stage 6's spawn_ray"));
     INFO(
         "Seen from straight above (V = (0, 1, 0)) with a shading normal N = (0, 0.8, 0.6), into "
         "glass: cos1 = 0.8, sin^2(theta2) = (1 - 0.64) / 2.25 = 0.16, cos2 = sqrt(0.84), and T = "
@@ -134,6 +141,7 @@ TEST_CASE("refracted_ray: bends about the shading normal", "[stage9]") {
 }
 
 TEST_CASE("refracted_ray: nullopt under total internal reflection", "[stage9]") {
+    INFO(uses("refracted_ray", "refract and stage 6's spawn_ray"));
     INFO("Leaving glass (1.5 -> 1) at 60 degrees, beyond the critical angle of 41.8.");
     const SurfacePoint point{
         {0, 0, 0}, Vec3(0.0), {0, 1, 0}, {0, 1, 0}, {-std::sqrt(3.0) / 2, 0.5, 0}};
@@ -141,6 +149,8 @@ TEST_CASE("refracted_ray: nullopt under total internal reflection", "[stage9]") 
 }
 
 TEST_CASE("radiance_with_refraction: a ray that misses everything is black", "[stage9]") {
+    INFO(uses("radiance_with_refraction",
+              "refracted_ray, the fresnel_ and media functions, stage 7"));
     int calls = 0;
     const MediumShadeFunction nothing = [&calls](const Ray&) -> std::optional<MediumHit> {
         ++calls;
@@ -153,6 +163,8 @@ TEST_CASE("radiance_with_refraction: a ray that misses everything is black", "[s
 
 TEST_CASE("radiance_with_refraction: weights Ks + Kt F on the reflection, Kt (1 - F) through",
           "[stage9]") {
+    INFO(uses("radiance_with_refraction",
+              "refracted_ray, the fresnel_ and media functions, stage 7"));
     INFO(
         "Head-on into index 3: F = 1/4 (exact and Schlick alike). Ks = (0.5, 0, 0), Kt = (1, 1, "
         "0.5), local (0.25, 0.25, 0.25): reflected weight (0.75, 0.25, 0.125) on the sky (1, 2, "
@@ -166,15 +178,17 @@ TEST_CASE("radiance_with_refraction: weights Ks + Kt F on the reflection, Kt (1 
         };
         const Color got = radiance_with_refraction(glass_then_sky_and_floor(top, asked), kDown, 1,
                                                    {}, schlick, kAlongNormal);
-        CHECK(got == Color(1, 1.5, 1));
+        REQUIRE(got == Color(1, 1.5, 1));
         REQUIRE(asked.size() == 3);
         const auto up = std::count_if(asked.begin() + 1, asked.end(),
                                       [](const Ray& ray) { return ray.direction.z > 0; });
-        CHECK(up == 1);
+        REQUIRE(up == 1);
     }
 }
 
 TEST_CASE("radiance_with_refraction: the refracted ray starts below the glass", "[stage9]") {
+    INFO(uses("radiance_with_refraction",
+              "refracted_ray, the fresnel_ and media functions, stage 7"));
     INFO(
         "Head-on into the glass at the origin, along_normal with epsilon 0.125: the refracted ray "
         "starts at (0, 0, -0.125), goes straight down and is unbounded; the reflected one starts "
@@ -190,13 +204,15 @@ TEST_CASE("radiance_with_refraction: the refracted ray starts below the glass", 
         CAPTURE(k);
         const Ray& ray = asked[k];
         const bool going_up = ray.direction.z > 0;
-        CHECK(ray.origin == Vec3(0, 0, going_up ? 0.125 : -0.125));
-        CHECK_THAT(ray.direction, IsNear(Vec3{0, 0, going_up ? 1.0 : -1.0}, 1e-15));
-        CHECK(ray.t_max == kInf);
+        REQUIRE(ray.origin == Vec3(0, 0, going_up ? 0.125 : -0.125));
+        REQUIRE_THAT(ray.direction, IsNear(Vec3{0, 0, going_up ? 1.0 : -1.0}, 1e-15));
+        REQUIRE(ray.t_max == kInf);
     }
 }
 
 TEST_CASE("radiance_with_refraction: F from Schlick or the exact formula, as asked", "[stage9]") {
+    INFO(uses("radiance_with_refraction",
+              "refracted_ray, the fresnel_ and media functions, stage 7"));
     INFO(
         "Into glass (1.5) at 60 degrees, Kt = 1, Ks = 0: I = F sky + (1 - F) floor, so I.x = F: "
         "Schlick's 0.04 + 0.96 / 32 = 0.07, the exact 0.0891867 (fresnel_exact's tests work it).");
@@ -210,12 +226,14 @@ TEST_CASE("radiance_with_refraction: F from Schlick or the exact formula, as ask
         std::vector<Ray> asked;
         const Color got = radiance_with_refraction(glass_then_sky_and_floor(top, asked), eye, 1, {},
                                                    schlick, kAlongNormal);
-        CHECK(got.x == Approx(expected).epsilon(1e-6));
-        CHECK(got.y == Approx(2 * expected + (1 - expected)).epsilon(1e-6));
+        REQUIRE(got.x == Approx(expected).epsilon(1e-6));
+        REQUIRE(got.y == Approx(2 * expected + (1 - expected)).epsilon(1e-6));
     }
 }
 
 TEST_CASE("radiance_with_refraction: total internal reflection sends everything back", "[stage9]") {
+    INFO(uses("radiance_with_refraction",
+              "refracted_ray, the fresnel_ and media functions, stage 7"));
     INFO(
         "Inside glass (1.5), going up at 60 degrees onto its top surface: beyond the critical "
         "angle, F = 1. Kt = 1, Ks = 0: the whole Kt goes to the reflected ray, down to the floor: "
@@ -230,13 +248,15 @@ TEST_CASE("radiance_with_refraction: total internal reflection sends everything 
         std::vector<Ray> asked;
         const Color got = radiance_with_refraction(glass_then_sky_and_floor(top, asked), up_inside,
                                                    3, {Medium{7, 1.5}}, schlick, kAlongNormal);
-        CHECK_THAT(got, IsNear(kFloor, 1e-15));
+        REQUIRE_THAT(got, IsNear(kFloor, 1e-15));
         REQUIRE(asked.size() == 2);
-        CHECK(asked[1].direction.z < 0.0);
+        REQUIRE(asked[1].direction.z < 0.0);
     }
 }
 
 TEST_CASE("radiance_with_refraction: in and out of a slab, the media go with the ray", "[stage9]") {
+    INFO(uses("radiance_with_refraction",
+              "refracted_ray, the fresnel_ and media functions, stage 7"));
     INFO(
         "A slab of index 3, maxdepth 2, head-on from above. At the top (air -> 3) F = 1/4: a "
         "quarter of the sky, three quarters through. At the bottom the ray is inside the slab "
@@ -252,6 +272,8 @@ TEST_CASE("radiance_with_refraction: in and out of a slab, the media go with the
 }
 
 TEST_CASE("radiance_with_refraction: with no bounce left, neither ray is traced", "[stage9]") {
+    INFO(uses("radiance_with_refraction",
+              "refracted_ray, the fresnel_ and media functions, stage 7"));
     std::vector<Ray> asked;
     const MediumShadeFunction top = [](const Ray& ray) -> std::optional<MediumHit> {
         return glass(ray, {0, 0, 1}, 3, true, Color(1.0), Color(0.5), Color(0.25));
@@ -263,6 +285,8 @@ TEST_CASE("radiance_with_refraction: with no bounce left, neither ray is traced"
 }
 
 TEST_CASE("radiance_with_refraction: a black weight traces no ray", "[stage9]") {
+    INFO(uses("radiance_with_refraction",
+              "refracted_ray, the fresnel_ and media functions, stage 7"));
     INFO(
         "An opaque, matte surface (Ks = Kt = 0) traces nothing: 1 call. A clear solid of index 1 "
         "head-on has F = 0, so with Ks = 0 the reflected weight Ks + Kt F is exactly black: only "
@@ -275,8 +299,8 @@ TEST_CASE("radiance_with_refraction: a black weight traces no ray", "[stage9]") 
         };
         const Color matte_got = radiance_with_refraction(
             glass_then_sky_and_floor(matte, matte_asked), kDown, 5, {}, schlick, kAlongNormal);
-        CHECK(matte_got == Color(0.5));
-        CHECK(matte_asked.size() == 1);
+        REQUIRE(matte_got == Color(0.5));
+        REQUIRE(matte_asked.size() == 1);
 
         std::vector<Ray> matched_asked;
         const MediumShadeFunction matched = [](const Ray& ray) -> std::optional<MediumHit> {
@@ -284,7 +308,7 @@ TEST_CASE("radiance_with_refraction: a black weight traces no ray", "[stage9]") 
         };
         const Color matched_got = radiance_with_refraction(
             glass_then_sky_and_floor(matched, matched_asked), kDown, 5, {}, schlick, kAlongNormal);
-        CHECK(matched_got == kFloor);
-        CHECK(matched_asked.size() == 2);
+        REQUIRE(matched_got == kFloor);
+        REQUIRE(matched_asked.size() == 2);
     }
 }
