@@ -170,7 +170,7 @@ int run_compare(const CompareArguments& arguments) {
         const std::string file_name = scene.stem().string() + "." + view + ".png";
         // Found before rendering, so that a missing reference costs no render.
         const fs::path reference = find_reference_image(scene.parent_path() / file_name, "");
-        const fs::path image = default_output(scene, file_name);
+        const fs::path image = default_output(scene_output_folder(scene), file_name);
         RenderArguments render;
         render.scene = arguments.scene;
         render.output = image.string();

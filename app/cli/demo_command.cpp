@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 
+#include "app/cli/output_path.h"
 #include "app/demo/demo_list.h"
 #include "app/demo/demo_size.h"
 #include "app/demo/label_text.h"
@@ -31,7 +32,7 @@ CLI::App* add_demo_command(CLI::App& app, DemoArguments& arguments) {
     command->add_option("name", arguments.name, "The demo to render")
         ->check(CLI::IsMember(demo_names()));
     command->add_option("-o,--output", arguments.output,
-                        "Image file; its extension picks the format. Default: demo-NAME.png");
+                        "Image file; its extension picks the format. Default: out/demos/NAME.png");
     command
         ->add_option("--size", arguments.size,
                      "Image size in pixels, WIDTHxHEIGHT, from " +
@@ -59,9 +60,9 @@ int run_demo(const DemoArguments& arguments) {
         return 0;
     }
     const DemoEntry& demo = find_demo(arguments.name);
-    const std::filesystem::path output =
-        arguments.output.empty() ? std::filesystem::path("demo-" + arguments.name + ".png")
-                                 : std::filesystem::path(arguments.output);
+    const std::filesystem::path output = arguments.output.empty()
+                                             ? default_output("demos", arguments.name + ".png")
+                                             : std::filesystem::path(arguments.output);
 
     // Labels need a TrueType font; without one the image is still worth having
     const std::optional<LabelFont> font = find_label_font();

@@ -64,10 +64,11 @@ int run_render(const RenderArguments& arguments) {
     std::filesystem::path output = arguments.output;
     if (output.empty()) {
         const std::filesystem::path scene_file = arguments.scene;
-        output = default_output(scene_file, scene.output.empty()
-                                                ? scene_file.stem().string() + "." +
-                                                      std::string(view_name(view)) + ".png"
-                                                : scene.output);
+        const std::string file_name =
+            scene.output.empty()
+                ? scene_file.stem().string() + "." + std::string(view_name(view)) + ".png"
+                : scene.output;
+        output = default_output(scene_output_folder(scene_file), file_name);
     }
 
     RenderOptions options;
