@@ -36,11 +36,14 @@ grading_packages=(
 # Chromium, `raystep view` served by cpp-httplib); and
 # `raystep-reference bench` (the Embree baseline, and the bunny mesh of CGAL's demo data); the
 # format check (clang-format 14, Debian 12's); ccache, through which scripts/test-all.sh compiles
-# each object once for its several builds (scripts/use-ccache.sh). The build configures without
-# any of them, and the tests that need one say so and are skipped.
+# each object once for its several builds (scripts/use-ccache.sh); and the stand-ins for a
+# student's Mac and Windows laptop (release/standins/, scripts/check-student-platforms.sh): clang
+# 16 with libc++, and MinGW-w64 with Wine. The build configures without any of them, and the
+# tests that need one say so and are skipped.
 other_packages=(
     openimageio-tools fonts-dejavu-core libxml2-dev chromium libcpp-httplib-dev libembree-dev
     libcgal-demo clang-format ccache
+    clang-16 libc++-16-dev libc++abi-16-dev g++-mingw-w64-x86-64-posix wine wine64
 )
 
 case "${1:-}" in

@@ -2,7 +2,9 @@
 # The second command of README.md: builds and runs the whole test suite.
 #   1. the release build, warnings as errors, and every test;
 #   2. the student build (every stage from stages/): every public test must fail with a
-#      NotImplemented message and none may crash;
+#      NotImplemented message and none may crash; then the student release on the stand-ins for a
+#      Mac (clang with libc++) and a Windows laptop (MinGW-w64 under Wine), with the stubs and with
+#      every stage written (scripts/check-student-platforms.sh);
 #   3. the debug build under AddressSanitizer and UndefinedBehaviorSanitizer, and every test but
 #      the grader's corpus (its probes cannot be sandboxed under the sanitizers), the checks of the
 #      sources themselves (format, layers, docs), which run no compiled code, the studies' runs of
@@ -34,7 +36,15 @@ if [ ! -d solutions ]; then
 fi
 
 step "student build: every stub fails cleanly"
+# One release for the student checks, each of which works on a copy of its own.
+export RAYSTEP_RELEASE=$PWD/build/pristine-release
+rm -rf "$RAYSTEP_RELEASE"
+build/release/bin/raystep-grade release "$RAYSTEP_RELEASE" >/dev/null
 scripts/check-student-build.sh
+step "student release on the Mac and Windows stand-ins"
+scripts/check-student-platforms.sh
+rm -rf "$RAYSTEP_RELEASE"
+unset RAYSTEP_RELEASE
 
 step "sanitizer build"
 # Probes built by the grader's corpus test would carry AddressSanitizer too, which reserves more

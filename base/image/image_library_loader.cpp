@@ -53,7 +53,9 @@ Opened open_module(const fs::path& path) {
     if (!module) return {nullptr, last_system_error()};
     FARPROC symbol = GetProcAddress(module, RAYSTEP_IMAGE_LIBRARY_SYMBOL);
     if (!symbol) return {nullptr, last_system_error()};
-    return {reinterpret_cast<RaystepImageLibraryEntry>(symbol), {}};
+    // Through void (*)(), the function pointer type that converts to any other without a
+    // warning (GCC's -Wcast-function-type): FARPROC's own signature is not the entry's.
+    return {reinterpret_cast<RaystepImageLibraryEntry>(reinterpret_cast<void (*)()>(symbol)), {}};
 }
 
 fs::path executable_path() {

@@ -19,8 +19,6 @@ using namespace raystep;
 
 namespace {
 
-const double kInf = std::numeric_limits<double>::infinity();
-
 // The unit cube [0, 1]^3.
 const Aabb kCube{{0, 0, 0}, {1, 1, 1}};
 

@@ -1,0 +1,6 @@
+# The version of Debian 12's nlohmann/json, which the stand-in's headers are.
+set(PACKAGE_VERSION 3.11.2)
+set(PACKAGE_VERSION_COMPATIBLE FALSE)
+if(NOT PACKAGE_FIND_VERSION OR PACKAGE_FIND_VERSION_MAJOR EQUAL 3)
+    set(PACKAGE_VERSION_COMPATIBLE TRUE)
+endif()

@@ -1,0 +1,129 @@
+#!/usr/bin/env bash
+# The student release on the stand-ins for a student's Mac and Windows laptop (release/standins/):
+#   libcxx     clang 16 with libc++, Apple's C++ standard library;
+#   mingw-w64  a MinGW-w64 cross build, its programs run under Wine.
+# For each, the release `raystep-grade release` writes is configured with the student preset and
+# the stand-in's toolchain, warnings as errors, and built; then the public tests run twice, judged
+# as the student platforms workflow judges them (scripts/check-public-tests.py):
+#   1. with the stubs: every test case fails with a NotImplemented message, and none crashes;
+#   2. with every stage written (the model submission's manifest files copied in, nothing else,
+#      and the build run again): every test case passes.
+# Last, the raystep command with every stage written: `info`, which reads a scene, and `render`,
+# which writes its image where the stand-in has the image module (libc++) and says the module is
+# missing where it has none (MinGW: release/standins/mingw-w64.cmake says why).
+#
+#   scripts/check-student-platforms.sh [libcxx] [mingw-w64]    (default: both)
+#
+# Needs build/release (the release writer). Where ccache is installed, the builds compile through
+# it (scripts/use-ccache.sh), so the second build of each recompiles only the stage files.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+root=$(pwd)
+source scripts/use-ccache.sh
+standins=("$@")
+[ ${#standins[@]} -eq 0 ] && standins=(libcxx mingw-w64)
+problems=0
+
+release=$root/build/platform-release
+rm -rf "$release"
+# Written here, or copied from RAYSTEP_RELEASE, where scripts/test-all.sh wrote one release for
+# this and the other student checks (writing one renders every scene's reference views).
+if [ -n "${RAYSTEP_RELEASE:-}" ]; then
+    cp -r "$RAYSTEP_RELEASE" "$release"
+else
+    build/release/bin/raystep-grade release "$release" >/dev/null
+fi
+model=$root/grader/tests/submissions/model/stages
+
+stubs=$root/build/platform-stubs
+rm -rf "$stubs"
+cp -r "$release/stages" "$stubs"
+trap 'rm -rf "$release" "$stubs"' EXIT
+
+# write_the_stages: the model's manifest files into the release, as a student's edits.
+write_the_stages() {
+    local manifest stage entry
+    for manifest in "$release"/stages/*/manifest.txt; do
+        stage=$(basename "$(dirname "$manifest")")
+        while read -r entry; do
+            case "$entry" in "" | "#"*) continue ;; esac
+            cp "$model/$stage/$entry" "$release/stages/$stage/$entry"
+        done <"$manifest"
+    done
+}
+
+# check_command WHAT EXIT PATTERN COMMAND...: the command exits EXIT and prints a line matching
+# PATTERN.
+check_command() {
+    local what=$1 expected_exit=$2 pattern=$3
+    shift 3
+    local output exit_code=0
+    output=$("$@" 2>&1) || exit_code=$?
+    if [ "$exit_code" -ne "$expected_exit" ] || ! grep -Eq "$pattern" <<<"$output"; then
+        echo "FAIL $what: exit $exit_code (expected $expected_exit), printed:"
+        tail -n 20 <<<"$output" | sed 's/^/  /'
+        problems=$((problems + 1))
+    else
+        echo "ok   $what: $(grep -Eo "$pattern" <<<"$output" | head -n 1)"
+    fi
+}
+
+# The public tests run side by side (ctest reads CTEST_PARALLEL_LEVEL): under Wine each starts a
+# Windows process of its own.
+export CTEST_PARALLEL_LEVEL=${CTEST_PARALLEL_LEVEL:-$(nproc 2>/dev/null || echo 2)}
+for standin in "${standins[@]}"; do
+    toolchain=$root/release/standins/$standin.cmake
+    if [ ! -f "$toolchain" ]; then
+        echo "no stand-in '$standin': release/standins/ has $(cd release/standins && ls ./*.cmake)" >&2
+        exit 2
+    fi
+    # The student preset's own folder, build/student, so that its test preset finds the tests.
+    build=$release/build/student
+    rm -rf "$build"
+    raystep=("$build/bin/raystep")
+    if [ "$standin" = mingw-w64 ]; then
+        # Wine's own messages off, and its prefix (its C: drive) inside the build. Its server and
+        # services are started here, their output to /dev/null: started by the first test, they
+        # would hold that test's output pipe open, and ctest would wait for it to close forever.
+        export WINEDEBUG=-all WINEPREFIX=$build/wine
+        mkdir -p "$WINEPREFIX"
+        wineboot --init >/dev/null 2>&1 </dev/null
+        trap 'wineserver -k 2>/dev/null || true; rm -rf "$release" "$stubs"' EXIT
+        raystep=(wine "$build/bin/raystep.exe")
+    fi
+    for stages in stubs written; do
+        echo "== $standin, $stages (at $SECONDS s)"
+        rm -rf "$release/stages"
+        cp -r "$stubs" "$release/stages"
+        [ "$stages" = written ] && write_the_stages
+        # The toolchain is named once, when the folder is first configured, as CMake takes it.
+        toolchain_option=()
+        [ -f "$build/CMakeCache.txt" ] || toolchain_option=(--toolchain "$toolchain")
+        (cd "$release" && cmake --preset student "${toolchain_option[@]}" \
+            -DRAYSTEP_WARNINGS_AS_ERRORS=ON >/dev/null && cmake --build --preset student)
+        if ! (cd "$release" && python3 "$root/scripts/check-public-tests.py" "$stages" student \
+            --junit "$release/build/$standin-$stages.xml"); then
+            problems=$((problems + 1))
+        fi
+    done
+    # From the release's root, by relative paths, as a student types them: on Windows, CLI11 takes
+    # an argument that starts with / for an option (/o), and a Linux path starts with one.
+    cd "$release"
+    scene=scenes/stage3/spheres-on-plane.test
+    check_command "$standin: raystep info reads a scene" 0 "views" "${raystep[@]}" info "$scene"
+    if [ "$standin" = mingw-w64 ]; then
+        check_command "$standin: raystep render says the image module is missing" 1 \
+            "cannot load the image library" "${raystep[@]}" render "$scene" --view depth
+    else
+        check_command "$standin: raystep render writes its image through the image module" 0 \
+            "^wrote out/stage3/spheres-on-plane.depth.png" "${raystep[@]}" render "$scene" \
+            --view depth
+    fi
+    cd "$root"
+done
+
+if [ "$problems" -ne 0 ]; then
+    echo "$problems problem(s) on the stand-ins"
+    exit 1
+fi
+echo "the student release builds and tests as it should on: ${standins[*]}"
