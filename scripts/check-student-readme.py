@@ -114,8 +114,8 @@ SOURCE_COMMAND = re.compile(r"`((?:ctest|build/)[^`]*)`")
 
 
 def source_comment_commands(release: pathlib.Path):
-    """(file, line number, command) for each command the opening // comment of a stage's source
-    and test files names: the first directions a student reads."""
+    """(file, line number, command, None) for each command the opening // comment of a stage's
+    source and test files names: the first directions a student reads, for every platform."""
     for source in sorted(release.glob("stages/*/**/*.cpp")) + sorted(release.glob("stages/*/*.h")):
         lines = source.read_text(encoding="utf-8").splitlines()
         for number, line in enumerate(lines, start=1):
