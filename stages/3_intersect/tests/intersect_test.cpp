@@ -16,28 +16,17 @@
 #include "base/testing/uses.h"
 #include "base/testing/vec3_matchers.h"
 #include "stages/3_intersect/intersect.h"
+#include "stages/3_intersect/tests/hit_text.h"
 
 using namespace raystep;
 using raystep::testing::exact_text;
 using raystep::testing::IsNear;
+using raystep::testing::text;
 using raystep::testing::uses;
 
 namespace {
 
 const double kInf = std::numeric_limits<double>::infinity();
-
-std::string text(const Ray& ray) {
-    return "ray: origin " + exact_text(ray.origin) + ", direction " + exact_text(ray.direction) +
-           ", t in [" + exact_text(ray.t_min) + ", " + exact_text(ray.t_max) + "]";
-}
-
-// "a miss", or "triangle 1 at t = 5".
-std::string text(const std::optional<PrimitiveHit>& hit) {
-    if (!hit) return "a miss";
-    const char* const kinds[] = {"sphere", "triangle", "plane"};
-    return kinds[static_cast<int>(hit->kind)] + (" " + std::to_string(hit->index)) +
-           " at t = " + exact_text(hit->hit.t);
-}
 
 std::string inputs(const Ray& ray, const Plane& plane) {
     return text(ray) + "\nplane: point " + exact_text(plane.point) + ", normal " +

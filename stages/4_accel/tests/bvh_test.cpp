@@ -20,9 +20,11 @@
 #include "base/testing/number_text.h"
 #include "base/testing/uses.h"
 #include "base/testing/vec3_matchers.h"
+#include "stages/3_intersect/tests/hit_text.h"
 #include "stages/4_accel/bvh.h"
 
 using namespace raystep;
+using raystep::testing::text;
 using raystep::testing::uses;
 
 namespace {
@@ -44,20 +46,6 @@ PrimitiveList random_scene(PortableRandom& random, int n) {
 Ray random_ray(PortableRandom& random) {
     const Vec3 origin = random.point(8.0);
     return {origin, random.point(5.0) - origin};
-}
-
-std::string text(const Ray& ray) {
-    using raystep::testing::exact_text;
-    return "ray: origin " + exact_text(ray.origin) + ", direction " + exact_text(ray.direction) +
-           ", t in [" + exact_text(ray.t_min) + ", " + exact_text(ray.t_max) + "]";
-}
-
-// "a miss", or "triangle 12 at t = 4.25".
-std::string text(const std::optional<PrimitiveHit>& hit) {
-    if (!hit) return "a miss";
-    const char* const kinds[] = {"sphere", "triangle", "plane"};
-    return kinds[static_cast<int>(hit->kind)] + (" " + std::to_string(hit->index)) +
-           " at t = " + raystep::testing::exact_text(hit->hit.t);
 }
 
 // The BVH's answer is closest_hit's, bit for bit; a difference ends the test case.

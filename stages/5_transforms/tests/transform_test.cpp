@@ -18,11 +18,13 @@
 #include "base/testing/number_text.h"
 #include "base/testing/uses.h"
 #include "base/testing/vec3_matchers.h"
+#include "stages/3_intersect/tests/hit_text.h"
 #include "stages/5_transforms/transform.h"
 
 using namespace raystep;
 using raystep::testing::exact_text;
 using raystep::testing::IsNear;
+using raystep::testing::text;
 using raystep::testing::uses;
 
 namespace {
@@ -39,11 +41,6 @@ Vec3 apply_to_direction(const Mat4& m, const Vec3& d) {
 
 // The transform of `translate offset` then `scale factors`, built here with glm rather than by
 // compose, so that the object-frame tests need only the function they test.
-std::string text(const Ray& ray) {
-    return "ray: origin " + exact_text(ray.origin) + ", direction " + exact_text(ray.direction) +
-           ", t in [" + exact_text(ray.t_min) + ", " + exact_text(ray.t_max) + "]";
-}
-
 Transform moved_and_scaled(const Vec3& offset, const Vec3& factors) {
     return {glm::scale(glm::translate(Mat4(1.0), offset), factors),
             glm::translate(glm::scale(Mat4(1.0), 1.0 / factors), -offset)};
