@@ -33,6 +33,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
 source scripts/use-ccache.sh
+source scripts/check-command.sh
 scene=base/tests/data/good/quad.test
 stub_message='stage [0-9]+: [A-Za-z_:]+ is not implemented yet, see docs/stage[0-9]+\.md, section "[^"]+"'
 
@@ -92,19 +93,6 @@ if ! (cd "$release" && python3 "$root/scripts/check-public-tests.py" stubs stude
     problems=$((problems + 1))
 fi
 
-check_command() {
-    local what=$1 expected_exit=$2 pattern=$3
-    shift 3
-    local output exit_code=0
-    output=$("$@" 2>&1) || exit_code=$?
-    if [ "$exit_code" -ne "$expected_exit" ] || ! grep -Eq "$pattern" <<<"$output"; then
-        echo "FAIL $what: exit $exit_code (expected $expected_exit), printed:"
-        echo "$output" | sed 's/^/  /'
-        problems=$((problems + 1))
-    else
-        echo "ok   $what: $(grep -Eo "$pattern" <<<"$output" | head -n 1)"
-    fi
-}
 check_command "scripts/test.sh 1 runs stage 1's public tests, every one failing at a stub" 8 \
     "0% tests passed, [0-9]+ tests failed out of [0-9]+" "$release/scripts/test.sh" 1
 check_command "scripts/test.sh of a stage that does not exist exits 2" 2 "no stage '10'" \

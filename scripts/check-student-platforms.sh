@@ -20,6 +20,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
 source scripts/use-ccache.sh
+source scripts/check-command.sh
 standins=("$@")
 [ ${#standins[@]} -eq 0 ] && standins=(libcxx mingw-w64)
 problems=0
@@ -52,21 +53,6 @@ write_the_stages() {
     done
 }
 
-# check_command WHAT EXIT PATTERN COMMAND...: the command exits EXIT and prints a line matching
-# PATTERN.
-check_command() {
-    local what=$1 expected_exit=$2 pattern=$3
-    shift 3
-    local output exit_code=0
-    output=$("$@" 2>&1) || exit_code=$?
-    if [ "$exit_code" -ne "$expected_exit" ] || ! grep -Eq "$pattern" <<<"$output"; then
-        echo "FAIL $what: exit $exit_code (expected $expected_exit), printed:"
-        tail -n 20 <<<"$output" | sed 's/^/  /'
-        problems=$((problems + 1))
-    else
-        echo "ok   $what: $(grep -Eo "$pattern" <<<"$output" | head -n 1)"
-    fi
-}
 
 # The public tests run side by side (ctest reads CTEST_PARALLEL_LEVEL): under Wine each starts a
 # Windows process of its own.
