@@ -21,23 +21,22 @@ namespace {
 using probe::Json;
 using Kind = ProbeAnswer::Kind;
 
-std::string interval_text(Wide enter, Wide exit) {
-    return "[" + full_text(static_cast<double>(enter)) + ", " +
-           full_text(static_cast<double>(exit)) + "]";
+std::string interval_text(double enter, double exit) {
+    return "[" + full_text(enter) + ", " + full_text(exit) + "]";
 }
 
 std::string expected_text(const SlabInterval& exact) {
     if (exact.must_miss) return "a miss";
-    const std::string interval = "t in " + interval_text(exact.enter, exact.exit) + " (within " +
-                                 full_text(static_cast<double>(exact.enter_tolerance)) + " and " +
-                                 full_text(static_cast<double>(exact.exit_tolerance)) + ")";
+    const std::string interval = "t in " + interval_text(exact.enter.hi, exact.exit.hi) +
+                                 " (within " + full_text(exact.enter_tolerance) + " and " +
+                                 full_text(exact.exit_tolerance) + ")";
     return exact.must_hit ? interval : interval + " or a miss (the ray passes within rounding)";
 }
 
 // An infinite end is compared exactly; written so that a NaN fails.
-bool within(double got, Wide expected, Wide tolerance) {
-    if (std::isinf(expected)) return static_cast<Wide>(got) == expected;
-    return std::fabs(static_cast<Wide>(got) - expected) <= tolerance;
+bool within(double got, const DoubleDouble& expected, const DoubleDouble& tolerance) {
+    if (is_infinite(expected)) return got == expected.hi;
+    return near_wide(got, expected, tolerance);
 }
 
 const JudgeRegistry::Registration slab_interval_registration{

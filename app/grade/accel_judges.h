@@ -6,7 +6,7 @@
 #include <glm/vec3.hpp>
 
 #include "app/protocol/probe_json.h"
-#include "base/math/wide_vec.h"
+#include "base/math/double_double.h"
 #include "stages/3_intersect/intersect.h"
 
 namespace raystep::grade {
@@ -14,23 +14,23 @@ namespace raystep::grade {
 // The judges of stage 4's answers (accel_judges.cpp): each function below writes the judge's
 // data, {"judge": NAME, ...}, which build_judge (data_judge.h) turns back into the judge.
 
-/// The exact interval of a ray's [t_min, t_max] inside a closed box, as a long-double oracle
-/// worked it out, and how near each end a double computation may come out. Where neither
-/// `must_hit` nor `must_miss` holds, the ray passes within rounding of the box and either
-/// answer is right.
+/// The exact interval of a ray's [t_min, t_max] inside a closed box, as the grader's oracle
+/// worked it out with more bits than a double, and how near each end a double computation may
+/// come out. Where neither `must_hit` nor `must_miss` holds, the ray passes within rounding of the
+/// box and either answer is right.
 struct SlabInterval {
     bool must_hit = false;
     bool must_miss = false;
-    Wide enter = 0;
-    Wide exit = 0;
-    Wide enter_tolerance = 0;  ///< 0 for an infinite end, which must come out exactly
-    Wide exit_tolerance = 0;
+    DoubleDouble enter;
+    DoubleDouble exit;
+    DoubleDouble enter_tolerance;  ///< 0 for an infinite end, which must come out exactly
+    DoubleDouble exit_tolerance;
 };
 
 /// "slab_interval": intersect_aabb's answer, {"enter", "exit"} or null for a miss, against
 /// `exact`. A miss passes unless the ray must hit; an interval fails where the ray must miss,
 /// where it is empty (enter > exit, or a NaN), or where an end is farther than its tolerance from
-/// the exact end, compared in long double.
+/// the exact end, compared in double-double.
 probe::Json slab_interval_judge(const SlabInterval& exact);
 
 /// "grid_cells": grid_resolution's answer, three integers, exactly `expected`.

@@ -2,28 +2,29 @@
 
 #include <string>
 
+#include "base/math/double_double_vec.h"
 #include "base/math/types.h"
-#include "base/math/wide_vec.h"
 
 namespace raystep::grade {
 
 // Where the error-bound rule of spawn_ray (stages/6_shading/shading.h) promises a leaving ray's
-// origin to be. The grader's oracle decides the region in long double
+// origin to be. The grader's oracle decides the region with more bits than a double
 // (grader/oracle/error_bound_origin.h); a data judge holds it as data (shading_judges.h, every bit
-// kept) and tests an origin against it here, so that the grader and a student release judge the
-// same origin alike. No JSON here: the oracle's own library includes this header.
+// kept) and tests an origin against it here in double-double, so that the grader and a student
+// release judge the same origin alike, bit for bit. No JSON here: the oracle's own library includes
+// this header.
 
 /// With n the leaving side's unit normal and d = sum |n_i| error_i: strictly more than d along n
 /// from the point, no more than `ulps` beyond d, and within `ulps` of the line along n.
 struct ErrorBoundOrigin {
-    WideVec point;
-    WideVec normal;
-    Wide offset;
+    DoubleDoubleVec3 point;
+    DoubleDoubleVec3 normal;
+    DoubleDouble offset;
     double ulps;
 };
 
 /// Whether `origin` is in the region. The origin and the point differ by a few ulps and d, so
-/// their difference is exact in long double and its dot product with n rounds some 2^-64 of d,
+/// their difference is exact in double-double and its dot product with n rounds some 2^-104 of d,
 /// far below the half ulp the rule's step adds. Written so that a NaN fails.
 bool within(const ErrorBoundOrigin& region, const Vec3& origin);
 

@@ -50,13 +50,12 @@ ExpectedRay ray_from(const Json& j) {
 }
 
 std::string expected_text(const ExpectedRay& e) {
-    const std::string origin = e.region
-                                   ? region_text(*e.region)
-                                   : "origin " + full_text(narrow(e.origin)) + " (within " +
-                                         full_text(static_cast<double>(e.origin_tolerance)) + ")";
+    const std::string origin = e.region ? region_text(*e.region)
+                                        : "origin " + full_text(narrow(e.origin)) + " (within " +
+                                              full_text(e.origin_tolerance) + ")";
     return origin + ", direction " + full_text(narrow(e.direction)) + " (within " +
-           full_text(static_cast<double>(e.direction_tolerance)) + "), t in [" +
-           full_text(e.t_min) + ", " + full_text(e.t_max) + "]";
+           full_text(e.direction_tolerance) + "), t in [" + full_text(e.t_min) + ", " +
+           full_text(e.t_max) + "]";
 }
 
 // t_max as the judges take it: exact, except that an unbounded ray may end at the largest
@@ -72,8 +71,8 @@ bool same_t_max(double got, double expected) {
 bool matches(const Ray& got, const ExpectedRay& e) {
     bool ok = got.t_min == e.t_min && same_t_max(got.t_max, e.t_max);
     for (int k = 0; k < 3; ++k) {
-        ok = ok && std::abs(got.direction[k] - e.direction[k]) <= e.direction_tolerance;
-        if (!e.region) ok = ok && std::abs(got.origin[k] - e.origin[k]) <= e.origin_tolerance;
+        ok = ok && near_wide(got.direction[k], e.direction[k], e.direction_tolerance);
+        if (!e.region) ok = ok && near_wide(got.origin[k], e.origin[k], e.origin_tolerance);
     }
     return ok && (!e.region || within(*e.region, got.origin));
 }
@@ -108,8 +107,8 @@ const JudgeRegistry::Registration unbounded_ray_registration{
 
 const JudgeRegistry::Registration radiance_registration{
     {"radiance", [](const Json& p) -> Judge {
-         const WideVec colour = probe::wide_vec3_from(p.at("colour"));
-         const WideVec tolerance = probe::wide_vec3_from(p.at("colour_tolerance"));
+         const DoubleDoubleVec3 colour = probe::wide_vec3_from(p.at("colour"));
+         const DoubleDoubleVec3 tolerance = probe::wide_vec3_from(p.at("colour_tolerance"));
          const Json& ray_list = p.at("rays");
          if (!ray_list.is_array()) throw std::invalid_argument("expected a list of rays");
          std::vector<ExpectedRay> rays;
@@ -124,12 +123,7 @@ const JudgeRegistry::Registration radiance_registration{
              const Json& got_rays = answer.value.at("rays");
              const std::string got = "colour " + full_text(got_colour) + " after asking about " +
                                      std::to_string(got_rays.size()) + " ray(s)";
-             // Written so that a NaN fails
-             for (int k = 0; k < 3; ++k) {
-                 if (!(std::abs(got_colour[k] - colour[k]) <= tolerance[k])) {
-                     return verdict_wrong(text, got);
-                 }
-             }
+             if (!near_wide(got_colour, colour, tolerance)) return verdict_wrong(text, got);
              if (got_rays.size() != rays.size()) return verdict_wrong(text, got);
              for (std::size_t i = 0; i < rays.size(); ++i) {
                  const Ray ray = probe::ray_from(got_rays[i]);
@@ -169,7 +163,7 @@ Json unbounded_ray_judge() {
     return {{"judge", "unbounded_ray"}};
 }
 
-Json radiance_judge(const WideVec& colour, const WideVec& tolerance,
+Json radiance_judge(const DoubleDoubleVec3& colour, const DoubleDoubleVec3& tolerance,
                     const std::vector<ExpectedRay>& rays) {
     Json list = Json::array();
     for (const ExpectedRay& ray : rays)

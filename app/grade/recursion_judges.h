@@ -11,8 +11,9 @@ namespace raystep::grade {
 // The judges of stage 7's answers (recursion_judges.cpp): the mirror ray, and radiance over a
 // scripted scene, every ray it asked about and the colour it added up. Each function below
 // writes the judge's data, {"judge": NAME, ...}, which build_judge (data_judge.h) turns back
-// into the judge. The expectations are long doubles the grader's oracle decided
-// (grader/oracle/recursion_oracle.h), written with every bit (app/protocol/wide_json.h).
+// into the judge. The expectations are double-doubles the grader's oracle decided with more bits
+// than a double (grader/oracle/recursion_oracle.h), written with every bit
+// (app/protocol/wide_json.h).
 
 /// "mirror_ray": the result one ray as `expected` says; a NaN anywhere fails.
 probe::Json mirror_ray_judge(const ExpectedRay& expected);
@@ -23,7 +24,7 @@ probe::Json unbounded_ray_judge();
 
 /// "radiance": the result {"colour", "rays"}, the colour within `tolerance` of `colour` per
 /// channel and the rays asked about, in order, each as its ExpectedRay says and no more or fewer.
-probe::Json radiance_judge(const WideVec& colour, const WideVec& tolerance,
+probe::Json radiance_judge(const DoubleDoubleVec3& colour, const DoubleDoubleVec3& tolerance,
                            const std::vector<ExpectedRay>& rays);
 
 /// An expected ray as these judges write it and read it back (strictly), whether a ray matches

@@ -44,30 +44,20 @@ std::string media_text(const MediumStack& stack) {
     return "[" + text + "]";
 }
 
-// Written so that a NaN fails.
-bool near_direction(const Vec3& got, const WideVec& expected, Wide tolerance) {
-    for (int k = 0; k < 3; ++k) {
-        if (!(std::abs(got[k] - expected[k]) <= tolerance)) return false;
-    }
-    return true;
-}
-
 const JudgeRegistry::Registration refraction_registration{
     {"refraction", [](const Json& p) -> Judge {
          const AllowedAnswers allowed = allowed_from(p);
-         const WideVec direction = probe::wide_vec3_from(p.at("expected"));
-         const Wide tolerance = probe::wide_from(p.at("tolerance"));
-         const std::string text =
-             allowed_text(allowed, full_text(narrow(direction)) + " (within " +
-                                       full_text(static_cast<double>(tolerance)) + ")");
+         const DoubleDoubleVec3 direction = probe::wide_vec3_from(p.at("expected"));
+         const DoubleDoubleVec3 tolerance(probe::wide_from(p.at("tolerance")));
+         const std::string text = allowed_text(
+             allowed, full_text(narrow(direction)) + " (within " + full_text(tolerance.x) + ")");
          return [=](const ProbeAnswer& answer) {
              if (answer.kind != Kind::result) return verdict_wrong(text, "");
              if (answer.value.is_null()) {
                  return allowed.none ? verdict_right() : verdict_wrong(text, "nullopt");
              }
              const Vec3 got = probe::vec3_from(answer.value);
-             if (allowed.direction && near_direction(got, direction, tolerance))
-                 return verdict_right();
+             if (allowed.direction && near_wide(got, direction, tolerance)) return verdict_right();
              return verdict_wrong(text, full_text(got));
          };
      }}};
@@ -103,8 +93,8 @@ const JudgeRegistry::Registration refracted_ray_registration{
 // far apart (the fake scene's keys, refraction_calls.cpp), so the first match is the only one.
 const JudgeRegistry::Registration refraction_radiance_registration{
     {"refraction_radiance", [](const Json& p) -> Judge {
-         const WideVec colour = probe::wide_vec3_from(p.at("colour"));
-         const WideVec tolerance = probe::wide_vec3_from(p.at("colour_tolerance"));
+         const DoubleDoubleVec3 colour = probe::wide_vec3_from(p.at("colour"));
+         const DoubleDoubleVec3 tolerance = probe::wide_vec3_from(p.at("colour_tolerance"));
          const Json& ray_list = p.at("rays");
          if (!ray_list.is_array()) throw std::invalid_argument("expected a list of rays");
          std::vector<ExpectedRay> rays;
@@ -120,12 +110,7 @@ const JudgeRegistry::Registration refraction_radiance_registration{
              if (!got_rays.is_array()) throw std::invalid_argument("expected a list of rays");
              const std::string got = "colour " + full_text(got_colour) + " after asking about " +
                                      std::to_string(got_rays.size()) + " ray(s)";
-             // Written so that a NaN fails
-             for (int k = 0; k < 3; ++k) {
-                 if (!(std::abs(got_colour[k] - colour[k]) <= tolerance[k])) {
-                     return verdict_wrong(text, got);
-                 }
-             }
+             if (!near_wide(got_colour, colour, tolerance)) return verdict_wrong(text, got);
              if (got_rays.size() != rays.size()) return verdict_wrong(text, got);
              std::vector<bool> matched(rays.size(), false);
              for (std::size_t i = 0; i < got_rays.size(); ++i) {
@@ -145,7 +130,8 @@ const JudgeRegistry::Registration refraction_radiance_registration{
 
 }  // namespace
 
-Json refraction_judge(const AllowedAnswers& allowed, const WideVec& direction, Wide tolerance) {
+Json refraction_judge(const AllowedAnswers& allowed, const DoubleDoubleVec3& direction,
+                      const DoubleDouble& tolerance) {
     Json j = allowed_json(allowed);
     j["judge"] = "refraction";
     j["expected"] = probe::wide_vec3(direction);
@@ -164,7 +150,7 @@ Json refracted_ray_judge(const AllowedAnswers& allowed, const ExpectedRay& ray) 
     return j;
 }
 
-Json refraction_radiance_judge(const WideVec& colour, const WideVec& tolerance,
+Json refraction_radiance_judge(const DoubleDoubleVec3& colour, const DoubleDoubleVec3& tolerance,
                                const std::vector<ExpectedRay>& rays) {
     Json list = Json::array();
     for (const ExpectedRay& ray : rays)

@@ -20,27 +20,28 @@ const double kInf = std::numeric_limits<double>::infinity();
 
 const JudgeRegistry::Registration light_sample_registration{
     {"light_sample", [](const Json& p) -> Judge {
-         const WideVec direction = probe::wide_vec3_from(p.at("direction"));
+         const DoubleDoubleVec3 direction = probe::wide_vec3_from(p.at("direction"));
          const double direction_tolerance = probe::number_from(p.at("direction_tolerance"));
-         const Wide distance = probe::wide_from(p.at("distance"));
-         const Wide distance_tolerance = probe::wide_from(p.at("distance_tolerance"));
-         const WideVec intensity = probe::wide_vec3_from(p.at("intensity"));
-         const WideVec intensity_tolerance = probe::wide_vec3_from(p.at("intensity_tolerance"));
-         const std::string text = "direction " + full_text(narrow(direction)) + " (within " +
-                                  full_text(direction_tolerance) + "), distance " +
-                                  full_text(static_cast<double>(distance)) + " (within " +
-                                  full_text(static_cast<double>(distance_tolerance)) +
-                                  "), intensity " + full_text(narrow(intensity)) + " (within " +
-                                  full_text(narrow(intensity_tolerance)) + ")";
+         const DoubleDouble distance = probe::wide_from(p.at("distance"));
+         const DoubleDouble distance_tolerance = probe::wide_from(p.at("distance_tolerance"));
+         const DoubleDoubleVec3 intensity = probe::wide_vec3_from(p.at("intensity"));
+         const DoubleDoubleVec3 intensity_tolerance =
+             probe::wide_vec3_from(p.at("intensity_tolerance"));
+         const std::string text =
+             "direction " + full_text(narrow(direction)) + " (within " +
+             full_text(direction_tolerance) + "), distance " + full_text(distance) + " (within " +
+             full_text(distance_tolerance) + "), intensity " + full_text(narrow(intensity)) +
+             " (within " + full_text(narrow(intensity_tolerance)) + ")";
          return [=](const ProbeAnswer& answer) {
              if (answer.kind != Kind::result) return verdict_wrong(text, "");
              const LightSample got = probe::light_sample_from(answer.value);
              // An infinite distance is asked exactly; a finite one within its tolerance, written
              // so that a NaN fails.
-             const bool distance_ok = std::isinf(distance)
+             const bool distance_ok = is_infinite(distance)
                                           ? got.distance == kInf
-                                          : std::abs(got.distance - distance) <= distance_tolerance;
-             if (distance_ok && near_wide(got.direction, direction, WideVec(direction_tolerance)) &&
+                                          : near_wide(got.distance, distance, distance_tolerance);
+             if (distance_ok &&
+                 near_wide(got.direction, direction, DoubleDoubleVec3(direction_tolerance)) &&
                  near_wide(got.intensity, intensity, intensity_tolerance)) {
                  return verdict_right();
              }
@@ -61,8 +62,8 @@ OriginRule origin_rule(const Json& p) {
         return {"origin " + full_text(origin), [origin](const Vec3& got) { return got == origin; }};
     }
     if (rule == "along_normal") {
-        const WideVec origin = probe::wide_vec3_from(p.at("origin"));
-        const WideVec tolerance = probe::wide_vec3_from(p.at("origin_tolerance"));
+        const DoubleDoubleVec3 origin = probe::wide_vec3_from(p.at("origin"));
+        const DoubleDoubleVec3 tolerance = probe::wide_vec3_from(p.at("origin_tolerance"));
         return {"origin " + full_text(narrow(origin)) + " (within " + full_text(narrow(tolerance)) +
                     ")",
                 [origin, tolerance](const Vec3& got) { return near_wide(got, origin, tolerance); }};
@@ -79,7 +80,8 @@ const JudgeRegistry::Registration leaving_ray_registration{
          const OriginRule origin = origin_rule(p);
          const double t_min = probe::number_from(p.at("t_min"));
          const Vec3 direction = probe::vec3_from(p.at("direction"));
-         const WideVec direction_tolerance(probe::number_from(p.at("direction_tolerance")));
+         const DoubleDoubleVec3 direction_tolerance(
+             probe::number_from(p.at("direction_tolerance")));
          const double t_max = probe::number_from(p.at("t_max"));
          const std::string text = origin.text + ", t in [" + full_text(t_min) + ", " +
                                   full_text(t_max) + "], direction " + full_text(direction);
@@ -87,7 +89,7 @@ const JudgeRegistry::Registration leaving_ray_registration{
              if (answer.kind != Kind::result) return verdict_wrong(text, "");
              const Ray got = probe::ray_from(answer.value);
              if (got.t_max == t_max && got.t_min == t_min &&
-                 near_wide(got.direction, widen(direction), direction_tolerance) &&
+                 near_wide(got.direction, DoubleDoubleVec3(direction), direction_tolerance) &&
                  origin.accept(got.origin)) {
                  return verdict_right();
              }
@@ -111,9 +113,10 @@ std::string light_sample_text(const LightSample& l) {
            ", intensity " + full_text(l.intensity);
 }
 
-Json light_sample_judge(const WideVec& direction, double direction_tolerance, Wide distance,
-                        Wide distance_tolerance, const WideVec& intensity,
-                        const WideVec& intensity_tolerance) {
+Json light_sample_judge(const DoubleDoubleVec3& direction, double direction_tolerance,
+                        const DoubleDouble& distance, const DoubleDouble& distance_tolerance,
+                        const DoubleDoubleVec3& intensity,
+                        const DoubleDoubleVec3& intensity_tolerance) {
     return {{"judge", "light_sample"},
             {"direction", probe::wide_vec3(direction)},
             {"direction_tolerance", probe::number(direction_tolerance)},
@@ -129,7 +132,7 @@ Json along_ray_judge(const Vec3& origin, double t_min, const LeavingDirection& e
     return judge;
 }
 
-Json along_normal_judge(const WideVec& origin, const WideVec& tolerance,
+Json along_normal_judge(const DoubleDoubleVec3& origin, const DoubleDoubleVec3& tolerance,
                         const LeavingDirection& end) {
     Json judge = leaving_ray_judge("along_normal", 0.0, end);
     judge["origin"] = probe::wide_vec3(origin);

@@ -20,16 +20,16 @@ constexpr const char* kNotFinite = "not finite";
 
 // Every entry within its tolerance; else the first that is not, and the whole matrix got, which
 // the report calls `name`. Written so that a NaN fails.
-Verdict near_matrix(const Mat4& got, const WideMat& expected, const WideMat& tolerance,
-                    const std::string& name) {
+Verdict near_matrix(const Mat4& got, const DoubleDoubleMat4& expected,
+                    const DoubleDoubleMat4& tolerance, const std::string& name) {
     for (int r = 0; r < 4; ++r) {
         for (int c = 0; c < 4; ++c) {
-            if (!(std::abs(Wide(got[c][r]) - expected[c][r]) <= tolerance[c][r])) {
+            if (!near_wide(got[c][r], expected[c][r], tolerance[c][r])) {
                 const std::string entry =
                     name + " row " + std::to_string(r) + " column " + std::to_string(c) + " ";
                 return verdict_wrong(
-                    entry + full_text(static_cast<double>(expected[c][r])) + " (within " +
-                        full_text(static_cast<double>(tolerance[c][r])) + ")",
+                    entry + full_text(expected[c][r]) + " (within " + full_text(tolerance[c][r]) +
+                        ")",
                     entry + full_text(got[c][r]) + "; " + name + " " + matrix_text(got));
             }
         }
@@ -50,8 +50,8 @@ std::optional<double> diagonal_entry_from(const Json& j) {
 
 const JudgeRegistry::Registration near_wide_matrix_registration{
     {"near_wide_matrix", [](const Json& p) -> Judge {
-         const WideMat expected = probe::wide_mat4_from(p.at("expected"));
-         const WideMat tolerance = probe::wide_mat4_from(p.at("tolerance"));
+         const DoubleDoubleMat4 expected = probe::wide_mat4_from(p.at("expected"));
+         const DoubleDoubleMat4 tolerance = probe::wide_mat4_from(p.at("tolerance"));
          return [=](const ProbeAnswer& answer) {
              if (answer.kind != Kind::result)
                  return verdict_wrong(matrix_text(narrow(expected)), "");
@@ -61,10 +61,11 @@ const JudgeRegistry::Registration near_wide_matrix_registration{
 
 const JudgeRegistry::Registration near_wide_transform_registration{
     {"near_wide_transform", [](const Json& p) -> Judge {
-         const WideMat matrix = probe::wide_mat4_from(p.at("matrix"));
-         const WideMat matrix_tolerance = probe::wide_mat4_from(p.at("matrix_tolerance"));
-         const WideMat inverse = probe::wide_mat4_from(p.at("inverse"));
-         const WideMat inverse_tolerance = probe::wide_mat4_from(p.at("inverse_tolerance"));
+         const DoubleDoubleMat4 matrix = probe::wide_mat4_from(p.at("matrix"));
+         const DoubleDoubleMat4 matrix_tolerance = probe::wide_mat4_from(p.at("matrix_tolerance"));
+         const DoubleDoubleMat4 inverse = probe::wide_mat4_from(p.at("inverse"));
+         const DoubleDoubleMat4 inverse_tolerance =
+             probe::wide_mat4_from(p.at("inverse_tolerance"));
          return [=](const ProbeAnswer& answer) {
              if (answer.kind != Kind::result) {
                  return verdict_wrong("matrix " + matrix_text(narrow(matrix)), "");
@@ -95,7 +96,8 @@ const JudgeRegistry::Registration singular_transform_registration{
          return [=](const ProbeAnswer& answer) {
              if (answer.kind != Kind::result) return verdict_wrong(text, "");
              const Transform got = probe::transform_from(answer.value);
-             const Verdict m = near_matrix(got.matrix, widen(matrix), WideMat(0.0L), "matrix");
+             const Verdict m =
+                 near_matrix(got.matrix, DoubleDoubleMat4(matrix), DoubleDoubleMat4(), "matrix");
              if (!m.passed) return m;
              for (int k = 0; k < 3; ++k) {
                  const double entry = got.inverse[k][k];
@@ -108,10 +110,11 @@ const JudgeRegistry::Registration singular_transform_registration{
 
 const JudgeRegistry::Registration near_wide_ray_registration{
     {"near_wide_ray", [](const Json& p) -> Judge {
-         const WideVec origin = probe::wide_vec3_from(p.at("origin"));
-         const WideVec origin_tolerance = probe::wide_vec3_from(p.at("origin_tolerance"));
-         const WideVec direction = probe::wide_vec3_from(p.at("direction"));
-         const WideVec direction_tolerance = probe::wide_vec3_from(p.at("direction_tolerance"));
+         const DoubleDoubleVec3 origin = probe::wide_vec3_from(p.at("origin"));
+         const DoubleDoubleVec3 origin_tolerance = probe::wide_vec3_from(p.at("origin_tolerance"));
+         const DoubleDoubleVec3 direction = probe::wide_vec3_from(p.at("direction"));
+         const DoubleDoubleVec3 direction_tolerance =
+             probe::wide_vec3_from(p.at("direction_tolerance"));
          const double t_min = probe::number_from(p.at("t_min"));
          const double t_max = probe::number_from(p.at("t_max"));
          const std::string text = ray_text({narrow(origin), narrow(direction), t_min, t_max}) +
@@ -135,8 +138,8 @@ const JudgeRegistry::Registration near_wide_hit_registration{
          const bool hit = p.at("hit").get<bool>();
          double t = 0.0;
          double t_tolerance = 0.0;
-         WideVec normal(0.0L);
-         WideVec normal_tolerance(0.0L);
+         DoubleDoubleVec3 normal;
+         DoubleDoubleVec3 normal_tolerance;
          std::string text = "a miss";
          if (hit) {
              t = probe::number_from(p.at("t"));
@@ -160,14 +163,16 @@ const JudgeRegistry::Registration near_wide_hit_registration{
 
 }  // namespace
 
-Json near_wide_matrix_judge(const WideMat& expected, const WideMat& tolerance) {
+Json near_wide_matrix_judge(const DoubleDoubleMat4& expected, const DoubleDoubleMat4& tolerance) {
     return {{"judge", "near_wide_matrix"},
             {"expected", probe::wide_mat4(expected)},
             {"tolerance", probe::wide_mat4(tolerance)}};
 }
 
-Json near_wide_transform_judge(const WideMat& matrix, const WideMat& matrix_tolerance,
-                               const WideMat& inverse, const WideMat& inverse_tolerance) {
+Json near_wide_transform_judge(const DoubleDoubleMat4& matrix,
+                               const DoubleDoubleMat4& matrix_tolerance,
+                               const DoubleDoubleMat4& inverse,
+                               const DoubleDoubleMat4& inverse_tolerance) {
     return {{"judge", "near_wide_transform"},
             {"matrix", probe::wide_mat4(matrix)},
             {"matrix_tolerance", probe::wide_mat4(matrix_tolerance)},
@@ -185,9 +190,9 @@ Json singular_transform_judge(const Mat4& matrix,
             {"inverse_diagonal", diagonal}};
 }
 
-Json near_wide_ray_judge(const WideVec& origin, const WideVec& origin_tolerance,
-                         const WideVec& direction, const WideVec& direction_tolerance, double t_min,
-                         double t_max) {
+Json near_wide_ray_judge(const DoubleDoubleVec3& origin, const DoubleDoubleVec3& origin_tolerance,
+                         const DoubleDoubleVec3& direction,
+                         const DoubleDoubleVec3& direction_tolerance, double t_min, double t_max) {
     return {{"judge", "near_wide_ray"},
             {"origin", probe::wide_vec3(origin)},
             {"origin_tolerance", probe::wide_vec3(origin_tolerance)},
@@ -197,8 +202,8 @@ Json near_wide_ray_judge(const WideVec& origin, const WideVec& origin_tolerance,
             {"t_max", probe::number(t_max)}};
 }
 
-Json near_wide_hit_judge(double t, double t_tolerance, const WideVec& normal,
-                         const WideVec& normal_tolerance) {
+Json near_wide_hit_judge(double t, double t_tolerance, const DoubleDoubleVec3& normal,
+                         const DoubleDoubleVec3& normal_tolerance) {
     return {{"judge", "near_wide_hit"},
             {"hit", true},
             {"t", probe::number(t)},

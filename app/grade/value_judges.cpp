@@ -51,22 +51,22 @@ const JudgeRegistry::Registration near_vec3_registration{
 
 const JudgeRegistry::Registration near_wide_number_registration{
     {"near_wide_number", [](const Json& p) -> Judge {
-         const Wide expected = probe::wide_from(p.at("expected"));
-         const Wide tolerance = probe::wide_from(p.at("tolerance"));
+         const DoubleDouble expected = probe::wide_from(p.at("expected"));
+         const DoubleDouble tolerance = probe::wide_from(p.at("tolerance"));
          const std::string text =
              within(full_text(static_cast<double>(expected)), static_cast<double>(tolerance));
          return [=](const ProbeAnswer& answer) {
              if (answer.kind != Kind::result) return verdict_wrong(text, "");
              const double got = probe::number_from(answer.value);
-             if (std::abs(Wide(got) - expected) <= tolerance) return verdict_right();
+             if (near_wide(got, expected, tolerance)) return verdict_right();
              return verdict_wrong(text, full_text(got));
          };
      }}};
 
 const JudgeRegistry::Registration near_wide_vec3_registration{
     {"near_wide_vec3", [](const Json& p) -> Judge {
-         const WideVec expected = probe::wide_vec3_from(p.at("expected"));
-         const WideVec tolerance = probe::wide_vec3_from(p.at("tolerance"));
+         const DoubleDoubleVec3 expected = probe::wide_vec3_from(p.at("expected"));
+         const DoubleDoubleVec3 tolerance = probe::wide_vec3_from(p.at("tolerance"));
          const bool unit = p.at("unit").get<bool>();
          const std::string text = std::string(unit ? "unit " : "") + full_text(narrow(expected)) +
                                   " (within " + full_text(narrow(tolerance)) + ")";
@@ -125,13 +125,14 @@ Json near_vec3_judge(const Vec3& expected, double tolerance) {
             {"tolerance", probe::number(tolerance)}};
 }
 
-Json near_wide_number_judge(Wide expected, Wide tolerance) {
+Json near_wide_number_judge(const DoubleDouble& expected, const DoubleDouble& tolerance) {
     return {{"judge", "near_wide_number"},
             {"expected", probe::wide(expected)},
             {"tolerance", probe::wide(tolerance)}};
 }
 
-Json near_wide_vec3_judge(const WideVec& expected, const WideVec& tolerance, bool unit) {
+Json near_wide_vec3_judge(const DoubleDoubleVec3& expected, const DoubleDoubleVec3& tolerance,
+                          bool unit) {
     return {{"judge", "near_wide_vec3"},
             {"expected", probe::wide_vec3(expected)},
             {"tolerance", probe::wide_vec3(tolerance)},

@@ -3,8 +3,8 @@
 #include <string>
 
 #include "app/protocol/probe_json.h"
+#include "base/math/double_double_vec.h"
 #include "base/math/types.h"
-#include "base/math/wide_vec.h"
 
 namespace raystep::grade {
 
@@ -18,15 +18,15 @@ probe::Json near_number_judge(double expected, double tolerance);
 /// (absolute); a NaN fails.
 probe::Json near_vec3_judge(const Vec3& expected, double tolerance);
 
-/// "near_wide_number": the result within `tolerance` of `expected`, both long doubles (a grader's
-/// long-double oracle decided them; app/protocol/wide_json.h keeps every bit), compared in long
-/// double; a NaN fails.
-probe::Json near_wide_number_judge(Wide expected, Wide tolerance);
+/// "near_wide_number": the result within `tolerance` of `expected`, both double-doubles (a grader's
+/// oracle decided them with more bits than a double; app/protocol/wide_json.h keeps every bit),
+/// compared in double-double; a NaN fails.
+probe::Json near_wide_number_judge(const DoubleDouble& expected, const DoubleDouble& tolerance);
 
 /// "near_wide_vec3": the same per component, each with its own tolerance; with `unit`, the
 /// result must also have unit length (unit_length, value_text.h), as a normalized vector must.
-probe::Json near_wide_vec3_judge(const WideVec& expected, const WideVec& tolerance,
-                                 bool unit = false);
+probe::Json near_wide_vec3_judge(const DoubleDoubleVec3& expected,
+                                 const DoubleDoubleVec3& tolerance, bool unit = false);
 
 /// "threw": the call threw the named standard exception ("domain_error", ...).
 probe::Json threw_judge(const std::string& type);

@@ -11,6 +11,10 @@ std::string full_text(double x) {
     return text;
 }
 
+std::string full_text(const DoubleDouble& x) {
+    return full_text(x.hi);
+}
+
 std::string full_text(const Vec3& v) {
     return "(" + full_text(v.x) + ", " + full_text(v.y) + ", " + full_text(v.z) + ")";
 }
@@ -32,16 +36,18 @@ std::string ray_text(const Ray& r) {
 }
 
 bool unit_length(const Vec3& v) {
-    constexpr long double kUnitLength = 4 * 0x1p-52L;
-    const long double x = v.x;
-    const long double y = v.y;
-    const long double z = v.z;
-    return std::abs(std::sqrt(x * x + y * y + z * z) - 1) <= kUnitLength;
+    const DoubleDouble kUnitLength(4 * 0x1p-52);
+    return abs(length(DoubleDoubleVec3(v)) - DoubleDouble(1.0)) <= kUnitLength;
 }
 
-bool near_wide(const Vec3& got, const WideVec& expected, const WideVec& tolerance) {
+bool near_wide(double got, const DoubleDouble& expected, const DoubleDouble& tolerance) {
+    return abs(DoubleDouble(got) - expected) <= tolerance;
+}
+
+bool near_wide(const Vec3& got, const DoubleDoubleVec3& expected,
+               const DoubleDoubleVec3& tolerance) {
     for (int k = 0; k < 3; ++k) {
-        if (!(std::abs(Wide(got[k]) - expected[k]) <= tolerance[k])) return false;
+        if (!near_wide(got[k], expected[k], tolerance[k])) return false;
     }
     return true;
 }

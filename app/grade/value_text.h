@@ -2,8 +2,8 @@
 
 #include <string>
 
+#include "base/math/double_double_vec.h"
 #include "base/math/types.h"
-#include "base/math/wide_vec.h"
 #include "stages/2_rays/ray.h"
 
 namespace raystep::grade {
@@ -15,6 +15,10 @@ namespace raystep::grade {
 /// `1.0000000000000002`, `inf`.
 std::string full_text(double x);
 
+/// A double-double's nearest double, as full_text writes it: a report shows what a double answer
+/// can be.
+std::string full_text(const DoubleDouble& x);
+
 /// `(1, 2.5, -3)`, each coordinate as full_text writes it.
 std::string full_text(const Vec3& v);
 
@@ -24,13 +28,18 @@ std::string matrix_text(const Mat4& m);
 /// `origin (...), direction (...), t in [t_min, t_max]`.
 std::string ray_text(const Ray& r);
 
-/// A vector a student normalized (a camera ray's direction, a normal): its length, taken in long
-/// double, within 4 ulps of 1 (2^-52 each), since every normalization a student may write (stage
-/// 1's, glm's, v / |v|) lands within 3. Written so that a NaN fails.
+/// A vector a student normalized (a camera ray's direction, a normal): its length, taken in
+/// double-double (base/math/double_double.h), within 4 ulps of 1 (2^-52 each), since every
+/// normalization a student may write (stage 1's, glm's, v / |v|) lands within 3. Written so that a
+/// NaN fails.
 bool unit_length(const Vec3& v);
 
-/// Each coordinate of `got` within its own tolerance of the long-double expectation's, compared
-/// in long double (a grader's oracle decided both). Written so that a NaN fails.
-bool near_wide(const Vec3& got, const WideVec& expected, const WideVec& tolerance);
+/// Each coordinate of `got` within its own tolerance of the expectation's, compared in
+/// double-double (a grader's oracle decided both). Written so that a NaN fails.
+bool near_wide(const Vec3& got, const DoubleDoubleVec3& expected,
+               const DoubleDoubleVec3& tolerance);
+
+/// |got - expected| <= tolerance in double-double, got taken exactly. Written so that a NaN fails.
+bool near_wide(double got, const DoubleDouble& expected, const DoubleDouble& tolerance);
 
 }  // namespace raystep::grade

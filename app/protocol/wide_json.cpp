@@ -5,35 +5,37 @@
 
 namespace raystep::probe {
 
-Json wide(Wide x) {
-    const double hi = static_cast<double>(x);
-    // Subtracting an infinite or NaN hi would give NaN: such a value is its hi alone.
-    const double lo = std::isfinite(hi) ? static_cast<double>(x - hi) : 0.0;
-    return Json::array({number(hi), number(lo)});
+Json wide(const DoubleDouble& x) {
+    return Json::array({number(x.hi), number(x.lo)});
 }
 
-Wide wide_from(const Json& j) {
+DoubleDouble wide_from(const Json& j) {
     if (!j.is_array() || j.size() != 2) {
-        throw std::invalid_argument("expected a long double as the pair [hi, lo]");
+        throw std::invalid_argument("expected a double-double as the pair [hi, lo]");
     }
     const double hi = number_from(j[0]);
     const double lo = number_from(j[1]);
-    // -0 + 0 is +0: a zero rest adds nothing, and adding it would lose a negative zero's sign.
-    return lo == 0 ? Wide(hi) : Wide(hi) + Wide(lo);
+    if (!std::isfinite(lo)) {
+        throw std::invalid_argument("expected a double-double's rest lo to be finite");
+    }
+    // An infinite or NaN hi is the value alone; a zero rest adds nothing, and adding it would lose
+    // a negative zero's sign (-0 + 0 is +0).
+    if (!std::isfinite(hi) || lo == 0) return DoubleDouble(hi);
+    return two_sum(hi, lo);
 }
 
-Json wide_vec3(const WideVec& v) {
+Json wide_vec3(const DoubleDoubleVec3& v) {
     return Json::array({wide(v.x), wide(v.y), wide(v.z)});
 }
 
-WideVec wide_vec3_from(const Json& j) {
+DoubleDoubleVec3 wide_vec3_from(const Json& j) {
     if (!j.is_array() || j.size() != 3) {
-        throw std::invalid_argument("expected a long-double vector as three [hi, lo] pairs");
+        throw std::invalid_argument("expected a double-double vector as three [hi, lo] pairs");
     }
     return {wide_from(j[0]), wide_from(j[1]), wide_from(j[2])};
 }
 
-Json wide_mat4(const WideMat& m) {
+Json wide_mat4(const DoubleDoubleMat4& m) {
     Json entries = Json::array();
     for (int c = 0; c < 4; ++c) {
         for (int r = 0; r < 4; ++r)
@@ -42,11 +44,11 @@ Json wide_mat4(const WideMat& m) {
     return entries;
 }
 
-WideMat wide_mat4_from(const Json& j) {
+DoubleDoubleMat4 wide_mat4_from(const Json& j) {
     if (!j.is_array() || j.size() != 16) {
-        throw std::invalid_argument("expected a long-double matrix as sixteen [hi, lo] pairs");
+        throw std::invalid_argument("expected a double-double matrix as sixteen [hi, lo] pairs");
     }
-    WideMat m;
+    DoubleDoubleMat4 m;
     for (int c = 0; c < 4; ++c) {
         for (int r = 0; r < 4; ++r)
             m[c][r] = wide_from(j[4 * c + r]);

@@ -35,17 +35,19 @@ grade::ProbeAnswer radiance(const Vec3& colour, const std::vector<Ray>& rays) {
 
 // From (1, 0, 0) on the floor y = 0 towards (1, 1, 0) / sqrt 2, along_normal's origin 1e-4 up.
 const Vec3 kUp{std::sqrt(0.5), std::sqrt(0.5), 0};
+const DoubleDouble kHalfRoot = sqrt(DoubleDouble(0.5));
+const DoubleDoubleVec3 kWideUp{kHalfRoot, kHalfRoot, DoubleDouble()};
 const ExpectedRay kMirror{
-    {1.0L, 1e-4L, 0.0L}, 1e-15L, {std::sqrt(0.5L), std::sqrt(0.5L), 0.0L}, 1e-15L, 0.0, kInf, {}};
+    {1, 1e-4, 0}, DoubleDouble(1e-15), kWideUp, DoubleDouble(1e-15), 0.0, kInf, {}};
 // The floor's error-bound origin: more than 2^-60 above (1, 0, 0), 2^-50 beyond that at most.
 const ExpectedRay kBounded{
     {},
-    0,
-    {std::sqrt(0.5L), std::sqrt(0.5L), 0.0L},
-    1e-15L,
+    DoubleDouble(),
+    kWideUp,
+    DoubleDouble(1e-15),
     0.0,
     kInf,
-    grade::ErrorBoundOrigin{{1.0L, 0.0L, 0.0L}, {0.0L, 1.0L, 0.0L}, 0x1p-60L, 0x1p-50}};
+    grade::ErrorBoundOrigin{{1, 0, 0}, {0, 1, 0}, DoubleDouble(0x1p-60), 0x1p-50}};
 
 TEST_CASE("mirror_ray: every coordinate within its tolerance, an unbounded end, NaN fails") {
     const grade::Judge judge = build_judge(grade::mirror_ray_judge(kMirror));
@@ -84,9 +86,9 @@ TEST_CASE("unbounded_ray: infinity itself, and the largest double named as not i
 }
 
 TEST_CASE("radiance: the colour within its tolerance and every ray asked, no more, no fewer") {
-    const ExpectedRay eye{{0.0L, 1.0L, 0.0L}, 0, {1.0L, 0.0L, 0.0L}, 0, 0.0, kInf, {}};
+    const ExpectedRay eye{{0, 1, 0}, DoubleDouble(), {1, 0, 0}, DoubleDouble(), 0.0, kInf, {}};
     const grade::Judge judge =
-        build_judge(grade::radiance_judge({0.5L, 0.25L, 1.0L}, WideVec(1e-12L), {eye, kMirror}));
+        build_judge(grade::radiance_judge({0.5, 0.25, 1}, DoubleDoubleVec3(1e-12), {eye, kMirror}));
     const Ray eye_ray{{0, 1, 0}, {1, 0, 0}, 0, kInf};
     const Ray mirror_ray{{1, 1e-4, 0}, kUp, 0, kInf};
     CHECK(judge(radiance({0.5, 0.25, 1}, {eye_ray, mirror_ray})).passed);
@@ -110,13 +112,15 @@ TEST_CASE("radiance: the colour within its tolerance and every ray asked, no mor
 }
 
 TEST_CASE("radiance: a judge whose rays are no list, or whose ray lacks its origin, throws") {
-    probe::Json no_list = grade::radiance_judge(WideVec(0.0L), WideVec(0.0L), {kMirror});
+    probe::Json no_list = grade::radiance_judge(DoubleDoubleVec3(), DoubleDoubleVec3(), {kMirror});
     no_list["rays"] = probe::Json::object();
     CHECK_THROWS_AS(build_judge(no_list), std::invalid_argument);
-    probe::Json no_origin = grade::radiance_judge(WideVec(0.0L), WideVec(0.0L), {kMirror});
+    probe::Json no_origin =
+        grade::radiance_judge(DoubleDoubleVec3(), DoubleDoubleVec3(), {kMirror});
     no_origin["rays"][0].erase("origin");
     CHECK_THROWS(build_judge(no_origin));
-    probe::Json no_colour = grade::radiance_judge(WideVec(0.0L), WideVec(0.0L), {kMirror});
+    probe::Json no_colour =
+        grade::radiance_judge(DoubleDoubleVec3(), DoubleDoubleVec3(), {kMirror});
     no_colour.erase("colour");
     CHECK_THROWS(build_judge(no_colour));
 }

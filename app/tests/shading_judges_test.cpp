@@ -30,8 +30,9 @@ grade::ProbeAnswer ray(const Vec3& origin, const Vec3& direction, double t_min, 
 }
 
 TEST_CASE("light_sample: a distance or intensity just outside its tolerance fails, NaN too") {
-    const grade::Judge judge = build_judge(grade::light_sample_judge(
-        {0.6L, 0.8L, 0.0L}, 1e-15, 5.0L, 1e-12L, {1.0L, 0.5L, 0.25L}, WideVec(1e-12L)));
+    const grade::Judge judge = build_judge(
+        grade::light_sample_judge({0.6, 0.8, 0}, 1e-15, DoubleDouble(5), DoubleDouble(1e-12),
+                                  {1, 0.5, 0.25}, DoubleDoubleVec3(1e-12)));
     CHECK(judge(sample({0.6, 0.8, 0}, 5.0, {1, 0.5, 0.25})).passed);
     CHECK(judge(sample({0.6, 0.8, 0}, 5.0 + 0.9e-12, {1, 0.5, 0.25})).passed);
     CHECK_FALSE(judge(sample({0.6, 0.8, 0}, 5.0 + 1.1e-12, {1, 0.5, 0.25})).passed);
@@ -50,15 +51,16 @@ TEST_CASE("light_sample: a distance or intensity just outside its tolerance fail
 }
 
 TEST_CASE("light_sample: an infinite distance is infinity itself, not the largest double") {
-    const grade::Judge judge = build_judge(grade::light_sample_judge(
-        {0.0L, 1.0L, 0.0L}, 1e-15, static_cast<Wide>(kInf), 0.0L, WideVec(1.0L), WideVec(0.0L)));
+    const grade::Judge judge =
+        build_judge(grade::light_sample_judge({0, 1, 0}, 1e-15, DoubleDouble(kInf), DoubleDouble(),
+                                              DoubleDoubleVec3(1.0), DoubleDoubleVec3()));
     CHECK(judge(sample({0, 1, 0}, kInf, Vec3(1.0))).passed);
     CHECK_FALSE(judge(sample({0, 1, 0}, std::numeric_limits<double>::max(), Vec3(1.0))).passed);
 }
 
 // On the plane x = -1 facing -x, with d = 2^-49 (exactly a double's step there), 4 ulps of 4
 // (the largest coordinate) beyond it at most.
-const ErrorBoundOrigin kWall{{-1.0L, 4.0L, 2.0L}, {-1.0L, 0.0L, 0.0L}, 0x1p-49L, 4 * 0x1p-50};
+const ErrorBoundOrigin kWall{{-1, 4, 2}, {-1, 0, 0}, DoubleDouble(0x1p-49), 4 * 0x1p-50};
 const LeavingDirection kOut{{-0.8, 0, 0.6}, 8 * 0x1p-53, 3.0};
 
 TEST_CASE("leaving_ray error_bound: an origin strictly beyond d, and within the ulps of it") {
@@ -86,7 +88,7 @@ TEST_CASE("leaving_ray error_bound: an origin strictly beyond d, and within the 
 
 TEST_CASE("leaving_ray along_normal: the origin within its tolerance per coordinate") {
     const grade::Judge judge =
-        build_judge(grade::along_normal_judge({-1.125L, 4.0L, 2.0L}, WideVec(1e-15L), kOut));
+        build_judge(grade::along_normal_judge({-1.125, 4, 2}, DoubleDoubleVec3(1e-15), kOut));
     CHECK(judge(ray({-1.125, 4, 2}, kOut.direction, 0, 3)).passed);
     CHECK(judge(ray({-1.125 + 0.9e-15, 4, 2}, kOut.direction, 0, 3)).passed);
     CHECK_FALSE(judge(ray({-1.125 + 1.2e-15, 4, 2}, kOut.direction, 0, 3)).passed);

@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "base/math/double_double_vec.h"
 #include "base/math/portable_random.h"
 #include "base/math/to_text.h"
 #include "base/scene/scene_loader.h"
@@ -13,8 +14,6 @@
 using namespace raystep;
 
 namespace {
-
-using Exact = long double;  // 64-bit significand: 11 bits beyond double, plenty to check bounds
 
 // Where and how big the test scene is: every coordinate times `scale`, plus `shift`; with
 // `ellipsoid`, the sphere squashed by a transform about its centre.
@@ -57,30 +56,32 @@ const Placement kPlacements[] = {
     {1.0, Vec3(0.0), true},         {1e4, Vec3(1e8, 0, 0), true},
 };
 
-Exact distance_to_surface(const RenderScene& render_scene, const PrimitiveHit& hit,
-                          const Vec3& point) {
-    const auto exact = [](const Vec3& v) {
-        return glm::vec<3, Exact>(Exact(v.x), Exact(v.y), Exact(v.z));
-    };
-    const glm::vec<3, Exact> p = exact(point);
+// Whether the primitive's surface passes within `bound` of `point`, decided in double-double
+// (base/math/double_double.h): 106 bits, the same on every platform, far below the few ulps of
+// the coordinates that the bound is. A distance to a plane, |(p - p0) . n| / |n|, is compared
+// without dividing.
+bool surface_within(const RenderScene& render_scene, const PrimitiveHit& hit, const Vec3& point,
+                    const DoubleDouble& bound) {
+    const DoubleDoubleVec3 p(point);
     switch (hit.kind) {
         case PrimitiveKind::triangle: {
             const Triangle& t = render_scene.primitives.triangles[hit.index];
-            const glm::vec<3, Exact> n =
-                glm::cross(exact(t.p1) - exact(t.p0), exact(t.p2) - exact(t.p0));
-            return std::abs(glm::dot(p - exact(t.p0), n)) / glm::length(n);
+            const DoubleDoubleVec3 p0(t.p0);
+            const DoubleDoubleVec3 n =
+                cross(DoubleDoubleVec3(t.p1) - p0, DoubleDoubleVec3(t.p2) - p0);
+            return abs(dot(p - p0, n)) <= bound * length(n);
         }
         case PrimitiveKind::plane: {
             const Plane& plane = render_scene.primitives.planes[hit.index];
-            const glm::vec<3, Exact> n = exact(plane.normal);
-            return std::abs(glm::dot(p - exact(plane.point), n)) / glm::length(n);
+            const DoubleDoubleVec3 n(plane.normal);
+            return abs(dot(p - DoubleDoubleVec3(plane.point), n)) <= bound * length(n);
         }
         case PrimitiveKind::sphere: {
             const Sphere& s = render_scene.scene->spheres[hit.index].shape;
-            return std::abs(glm::length(p - exact(s.center)) - Exact(s.radius));
+            return abs(length(p - DoubleDoubleVec3(s.center)) - DoubleDouble(s.radius)) <= bound;
         }
     }
-    return 0;
+    return false;
 }
 
 // Rays from the camera's side towards random points near the primitives, many of them grazing.
@@ -173,11 +174,11 @@ TEST_CASE("surface_point: the surface passes within sum |n_i| error_i of the poi
             if (!hit) continue;
             ++hits;
             const SurfacePoint point = surface_point(render_scene, eye, *hit);
-            const Exact bound = std::abs(point.normal.x) * point.error.x +
-                                std::abs(point.normal.y) * point.error.y +
-                                std::abs(point.normal.z) * point.error.z;
+            const double bound = std::abs(point.normal.x) * point.error.x +
+                                 std::abs(point.normal.y) * point.error.y +
+                                 std::abs(point.normal.z) * point.error.z;
             CAPTURE(where.scale, where.shift.x, k, kind_name(hit->kind));
-            CHECK(distance_to_surface(render_scene, *hit, point.position) <= bound);
+            CHECK(surface_within(render_scene, *hit, point.position, DoubleDouble(bound)));
             // The bound is some ulps of the coordinates, not a blanket epsilon.
             const double size = where.scale * 10.0 + glm::length(where.shift);
             CHECK(bound < 1e-13 * (size + glm::length(point.position)));

@@ -6,7 +6,7 @@
 // double.
 
 #include "base/math/types.h"
-#include "base/math/wide_vec.h"
+#include "grader/oracle/wide_vec.h"
 
 namespace raystep {
 

@@ -21,7 +21,7 @@ ErrorBoundOrigin error_bound_origin(const SurfacePoint& point, const Vec3& direc
                                   std::abs(point.position.z), static_cast<double>(d)});
     // At the origin with no error, the step goes to the smallest subnormal.
     const double ulp = std::max(std::ldexp(size, -52), std::numeric_limits<double>::denorm_min());
-    return {widen(point.position), n, d, 4 * ulp};
+    return {DoubleDoubleVec3(point.position), double_double(n), double_double(d), 4 * ulp};
 }
 
 }  // namespace raystep

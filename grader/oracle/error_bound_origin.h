@@ -1,7 +1,7 @@
 #pragma once
 
 #include "app/grade/error_bound_region.h"
-#include "base/math/wide_vec.h"
+#include "grader/oracle/wide_vec.h"
 #include "stages/6_shading/shading.h"
 
 namespace raystep {

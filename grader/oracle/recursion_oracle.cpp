@@ -15,10 +15,10 @@ ExpectedRay expected_leaving_ray(const SurfacePoint& p, const WideVec& d, Wide d
                                  const RayOffset& offset) {
     const Wide size = std::max({std::abs(Wide(p.position.x)), std::abs(Wide(p.position.y)),
                                 std::abs(Wide(p.position.z)), Wide(offset.epsilon)});
-    ExpectedRay e{widen(p.position),
-                  4 * kUnitRoundoff * size,
-                  d,
-                  direction_tolerance,
+    ExpectedRay e{DoubleDoubleVec3(p.position),
+                  double_double(4 * kUnitRoundoff * size),
+                  double_double(d),
+                  double_double(direction_tolerance),
                   offset.epsilon,
                   std::numeric_limits<double>::infinity(),
                   {}};
@@ -26,7 +26,8 @@ ExpectedRay expected_leaving_ray(const SurfacePoint& p, const WideVec& d, Wide d
         case OffsetRule::along_ray:
             break;
         case OffsetRule::along_normal:
-            e.origin += Wide(offset.epsilon) * leaving_normal(p, narrow(d));
+            e.origin = double_double(widen(p.position) +
+                                     Wide(offset.epsilon) * leaving_normal(p, narrow(d)));
             e.t_min = 0.0;
             break;
         case OffsetRule::error_bound:
@@ -47,8 +48,8 @@ ExpectedRay expected_reflection(const SurfacePoint& p, const RayOffset& offset) 
 ExpectedRadiance expected_radiance(const Script& script, const Ray& eye, int bounces,
                                    const RayOffset& offset) {
     ExpectedRadiance e;
-    e.rays.push_back(
-        {widen(eye.origin), 0, widen(eye.direction), 0, eye.t_min, eye.t_max, std::nullopt});
+    e.rays.push_back({DoubleDoubleVec3(eye.origin), DoubleDouble(), DoubleDoubleVec3(eye.direction),
+                      DoubleDouble(), eye.t_min, eye.t_max, std::nullopt});
     WideVec weight(1);
     // Each term is the local colour times a product of reflectances, all non-negative: a few
     // roundings per product and one per sum, relative to the terms' sum.

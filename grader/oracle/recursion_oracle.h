@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "app/grade/expected_ray.h"
-#include "base/math/wide_vec.h"
 #include "base/scene/ray_offset.h"
 #include "grader/oracle/error_bound_origin.h"
+#include "grader/oracle/wide_vec.h"
 #include "stages/2_rays/ray.h"
 #include "stages/6_shading/shading.h"
 #include "stages/7_recursion/recursion.h"

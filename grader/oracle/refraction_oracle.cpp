@@ -312,8 +312,13 @@ ExpectedRefractionRadiance expected_radiance_with_refraction(const HitMaker& mak
                       weight * refract_weight, error);
             }
         };
-    const ExpectedRay eye_ray{widen(eye.origin), 0,         widen(eye.direction), 0,
-                              eye.t_min,         eye.t_max, std::nullopt};
+    const ExpectedRay eye_ray{DoubleDoubleVec3(eye.origin),
+                              DoubleDouble(),
+                              DoubleDoubleVec3(eye.direction),
+                              DoubleDouble(),
+                              eye.t_min,
+                              eye.t_max,
+                              std::nullopt};
     trace(eye_ray, eye, inside, bounces, WideVec(1), WideVec(0));
     e.colour_tolerance += Wide(4 * (traced + 4)) * kU * terms;
     return e;

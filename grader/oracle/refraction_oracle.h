@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "app/grade/expected_ray.h"
-#include "base/math/wide_vec.h"
 #include "base/scene/ray_offset.h"
+#include "grader/oracle/wide_vec.h"
 #include "stages/2_rays/ray.h"
 #include "stages/6_shading/shading.h"
 #include "stages/9_refraction/refraction.h"

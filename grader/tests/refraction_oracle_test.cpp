@@ -13,8 +13,8 @@
 #include "base/math/portable_random.h"
 #include "base/testing/catch.h"
 #include "base/testing/special_values.h"
-#include "base/testing/wide_near.h"
 #include "grader/oracle/refraction_oracle.h"
+#include "grader/tests/wide_near.h"
 #include "stages/9_refraction/refraction.h"
 
 using namespace raystep;

@@ -2,7 +2,6 @@
 // answer a wrong transform gives by the smallest margin there is, a NaN, and a stand-in for what
 // must not be finite, and each rejects ill-formed data rather than judge by it.
 
-#include <cfloat>
 #include <cmath>
 #include <limits>
 
@@ -48,7 +47,8 @@ Mat4 inverse_translation() {
 }
 
 TEST_CASE("a matrix judge with zero tolerance fails an entry one ulp off, and a NaN") {
-    const Judge judge = build_judge(near_wide_matrix_judge(widen(translation()), WideMat(0.0L)));
+    const Judge judge =
+        build_judge(near_wide_matrix_judge(DoubleDoubleMat4(translation()), DoubleDoubleMat4()));
     CHECK(judge(testing::result_answer(probe::mat4(translation()))).passed);
     Mat4 off = translation();
     off[3][1] = next_up(2.0);
@@ -64,29 +64,26 @@ TEST_CASE("a matrix judge with zero tolerance fails an entry one ulp off, and a 
     CHECK_FALSE(judge(threw).passed);
 }
 
-TEST_CASE("a matrix judge compares in long double, the bits below a double's included") {
-    if (LDBL_MANT_DIG < 64) {
-        WARN("long double is a double here: nothing below a double to keep");
-        return;
-    }
+TEST_CASE("a matrix judge compares in double-double, the bits below a double's included") {
     // An entry of 1 + 2^-60 within 2^-62: the double 1 is 2^-60 away, and a judge by the
     // expectation rounded to double would pass it.
-    WideMat expected(1.0L);
-    expected[0][0] = 1.0L + 0x1p-60L;
-    WideMat tolerance(0.0L);
-    tolerance[0][0] = 0x1p-62L;
+    DoubleDoubleMat4 expected(Mat4(1.0));
+    expected[0][0] = two_sum(1, 0x1p-60);
+    DoubleDoubleMat4 tolerance;
+    tolerance[0][0] = DoubleDouble(0x1p-62);
     CHECK_FALSE(build_judge(near_wide_matrix_judge(expected, tolerance))(
                     testing::result_answer(probe::mat4(Mat4(1.0))))
                     .passed);
-    tolerance[0][0] = 0x1p-59L;
+    tolerance[0][0] = DoubleDouble(0x1p-59);
     CHECK(build_judge(near_wide_matrix_judge(expected, tolerance))(
               testing::result_answer(probe::mat4(Mat4(1.0))))
               .passed);
 }
 
 TEST_CASE("a transform judge judges the matrix, then the inverse") {
-    const Judge judge = build_judge(near_wide_transform_judge(
-        widen(translation()), WideMat(0.0L), widen(inverse_translation()), WideMat(0.0L)));
+    const Judge judge = build_judge(
+        near_wide_transform_judge(DoubleDoubleMat4(translation()), DoubleDoubleMat4(),
+                                  DoubleDoubleMat4(inverse_translation()), DoubleDoubleMat4()));
     CHECK(judge(transform_answer(translation(), inverse_translation())).passed);
     Mat4 inverse_off = inverse_translation();
     inverse_off[3][2] = std::nextafter(-3.0, 0.0);
@@ -135,7 +132,7 @@ TEST_CASE("a singular scale's inverse must not hold a finite stand-in for 1 / 0"
 }
 
 TEST_CASE("a ray judge holds origin and direction to their tolerances and t to the exact bounds") {
-    const WideVec tolerance(1e-15L);
+    const DoubleDoubleVec3 tolerance(1e-15);
     const Judge judge =
         build_judge(near_wide_ray_judge({1, 1, 2}, tolerance, {0, 2, 2}, tolerance, 0.25, kInf));
     CHECK(judge(testing::result_answer(probe::ray({{1, 1, 2}, {0, 2, 2}, 0.25, kInf}))).passed);
@@ -168,7 +165,8 @@ TEST_CASE("a hit judge fails a hit where a miss is due, a miss where a hit is, a
     CHECK(false_hit.expected == "a miss");
     CHECK(false_hit.got == "t = 8, normal (0, 1, 0)");
 
-    const Judge hit = build_judge(near_wide_hit_judge(8, 1e-14, {0, 1, 0}, WideVec(1e-15L)));
+    const Judge hit =
+        build_judge(near_wide_hit_judge(8, 1e-14, {0, 1, 0}, DoubleDoubleVec3(1e-15)));
     CHECK(hit(hit_answer(8, {0, 1, 0})).passed);
     const Verdict false_miss = hit(testing::result_answer(probe::hit(std::nullopt)));
     CHECK_FALSE(false_miss.passed);
@@ -183,17 +181,19 @@ TEST_CASE("a hit judge fails a hit where a miss is due, a miss where a hit is, a
     CHECK_FALSE(hit(hit_answer(8, {0, 2, 0})).passed);
     CHECK_FALSE(hit(hit_answer(8, {0, -1, 0})).passed);
     // Within its tolerance but not of unit length: the judge by tolerance alone would pass it.
-    const Judge loose = build_judge(near_wide_hit_judge(8, 1e-14, {0, 1, 0}, WideVec(0.1L)));
+    const Judge loose =
+        build_judge(near_wide_hit_judge(8, 1e-14, {0, 1, 0}, DoubleDoubleVec3(0.1)));
     CHECK(loose(hit_answer(8, {0, 1, 0})).passed);
     CHECK_FALSE(loose(hit_answer(8, {0, 1.05, 0})).passed);
 }
 
 TEST_CASE("a transform judge's ill-formed data throws rather than judge") {
-    probe::Json matrix = near_wide_matrix_judge(WideMat(1.0L), WideMat(0.0L));
+    const DoubleDoubleMat4 identity(Mat4(1.0));
+    probe::Json matrix = near_wide_matrix_judge(identity, DoubleDoubleMat4());
     matrix["tolerance"].erase(15);
     CHECK_THROWS(build_judge(matrix));
     probe::Json transform =
-        near_wide_transform_judge(WideMat(1.0L), WideMat(0.0L), WideMat(1.0L), WideMat(0.0L));
+        near_wide_transform_judge(identity, DoubleDoubleMat4(), identity, DoubleDoubleMat4());
     transform.erase("inverse_tolerance");
     CHECK_THROWS(build_judge(transform));
     probe::Json singular = singular_transform_judge(Mat4(1.0), {1.0, std::nullopt, 1.0});
@@ -201,10 +201,11 @@ TEST_CASE("a transform judge's ill-formed data throws rather than judge") {
     CHECK_THROWS(build_judge(singular));
     singular["inverse_diagonal"] = probe::Json::array({1.0, 1.0});
     CHECK_THROWS(build_judge(singular));
-    probe::Json ray = near_wide_ray_judge({0, 0, 0}, WideVec(0.0L), {1, 0, 0}, WideVec(0.0L), 0, 1);
+    probe::Json ray =
+        near_wide_ray_judge({0, 0, 0}, DoubleDoubleVec3(), {1, 0, 0}, DoubleDoubleVec3(), 0, 1);
     ray["origin"][0] = 0.5;
     CHECK_THROWS(build_judge(ray));
-    probe::Json hit = near_wide_hit_judge(1, 0, {1, 0, 0}, WideVec(0.0L));
+    probe::Json hit = near_wide_hit_judge(1, 0, {1, 0, 0}, DoubleDoubleVec3());
     hit.erase("t");
     CHECK_THROWS(build_judge(hit));
     hit = wide_miss_judge();

@@ -6,11 +6,11 @@
 
 #include "base/testing/catch.h"
 #include "base/testing/special_values.h"
-#include "base/testing/wide_near.h"
 #include "grader/oracle/camera_oracle.h"
 #include "grader/oracle/recursion_oracle.h"
 #include "grader/oracle/shading_oracle.h"
 #include "grader/oracle/transform_oracle.h"
+#include "grader/tests/wide_near.h"
 
 using namespace raystep;
 

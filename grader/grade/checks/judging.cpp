@@ -161,13 +161,6 @@ Judgement near_vec3(const ProbeAnswer& answer, const Vec3& expected, double tole
     return right();
 }
 
-bool near(const Vec3& got, const WideVec& expected, const WideVec& tolerance) {
-    for (int k = 0; k < 3; ++k) {
-        if (!(std::abs(got[k] - expected[k]) <= tolerance[k])) return false;
-    }
-    return true;
-}
-
 Judgement threw(const ProbeAnswer& answer, const std::string& type) {
     if (answer.kind == ProbeAnswer::Kind::threw && answer.exception_type == type) return right();
     return wrong("std::" + type + " thrown", "");

@@ -8,7 +8,6 @@
 #include <glm/vec3.hpp>
 
 #include "base/math/portable_random.h"
-#include "base/math/wide_vec.h"
 #include "grader/grade/check_definition.h"
 #include "grader/grade/checks/case_text.h"
 
@@ -104,10 +103,6 @@ Judgement near_number(const ProbeAnswer& answer, double expected, double toleran
 /// Every component within `tolerance` of the expected vector's (absolute); written so that a
 /// NaN fails.
 Judgement near_vec3(const ProbeAnswer& answer, const Vec3& expected, double tolerance);
-
-/// Each coordinate of `got` within its own tolerance of the long-double expectation's; written so
-/// that a NaN fails.
-bool near(const Vec3& got, const WideVec& expected, const WideVec& tolerance);
 
 /// The judge of a call whose answer is one value: wrong, with nothing got, when the call gave no
 /// result; else the result read by `read` (probe::vec3_from, probe::ray_from, ...), right when

@@ -14,6 +14,7 @@
 #include "grader/grade/checks/data_judged.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
+#include "grader/oracle/wide_vec.h"
 
 namespace raystep::grade {
 

@@ -13,6 +13,7 @@
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage4_cases.h"
+#include "grader/oracle/wide_vec.h"
 #include "stages/4_accel/uniform_grid.h"
 
 namespace raystep::grade {

@@ -25,6 +25,7 @@
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage4_cases.h"
+#include "grader/oracle/wide_vec.h"
 
 namespace raystep::grade {
 
@@ -78,20 +79,22 @@ SlabInterval exact_interval(const SlabCase& c) {
             exit_magnitude = magnitude;
         }
     }
-    exact.enter = enter;
-    exact.exit = exit;
     // An infinite end (t_max = inf on a ray parallel to every slab) is compared exactly
-    exact.enter_tolerance = std::isinf(enter) ? 0
-                                              : 16 * kWideUnitRoundoff * std::fabs(enter) +
-                                                    4 * kWideUnitRoundoff * enter_magnitude;
-    exact.exit_tolerance = std::isinf(exit) ? 0
-                                            : 16 * kWideUnitRoundoff * std::fabs(exit) +
-                                                  4 * kWideUnitRoundoff * exit_magnitude;
+    const Wide enter_tolerance = std::isinf(enter) ? 0
+                                                   : 16 * kWideUnitRoundoff * std::fabs(enter) +
+                                                         4 * kWideUnitRoundoff * enter_magnitude;
+    const Wide exit_tolerance = std::isinf(exit) ? 0
+                                                 : 16 * kWideUnitRoundoff * std::fabs(exit) +
+                                                       4 * kWideUnitRoundoff * exit_magnitude;
     const Wide wide_rounding =
         0x1p-60L * (std::fabs(enter) + enter_magnitude +
                     (std::isinf(exit) ? 0 : std::fabs(exit) + exit_magnitude));
+    exact.enter = double_double(enter);
+    exact.exit = double_double(exit);
+    exact.enter_tolerance = double_double(enter_tolerance);
+    exact.exit_tolerance = double_double(exit_tolerance);
     exact.must_hit = exit - enter >= -wide_rounding;
-    exact.must_miss = enter - exit > exact.enter_tolerance + exact.exit_tolerance;
+    exact.must_miss = enter - exit > enter_tolerance + exit_tolerance;
     return exact;
 }
 

@@ -58,7 +58,8 @@ PublicCase rotation_case(const Vec3& axis, double degrees) {
     const WideOp w = wide_op(rotate_op(axis, degrees));
     return {"rotation(" + full_text(axis) + ", " + full_text(degrees) + ")",
             {"rotation", Json::array({probe::vec3(axis), probe::number(degrees)})},
-            near_wide_matrix_judge(w.matrix, 8 * kWideUnitRoundoff * w.size),
+            near_wide_matrix_judge(double_double(w.matrix),
+                                   double_double(8 * kWideUnitRoundoff * w.size)),
             "rotation(" + cpp(axis) + ", " + cpp(degrees) + ")"};
 }
 
@@ -66,7 +67,7 @@ PublicCase rotation_case(const Vec3& axis, double degrees) {
 PublicCase exact_matrix_case(const std::string& call, const Vec3& v, const WideMat& expected) {
     return {call + "(" + full_text(v) + ")",
             {call, Json::array({probe::vec3(v)})},
-            near_wide_matrix_judge(expected, WideMat(0.0L)),
+            near_wide_matrix_judge(double_double(expected), DoubleDoubleMat4()),
             call + "(" + cpp(v) + ")"};
 }
 
@@ -96,8 +97,9 @@ PublicCase compose_case(const std::vector<TransformOp>& ops) {
     const WideTransform expected = wide_compose(ops);
     return {"compose(" + ops_text(ops) + ")",
             {"compose", ops_json(ops)},
-            near_wide_transform_judge(expected.matrix, expected.matrix_tolerance, expected.inverse,
-                                      expected.inverse_tolerance),
+            near_wide_transform_judge(
+                double_double(expected.matrix), double_double(expected.matrix_tolerance),
+                double_double(expected.inverse), double_double(expected.inverse_tolerance)),
             compose_code(ops)};
 }
 
@@ -108,8 +110,9 @@ PublicCase exact_inverse_case(const std::vector<TransformOp>& ops) {
     const WideTransform expected = wide_compose(ops);
     return {"compose(" + ops_text(ops) + "): the inverse from the ops' exact inverses",
             {"compose", ops_json(ops)},
-            near_wide_transform_judge(expected.matrix, expected.matrix_tolerance,
-                                      widen(narrow(expected.inverse)), WideMat(0.0L)),
+            near_wide_transform_judge(
+                double_double(expected.matrix), double_double(expected.matrix_tolerance),
+                DoubleDoubleMat4(narrow(expected.inverse)), DoubleDoubleMat4()),
             compose_code(ops)};
 }
 
@@ -135,8 +138,10 @@ PublicCase ray_to_object_case(const std::string& name, const Transform& t, const
     const WideProduct direction = wide_product(t.inverse, ray.direction, 0.0);
     return {name + ": ray_to_object of " + ray_text(ray) + ", " + transform_text(t),
             {"ray_to_object", Json::array({probe::transform(t), probe::ray(ray)})},
-            near_wide_ray_judge(origin.value, 8 * kWideUnitRoundoff * origin.size, direction.value,
-                                8 * kWideUnitRoundoff * direction.size, ray.t_min, ray.t_max),
+            near_wide_ray_judge(
+                double_double(origin.value), double_double(8 * kWideUnitRoundoff * origin.size),
+                double_double(direction.value),
+                double_double(8 * kWideUnitRoundoff * direction.size), ray.t_min, ray.t_max),
             "ray_to_object(" + cpp(t) + ", " + cpp(ray) + ")"};
 }
 
@@ -145,7 +150,7 @@ PublicCase point_to_world_case(const std::string& name, const Transform& t, cons
     const Vec3 tolerance = 8 * kUnitRoundoff * narrow(expected.size);
     return {name + ": point_to_world of " + full_text(p) + ", " + transform_text(t),
             {"point_to_world", Json::array({probe::transform(t), probe::vec3(p)})},
-            near_wide_vec3_judge(expected.value, widen(tolerance)),
+            near_wide_vec3_judge(double_double(expected.value), DoubleDoubleVec3(tolerance)),
             "point_to_world(" + cpp(t) + ", " + cpp(p) + ")"};
 }
 
@@ -153,7 +158,8 @@ PublicCase normal_to_world_case(const std::string& name, const Transform& t, con
     const WideNormal expected = wide_normal(t.inverse, widen(n));
     return {name + ": normal_to_world of " + full_text(n) + ", " + transform_text(t),
             {"normal_to_world", Json::array({probe::transform(t), probe::vec3(n)})},
-            near_wide_vec3_judge(expected.value, expected.tolerance, true),
+            near_wide_vec3_judge(double_double(expected.value), double_double(expected.tolerance),
+                                 true),
             "normal_to_world(" + cpp(t) + ", " + cpp(n) + ")"};
 }
 
@@ -164,7 +170,8 @@ PublicCase transformed_sphere_case(const std::string& name, const Ray& ray, cons
                 " radius " + full_text(sphere.radius) + ", " + transform_text(t),
             {"intersect_transformed_sphere",
              Json::array({probe::ray(ray), probe::sphere(sphere), probe::transform(t)})},
-            e.hit ? near_wide_hit_judge(e.t, e.t_tolerance, e.normal.value, e.normal.tolerance)
+            e.hit ? near_wide_hit_judge(e.t, e.t_tolerance, double_double(e.normal.value),
+                                        double_double(e.normal.tolerance))
                   : wide_miss_judge(),
             "intersect_transformed_sphere(" + cpp(ray) + ", " + cpp(sphere) + ", " + cpp(t) + ")"};
 }

@@ -40,7 +40,7 @@ constexpr const char* kPublicName =
 
 // A colour within its tolerance per channel.
 Json near_channels(const WideColor& expected) {
-    return near_wide_vec3_judge(expected.value, expected.tolerance);
+    return near_wide_vec3_judge(double_double(expected.value), double_double(expected.tolerance));
 }
 
 Material material(const Color& ambient, const Color& diffuse, const Color& specular,
@@ -83,8 +83,10 @@ PublicCase attenuation_case(const Attenuation& a, double distance) {
 Json sample_judge(const WideLightSample& expected) {
     const Wide distance = expected.distance;
     const Wide distance_tolerance = std::isinf(distance) ? 0 : 8 * kUnitRoundoff * distance;
-    return light_sample_judge(expected.direction, 8 * kUnitRoundoff, distance, distance_tolerance,
-                              expected.intensity, expected.intensity_tolerance);
+    return light_sample_judge(double_double(expected.direction), 8 * kUnitRoundoff,
+                              double_double(distance), double_double(distance_tolerance),
+                              double_double(expected.intensity),
+                              double_double(expected.intensity_tolerance));
 }
 
 PublicCase point_light_case(const PointLight& light, const Vec3& point) {
@@ -165,7 +167,7 @@ Json spawned_judge(const SurfacePoint& p, const Vec3& direction, double distance
             const WideVec tolerance =
                 Wide(4 * kUnitRoundoff) *
                 (glm::abs(widen(p.position)) + glm::abs(Wide(offset.epsilon) * n));
-            return along_normal_judge(origin, tolerance, end);
+            return along_normal_judge(double_double(origin), double_double(tolerance), end);
         }
         case OffsetRule::error_bound:
             break;

@@ -110,7 +110,7 @@ PublicCase radiance_case(const Script& script, const Ray& eye, int bounces,
                               {"ray", probe::ray(eye)},
                               {"bounces", bounces},
                               {"offset", probe::ray_offset(offset)}}},
-            radiance_judge(e.colour, e.colour_tolerance, e.rays),
+            radiance_judge(double_double(e.colour), double_double(e.colour_tolerance), e.rays),
             radiance_code(script, eye, bounces, offset)};
 }
 

@@ -18,8 +18,8 @@
 #include "app/grade/shading_judges.h"
 #include "app/grade/value_judges.h"
 #include "app/grade/value_text.h"
+#include "base/math/double_double_vec.h"
 #include "base/math/portable_random.h"
-#include "base/math/wide_vec.h"
 #include "grader/grade/checks/data_judged.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage8_queries.h"
@@ -162,9 +162,10 @@ PublicCase quad_light_sample_case(const QuadLight& light, const Vec3& point, con
                                        {"point", probe::vec3(point)},
                                        {"u", point_json(u)},
                                        {"sample_count", count}}},
-            light_sample_judge(widen(e.direction), kDirectionTolerance, e.distance,
-                               kRelativeTolerance * e.distance, widen(e.intensity),
-                               WideVec(kRelativeTolerance * scale)),
+            light_sample_judge(
+                DoubleDoubleVec3(e.direction), kDirectionTolerance, DoubleDouble(e.distance),
+                DoubleDouble(kRelativeTolerance * e.distance), DoubleDoubleVec3(e.intensity),
+                DoubleDoubleVec3(kRelativeTolerance * scale)),
             call};
 }
 

@@ -23,6 +23,7 @@
 #include "grader/grade/checks/stage8_shadow_rays.h"
 #include "grader/grade/checks/stage8_statistics.h"
 #include "grader/grade/checks/statistics_seed.h"
+#include "grader/oracle/wide_vec.h"
 
 namespace raystep::grade {
 

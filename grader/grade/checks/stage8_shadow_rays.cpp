@@ -8,8 +8,8 @@
 #include <glm/geometric.hpp>
 
 #include "app/grade/value_text.h"
-#include "base/math/wide_vec.h"
 #include "grader/oracle/sampling_oracle.h"
+#include "grader/oracle/wide_vec.h"
 
 namespace raystep::grade {
 

@@ -74,7 +74,7 @@ PublicCase refract_case(const Vec3& incident, const Vec3& normal, double eta) {
     return {
         "refract(" + vectors_text({incident, normal}) + ", eta " + full_text(eta) + ")",
         {"refract", Json::array({probe::vec3(incident), probe::vec3(normal), probe::number(eta)})},
-        refraction_judge(allowed(e.answer), e.direction, e.tolerance),
+        refraction_judge(allowed(e.answer), double_double(e.direction), double_double(e.tolerance)),
         "refract(" + args + ")"};
 }
 
@@ -95,7 +95,7 @@ PublicCase fresnel_case(bool schlick, double cos_incident, double n1, double n2)
         name + "(cos " + full_text(cos_incident) + ", n1 " + full_text(n1) + ", n2 " +
             full_text(n2) + ")",
         {name, Json::array({probe::number(cos_incident), probe::number(n1), probe::number(n2)})},
-        near_wide_number_judge(e.value, e.tolerance),
+        near_wide_number_judge(double_double(e.value), double_double(e.tolerance)),
         name + "(" + cpp(cos_incident) + ", " + cpp(n1) + ", " + cpp(n2) + ")"};
 }
 

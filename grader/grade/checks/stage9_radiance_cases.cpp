@@ -110,7 +110,8 @@ PublicCase radiance_case(const HitMaker& make, const Ray& eye, int bounces,
                                               {"inside", probe::media(inside)},
                                               {"schlick", schlick},
                                               {"offset", probe::ray_offset(offset)}}},
-            refraction_radiance_judge(e.colour, e.colour_tolerance, e.rays),
+            refraction_radiance_judge(double_double(e.colour), double_double(e.colour_tolerance),
+                                      e.rays),
             radiance_code(e.scene, eye, bounces, inside, schlick, offset)};
 }
 
