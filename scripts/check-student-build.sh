@@ -152,8 +152,8 @@ for name, command, points, may_fail in steps:
 PYTHON
 )
 # The points `raystep grade --stage N` can give each stage: the rubric's points of the checks the
-# release holds a case file for (grading/public/, samples worth none), which the workflow's
-# max-scores must be.
+# release holds a case file for (grading/public/, samples worth none) and of stage 3's functions on
+# its case files (stage3.cases.*), which the workflow's max-scores must be.
 public_points=$(python3 - "$release/grading" <<'PYTHON'
 import collections, json, pathlib, re, sys
 grading = pathlib.Path(sys.argv[1])
@@ -163,6 +163,9 @@ for case_file in grading.glob("public/*.json"):
     check = json.loads(case_file.read_text().splitlines()[0] + "]}")
     if check["kind"] != "sample":
         points[check["stage"]] += rubric["checks"][check["check"]]["points"]
+for check, entry in rubric["checks"].items():
+    if check.startswith("stage3.cases."):
+        points[3] += entry["points"]
 print(" ".join(f"{stage}:{points[stage]:g}" for stage in sorted(points)))
 PYTHON
 )

@@ -3,8 +3,9 @@
 // A student release holds the checks as data (grading/public/*.json and grading/rubric.json,
 // written by `raystep-grade release`): each case's query, its expected answer and tolerance, as
 // the reference's oracle decided them, never the oracle; stage 3's functions run on the case files
-// of `raystep check` (app/grade/stage3_case_checks.h). The hidden checks, the generated ones and
-// the speed checks are not run, and the report says which and what they are worth.
+// of `raystep check`, each scored against the reference's count (app/grade/stage3_case_checks.h).
+// The hidden checks, the generated ones and the speed checks are not run, and the report says which
+// and what they are worth.
 
 #include <algorithm>
 #include <cstdio>
@@ -131,8 +132,10 @@ int run_grade(const GradeArguments& arguments) {
             }
             const std::map<std::string, std::size_t> reference =
                 read_stage3_reference(folder / "stage3-reference.json");
-            for (CheckResult& result : run_stage3_case_checks(families, reference))
+            for (CheckResult& result : run_stage3_case_checks(families, reference, rubric)) {
+                run.insert(result.id);
                 report.checks.push_back(std::move(result));
+            }
         }
         // Each stage's checks in the order of the rubric's kinds, its sample of generated cases
         // after the checks that carry points.
@@ -150,8 +153,7 @@ int run_grade(const GradeArguments& arguments) {
                     console_paragraph(not_run_text(rubric, run, arguments, "below")).c_str(),
                     console_summary(report, Audience::student).c_str(),
                     console_paragraph(not_run_text(rubric, run, arguments, "above")).c_str());
-        // Every check passed: each with points earned all of them (the grader's "passed"), and each
-        // of stage 3's got as many cases right as the reference.
+        // Every check passed: each earned all its points (the grader's "passed").
         const bool all_passed =
             std::all_of(report.checks.begin(), report.checks.end(),
                         [](const CheckResult& c) { return c.outcome == Outcome::passed; });

@@ -1,6 +1,7 @@
 // raystep grade's stage-3 checks over the public case files (app/grade/stage3_case_checks.h).
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <string>
 #include <vector>
@@ -8,30 +9,108 @@
 #include <catch2/catch.hpp>
 
 #include "app/check/case_file.h"
+#include "app/check/stage3_methods.h"
 #include "app/grade/stage3_case_checks.h"
 
 namespace raystep::grade {
 namespace {
 
-TEST_CASE("a lecture triangle test that only leaks at shared edges passes raystep grade's check") {
-    // The reference's Cramer leaks at shared edges, where its watertight intersect_triangle
-    // leaks nowhere. A student's Cramer is held to the watertight count (a student may hand in
-    // Cramer as intersect_triangle): a leak must count as right, as the grader counts it, or a
-    // right stage 3 fails.
-    const std::vector<CaseFamily> families = read_case_file(
-        std::string(RAYSTEP_SOURCE_DIR) + "/stages/3_intersect/cases/shared-edges.cases");
-    const std::map<std::string, std::size_t> counts = stage3_cases_right(families);
-    std::map<std::string, std::size_t> watertight = counts;
-    watertight["intersect_triangle_cramer"] = counts.at("intersect_triangle");
-    const std::vector<CheckResult> results = run_stage3_case_checks(families, watertight);
-    const auto cramer = std::find_if(results.begin(), results.end(), [](const CheckResult& result) {
-        return result.id == "stage3.cases.intersect_triangle_cramer";
+// Each function's check worth one point, full at the reference's count, nothing at 70% of it.
+Rubric one_point_each() {
+    Rubric rubric;
+    for (const Stage3Method& method : stage3_methods())
+        rubric.checks["stage3.cases." + method.name] = {1.0, 1.0, 0.7, Visibility::visible};
+    return rubric;
+}
+
+// Public case files by name (stages/3_intersect/cases/NAME.cases).
+std::vector<CaseFamily> case_files(const std::vector<std::string>& names) {
+    std::vector<CaseFamily> families;
+    for (const std::string& name : names) {
+        for (CaseFamily& family : read_case_file(std::string(RAYSTEP_SOURCE_DIR) +
+                                                 "/stages/3_intersect/cases/" + name + ".cases"))
+            families.push_back(std::move(family));
+    }
+    return families;
+}
+
+const CheckResult& check_of(const std::vector<CheckResult>& results, const std::string& method) {
+    const auto found = std::find_if(results.begin(), results.end(), [&](const CheckResult& r) {
+        return r.id == "stage3.cases." + method;
     });
-    REQUIRE(cramer != results.end());
-    INFO(cramer->summary);
-    CHECK(cramer->outcome == Outcome::passed);
-    CHECK_THAT(cramer->summary, Catch::Matchers::Contains("leaks at shared edges"));
-    CHECK(cramer->counterexamples.empty());
+    REQUIRE(found != results.end());
+    return *found;
+}
+
+TEST_CASE("the stage-3 fraction is the count right over the reference's, at most 1") {
+    CHECK(stage3_cases_fraction(90, 90) == 1.0);
+    CHECK(stage3_cases_fraction(95, 90) == 1.0);
+    CHECK(stage3_cases_fraction(45, 90) == 0.5);
+    CHECK(stage3_cases_fraction(0, 0) == 1.0);
+}
+
+TEST_CASE("each stage-3 function earns its own points, whatever the others do") {
+    // The reference's counts, with the sphere's raised past what it gets: the sphere loses points
+    // in proportion and fails, and every other function keeps its full point.
+    const std::vector<CaseFamily> families = case_files({"shared-edges", "random-spheres"});
+    std::map<std::string, std::size_t> counts = stage3_cases_right(families);
+    REQUIRE(counts.at("intersect_sphere") > 0);
+    counts["intersect_sphere"] *= 2;
+    const std::vector<CheckResult> results =
+        run_stage3_case_checks(families, counts, one_point_each());
+    CHECK(results.size() == stage3_methods().size());
+    const CheckResult& sphere = check_of(results, "intersect_sphere");
+    CHECK(sphere.outcome == Outcome::failed);
+    CHECK(sphere.score == 0.0);  // half the reference's count: below 0.7
+    const CheckResult& plane = check_of(results, "intersect_plane");
+    CHECK(plane.outcome == Outcome::passed);
+    CHECK(plane.score == 1.0);
+    CHECK(plane.max_score == 1.0);
+}
+
+TEST_CASE("a stage-3 function short of the reference's count keeps points in proportion") {
+    const std::vector<CaseFamily> families = case_files({"shared-edges"});
+    std::map<std::string, std::size_t> counts = stage3_cases_right(families);
+    const std::size_t right = counts.at("intersect_triangle");
+    REQUIRE(right > 20);
+    // 85% of the reference's count, halfway between 0.7 and 1: half the point.
+    counts["intersect_triangle"] = static_cast<std::size_t>(static_cast<double>(right) / 0.85);
+    const CheckResult& triangle =
+        check_of(run_stage3_case_checks(families, counts, one_point_each()), "intersect_triangle");
+    CHECK(triangle.outcome == Outcome::failed);
+    CHECK(std::abs(triangle.score - 0.5) < 0.05);
+}
+
+TEST_CASE("intersect_triangle is held to the lowest count of the three triangle methods") {
+    // A student may hand in any of the three lecture methods as intersect_triangle, and the
+    // reference's projection and half-space tests miss near-boundary cases its watertight test
+    // gets right: a student's projection must still earn full marks there.
+    const std::map<std::string, std::size_t> counts =
+        stage3_cases_right(case_files({"shared-edges", "slivers", "grazing"}));
+    const std::size_t lowest = std::min({counts.at("intersect_triangle_projection"),
+                                         counts.at("intersect_triangle_halfspaces"),
+                                         counts.at("intersect_triangle_cramer")});
+    CHECK(counts.at("intersect_triangle") == lowest);
+}
+
+TEST_CASE("a lecture triangle test that only leaks at shared edges passes raystep grade's check") {
+    // The reference's Cramer leaks at shared edges and gets every other case there right. Held to
+    // a watertight test's count, every case, it must still pass: a leak counts as right, as the
+    // grader counts it, or a right stage 3 loses points.
+    const std::vector<CaseFamily> families = case_files({"shared-edges"});
+    std::map<std::string, std::size_t> watertight = stage3_cases_right(families);
+    const double cases = check_of(run_stage3_case_checks(families, watertight, one_point_each()),
+                                  "intersect_triangle_cramer")
+                             .metrics.at("cases");
+    watertight["intersect_triangle_cramer"] = static_cast<std::size_t>(cases);
+    const CheckResult& cramer =
+        check_of(run_stage3_case_checks(families, watertight, one_point_each()),
+                 "intersect_triangle_cramer");
+    INFO(cramer.summary);
+    CHECK(cramer.outcome == Outcome::passed);
+    CHECK(cramer.score == 1.0);
+    CHECK_THAT(cramer.summary, Catch::Matchers::Contains("leaks at shared edges"));
+    CHECK(cramer.counterexamples.empty());
 }
 
 }  // namespace

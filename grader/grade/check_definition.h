@@ -17,6 +17,7 @@ namespace raystep::grade {
 struct GradingContext {
     const ProbeSet* probes = nullptr;
     std::filesystem::path source;           ///< scenes/ for render checks: the work copy
+    std::filesystem::path grader_source;    ///< the grader's own tree: stage 3's public cases
     std::filesystem::path report_folder;    ///< render checks write their images here
     std::filesystem::path reference_probe;  ///< raystep-probe-reference
     std::string reproduce;                  ///< "raystep-grade submission PATH", to which

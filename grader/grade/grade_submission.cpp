@@ -134,6 +134,7 @@ GradeReport grade_submission(const GradeOptions& options, const Rubric& rubric,
     const bool renders = std::any_of(checks.begin(), checks.end(),
                                      [](const CheckDefinition& c) { return c.kind == "render"; });
     if (renders) context.source = copy_scenes(toolchain.source, work.path());
+    context.grader_source = toolchain.source;
     context.report_folder = instructor_folder(output);
     context.reference_probe = probes.reference.program.value_or(fs::path());
     context.reproduce = options.reproduce;

@@ -28,6 +28,7 @@ SeedSweep sweep_seeds(const std::filesystem::path& probe, const std::filesystem:
     GradingContext context;
     context.reproduce = "raystep-grade seeds";
     context.source = source;
+    context.grader_source = source;
     context.report_folder =
         std::filesystem::temp_directory_path() / ("raystep-seeds-" + std::to_string(::getpid()));
     for (int k = 0; k < count; ++k) {

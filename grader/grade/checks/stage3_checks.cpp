@@ -1,8 +1,10 @@
 // Stage 3 checks: every intersection function on the hard-case families (grader/families) and on
 // hand-picked cases of the contract, decided by the exact oracle (grader/oracle), scored as
-// `raystep check` scores them (app/check/case_scoring.h). The seeds are the grader's own, not the
-// public case files': a submission is graded on cases it has not seen. The contract's edges are
-// checks of their own (stage3_contract_checks.cpp).
+// `raystep check` scores them (app/check/case_scoring.h). The oracle checks' seeds are the
+// grader's own, not the public case files': a submission is graded on cases it has not seen. Each
+// function also earns points on the public case files, the check `raystep grade` runs on the
+// student's laptop (app/grade/stage3_case_checks.h), scored by the same fraction. The contract's
+// edges are checks of their own (stage3_contract_checks.cpp).
 //
 // A leak (a ray through a shared edge that no triangle of the mesh reports) is counted and
 // reported but not failed: stage 3's contract asks for the three lecture methods, which leak by
@@ -14,6 +16,7 @@
 
 #include "app/check/case_file.h"
 #include "app/check/case_scoring.h"
+#include "app/grade/stage3_case_checks.h"
 #include "grader/families/stage3_contract_cases.h"
 #include "grader/families/stage3_families.h"
 #include "grader/grade/checks/judging.h"
@@ -130,6 +133,38 @@ CheckMeasure measure_methods(const GradingContext& context, const BuiltProbe& pr
     return measure;
 }
 
+// The public case files of the grader's own tree (never the submission's copy), as a release
+// holds them in stages/3_intersect/cases/.
+std::vector<CaseFamily> public_families(const std::filesystem::path& grader_source) {
+    std::vector<CaseFamily> families;
+    for (const auto& file : case_files_in(grader_source / "stages" / "3_intersect" / "cases")) {
+        for (CaseFamily& family : read_case_file(file))
+            families.push_back(std::move(family));
+    }
+    return families;
+}
+
+// The method on the public case files, scored as `raystep grade` scores it: the count right over
+// the reference's count on the same files (stage3_cases_fraction), the reference run here.
+CheckMeasure measure_public_cases(const GradingContext& context, const BuiltProbe& probe,
+                                  const Stage3Method& method, const std::string& id) {
+    const std::vector<CaseFamily> families = public_families(context.grader_source);
+    CheckMeasure measure = measure_methods(context, probe, {method}, families, id);
+    // One case asked again (--case N) is a reproduction, not a score against the whole count.
+    if (context.only_case || measure.grader_error || measure.outcome == Outcome::not_implemented ||
+        measure.outcome == Outcome::did_not_compile) {
+        return measure;
+    }
+    const std::size_t right = static_cast<std::size_t>(measure.metrics["passed"]);
+    const std::size_t reference_right = stage3_cases_right(families).at(method.name);
+    measure.fraction = stage3_cases_fraction(right, reference_right);
+    if (measure.outcome == Outcome::failed && right >= reference_right) {
+        measure.outcome = Outcome::passed;
+    }
+    measure.summary += "; the reference gets " + std::to_string(reference_right) + " right";
+    return measure;
+}
+
 }  // namespace
 
 std::vector<CheckDefinition> stage3_checks() {
@@ -141,6 +176,13 @@ std::vector<CheckDefinition> stage3_checks() {
              [method, id](const GradingContext& context, const BuiltProbe& probe) {
                  return measure_methods(context, probe, {method}, decided_families(), id);
              }});
+    }
+    for (const Stage3Method& method : stage3_methods()) {
+        const std::string id = "stage3.cases." + method.name;
+        checks.push_back({id, 3, "oracle", method.name + " on the public case files",
+                          [method, id](const GradingContext& context, const BuiltProbe& probe) {
+                              return measure_public_cases(context, probe, method, id);
+                          }});
     }
     checks.push_back(
         {"stage3.hidden", 3, "unit",
