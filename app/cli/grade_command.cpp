@@ -181,7 +181,7 @@ AddedCommand add_grade(CLI::App& app) {
     return {command, [arguments] { return run_grade(*arguments); }};
 }
 
-const CommandRegistry::Registration kRegistration(add_grade);
+const CommandRegistry::Registration kGradeCommand(add_grade);
 
 }  // namespace
 

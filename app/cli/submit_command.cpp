@@ -46,8 +46,8 @@ std::string grouped(std::uintmax_t value) {
     return digits;
 }
 
-std::string joined(const std::vector<std::string>& names) {
-    // Overloads share a name: each is said once.
+// The names, comma-separated; overloads share a name, and each is said once.
+std::string names_said_once(const std::vector<std::string>& names) {
     std::string text;
     for (std::size_t i = 0; i < names.size(); ++i) {
         if (i > 0 && names[i] == names[i - 1]) continue;
@@ -102,7 +102,7 @@ int run_submit(const SubmitArguments& arguments) {
     for (const SubmissionFile* file : stubbed) {
         std::fprintf(stderr,
                      "warning: %s: still stubs, which throw NotImplemented (RAYSTEP_TODO): %s\n",
-                     file->name.c_str(), joined(file->stubs).c_str());
+                     file->name.c_str(), names_said_once(file->stubs).c_str());
     }
     std::fflush(stderr);
 
@@ -128,7 +128,7 @@ AddedCommand add_submit(CLI::App& app) {
     return {command, [arguments] { return run_submit(*arguments); }};
 }
 
-const CommandRegistry::Registration kRegistration(add_submit);
+const CommandRegistry::Registration kSubmitCommand(add_submit);
 
 }  // namespace
 

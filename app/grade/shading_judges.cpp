@@ -16,8 +16,6 @@ namespace {
 using probe::Json;
 using Kind = ProbeAnswer::Kind;
 
-const double kInf = std::numeric_limits<double>::infinity();
-
 const JudgeRegistry::Registration light_sample_registration{
     {"light_sample", [](const Json& p) -> Judge {
          const DoubleDoubleVec3 direction = probe::wide_vec3_from(p.at("direction"));
@@ -38,7 +36,7 @@ const JudgeRegistry::Registration light_sample_registration{
              // An infinite distance is asked exactly; a finite one within its tolerance, written
              // so that a NaN fails.
              const bool distance_ok = is_infinite(distance)
-                                          ? got.distance == kInf
+                                          ? got.distance == std::numeric_limits<double>::infinity()
                                           : near_wide(got.distance, distance, distance_tolerance);
              if (distance_ok &&
                  near_wide(got.direction, direction, DoubleDoubleVec3(direction_tolerance)) &&
