@@ -2,7 +2,7 @@
 // structure's answers, the same as the reference's brute force on the same rays; the calls that
 // count a structure's work belong to the grader's probe alone (grader/probe/accel_work_calls.h).
 
-#include <catch2/catch.hpp>
+#include "base/testing/catch.h"
 
 #include "app/probe/call_reply.h"
 #include "app/probe/call_table.h"

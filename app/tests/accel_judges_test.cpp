@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include <catch2/catch.hpp>
+#include "base/testing/catch.h"
 
 #include "app/grade/accel_judges.h"
 #include "app/grade/data_judge.h"

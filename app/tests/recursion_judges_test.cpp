@@ -5,7 +5,7 @@
 #include <limits>
 #include <vector>
 
-#include <catch2/catch.hpp>
+#include "base/testing/catch.h"
 
 #include "app/grade/data_judge.h"
 #include "app/grade/recursion_judges.h"

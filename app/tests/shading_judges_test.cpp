@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include <catch2/catch.hpp>
+#include "base/testing/catch.h"
 
 #include "app/grade/data_judge.h"
 #include "app/grade/shading_judges.h"

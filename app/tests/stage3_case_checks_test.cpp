@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include <catch2/catch.hpp>
+#include "base/testing/catch.h"
 
 #include "app/check/case_file.h"
 #include "app/check/stage3_methods.h"
@@ -34,7 +34,8 @@ std::vector<CaseFamily> case_files(const std::vector<std::string>& names) {
     return families;
 }
 
-const CheckResult& check_of(const std::vector<CheckResult>& results, const std::string& method) {
+// A copy: the results are often a temporary.
+CheckResult check_of(const std::vector<CheckResult>& results, const std::string& method) {
     const auto found = std::find_if(results.begin(), results.end(), [&](const CheckResult& r) {
         return r.id == "stage3.cases." + method;
     });
@@ -59,10 +60,10 @@ TEST_CASE("each stage-3 function earns its own points, whatever the others do") 
     const std::vector<CheckResult> results =
         run_stage3_case_checks(families, counts, one_point_each());
     CHECK(results.size() == stage3_methods().size());
-    const CheckResult& sphere = check_of(results, "intersect_sphere");
+    const CheckResult sphere = check_of(results, "intersect_sphere");
     CHECK(sphere.outcome == Outcome::failed);
     CHECK(sphere.score == 0.0);  // half the reference's count: below 0.7
-    const CheckResult& plane = check_of(results, "intersect_plane");
+    const CheckResult plane = check_of(results, "intersect_plane");
     CHECK(plane.outcome == Outcome::passed);
     CHECK(plane.score == 1.0);
     CHECK(plane.max_score == 1.0);
@@ -75,7 +76,7 @@ TEST_CASE("a stage-3 function short of the reference's count keeps points in pro
     REQUIRE(right > 20);
     // 85% of the reference's count, halfway between 0.7 and 1: half the point.
     counts["intersect_triangle"] = static_cast<std::size_t>(static_cast<double>(right) / 0.85);
-    const CheckResult& triangle =
+    const CheckResult triangle =
         check_of(run_stage3_case_checks(families, counts, one_point_each()), "intersect_triangle");
     CHECK(triangle.outcome == Outcome::failed);
     CHECK(std::abs(triangle.score - 0.5) < 0.05);
@@ -103,7 +104,7 @@ TEST_CASE("a lecture triangle test that only leaks at shared edges passes rayste
                                   "intersect_triangle_cramer")
                              .metrics.at("cases");
     watertight["intersect_triangle_cramer"] = static_cast<std::size_t>(cases);
-    const CheckResult& cramer =
+    const CheckResult cramer =
         check_of(run_stage3_case_checks(families, watertight, one_point_each()),
                  "intersect_triangle_cramer");
     INFO(cramer.summary);

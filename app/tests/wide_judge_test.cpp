@@ -7,7 +7,7 @@
 #include <set>
 #include <string>
 
-#include <catch2/catch.hpp>
+#include "base/testing/catch.h"
 
 #include "app/grade/data_judge.h"
 #include "app/grade/value_judges.h"

@@ -1,7 +1,7 @@
 #pragma once
 
-// How tests compare and print vectors: a failed check shows both vectors exactly (number_text.h)
-// and the tolerance at its size, instead of "{?}" or "false".
+// How tests compare vectors: a failed check shows both vectors exactly (catch.h prints a Vec3 by
+// number_text.h) and the tolerance at its size, instead of "false".
 
 #include <algorithm>
 #include <string>
@@ -11,13 +11,6 @@
 #include "base/math/types.h"
 #include "base/testing/catch.h"
 #include "base/testing/number_text.h"
-
-namespace Catch {
-template <>
-struct StringMaker<raystep::Vec3> {
-    static std::string convert(const raystep::Vec3& v) { return raystep::testing::exact_text(v); }
-};
-}  // namespace Catch
 
 namespace raystep::testing {
 

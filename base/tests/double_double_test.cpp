@@ -52,8 +52,9 @@ DoubleDouble dekker_product(double a, double b) {
     return {p, e};
 }
 
-// Normalized: hi is hi + lo rounded to nearest.
+// Normalized: hi is hi + lo rounded to nearest. A zero hi has no exponent (ilogb(0) is INT_MIN).
 bool normalized(const DoubleDouble& x) {
+    if (x.hi == 0) return x.lo == 0;
     return x.hi + x.lo == x.hi && std::abs(x.lo) <= 0.5 * std::ldexp(1.0, std::ilogb(x.hi) - 52);
 }
 

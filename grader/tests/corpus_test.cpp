@@ -22,8 +22,8 @@
 
 #include <sys/wait.h>
 
-#include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
+#include "base/testing/catch.h"
 
 #include "grader/grade/report_folders.h"
 #include "grader/grade/report_json.h"

@@ -3,7 +3,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include <catch2/catch.hpp>
+#include "base/testing/catch.h"
 
 #include "grader/grade/shard.h"
 
