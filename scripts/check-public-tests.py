@@ -61,8 +61,8 @@ def read_programs(preset: str):
     programs = {}
     for test in json.loads(listed.stdout)["tests"]:
         command = test["command"]
-        at = next(k for k, part in enumerate(command)
-                  if pathlib.Path(part).resolve().is_relative_to(here))
+        at = next(k for k, part in enumerate(command) if pathlib.Path(part).is_file()
+                  and pathlib.Path(part).resolve().is_relative_to(here))
         folder = next((p["value"] for p in test.get("properties", [])
                        if p["name"] == "WORKING_DIRECTORY"), str(here))
         # The program with the arguments after the test case's name, which its tests share.
@@ -87,9 +87,12 @@ def run_per_program(preset: str):
         except ElementTree.ParseError:
             report = None
         if report is None or report.find(".//FatalErrorCondition") is not None:
-            output = "fatal error condition: the program crashed; its last lines:\n" + "\n".join(
-                (run.stdout + run.stderr).splitlines()[-12:])
-            cases.extend((name, "fail", output) for name, _ in tests)
+            # The program's last lines once, under its first test.
+            first = tests[0][0]
+            cases.append((first, "fail", "fatal error condition: the program crashed; its last "
+                          "lines:\n" + "\n".join((run.stdout + run.stderr).splitlines()[-12:])))
+            cases.extend((name, "fail", f"fatal error condition: the program crashed (under {first})")
+                         for name, _ in tests[1:])
             continue
         by_name = {case.get("name"): case for case in report.iter("TestCase")}
         for name, case_name in tests:
