@@ -5,9 +5,12 @@
 # that fuses where it likes (clang does on ARM, GCC does in GNU mode) makes results differ between
 # a student's laptop and the grader, and breaks the exact-negation argument of the watertight
 # triangle test. MSVC does not contract under its default /fp:precise.
+#
+# /bigobj: the student presets build in unity files of 16 sources, and one that instantiates
+# nlohmann/json and CLI11 can pass the 65,279 sections of MSVC's default object format (C1128).
 function(raystep_set_compile_options target)
     if(MSVC)
-        target_compile_options(${target} PRIVATE /W4 /permissive-)
+        target_compile_options(${target} PRIVATE /W4 /permissive- /bigobj)
         if(RAYSTEP_WARNINGS_AS_ERRORS)
             target_compile_options(${target} PRIVATE /WX)
         endif()
