@@ -17,7 +17,6 @@
 #include <utility>
 #include <vector>
 
-#include "app/check/case_file.h"
 #include "app/cli/command_registry.h"
 #include "app/grade/public_case.h"
 #include "app/grade/public_check_run.h"
@@ -124,12 +123,7 @@ int run_grade(const GradeArguments& arguments) {
         }
         // Stage 3's public cases are the case files `raystep check` reads, scored per function.
         if (selected(arguments, "stage3.")) {
-            std::vector<CaseFamily> families;
-            for (const fs::path& file :
-                 case_files_in(fs::path(RAYSTEP_SOURCE_DIR) / "stages" / "3_intersect" / "cases")) {
-                for (CaseFamily& family : read_case_file(file))
-                    families.push_back(std::move(family));
-            }
+            const std::vector<CaseFamily> families = stage3_public_families(RAYSTEP_SOURCE_DIR);
             const std::map<std::string, std::size_t> reference =
                 read_stage3_reference(folder / "stage3-reference.json");
             for (CheckResult& result : run_stage3_case_checks(families, reference, rubric)) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "app/check/case_file.h"
 #include "app/check/case_scoring.h"
 #include "app/check/stage3_methods.h"
 #include "app/grade/render_judge.h"
@@ -52,6 +53,15 @@ MethodRun run_over(const Stage3Method& method, const std::vector<CaseFamily>& fa
 }
 
 }  // namespace
+
+std::vector<CaseFamily> stage3_public_families(const std::filesystem::path& root) {
+    std::vector<CaseFamily> families;
+    for (const auto& file : case_files_in(root / "stages" / "3_intersect" / "cases")) {
+        for (CaseFamily& family : read_case_file(file))
+            families.push_back(std::move(family));
+    }
+    return families;
+}
 
 std::map<std::string, std::size_t> stage3_cases_right(const std::vector<CaseFamily>& families) {
     std::map<std::string, std::size_t> right;

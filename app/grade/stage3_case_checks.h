@@ -1,5 +1,6 @@
 #pragma once
 
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
@@ -24,6 +25,10 @@ namespace raystep::grade {
 // stage3_cases_right, and writes beside the case files). A leak at a shared edge counts as right,
 // as the grader's stage-3 checks count it: the lecture methods leak by design, and a right Cramer
 // must pass where the reference's watertight intersect_triangle does.
+
+/// Every family of the public case files of the tree at `root` (stages/3_intersect/cases/), in
+/// file order: what `raystep grade`, the release writer and the grader's stage3.cases checks read.
+std::vector<CaseFamily> stage3_public_families(const std::filesystem::path& root);
 
 /// How many cases of the families each function of this build gets right, by function name; for
 /// intersect_triangle, which may be any of the three methods, the lowest count of the four. A

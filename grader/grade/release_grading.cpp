@@ -2,7 +2,6 @@
 
 #include <fstream>
 
-#include "app/check/case_file.h"
 #include "app/grade/public_case.h"
 #include "app/grade/stage3_case_checks.h"
 #include "grader/grade/checks/data_judged.h"
@@ -17,13 +16,8 @@ std::size_t write_release_grading(const std::filesystem::path& source,
                                std::filesystem::copy_options::overwrite_existing);
     // What the reference gets right of stage 3's public case files, which a student's function
     // must match (app/grade/stage3_case_checks.h).
-    std::vector<CaseFamily> families;
-    for (const auto& file : case_files_in(source / "stages" / "3_intersect" / "cases")) {
-        for (CaseFamily& family : read_case_file(file))
-            families.push_back(std::move(family));
-    }
     std::ofstream(folder / "stage3-reference.json")
-        << probe::Json(stage3_cases_right(families)) << "\n";
+        << probe::Json(stage3_cases_right(stage3_public_families(source))) << "\n";
     std::size_t written = 0;
     for (const PublicCheck& check : public_checks(source)) {
         write_public_check(check, folder / "public");

@@ -133,22 +133,12 @@ CheckMeasure measure_methods(const GradingContext& context, const BuiltProbe& pr
     return measure;
 }
 
-// The public case files of the grader's own tree (never the submission's copy), as a release
-// holds them in stages/3_intersect/cases/.
-std::vector<CaseFamily> public_families(const std::filesystem::path& grader_source) {
-    std::vector<CaseFamily> families;
-    for (const auto& file : case_files_in(grader_source / "stages" / "3_intersect" / "cases")) {
-        for (CaseFamily& family : read_case_file(file))
-            families.push_back(std::move(family));
-    }
-    return families;
-}
-
 // The method on the public case files, scored as `raystep grade` scores it: the count right over
 // the reference's count on the same files (stage3_cases_fraction), the reference run here.
 CheckMeasure measure_public_cases(const GradingContext& context, const BuiltProbe& probe,
                                   const Stage3Method& method, const std::string& id) {
-    const std::vector<CaseFamily> families = public_families(context.grader_source);
+    // The grader's own tree's files, never the submission's copy.
+    const std::vector<CaseFamily> families = stage3_public_families(context.grader_source);
     CheckMeasure measure = measure_methods(context, probe, {method}, families, id);
     // One case asked again (--case N) is a reproduction, not a score against the whole count.
     if (context.only_case || measure.grader_error || measure.outcome == Outcome::not_implemented ||
