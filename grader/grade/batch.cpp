@@ -7,6 +7,7 @@
 #include <map>
 #include <mutex>
 #include <optional>
+#include <system_error>
 #include <thread>
 
 #include "grader/grade/merge_shards.h"
@@ -110,6 +111,11 @@ BatchTally grade_class(const BatchOptions& options, const Rubric& rubric,
         resumed[k] =
             reports[k].has_value() && (options.skip_speed || !lacks_speed_checks(*reports[k]));
     }
+    // The class's compiled objects, shared by its submissions and both passes (object_cache.h): a
+    // stage nobody has started is compiled once, and the speed pass compiles nothing new. In OUT,
+    // where no student's folder can be called so (submission_name), and removed when the batch
+    // ends.
+    const fs::path object_cache = options.output / ".object-cache";
     std::mutex mutex;  // the tally's stderr lines and the progress line
     std::size_t done = 0;
     const auto progress = [&](const char* pass, std::size_t total, const std::string& name) {
@@ -128,6 +134,7 @@ BatchTally grade_class(const BatchOptions& options, const Rubric& rubric,
         one.skip_speed = !speed;
         one.only_speed = speed;
         one.reference_probe = options.reference_probe;
+        one.object_cache = object_cache;
         one.reproduce = "raystep-grade submission " + entry.submission.string();
         try {
             GradeReport report = grade_submission(one, rubric, toolchain);
@@ -177,6 +184,8 @@ BatchTally grade_class(const BatchOptions& options, const Rubric& rubric,
         }
     }
     if (options.progress) std::fputs("\r\033[K", stderr);
+    std::error_code ignored;
+    fs::remove_all(object_cache, ignored);
 
     BatchTally tally;
     std::vector<GradeReport> class_reports;

@@ -124,8 +124,9 @@ GradeReport grade_submission(const GradeOptions& options, const Rubric& rubric,
     report.times.intake = seconds_since(start);
 
     start = std::chrono::steady_clock::now();
-    const ProbeSet probes = build_probes(submission, toolchain, options.reference_probe,
-                                         work.path(), probes_needed(checks), options.jobs);
+    const ProbeSet probes =
+        build_probes(submission, toolchain, options.reference_probe, work.path(),
+                     probes_needed(checks), options.jobs, options.object_cache);
     report.times.build = seconds_since(start);
 
     start = std::chrono::steady_clock::now();

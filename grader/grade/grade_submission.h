@@ -16,8 +16,11 @@ struct GradeOptions {
     /// Where the work folder is made; empty: as work_parent_for(output) says (work_folder.h).
     std::filesystem::path work_parent;
     bool keep_work = false;  ///< keep the work folder after grading (--keep-work), to look into
-    int jobs = 1;            ///< compiles and checks run this many at a time
-    std::string only_check;  ///< run just this check (--check), for reproducing
+    /// Where objects compiled before are kept and found (--object-cache, object_cache.h); empty:
+    /// every file is compiled.
+    std::filesystem::path object_cache;
+    int jobs = 1;                   ///< compiles and checks run this many at a time
+    std::string only_check;         ///< run just this check (--check), for reproducing
     std::optional<int> only_stage;  ///< run just this stage's checks (--stage; 0: the pipeline)
     bool skip_speed = false;        ///< leave the speed checks out (--no-speed)
     bool only_speed = false;        ///< run just the speed checks (a batch's second pass)

@@ -4,12 +4,15 @@
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <exception>
 #include <map>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
 
 #include "grader/grade/mebibytes.h"
+#include "grader/grade/object_cache.h"
 #include "grader/grade/sandbox_copies.h"
 #include "grader/sandbox/sandbox.h"
 #include "grader/sandbox/sandbox_paths.h"
@@ -84,6 +87,32 @@ StagedToolchain stage_toolchain(const ProbeToolchain& toolchain, const fs::path&
     return staged;
 }
 
+// Runs task(0) to task(count - 1), `jobs` at a time: the compiles and links of one submission are
+// independent of one another. The first exception a task throws is thrown here, once all have
+// ended.
+template <class Task>
+void run_at_a_time(std::size_t count, int jobs, const Task& task) {
+    std::atomic<std::size_t> next{0};
+    std::mutex mutex;
+    std::exception_ptr first_error;
+    std::vector<std::thread> workers;
+    for (int k = 0; k < std::max(1, jobs); ++k) {
+        workers.emplace_back([&] {
+            for (std::size_t i = next++; i < count; i = next++) {
+                try {
+                    task(i);
+                } catch (...) {
+                    const std::lock_guard<std::mutex> lock(mutex);
+                    if (!first_error) first_error = std::current_exception();
+                }
+            }
+        });
+    }
+    for (std::thread& worker : workers)
+        worker.join();
+    if (first_error) std::rethrow_exception(first_error);
+}
+
 struct CompiledStage {
     int number = 0;
     std::vector<fs::path> objects;
@@ -127,7 +156,7 @@ void require_sandbox_reaches(const fs::path& include, const fs::path& work) {
 // Compiles a stage's files one after another, each under what is left of the stage's budget: a
 // template bomb or a huge constant array ends, and so does a stage split into many slow files.
 CompiledStage compile_stage(const SubmittedStage& stage, const ProbeToolchain& toolchain,
-                            const fs::path& include, const fs::path& work,
+                            const fs::path& include, const fs::path& work, const ObjectCache* cache,
                             const BuildBudget& budget) {
     CompiledStage compiled;
     compiled.number = stage.manifest.number;
@@ -150,10 +179,18 @@ CompiledStage compile_stage(const SubmittedStage& stage, const ProbeToolchain& t
             return compiled;
         }
         const fs::path object = objects / file.filename().replace_extension(".o");
+        if (cache && cache->take(file, object)) {
+            compiled.objects.push_back(object);
+            continue;
+        }
         std::vector<std::string> argv = {toolchain.compiler.string()};
         argv.insert(argv.end(), toolchain.compile_flags.begin(), toolchain.compile_flags.end());
         argv.insert(argv.end(),
                     {"-I" + include.string(), "-c", file.string(), "-o", object.string()});
+        if (cache) {
+            for (const std::string& flag : ObjectCache::dependency_flags(object))
+                argv.push_back(flag);
+        }
 
         SandboxPolicy policy;
         policy.read_only = {include, file.parent_path()};
@@ -183,6 +220,7 @@ CompiledStage compile_stage(const SubmittedStage& stage, const ProbeToolchain& t
                 compiled.failure = "the compiler failed without a message";
             return compiled;
         }
+        if (cache) cache->keep(file, object);
         compiled.objects.push_back(object);
     }
     return compiled;
@@ -278,11 +316,14 @@ const BuiltProbe& ProbeSet::stage(int number) const {
 
 ProbeSet build_probes(const Submission& submission, const ProbeToolchain& toolchain,
                       const fs::path& reference_probe, const fs::path& work,
-                      const ProbesNeeded& needed, int jobs, const BuildBudget& budget) {
+                      const ProbesNeeded& needed, int jobs, const fs::path& object_cache,
+                      const BuildBudget& budget) {
     const auto start = std::chrono::steady_clock::now();
     const fs::path include = work / "include";
     copy_headers(toolchain.source, include);
     require_sandbox_reaches(include, work);
+    std::optional<ObjectCache> cache;
+    if (!object_cache.empty()) cache.emplace(object_cache, toolchain, work);
 
     // Compile the stages needed `jobs` at a time: each is independent of the others.
     std::vector<const SubmittedStage*> to_compile;
@@ -291,17 +332,10 @@ ProbeSet build_probes(const Submission& submission, const ProbeToolchain& toolch
             to_compile.push_back(&stage);
     }
     std::vector<CompiledStage> compiled(to_compile.size());
-    std::atomic<std::size_t> next{0};
-    std::vector<std::thread> workers;
-    for (int k = 0; k < std::max(1, jobs); ++k) {
-        workers.emplace_back([&] {
-            for (std::size_t s = next++; s < compiled.size(); s = next++) {
-                compiled[s] = compile_stage(*to_compile[s], toolchain, include, work, budget);
-            }
-        });
-    }
-    for (std::thread& worker : workers)
-        worker.join();
+    run_at_a_time(compiled.size(), jobs, [&](std::size_t s) {
+        compiled[s] = compile_stage(*to_compile[s], toolchain, include, work,
+                                    cache ? &*cache : nullptr, budget);
+    });
 
     // Link, with the sandbox's user shut out of work/probes where no bubblewrap hides it.
     const fs::path probes = work / "probes";
@@ -311,6 +345,14 @@ ProbeSet build_probes(const Submission& submission, const ProbeToolchain& toolch
                                                    : fs::perms::owner_all);
     const StagedToolchain staged = stage_toolchain(toolchain, work / "link");
     ProbeSet set;
+    // Each probe's link: the stages it takes from the submission, where it goes, where its result
+    // goes (set.stages is filled first, so that the pointers into it hold).
+    struct Link {
+        std::vector<const CompiledStage*> stages;
+        fs::path program;
+        BuiltProbe* probe;
+    };
+    std::vector<Link> links;
     std::vector<const CompiledStage*> all;
     std::string pipeline_failure;
     for (const CompiledStage& stage : compiled) {
@@ -318,20 +360,28 @@ ProbeSet build_probes(const Submission& submission, const ProbeToolchain& toolch
         if (!stage.failure.empty()) {
             pipeline_failure += "stage " + std::to_string(stage.number) + " did not compile. ";
         }
-        if (needed.stages.count(stage.number) == 0) continue;
-        const fs::path program = probes / ("stage" + std::to_string(stage.number)) / "probe";
-        set.stages.push_back(
-            {stage.number, stage.failure.empty()
-                               ? link_probe({&stage}, staged, toolchain, program, budget)
-                               : BuiltProbe{std::nullopt, stage.failure}});
+        if (needed.stages.count(stage.number) > 0)
+            set.stages.push_back({stage.number, BuiltProbe{std::nullopt, stage.failure}});
+    }
+    for (std::size_t s = 0, k = 0; s < compiled.size(); ++s) {
+        if (needed.stages.count(compiled[s].number) == 0) continue;
+        BuiltProbe& probe = set.stages[k++].second;
+        if (compiled[s].failure.empty()) {
+            links.push_back({{&compiled[s]},
+                             probes / ("stage" + std::to_string(compiled[s].number)) / "probe",
+                             &probe});
+        }
     }
     if (!needed.pipeline) {
         set.pipeline.failure = "not built: no check of this grade needed it";
     } else if (pipeline_failure.empty()) {
-        set.pipeline = link_probe(all, staged, toolchain, probes / "pipeline" / "probe", budget);
+        links.push_back({all, probes / "pipeline" / "probe", &set.pipeline});
     } else {
         set.pipeline.failure = pipeline_failure;
     }
+    run_at_a_time(links.size(), jobs, [&](std::size_t k) {
+        *links[k].probe = link_probe(links[k].stages, staged, toolchain, links[k].program, budget);
+    });
     if (needed.reference)
         set.reference = copy_reference(reference_probe, probes / "reference" / "probe");
     // The reference stages leave before any probe runs.

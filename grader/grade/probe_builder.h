@@ -67,10 +67,12 @@ struct BuildBudget {
 ///   readable by the sandbox's user; without bubblewrap work/probes itself is shut to that user,
 ///   and the sandbox executes a probe through a descriptor.
 /// Compiler and linker output is kept to its first lines; a budget that runs out is named in the
-/// failure.
+/// failure. With an `object_cache` folder, a file compiled before with the same inputs is taken
+/// from there instead (object_cache.h).
 ProbeSet build_probes(const Submission& submission, const ProbeToolchain& toolchain,
                       const std::filesystem::path& reference_probe,
                       const std::filesystem::path& work, const ProbesNeeded& needed, int jobs,
+                      const std::filesystem::path& object_cache = {},
                       const BuildBudget& budget = {});
 
 }  // namespace raystep::grade

@@ -59,6 +59,7 @@ struct SubmissionArguments {
     bool instructor = false;
     std::string work;
     bool keep_work = false;
+    std::string object_cache;
     std::uint64_t seed = kDefaultStatisticsSeed;
 };
 
@@ -72,6 +73,8 @@ int grade_one(const SubmissionArguments& arguments) {
     options.output = output;
     if (!arguments.work.empty()) options.work_parent = fs::absolute(arguments.work);
     options.keep_work = arguments.keep_work;
+    if (!arguments.object_cache.empty())
+        options.object_cache = fs::absolute(arguments.object_cache);
     options.jobs = arguments.jobs;
     options.only_check = arguments.check;
     if (arguments.stage >= 0) options.only_stage = arguments.stage;
@@ -212,6 +215,9 @@ int main(int argc, char** argv) {
                            "their stated false-fail rate");
     submission->add_flag("--keep-work", one.keep_work,
                          "Keep the build (the submission's files, objects, probes) to look into");
+    submission->add_option("--object-cache", one.object_cache,
+                           "Keep compiled objects here and take those whose sources, headers and "
+                           "compiler are the same again (a folder the grader alone writes)");
 
     BatchArguments many;
     CLI::App* batch = app.add_subcommand(
