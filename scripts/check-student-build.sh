@@ -81,6 +81,12 @@ if ! grep -q "^scripts/setup.sh$" "$release/README.md"; then
     exit 1
 fi
 # Built as its README says, with warnings as errors on top (setup.sh keeps the cached option).
+# RAYSTEP_STUDENT_UNITY=OFF turns the student preset's unity build off in this copy's
+# CMakePresets.json, so that the files compile one by one as in the release build and ccache gives
+# their objects (scripts/test-all.sh, where the Windows stand-in builds the unity files).
+if [ "${RAYSTEP_STUDENT_UNITY:-ON}" = OFF ]; then
+    sed -i 's/"CMAKE_UNITY_BUILD": "ON"/"CMAKE_UNITY_BUILD": "OFF"/' "$release/CMakePresets.json"
+fi
 (cd "$release" && cmake --preset student -DRAYSTEP_WARNINGS_AS_ERRORS=ON >/dev/null &&
     scripts/setup.sh)
 bin=$release/build/student/bin
