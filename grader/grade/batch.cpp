@@ -111,11 +111,11 @@ BatchTally grade_class(const BatchOptions& options, const Rubric& rubric,
         resumed[k] =
             reports[k].has_value() && (options.skip_speed || !lacks_speed_checks(*reports[k]));
     }
-    // The class's compiled objects, shared by its submissions and both passes (object_cache.h): a
-    // stage nobody has started is compiled once, and the speed pass compiles nothing new. In OUT,
-    // where no student's folder can be called so (submission_name), and removed when the batch
-    // ends.
-    const fs::path object_cache = options.output / ".object-cache";
+    // What the class's grades keep for one another (GradeOptions::cache): a stage nobody has
+    // started is compiled once, the speed pass compiles nothing new, and the reference's noisy
+    // renders are made once. In OUT, where no student's folder can be called so
+    // (submission_name), and removed when the batch ends.
+    const fs::path cache = options.output / ".cache";
     std::mutex mutex;  // the tally's stderr lines and the progress line
     std::size_t done = 0;
     const auto progress = [&](const char* pass, std::size_t total, const std::string& name) {
@@ -134,7 +134,7 @@ BatchTally grade_class(const BatchOptions& options, const Rubric& rubric,
         one.skip_speed = !speed;
         one.only_speed = speed;
         one.reference_probe = options.reference_probe;
-        one.object_cache = object_cache;
+        one.cache = cache;
         one.reproduce = "raystep-grade submission " + entry.submission.string();
         try {
             GradeReport report = grade_submission(one, rubric, toolchain);
@@ -185,7 +185,7 @@ BatchTally grade_class(const BatchOptions& options, const Rubric& rubric,
     }
     if (options.progress) std::fputs("\r\033[K", stderr);
     std::error_code ignored;
-    fs::remove_all(object_cache, ignored);
+    fs::remove_all(cache, ignored);
 
     BatchTally tally;
     std::vector<GradeReport> class_reports;

@@ -23,6 +23,7 @@ struct GradingContext {
     std::string reproduce;                  ///< "raystep-grade submission PATH", to which
                                             ///< " --check ID --case N" is appended
     std::optional<std::size_t> only_case;   ///< --case N: ask the probe that case alone
+    std::filesystem::path cache;            ///< --cache: what grades keep for the next; or empty
 };
 
 /// What a check found, before the rubric turns it into points: `fraction` in [0, 1] is what the

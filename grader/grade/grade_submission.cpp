@@ -124,9 +124,9 @@ GradeReport grade_submission(const GradeOptions& options, const Rubric& rubric,
     report.times.intake = seconds_since(start);
 
     start = std::chrono::steady_clock::now();
-    const ProbeSet probes =
-        build_probes(submission, toolchain, options.reference_probe, work.path(),
-                     probes_needed(checks), options.jobs, options.object_cache);
+    const ProbeSet probes = build_probes(
+        submission, toolchain, options.reference_probe, work.path(), probes_needed(checks),
+        options.jobs, options.cache.empty() ? fs::path() : options.cache / "objects");
     report.times.build = seconds_since(start);
 
     start = std::chrono::steady_clock::now();
@@ -139,6 +139,7 @@ GradeReport grade_submission(const GradeOptions& options, const Rubric& rubric,
     context.report_folder = instructor_folder(output);
     context.reference_probe = probes.reference.program.value_or(fs::path());
     context.reproduce = options.reproduce;
+    context.cache = options.cache;
     context.only_case = options.only_case;
 
     // Checks run `jobs` at a time: each talks to its own probe process. Speed checks run alone

@@ -16,9 +16,9 @@ struct GradeOptions {
     /// Where the work folder is made; empty: as work_parent_for(output) says (work_folder.h).
     std::filesystem::path work_parent;
     bool keep_work = false;  ///< keep the work folder after grading (--keep-work), to look into
-    /// Where objects compiled before are kept and found (--object-cache, object_cache.h); empty:
-    /// every file is compiled.
-    std::filesystem::path object_cache;
+    /// What one grade keeps for the next (--cache): the objects it compiled in cache/objects
+    /// (object_cache.h), the reference's renders in cache/renders (kept_renders.h); empty: none.
+    std::filesystem::path cache;
     int jobs = 1;                   ///< compiles and checks run this many at a time
     std::string only_check;         ///< run just this check (--check), for reproducing
     std::optional<int> only_stage;  ///< run just this stage's checks (--stage; 0: the pipeline)

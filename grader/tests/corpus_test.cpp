@@ -76,17 +76,17 @@ std::vector<fs::path> diffs_in(const std::string& folder) {
 }
 
 // Runs raystep-grade on `submission`; `arguments` narrow it (--stage N --no-speed). Every entry
-// shares one cache of compiled objects, as a class's submissions do in a batch: a mutant compiles
-// the one file it changes, and the hostile entries meet the cache the others fill.
+// shares one --cache, as a class's submissions do in a batch: a mutant compiles the one file it
+// changes, the reference's noisy renders are made once, and the hostile entries meet the cache
+// the others fill.
 void grade(Graded& entry, const fs::path& submission, const std::string& arguments) {
     fs::remove_all(entry.output);
     fs::create_directories(entry.output.parent_path());
     const auto start = std::chrono::steady_clock::now();
-    const std::string command = shell_quoted(RAYSTEP_GRADE_PROGRAM) + " submission " +
-                                shell_quoted(submission) + " -o " + shell_quoted(entry.output) +
-                                " --jobs 1 --object-cache " + shell_quoted(kWork / "object-cache") +
-                                " " + arguments + " > " +
-                                shell_quoted(entry.output.string() + ".log") + " 2>&1";
+    const std::string command =
+        shell_quoted(RAYSTEP_GRADE_PROGRAM) + " submission " + shell_quoted(submission) + " -o " +
+        shell_quoted(entry.output) + " --jobs 1 --cache " + shell_quoted(kWork / "cache") + " " +
+        arguments + " > " + shell_quoted(entry.output.string() + ".log") + " 2>&1";
     const int status = std::system(command.c_str());
     entry.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     try {

@@ -59,7 +59,7 @@ struct SubmissionArguments {
     bool instructor = false;
     std::string work;
     bool keep_work = false;
-    std::string object_cache;
+    std::string cache;
     std::uint64_t seed = kDefaultStatisticsSeed;
 };
 
@@ -73,8 +73,7 @@ int grade_one(const SubmissionArguments& arguments) {
     options.output = output;
     if (!arguments.work.empty()) options.work_parent = fs::absolute(arguments.work);
     options.keep_work = arguments.keep_work;
-    if (!arguments.object_cache.empty())
-        options.object_cache = fs::absolute(arguments.object_cache);
+    if (!arguments.cache.empty()) options.cache = fs::absolute(arguments.cache);
     options.jobs = arguments.jobs;
     options.only_check = arguments.check;
     if (arguments.stage >= 0) options.only_stage = arguments.stage;
@@ -215,9 +214,9 @@ int main(int argc, char** argv) {
                            "their stated false-fail rate");
     submission->add_flag("--keep-work", one.keep_work,
                          "Keep the build (the submission's files, objects, probes) to look into");
-    submission->add_option("--object-cache", one.object_cache,
-                           "Keep compiled objects here and take those whose sources, headers and "
-                           "compiler are the same again (a folder the grader alone writes)");
+    submission->add_option("--cache", one.cache,
+                           "Keep what this grade makes for the next here (compiled objects, the "
+                           "reference's noisy renders): a folder the grader alone writes");
 
     BatchArguments many;
     CLI::App* batch = app.add_subcommand(

@@ -7,6 +7,7 @@
 
 #include <array>
 #include <filesystem>
+#include <future>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -19,10 +20,12 @@
 #include "app/protocol/image_json.h"
 #include "app/render/tile_renderer.h"
 #include "base/image/image_io.h"
+#include "base/scene/scene_files.h"
 #include "base/scene/scene_loader.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
 #include "grader/grade/checks/statistics_seed.h"
+#include "grader/grade/kept_renders.h"
 
 namespace raystep::grade {
 
@@ -63,23 +66,70 @@ Scene scaled_scene(const fs::path& path, std::uint64_t seed) {
     return scene;
 }
 
-// The reference's renders of a view: they depend on no statistical seed, so each scene's are
-// rendered once per run.
-const std::vector<Image>& reference_renders(const fs::path& path, View view) {
+// What the reference's renders of a view depend on, as kept_renders.h keys them; empty where the
+// scene's files or the grader's program cannot be read, and then nothing is kept.
+std::string reference_renders_key(const fs::path& path, View view) {
+    const std::string scene = scene_digest(load_scene(path));
+    const std::string grader = grader_identity();
+    if (scene.empty() || grader.empty()) return "";
+    return "reference renders\nscene " + scene + "\nview " + std::string(view_name(view)) +
+           "\nwidth " + std::to_string(kRenderCheckWidth) + "\nrenders " +
+           std::to_string(kReferenceRenders) + " from seed " + std::to_string(kReferenceSeeds) +
+           "\ngrader " + grader + "\n";
+}
+
+// The reference's renders of a view, made here, or taken from the grade's cache (--cache) where
+// an earlier grade kept them under `key`, and kept there for the next.
+std::vector<Image> make_reference_renders(const GradingContext& context, const fs::path& path,
+                                          View view, const std::string& key) {
+    const fs::path kept =
+        context.cache.empty() || key.empty() ? fs::path() : context.cache / "renders";
+    if (!kept.empty()) {
+        if (std::optional<std::vector<Image>> found = kept_renders(kept, key)) return *found;
+    }
+    std::vector<Image> renders;
+    for (int k = 0; k < kReferenceRenders; ++k) {
+        const Scene scene = scaled_scene(path, kReferenceSeeds + static_cast<std::uint64_t>(k));
+        RenderOptions options;
+        options.view = view;
+        options.threads = 1;
+        renders.push_back(render_image(prepare_render_scene(scene), options));
+    }
+    if (!kept.empty()) keep_renders(kept, key, renders);
+    return renders;
+}
+
+// The reference's renders of a view: they depend on no statistical seed, so each are made once
+// per run, by the first check that asks, and found by what they depend on rather than by the
+// scene's path, which is each grade's own copy (a batch grades many). Two checks of different
+// scenes make theirs side by side.
+const std::vector<Image>& reference_renders(const GradingContext& context, const fs::path& path,
+                                            View view) {
     static std::mutex mutex;
-    static std::map<std::pair<std::string, View>, std::vector<Image>> known;
-    const std::lock_guard<std::mutex> lock(mutex);
-    std::vector<Image>& renders = known[{path.string(), view}];
-    if (renders.empty()) {
-        for (int k = 0; k < kReferenceRenders; ++k) {
-            const Scene scene = scaled_scene(path, kReferenceSeeds + static_cast<std::uint64_t>(k));
-            RenderOptions options;
-            options.view = view;
-            options.threads = 1;
-            renders.push_back(render_image(prepare_render_scene(scene), options));
+    static std::map<std::string, std::shared_future<std::vector<Image>>> known;
+    const std::string key = reference_renders_key(path, view);
+    const std::string found_by =
+        key.empty() ? "path " + path.string() + "\nview " + std::string(view_name(view)) : key;
+    std::promise<std::vector<Image>> promise;
+    std::shared_future<std::vector<Image>> renders;
+    bool first = false;
+    {
+        const std::lock_guard<std::mutex> lock(mutex);
+        auto found = known.find(found_by);
+        if (found == known.end()) {
+            found = known.emplace(found_by, promise.get_future().share()).first;
+            first = true;
+        }
+        renders = found->second;
+    }
+    if (first) {
+        try {
+            promise.set_value(make_reference_renders(context, path, view, key));
+        } catch (...) {
+            promise.set_exception(std::current_exception());
         }
     }
-    return renders;
+    return renders.get();
 }
 
 struct NoisyRenderCheck {
@@ -131,7 +181,7 @@ CheckMeasure measure_noisy_render(const GradingContext& context, const BuiltProb
         renders.push_back(*image);
     }
 
-    const std::vector<Image>& reference = reference_renders(path, check.view);
+    const std::vector<Image>& reference = reference_renders(context, path, check.view);
     NoisyComparison comparison;
     try {
         comparison = compare_noisy_renders(renders, reference, kTile, kTileBound, kDeviationFloor);
