@@ -246,4 +246,15 @@ CheckMeasure judge_answers(const GradingContext& context, const std::string& che
     return measure;
 }
 
+std::vector<std::size_t> check_start_order(const std::vector<CheckDefinition>& checks) {
+    std::vector<std::size_t> order;
+    for (const bool sharing : {false, true}) {
+        for (std::size_t k = 0; k < checks.size(); ++k) {
+            if (checks[k].kind != "speed" && checks[k].measured_by.empty() != sharing)
+                order.push_back(k);
+        }
+    }
+    return order;
+}
+
 }  // namespace raystep::grade

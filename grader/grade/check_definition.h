@@ -47,10 +47,19 @@ struct CheckDefinition {
     std::string kind;  ///< "unit", "oracle", "render", "speed"
     std::string name;
     std::function<CheckMeasure(const GradingContext&, const BuiltProbe&)> measure;
+    /// The check whose measurement this one shares and would wait for (stage 4's timed walks);
+    /// empty for none. The grader runs such a check after all others, so that it finds the
+    /// measurement made instead of holding a worker idle while it is made.
+    std::string measured_by = {};
 };
 
 /// Every check, stage by stage (grader/grade/checks/).
 std::vector<CheckDefinition> all_checks();
+
+/// The order a grade starts `checks` in, as indices: every check that measures for itself, then
+/// every check measured_by another, each in the order given; the speed checks, which run alone
+/// afterwards, are not in it.
+std::vector<std::size_t> check_start_order(const std::vector<CheckDefinition>& checks);
 
 // Building blocks for checks that send cases to a probe and judge each answer.
 

@@ -616,12 +616,20 @@ PublicCheck stage4_grid_resolution_public_check() {
 }
 
 std::vector<CheckDefinition> stage4_checks() {
+    // The checks of one structure share the timed walk of its work (stage4_work.cpp): the first
+    // measures it, and the others are measured_by that one.
     const auto structure = [](const std::string& id, const std::string& name,
-                              const std::string& call, const std::string& split, bool occluded) {
-        return CheckDefinition{
-            id, 4, "oracle", name, [=](const GradingContext& context, const BuiltProbe& probe) {
-                return measure_structure(context, probe, id, call, split, occluded);
-            }};
+                              const std::string& call, const std::string& split, bool occluded,
+                              const std::string& measured_by) {
+        return CheckDefinition{id,
+                               4,
+                               "oracle",
+                               name,
+                               [=](const GradingContext& context, const BuiltProbe& probe) {
+                                   return measure_structure(context, probe, id, call, split,
+                                                            occluded);
+                               },
+                               measured_by};
     };
     return {
         {"stage4.unit.slab", 4, "unit", kSlabName,
@@ -636,20 +644,20 @@ std::vector<CheckDefinition> stage4_checks() {
         structure(
             "stage4.oracle.bvh_sah",
             "the SAH BVH's closest hit, exactly closest_hit's, with less work than brute force",
-            "bvh", "sah", false),
+            "bvh", "sah", false, ""),
         structure("stage4.oracle.bvh_median",
                   "the median BVH's closest hit, exactly closest_hit's, with less work than brute "
                   "force",
-                  "bvh", "median", false),
+                  "bvh", "median", false, "stage4.oracle.bvh_sah"),
         structure("stage4.oracle.bvh_occluded",
                   "the BVH's occluded, as the closest hit says, with less work than brute force",
-                  "bvh", "sah", true),
+                  "bvh", "sah", true, "stage4.oracle.bvh_sah"),
         structure("stage4.oracle.grid",
                   "the grid's closest hit, exactly closest_hit's, with less work than brute force",
-                  "grid", "", false),
+                  "grid", "", false, ""),
         structure("stage4.oracle.grid_occluded",
                   "the grid's occluded, as the closest hit says, with less work than brute force",
-                  "grid", "", true),
+                  "grid", "", true, "stage4.oracle.grid"),
         {"stage4.speed.bvh", 4, "speed",
          "the SAH BVH's speed against the reference's and brute force's, on the same rays",
          [](const GradingContext& c, const BuiltProbe& p) { return measure_speed(c, p, "bvh"); }},
