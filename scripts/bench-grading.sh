@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# How long the model submission (grader/tests/submissions/model) takes to grade, the figures the
+# grading goals are held to (docs/measurements/grading-time.md): without the speed checks, with
+# them, and both again from a cache that the first runs filled (a regrade, or a batch's second
+# submission onward). Each line: the grader's own times (build, checks), the wall time and the
+# processor time of the whole process tree, and the load average before it, which should be
+# near 0 for figures to compare.
+#
+#   scripts/bench-grading.sh [BUILD]     (default: build/release)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${1:-build/release}
+grade=$build/bin/raystep-grade
+if [ ! -x "$grade" ]; then
+    echo "no $grade: build the release first (cmake --build --preset release)" >&2
+    exit 2
+fi
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+# run NAME ARGUMENTS...: one grade of the model into a fresh folder, and its line.
+run() {
+    local name=$1
+    shift
+    local load
+    load=$(cut -d' ' -f1 /proc/loadavg)
+    /usr/bin/time -f "%e %U %S" -o "$work/time" "$grade" submission \
+        grader/tests/submissions/model -o "$work/$name" "$@" >"$work/$name.log" 2>&1
+    local times
+    times=$(grep '^times:' "$work/$name.log" | sed 's/^times: //')
+    awk -v name="$name" -v load="$load" -v times="$times" \
+        '{ printf "%-28s %6.1f s wall, %6.1f s of processor (load before %s): %s\n", name, $1,
+           $2 + $3, load, times }' "$work/time"
+}
+
+run "without speed" --no-speed
+run "with speed"
+run "without speed, cache filled" --no-speed --cache "$work/cache"
+run "without speed, from cache" --no-speed --cache "$work/cache"
+run "with speed, from cache" --cache "$work/cache"
