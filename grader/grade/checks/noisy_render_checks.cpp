@@ -7,9 +7,6 @@
 
 #include <array>
 #include <filesystem>
-#include <future>
-#include <map>
-#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,6 +20,7 @@
 #include "base/scene/scene_files.h"
 #include "base/scene/scene_loader.h"
 #include "grader/grade/checks/judging.h"
+#include "grader/grade/checks/made_once.h"
 #include "grader/grade/checks/stage_checks.h"
 #include "grader/grade/checks/statistics_seed.h"
 #include "grader/grade/kept_renders.h"
@@ -105,31 +103,11 @@ std::vector<Image> make_reference_renders(const GradingContext& context, const f
 // scenes make theirs side by side.
 const std::vector<Image>& reference_renders(const GradingContext& context, const fs::path& path,
                                             View view) {
-    static std::mutex mutex;
-    static std::map<std::string, std::shared_future<std::vector<Image>>> known;
+    static MadeOnce<std::vector<Image>> made;
     const std::string key = reference_renders_key(path, view);
     const std::string found_by =
         key.empty() ? "path " + path.string() + "\nview " + std::string(view_name(view)) : key;
-    std::promise<std::vector<Image>> promise;
-    std::shared_future<std::vector<Image>> renders;
-    bool first = false;
-    {
-        const std::lock_guard<std::mutex> lock(mutex);
-        auto found = known.find(found_by);
-        if (found == known.end()) {
-            found = known.emplace(found_by, promise.get_future().share()).first;
-            first = true;
-        }
-        renders = found->second;
-    }
-    if (first) {
-        try {
-            promise.set_value(make_reference_renders(context, path, view, key));
-        } catch (...) {
-            promise.set_exception(std::current_exception());
-        }
-    }
-    return renders.get();
+    return made.get(found_by, [&] { return make_reference_renders(context, path, view, key); });
 }
 
 struct NoisyRenderCheck {

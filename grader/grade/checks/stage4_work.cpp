@@ -34,13 +34,11 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
-#include <future>
-#include <map>
-#include <mutex>
 
 #include "app/protocol/structure_json.h"
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
+#include "grader/grade/checks/made_once.h"
 #include "grader/grade/checks/stage4_cases.h"
 #include "grader/grade/checks/stage4_structure.h"
 #include "grader/grade/checks/stage4_work_scenes.h"
@@ -396,30 +394,8 @@ CheckMeasure measure_traversal_time(const BuiltProbe& probe, const std::string& 
 // and may ask for it at once from several threads.
 template <class Measure>
 CheckMeasure measured_once(const std::string& key, Measure measure) {
-    static std::mutex mutex;
-    static std::map<std::string, std::shared_future<CheckMeasure>> measured;
-    std::promise<CheckMeasure> promise;
-    std::shared_future<CheckMeasure> result;
-    bool first = false;
-    {
-        const std::lock_guard<std::mutex> lock(mutex);
-        const auto found = measured.find(key);
-        if (found == measured.end()) {
-            result = promise.get_future().share();
-            measured.emplace(key, result);
-            first = true;
-        } else {
-            result = found->second;
-        }
-    }
-    if (first) {
-        try {
-            promise.set_value(measure());
-        } catch (...) {
-            promise.set_exception(std::current_exception());
-        }
-    }
-    return result.get();
+    static MadeOnce<CheckMeasure> measured;
+    return measured.get(key, measure);
 }
 
 }  // namespace
