@@ -1,6 +1,7 @@
 // The sandbox against programs that misbehave with time, memory, processes and pipes: each ends
 // as it should, reported as it happened, in bounded time, leaving nothing behind. Every case runs
 // without bubblewrap and with it.
+#include <chrono>
 #include <csignal>
 #include <string>
 #include <thread>
@@ -82,7 +83,12 @@ TEST_CASE("run_sandboxed: an endless loop ends at the CPU limit with SIGXCPU", "
     CAPTURE(isolate);
     if (!can_run(isolate)) return;
 
-    const HostileRun spin = run_hostile({hostile("spin")}, "", test_policy(isolate));
+    // A loaded machine stretches 1 s of CPU time over more wall time: the wall limit stays far
+    // away, so that only the CPU limit can end the run
+    SandboxPolicy policy = test_policy(isolate);
+    policy.limits.wall = std::chrono::seconds(20);
+
+    const HostileRun spin = run_hostile({hostile("spin")}, "", policy);
     CHECK(spin.run.signal == SIGXCPU);
     CHECK(spin.run.timed_out);
     CHECK(spin.run.wall_seconds >= 0.9);
@@ -95,11 +101,14 @@ TEST_CASE("run_sandboxed: a loop that ignores SIGXCPU ends a second later with S
     CAPTURE(isolate);
     if (!can_run(isolate)) return;
 
-    const HostileRun spin =
-        run_hostile({hostile("spin"), "--ignore-sigxcpu"}, "", test_policy(isolate));
+    SandboxPolicy policy = test_policy(isolate);
+    policy.limits.wall = std::chrono::seconds(20);  // as above: only the CPU limit may end it
+
+    const HostileRun spin = run_hostile({hostile("spin"), "--ignore-sigxcpu"}, "", policy);
     CHECK(spin.run.signal == SIGKILL);
     CHECK(spin.run.timed_out);
     CHECK(spin.run.wall_seconds >= 1.9);
+    CHECK(spin.run.wall_seconds < 20.0);
     check_contained(spin, isolate);
 }
 
@@ -165,8 +174,12 @@ TEST_CASE("run_sandboxed: a single-process run may start threads, but a fork end
     CHECK(forked.run.output.empty());
     check_contained(forked, isolate);
 
+    // The threads spend 0.9 s of CPU time: limits well above it, so that a loaded machine cannot
+    // end the run by time before it shows what is under test
+    policy.limits.cpu_seconds = 5;
+    policy.limits.wall = std::chrono::seconds(8);
     const HostileRun threads = run_hostile({hostile("spin_threads")}, "", policy);
-    CAPTURE(threads.run.errors);
+    CAPTURE(threads.run.errors, threads.run.timed_out);
     CHECK(threads.run.exit_code == 0);
     CHECK(threads.run.signal == 0);
     check_contained(threads, isolate);
