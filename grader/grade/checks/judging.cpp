@@ -54,13 +54,17 @@ std::vector<CheckDefinition> stage_case_checks(const StageCases& cases) {
 std::vector<WorkloadTime> timed_workloads(const std::vector<WorkloadRun>& runs,
                                           const std::string& call, int repeat, int most_rounds) {
     std::vector<WorkloadTime> timed(runs.size());
+    // Each program's query made once, only its pass count set for a run: the arguments may hold
+    // a mesh, and copying them for every run cost more than the runs.
+    std::vector<std::vector<ProbeQuery>> queries;
+    for (const WorkloadRun& run : runs)
+        queries.push_back({{call, run.args}});
     const auto run_once = [&](std::size_t p, int passes) {
-        probe::Json a = runs[p].args;
-        a["repeat"] = passes;
+        queries[p].front().args["repeat"] = passes;
         ProbeRunLimits limits;
         limits.cpu_seconds = 60;
         limits.wall = std::chrono::seconds(90);
-        const ProbeSession session = ask_probe(runs[p].program, {{call, a}}, limits);
+        const ProbeSession session = ask_probe(runs[p].program, queries[p], limits);
         if (session.answers[0].kind != ProbeAnswer::Kind::result) {
             timed[p].answered = false;
             if (session.answers[0].kind == ProbeAnswer::Kind::not_implemented) {
