@@ -18,7 +18,7 @@ Image sampled_image(const RenderScene& render_scene, SamplePattern pattern, int 
             RandomStream lights = light_random(scene, i, j, sample++);
             const Ray ray = camera_ray_through(render_scene, film_point);
             return full_colour(render_scene, ray, scene_closest_hit(render_scene, ray, nullptr),
-                               &lights, nullptr, nullptr);
+                               &lights, unobserved());
         };
         return pixel_colour(radiance, i, j, pattern, count, film);
     };

@@ -3,20 +3,14 @@
 #include <optional>
 #include <vector>
 
+#include "app/render/pixel_observer.h"
 #include "app/render/render_scene.h"
 #include "app/render/view.h"
 
 namespace raystep {
 
-/// What one light does at the eye ray's hit, as stage 6 decides it.
-enum class LightReach {
-    behind,   ///< the light is behind the surface: no shadow ray
-    blocked,  ///< the shadow ray meets something before the light
-    reaches,  ///< the shadow ray reaches the light; its term counts
-};
-
-/// One light at the eye ray's hit: whether it reaches the point and, when it does, its
-/// blinn_phong term (diffuse and specular together; 0 otherwise).
+/// One point or directional light at the eye ray's hit: whether it reaches the point and, when
+/// it does, its blinn_phong term (diffuse and specular together; 0 otherwise).
 struct LightRecord {
     LightReach reach = LightReach::behind;
     Color term{0.0};
@@ -24,8 +18,8 @@ struct LightRecord {
 
 /// The values of one pixel's steps, in the order the renderer takes them: what `raystep trace
 /// --compare` holds against the reference's, and what a student release ships of the reference
-/// for each pixel of its scenes. render_pixel fills as far as it gets: a step it did not reach (a
-/// stub stopped it, or the view does not go that far) stays empty.
+/// for each pixel of its scenes. A PixelRecorder fills it as far as the render gets: a step it
+/// did not reach (a stub stopped it, or the view does not go that far) stays empty.
 struct PixelRecord {
     std::optional<Ray> camera_ray;
     bool hit_searched = false;        ///< closest_hit ran; `hit` is its answer
@@ -33,6 +27,29 @@ struct PixelRecord {
     std::vector<LightRecord> lights;  ///< point lights, then directional, in scene order
     std::optional<Color> local;       ///< stage 6's colour at the hit
     std::optional<Color> full;        ///< the finished colour, reflections included
+};
+
+/// Watches a pixel's render and keeps its values in a PixelRecord: the eye ray's steps only (the
+/// shading of a later ray is not compared), and for a sampled pixel those of the ray through its
+/// centre, as at one sample per pixel, so that a student's record can be held against the
+/// reference's whatever order the samples come in.
+class PixelRecorder final : public PixelObserver {
+  public:
+    explicit PixelRecorder(PixelRecord& record) : record_(record) {}
+
+    bool watches_centre_ray() const override { return true; }
+    void camera_ray(const Ray& ray) override;
+    void closest_hit(const Ray& ray, const std::optional<PrimitiveHit>& hit,
+                     const TraversalStats& cost) override;
+    void surface(const SurfacePoint& point, const Material& material) override;
+    void light(const LightStep& step) override;
+    void local_colour(const std::vector<LightSample>& reaching, const Color& colour) override;
+    void finished_colour(const Color& colour) override;
+
+  private:
+    PixelRecord& record_;
+    std::optional<SurfacePoint> point_;  ///< the eye ray's hit being shaded
+    const Material* material_ = nullptr;
 };
 
 /// How far a view takes a pixel through the pipeline, and so which parts of a record it fills:

@@ -2,9 +2,8 @@
 
 #include <optional>
 
-#include "app/render/pixel_record.h"
+#include "app/render/pixel_observer.h"
 #include "app/render/render_scene.h"
-#include "app/render/trace_log.h"
 #include "base/math/random_stream.h"
 #include "stages/7_recursion/recursion.h"
 
@@ -26,11 +25,9 @@ std::optional<ShadedHit> background_hit(const Ray& ray, const Color& background)
 /// ray starting in air (an empty MediumStack: a camera inside glass is not modelled), with
 /// scene_solids' numbering, the scene's Fresnel choice and maxdepth bounces. Misses see the
 /// background. Quad lights draw their samples from `light_random` (nullptr when the scene has
-/// none). With a trace, every later ray and, at each surface that transmits, the media, Fresnel and
-/// refracted ray are added to it; the record gets the eye ray's shading only, the steps a reference
-/// trace compares.
+/// none). Every later ray and its shading is told to `observer`, then the colour.
 Color full_colour(const RenderScene& render_scene, const Ray& eye_ray,
                   const std::optional<PrimitiveHit>& eye_hit, RandomStream* light_random,
-                  TraceLog* trace, PixelRecord* record);
+                  PixelObserver& observer);
 
 }  // namespace raystep

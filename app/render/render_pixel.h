@@ -1,8 +1,7 @@
 #pragma once
 
-#include "app/render/pixel_record.h"
+#include "app/render/pixel_observer.h"
 #include "app/render/render_scene.h"
-#include "app/render/trace_log.h"
 #include "app/render/view.h"
 #include "base/image/image.h"
 #include "base/math/types.h"
@@ -16,14 +15,10 @@ namespace raystep {
 /// the pixel is the same whichever thread renders it. For the depth view the value is the hit's t
 /// in every channel (infinity on a miss), and for the cost view the nodes visited plus primitives
 /// tested, each turned into a colour by finish_view once the whole image is known; every other view
-/// gives its final colour. When `trace` is given, every step is added to it: the camera ray, each
-/// primitive tested and its result, and the closest hit; for a sampled pixel, every step of its
-/// first sample, then each sample's film point and colour, and the mean. When `record` is given,
-/// the values of the steps the view takes are put in it as they are computed: for a sampled pixel,
-/// those of one more ray, through the pixel's centre with the light samples of sample 0, as at
-/// one sample per pixel, whatever order the samples come in.
-Color render_pixel(const RenderScene& render_scene, View view, int i, int j, TraceLog* trace,
-                   PixelRecord* record);
+/// gives its final colour. Every step is told to `observer` as it is taken (pixel_observer.h).
+Color render_pixel(const RenderScene& render_scene, View view, int i, int j,
+                   PixelObserver& observer);
+Color render_pixel(const RenderScene& render_scene, View view, int i, int j);
 
 /// The part of a view that needs the whole image. Depth becomes inverse depth, t_near / t with
 /// t_near the nearest positive hit distance in the image, so the nearest hit is white, a hit

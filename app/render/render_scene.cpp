@@ -271,6 +271,10 @@ const ObjectAttributes& attributes_of(const RenderScene& render_scene, Primitive
     throw std::logic_error("attributes_of: unknown primitive kind");
 }
 
+const Material& material_of(const RenderScene& render_scene, const PrimitiveHit& hit) {
+    return render_scene.scene->materials[attributes_of(render_scene, hit.kind, hit.index).material];
+}
+
 const Instance* instance_of(const RenderScene& render_scene, PrimitiveKind kind,
                             std::size_t index) {
     const Scene& scene = *render_scene.scene;

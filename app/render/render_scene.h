@@ -94,6 +94,9 @@ Ray camera_ray_through(const RenderScene& render_scene, const Vec2& film);
 const ObjectAttributes& attributes_of(const RenderScene& render_scene, PrimitiveKind kind,
                                       std::size_t index);
 
+/// The material of a primitive the renderer hit.
+const Material& material_of(const RenderScene& render_scene, const PrimitiveHit& hit);
+
 /// The instance that places a sphere or triangle the renderer hit, nullptr for one in the world
 /// (and for planes).
 const Instance* instance_of(const RenderScene& render_scene, PrimitiveKind kind, std::size_t index);

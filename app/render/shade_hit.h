@@ -1,8 +1,7 @@
 #pragma once
 
-#include "app/render/pixel_record.h"
+#include "app/render/pixel_observer.h"
 #include "app/render/render_scene.h"
-#include "app/render/trace_log.h"
 #include "base/math/random_stream.h"
 #include "stages/7_recursion/recursion.h"
 
@@ -14,10 +13,8 @@ namespace raystep {
 /// no shadow ray: the surface itself blocks them, and a spot light sends none outside its cone.
 /// Then stage 8: each quad light's quad_light_shading, with the scene's `lightsamples` samples
 /// drawn from `light_random` (which may be nullptr only when the scene has no quad lights;
-/// sample_streams.h says which stream a render hands in). With a trace, every light, shadow ray
-/// and shading term is added to it; with a record, the point and directional lights' reach and
-/// term (the lights a reference trace stores) and the local colour are put in it.
+/// sample_streams.h says which stream a render hands in). Every step is told to `observer`.
 ShadedHit shade_hit(const RenderScene& render_scene, const Ray& ray, const PrimitiveHit& hit,
-                    RandomStream* light_random, TraceLog* trace, PixelRecord* record);
+                    RandomStream* light_random, PixelObserver& observer);
 
 }  // namespace raystep

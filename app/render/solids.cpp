@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include <glm/geometric.hpp>
+
 namespace raystep {
 
 std::uint32_t solid_of(const RenderScene& render_scene, PrimitiveKind kind, std::size_t index) {
@@ -34,6 +36,14 @@ std::uint32_t solid_of(const RenderScene& render_scene, PrimitiveKind kind, std:
     }
     if (solid > 0xffffffffu) throw std::out_of_range("solid_of: more solids than 2^32");
     return static_cast<std::uint32_t>(solid);
+}
+
+Medium medium_of(const RenderScene& render_scene, const PrimitiveHit& hit) {
+    return {solid_of(render_scene, hit.kind, hit.index), material_of(render_scene, hit).index};
+}
+
+bool entering(const Ray& ray, const PrimitiveHit& hit) {
+    return glm::dot(ray.direction, hit.hit.normal) < 0.0;
 }
 
 }  // namespace raystep

@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "app/render/render_scene.h"
+#include "stages/9_refraction/refraction.h"
 
 namespace raystep {
 
@@ -23,5 +24,13 @@ namespace raystep {
 /// The solid that the surface of primitive `index` of kind `kind` bounds (the numbering of
 /// scene_closest_hit's hits).
 std::uint32_t solid_of(const RenderScene& render_scene, PrimitiveKind kind, std::size_t index);
+
+/// Stage 9's view of a hit surface: the solid it bounds, with its material's index.
+Medium medium_of(const RenderScene& render_scene, const PrimitiveHit& hit);
+
+/// Whether the ray arrives from outside the solid, against its outward normal (a sphere's
+/// outward normal, a triangle's winding normal: the hit's normal before surface_point turns it
+/// towards the ray).
+bool entering(const Ray& ray, const PrimitiveHit& hit);
 
 }  // namespace raystep

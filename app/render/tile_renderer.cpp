@@ -163,12 +163,11 @@ Image render_image(const RenderScene& render_scene, const RenderOptions& options
     }
     // Each pixel writes only its own record, so the threads share nothing.
     const PixelFunction pixel = [&render_scene, view, records, &scene](int i, int j) {
-        PixelRecord* record =
-            records
-                ? &(*records)[static_cast<std::size_t>(j) * static_cast<std::size_t>(scene.width) +
-                              static_cast<std::size_t>(i)]
-                : nullptr;
-        return render_pixel(render_scene, view, i, j, nullptr, record);
+        if (!records) return render_pixel(render_scene, view, i, j);
+        PixelRecorder recorder(
+            (*records)[static_cast<std::size_t>(j) * static_cast<std::size_t>(scene.width) +
+                       static_cast<std::size_t>(i)]);
+        return render_pixel(render_scene, view, i, j, recorder);
     };
     // A sampled render counts its camera samples. A pixel takes all its samples at once (stage
     // 8's pixel_colour needs the whole n x n set to place them in strata), so the count moves a

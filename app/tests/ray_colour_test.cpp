@@ -29,9 +29,9 @@ std::string glass(double index) {
            std::to_string(index) + "\n";
 }
 
-Color pixel(const std::string& text, View view = View::full, TraceLog* trace = nullptr) {
+Color pixel(const std::string& text, View view = View::full) {
     const Scene scene = parse_scene(text, "ray_colour.test", ".");
-    return render_pixel(prepare_render_scene(scene), view, 0, 0, trace, nullptr);
+    return render_pixel(prepare_render_scene(scene), view, 0, 0);
 }
 
 }  // namespace

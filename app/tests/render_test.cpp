@@ -159,7 +159,7 @@ TEST_CASE("render: an error in a worker thread stops the render and reaches the 
 TEST_CASE("render_pixel: the rays view shows the direction as 0.5 (d + 1)", "[app]") {
     const Scene scene = parse_scene("size 3 3\ncamera 0 0 5 0 0 0 0 1 0 45\n", "rays.test", ".");
     const RenderScene render_scene = prepare_render_scene(scene);
-    const Color centre = render_pixel(render_scene, View::rays, 1, 1, nullptr, nullptr);
+    const Color centre = render_pixel(render_scene, View::rays, 1, 1);
     CHECK(centre.r == Approx(0.5));
     CHECK(centre.g == Approx(0.5));
     CHECK(centre.b == Approx(0.0));  // straight down -z

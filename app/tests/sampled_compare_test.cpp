@@ -8,6 +8,7 @@
 
 #include "app/compare/noisy_render_comparison.h"
 #include "app/compare/sampled_reference.h"
+#include "app/render/pixel_record.h"
 #include "app/render/render_pixel.h"
 #include "app/render/tile_renderer.h"
 #include "base/scene/scene_loader.h"
@@ -39,7 +40,8 @@ NoisyComparison judge(const Image& render, const Image& mean, const Image& sprea
 
 PixelRecord record_of(const Scene& scene, int i, int j) {
     PixelRecord record;
-    render_pixel(prepare_render_scene(scene), View::full, i, j, nullptr, &record);
+    PixelRecorder recorder(record);
+    render_pixel(prepare_render_scene(scene), View::full, i, j, recorder);
     return record;
 }
 

@@ -25,7 +25,7 @@ Scene scene_from(const std::string& text) {
 }
 
 Color pixel_of(const Scene& scene, View view, int i, int j) {
-    return render_pixel(prepare_render_scene(scene), view, i, j, nullptr, nullptr);
+    return render_pixel(prepare_render_scene(scene), view, i, j);
 }
 
 // A sphere on a floor under a quad light, four samples per pixel: every random number a render

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "app/render/render_pixel.h"
+#include "app/trace/trace_printer.h"
 #include "base/scene/scene_loader.h"
 #include "base/testing/catch.h"
 #include "base/testing/vec3_matchers.h"
@@ -20,13 +21,22 @@ constexpr double kTight = 1e-12;
 // A 1 x 1 image from (0, 0, 5) down -z: its one ray goes straight through the origin.
 const std::string kCentreCamera = "size 1 1\ncamera 0 0 5 0 0 0 0 1 0 45\n";
 
-Color pixel(const std::string& text, View view, TraceLog* trace = nullptr) {
+Color pixel(const std::string& text, View view) {
     const Scene scene = parse_scene(text, "shading.test", ".");
-    return render_pixel(prepare_render_scene(scene), view, 0, 0, trace, nullptr);
+    return render_pixel(prepare_render_scene(scene), view, 0, 0);
 }
 
-bool has_line_starting(const TraceLog& trace, const std::string& start) {
-    return std::any_of(trace.lines().begin(), trace.lines().end(),
+std::vector<std::string> traced(const std::string& text, View view) {
+    const Scene scene = parse_scene(text, "shading.test", ".");
+    const RenderScene render_scene = prepare_render_scene(scene);
+    std::vector<std::string> lines;
+    TracePrinter printer(render_scene, lines);
+    render_pixel(render_scene, view, 0, 0, printer);
+    return lines;
+}
+
+bool has_line_starting(const std::vector<std::string>& trace, const std::string& start) {
+    return std::any_of(trace.begin(), trace.end(),
                        [&](const std::string& line) { return line.rfind(start, 0) == 0; });
 }
 
@@ -89,11 +99,11 @@ TEST_CASE("full view: an ellipsoid is shaded with its transformed normal", "[app
 }
 
 TEST_CASE("trace: the full view prints every shadow ray, shading term and reflected ray", "[app]") {
-    TraceLog trace;
-    pixel(kCentreCamera +
-              "point 0 0 3 1 1 1\nambient 0.1 0.1 0.1\ndiffuse 0.5 0.5 0.5\n"
-              "specular 0.5 0.5 0.5\nshininess 10\nmaxdepth 2\nplane 0 0 0 0 0 1\n",
-          View::full, &trace);
+    const std::vector<std::string> trace =
+        traced(kCentreCamera +
+                   "point 0 0 3 1 1 1\nambient 0.1 0.1 0.1\ndiffuse 0.5 0.5 0.5\n"
+                   "specular 0.5 0.5 0.5\nshininess 10\nmaxdepth 2\nplane 0 0 0 0 0 1\n",
+               View::full);
     CHECK(has_line_starting(trace, "surface point (0, 0, 0)"));
     CHECK(has_line_starting(trace, "point light (line 3): direction (0, 0, 1) distance 3"));
     CHECK(has_line_starting(trace, "  shadow ray origin"));

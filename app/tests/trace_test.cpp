@@ -1,4 +1,4 @@
-#include "app/render/trace_log.h"
+#include "app/trace/trace_printer.h"
 
 #include <algorithm>
 #include <string>
@@ -14,9 +14,10 @@ namespace {
 std::vector<std::string> trace(const std::string& text, View view, int x, int y) {
     const Scene scene = parse_scene(text, "trace.test", RAYSTEP_TEST_DATA);
     const RenderScene render_scene = prepare_render_scene(scene);
-    TraceLog log;
-    render_pixel(render_scene, view, x, y, &log, nullptr);
-    return log.lines();
+    std::vector<std::string> lines;
+    TracePrinter printer(render_scene, lines);
+    render_pixel(render_scene, view, x, y, printer);
+    return lines;
 }
 
 }  // namespace
@@ -135,9 +136,10 @@ TEST_CASE("trace: a ray into the prism of total-internal-reflection.test reflect
           "[app]") {
     const Scene scene = load_scene(std::string(RAYSTEP_SOURCE_DIR) +
                                    "/scenes/stage9/total-internal-reflection.test");
-    TraceLog log;
-    render_pixel(prepare_render_scene(scene), View::full, 160, 110, &log, nullptr);
-    const std::vector<std::string>& lines = log.lines();
+    const RenderScene render_scene = prepare_render_scene(scene);
+    std::vector<std::string> lines;
+    TracePrinter printer(render_scene, lines);
+    render_pixel(render_scene, View::full, 160, 110, printer);
     CHECK(has_line_starting(lines, "transmission 1: entering solid "));
     CHECK(has_line_starting(lines, "transmission 2: leaving solid "));
     CHECK(has_line_starting(lines, "  total internal reflection: reflected ray "));

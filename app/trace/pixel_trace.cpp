@@ -6,6 +6,7 @@
 #include "app/render/pixel_record.h"
 #include "app/render/render_pixel.h"
 #include "app/render/render_scene.h"
+#include "app/trace/trace_printer.h"
 #include "base/errors/input_error.h"
 #include "base/errors/not_implemented.h"
 #include "base/math/to_text.h"
@@ -71,23 +72,23 @@ PixelTrace trace_pixel(const Scene& scene, View view, int x, int y) {
                                     ") is outside the " + std::to_string(scene.width) + " x " +
                                     std::to_string(scene.height) + " image of " + scene.path);
     }
-    TraceLog log;
-    log.add("pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") of " + scene.path +
-            ", view " + std::string(view_name(view)));
     PixelTrace trace;
+    std::vector<std::string>& lines = trace.lines;
+    lines.push_back("pixel (" + std::to_string(x) + ", " + std::to_string(y) + ") of " +
+                    scene.path + ", view " + std::string(view_name(view)));
     try {
         const RenderScene render_scene = prepare_render_scene(scene);
-        const Color value = render_pixel(render_scene, view, x, y, &log, nullptr);
-        log.add("value: " + to_text(value) +
-                (view == View::depth ? " (t; the image scales it to grey)" : ""));
+        TracePrinter printer(render_scene, lines);
+        const Color value = render_pixel(render_scene, view, x, y, printer);
+        lines.push_back("value: " + to_text(value) +
+                        (view == View::depth ? " (t; the image scales it to grey)" : ""));
     } catch (const NotImplemented& stub) {
-        log.add(std::string("stopped: ") + stub.what());
+        lines.push_back(std::string("stopped: ") + stub.what());
         trace.stopped = true;
     } catch (const std::exception& error) {
-        log.add(std::string("stopped by an error: ") + error.what());
+        lines.push_back(std::string("stopped by an error: ") + error.what());
         trace.stopped = true;
     }
-    trace.lines = log.lines();
     return trace;
 }
 
@@ -113,7 +114,8 @@ PixelComparison compare_pixel_with_reference(const Scene& scene, View view, int 
     PixelRecord ours;
     try {
         const RenderScene render_scene = prepare_render_scene(scene);
-        render_pixel(render_scene, view, x, y, nullptr, &ours);
+        PixelRecorder recorder(ours);
+        render_pixel(render_scene, view, x, y, recorder);
     } catch (const std::exception& error) {
         result.stop = error.what();
     }
