@@ -38,7 +38,8 @@ endif()
 # Code and pages point at sections too, of a handout or of any page under docs/ or of
 # ARCHITECTURE.md: each page and section must exist.
 file(GLOB_RECURSE sources ${ROOT}/base/*.h ${ROOT}/base/*.cpp ${ROOT}/stages/*.h ${ROOT}/stages/*.cpp
-     ${ROOT}/solutions/*.h ${ROOT}/solutions/*.cpp ${ROOT}/app/*.h ${ROOT}/app/*.cpp
+     ${ROOT}/solutions/*.h ${ROOT}/solutions/*.cpp ${ROOT}/renderer/*.h ${ROOT}/renderer/*.cpp
+     ${ROOT}/app/*.h ${ROOT}/app/*.cpp
      ${ROOT}/studies/*.h ${ROOT}/studies/*.cpp ${ROOT}/grader/*.h ${ROOT}/grader/*.cpp
      ${ROOT}/cmake/*.cmake ${ROOT}/docs/*.md ${ROOT}/ARCHITECTURE.md ${ROOT}/README.md)
 set(page_regex "(ARCHITECTURE\\.md|docs/[A-Za-z0-9_/-]+\\.md), \"([^\"]+)\"")

@@ -3,7 +3,7 @@
 
     scripts/check-doc-paths.py ROOT FILE...
 
-A path is a span in backquotes with a slash, no space and no leading slash (`app/render/render_plan.h`, `grader/`,
+A path is a span in backquotes with a slash, no space and no leading slash (`renderer/render_plan.h`, `grader/`,
 `stages/*/manifest.txt`, where `*` must match something), or a top-level file in backquotes
 (`README.md`), or the target of a relative Markdown link. Spans with `<` or `>` are placeholders
 (`build/<preset>/bin/`), paths under what ROOT/.gitignore anchors (`out/`) are made by running

@@ -17,7 +17,7 @@ import sys
 
 PINNED_MAJOR = 14
 COLUMNS = 100
-FOLDERS = ("base", "stages", "solutions", "app", "studies", "grader")
+FOLDERS = ("base", "stages", "solutions", "renderer", "app", "studies", "grader")
 LEFT_AS_WRITTEN = "grader/tests/submissions/"
 
 

@@ -17,9 +17,10 @@ ALLOWED = {
     "base": {"base"},
     "stages": {"base", "stages"},
     "solutions": {"base", "stages", "solutions"},
-    "app": {"base", "stages", "app"},
-    "studies": {"base", "stages", "solutions", "app", "studies"},
-    "grader": {"base", "stages", "solutions", "app", "studies", "grader"},
+    "renderer": {"base", "stages", "renderer"},
+    "app": {"base", "stages", "renderer", "app"},
+    "studies": {"base", "stages", "solutions", "renderer", "app", "studies"},
+    "grader": {"base", "stages", "solutions", "renderer", "app", "studies", "grader"},
 }
 INCLUDE = re.compile(r'^\s*#\s*include\s*["<]([^">]+)[">]')
 # Outside libraries that only some folders may include: (include prefix, folders, why).

@@ -8,7 +8,7 @@
 #include <thread>
 
 #include "app/cli/command_registry.h"
-#include "app/render/terminal.h"
+#include "renderer/terminal.h"
 #include "studies/common/machine_description.h"
 #include "studies/common/number_text.h"
 #include "studies/epsilon/epsilon_measure.h"

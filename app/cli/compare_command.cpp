@@ -12,9 +12,9 @@
 #include "app/compare/reference_image.h"
 #include "app/compare/render_rule.h"
 #include "app/compare/sampled_reference.h"
-#include "app/render/view.h"
 #include "base/errors/input_error.h"
 #include "base/image/image_io.h"
+#include "renderer/view.h"
 
 namespace raystep {
 

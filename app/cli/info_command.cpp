@@ -3,10 +3,10 @@
 #include <chrono>
 #include <cstdio>
 
-#include "app/render/render_plan.h"
 #include "base/math/to_text.h"
 #include "base/scene/scene_features.h"
 #include "base/scene/scene_loader.h"
+#include "renderer/render_plan.h"
 
 namespace raystep {
 

@@ -10,14 +10,14 @@
 
 #include "app/cli/output_path.h"
 #include "app/compare/reference_trace.h"
-#include "app/render/pixel_record.h"
-#include "app/render/render_pixel.h"
-#include "app/render/render_scene.h"
-#include "app/render/terminal.h"
-#include "app/render/tile_renderer.h"
 #include "base/image/image_io.h"
 #include "base/scene/scene_files.h"
 #include "base/scene/scene_loader.h"
+#include "renderer/pixel_record.h"
+#include "renderer/render_pixel.h"
+#include "renderer/render_scene.h"
+#include "renderer/terminal.h"
+#include "renderer/tile_renderer.h"
 
 namespace raystep {
 

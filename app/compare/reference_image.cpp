@@ -4,8 +4,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "app/render/view.h"
 #include "base/errors/input_error.h"
+#include "renderer/view.h"
 
 namespace raystep {
 

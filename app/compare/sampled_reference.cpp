@@ -1,6 +1,6 @@
 #include "app/compare/sampled_reference.h"
 
-#include "app/render/render_pixel.h"
+#include "renderer/render_pixel.h"
 
 namespace raystep {
 

@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <filesystem>
 
-#include "app/render/view.h"
 #include "base/scene/scene.h"
+#include "renderer/view.h"
 
 namespace raystep {
 

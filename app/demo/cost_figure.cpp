@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "app/demo/demo_scene.h"
-#include "app/render/tile_renderer.h"
+#include "renderer/tile_renderer.h"
 
 namespace raystep {
 

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "app/demo/demo_figure.h"
-#include "app/render/render_scene.h"
+#include "renderer/render_scene.h"
 
 namespace raystep {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "app/render/heat_map.h"
+#include "renderer/heat_map.h"
 
 namespace raystep {
 

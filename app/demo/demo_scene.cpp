@@ -5,8 +5,8 @@
 
 #include <glm/trigonometric.hpp>
 
-#include "app/render/tile_renderer.h"
 #include "base/scene/scene_loader.h"
+#include "renderer/tile_renderer.h"
 
 namespace raystep {
 

@@ -3,8 +3,8 @@
 #include <string>
 
 #include "app/demo/demo_figure.h"
-#include "app/render/view.h"
 #include "base/scene/scene.h"
+#include "renderer/view.h"
 
 namespace raystep {
 

@@ -1,8 +1,8 @@
 #include "app/demo/sampled_image.h"
 
-#include "app/render/ray_colour.h"
-#include "app/render/sample_streams.h"
-#include "app/render/tile_renderer.h"
+#include "renderer/ray_colour.h"
+#include "renderer/sample_streams.h"
+#include "renderer/tile_renderer.h"
 #include "stages/8_sampling/sampling.h"
 
 namespace raystep {

@@ -7,7 +7,7 @@
 
 #include "app/demo/demo_scene.h"
 #include "app/demo/demos.h"
-#include "app/render/tile_renderer.h"
+#include "renderer/tile_renderer.h"
 
 namespace raystep {
 

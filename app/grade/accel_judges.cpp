@@ -6,7 +6,7 @@
 #include "app/grade/data_judge.h"
 #include "app/grade/value_text.h"
 #include "app/protocol/wide_json.h"
-#include "app/render/render_scene.h"
+#include "renderer/render_scene.h"
 
 namespace raystep::grade {
 

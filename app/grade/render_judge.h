@@ -3,8 +3,8 @@
 #include <string>
 
 #include "app/protocol/probe_json.h"
-#include "app/render/view.h"
 #include "base/image/image.h"
+#include "renderer/view.h"
 
 namespace raystep::grade {
 

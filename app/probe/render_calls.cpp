@@ -9,8 +9,8 @@
 
 #include "app/probe/call_table.h"
 #include "app/protocol/image_json.h"
-#include "app/render/tile_renderer.h"
 #include "base/scene/scene_loader.h"
+#include "renderer/tile_renderer.h"
 
 namespace raystep::probe {
 

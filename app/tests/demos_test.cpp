@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "app/demo/demo_list.h"
-#include "app/render/view.h"
 #include "base/testing/catch.h"
+#include "renderer/view.h"
 
 using namespace raystep;
 

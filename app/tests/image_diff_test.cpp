@@ -3,11 +3,11 @@
 #include <cmath>
 #include <limits>
 
-#include "app/render/render_scene.h"
-#include "app/render/tile_renderer.h"
 #include "base/scene/scene_loader.h"
 #include "base/testing/catch.h"
 #include "base/testing/filled_image.h"
+#include "renderer/render_scene.h"
+#include "renderer/tile_renderer.h"
 
 using namespace raystep;
 using raystep::compare_images;

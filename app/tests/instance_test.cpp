@@ -7,12 +7,12 @@
 
 #include <glm/geometric.hpp>
 
-#include "app/render/render_scene.h"
 #include "base/math/portable_random.h"
 #include "base/math/to_text.h"
 #include "base/scene/scene_loader.h"
 #include "base/testing/catch.h"
 #include "base/testing/scratch_folder.h"
+#include "renderer/render_scene.h"
 
 using namespace raystep;
 

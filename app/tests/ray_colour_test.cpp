@@ -4,11 +4,11 @@
 #include <cmath>
 #include <string>
 
-#include "app/render/ray_colour.h"
-#include "app/render/render_pixel.h"
 #include "base/scene/scene_loader.h"
 #include "base/testing/catch.h"
 #include "base/testing/vec3_matchers.h"
+#include "renderer/ray_colour.h"
+#include "renderer/render_pixel.h"
 
 using namespace raystep;
 using raystep::testing::IsNear;

@@ -4,13 +4,13 @@
 #include <fstream>
 
 #include "app/compare/reference_image.h"
-#include "app/render/tile_renderer.h"
 #include "base/errors/input_error.h"
 #include "base/image/image_io.h"
 #include "base/scene/scene_loader.h"
 #include "base/testing/catch.h"
 #include "base/testing/filled_image.h"
 #include "base/testing/scratch_folder.h"
+#include "renderer/tile_renderer.h"
 
 using namespace raystep;
 namespace fs = std::filesystem;

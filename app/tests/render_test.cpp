@@ -1,4 +1,4 @@
-#include "app/render/tile_renderer.h"
+#include "renderer/tile_renderer.h"
 
 #include <cmath>
 #include <cstring>
@@ -9,10 +9,10 @@
 #include <glm/ext/matrix_transform.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "app/render/render_pixel.h"
 #include "base/math/to_text.h"
 #include "base/scene/scene_loader.h"
 #include "base/testing/catch.h"
+#include "renderer/render_pixel.h"
 
 using namespace raystep;
 

@@ -8,11 +8,11 @@
 
 #include "app/compare/noisy_render_comparison.h"
 #include "app/compare/sampled_reference.h"
-#include "app/render/pixel_record.h"
-#include "app/render/render_pixel.h"
-#include "app/render/tile_renderer.h"
 #include "base/scene/scene_loader.h"
 #include "base/testing/catch.h"
+#include "renderer/pixel_record.h"
+#include "renderer/render_pixel.h"
+#include "renderer/tile_renderer.h"
 
 using namespace raystep;
 

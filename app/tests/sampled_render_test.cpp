@@ -2,11 +2,11 @@
 
 #include <string>
 
-#include "app/render/render_pixel.h"
-#include "app/render/sample_streams.h"
-#include "app/render/tile_renderer.h"
 #include "base/scene/scene_loader.h"
 #include "base/testing/catch.h"
+#include "renderer/render_pixel.h"
+#include "renderer/sample_streams.h"
+#include "renderer/tile_renderer.h"
 
 using namespace raystep;
 

@@ -2,9 +2,9 @@
 
 #include <string>
 
-#include "app/render/render_plan.h"
 #include "base/scene/scene_loader.h"
 #include "base/testing/catch.h"
+#include "renderer/render_plan.h"
 
 using namespace raystep;
 

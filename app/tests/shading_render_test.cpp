@@ -5,11 +5,11 @@
 #include <string>
 #include <vector>
 
-#include "app/render/render_pixel.h"
 #include "app/trace/trace_printer.h"
 #include "base/scene/scene_loader.h"
 #include "base/testing/catch.h"
 #include "base/testing/vec3_matchers.h"
+#include "renderer/render_pixel.h"
 
 using namespace raystep;
 using raystep::testing::IsNear;

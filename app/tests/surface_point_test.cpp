@@ -1,4 +1,4 @@
-#include "app/render/surface_point.h"
+#include "renderer/surface_point.h"
 
 #include <cmath>
 #include <string>

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <string>
 
-#include "app/render/render_pixel.h"
 #include "base/scene/scene_loader.h"
 #include "base/testing/catch.h"
+#include "renderer/render_pixel.h"
 
 using namespace raystep;
 

@@ -3,14 +3,14 @@
 #include <stdexcept>
 
 #include "app/compare/reference_trace.h"
-#include "app/render/pixel_record.h"
-#include "app/render/render_pixel.h"
-#include "app/render/render_scene.h"
 #include "app/trace/trace_printer.h"
 #include "base/errors/input_error.h"
 #include "base/errors/not_implemented.h"
 #include "base/math/to_text.h"
 #include "base/scene/scene_files.h"
+#include "renderer/pixel_record.h"
+#include "renderer/render_pixel.h"
+#include "renderer/render_scene.h"
 
 namespace raystep {
 

@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "app/render/view.h"
 #include "app/trace/trace_comparison.h"
 #include "base/scene/scene.h"
+#include "renderer/view.h"
 
 namespace raystep {
 

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "app/compare/reference_trace.h"
-#include "app/render/render_scene.h"
+#include "renderer/render_scene.h"
 
 namespace raystep {
 

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "app/render/pixel_record.h"
-#include "app/render/view.h"
+#include "renderer/pixel_record.h"
+#include "renderer/view.h"
 
 namespace raystep {
 

@@ -5,10 +5,10 @@
 
 #include <glm/geometric.hpp>
 
-#include "app/render/instance.h"
-#include "app/render/solids.h"
-#include "app/render/surface_point.h"
 #include "base/math/to_text.h"
+#include "renderer/instance.h"
+#include "renderer/solids.h"
+#include "renderer/surface_point.h"
 #include "stages/3_intersect/intersect.h"
 #include "stages/6_shading/shading.h"
 #include "stages/7_recursion/recursion.h"

@@ -3,8 +3,8 @@
 #include <string>
 #include <vector>
 
-#include "app/render/pixel_observer.h"
-#include "app/render/render_scene.h"
+#include "renderer/pixel_observer.h"
+#include "renderer/render_scene.h"
 
 namespace raystep {
 

@@ -2,8 +2,8 @@
 
 #include <string>
 
-#include "app/render/tile_renderer.h"
 #include "base/image/image.h"
+#include "renderer/tile_renderer.h"
 
 namespace raystep {
 

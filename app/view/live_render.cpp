@@ -3,8 +3,8 @@
 #include <exception>
 #include <utility>
 
-#include "app/render/render_scene.h"
 #include "app/view/display_pixels.h"
+#include "renderer/render_scene.h"
 
 namespace raystep {
 

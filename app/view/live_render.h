@@ -8,9 +8,9 @@
 #include <thread>
 #include <vector>
 
-#include "app/render/tile_renderer.h"
-#include "app/render/view.h"
 #include "base/scene/scene.h"
+#include "renderer/tile_renderer.h"
+#include "renderer/view.h"
 
 namespace raystep {
 

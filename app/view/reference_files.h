@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "app/render/view.h"
+#include "renderer/view.h"
 
 namespace raystep {
 

@@ -9,12 +9,12 @@
 #include "app/compare/reference_image.h"
 #include "app/compare/reference_trace.h"
 #include "app/compare/sampled_reference.h"
-#include "app/render/pixel_record.h"
-#include "app/render/tile_renderer.h"
 #include "base/image/image_io.h"
 #include "base/scene/scene_files.h"
 #include "base/scene/scene_loader.h"
 #include "grader/grade/release_grading.h"
+#include "renderer/pixel_record.h"
+#include "renderer/tile_renderer.h"
 
 namespace raystep::grade {
 

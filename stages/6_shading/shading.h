@@ -23,7 +23,7 @@ struct SurfacePoint {
     Vec3 position;        ///< the hit point
     Vec3 error;           ///< per coordinate, a bound on how far rounding put `position` off
                           ///< the surface, wide enough for intersection tests near it
-                          ///< (app/render/surface_point.h)
+                          ///< (renderer/surface_point.h)
     Vec3 normal;          ///< unit geometric normal, turned to the side the ray came from
     Vec3 shading_normal;  ///< unit normal for lighting (interpolated on `trinormal` triangles),
                           ///< on the same side as `normal`

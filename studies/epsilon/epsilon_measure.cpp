@@ -4,11 +4,11 @@
 
 #include <glm/geometric.hpp>
 
-#include "app/render/render_scene.h"
-#include "app/render/surface_point.h"
 #include "base/errors/not_implemented.h"
 #include "base/scene/scene_features.h"
 #include "base/scene/scene_loader.h"
+#include "renderer/render_scene.h"
+#include "renderer/surface_point.h"
 #include "studies/epsilon/exact_visibility.h"
 
 namespace raystep {

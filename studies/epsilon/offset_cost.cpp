@@ -2,9 +2,9 @@
 
 #include <glm/geometric.hpp>
 
-#include "app/render/render_scene.h"
-#include "app/render/surface_point.h"
 #include "base/scene/scene_loader.h"
+#include "renderer/render_scene.h"
+#include "renderer/surface_point.h"
 #include "studies/common/bench_timing.h"
 
 namespace raystep {

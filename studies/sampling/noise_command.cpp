@@ -5,7 +5,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "app/render/terminal.h"
+#include "renderer/terminal.h"
 #include "studies/common/machine_description.h"
 #include "studies/sampling/noise_chart.h"
 #include "studies/sampling/noise_measure.h"

@@ -3,8 +3,8 @@
 #include <ctime>
 
 #include "app/demo/sampled_image.h"
-#include "app/render/tile_renderer.h"
 #include "base/scene/scene_loader.h"
+#include "renderer/tile_renderer.h"
 #include "studies/sampling/noise_statistics.h"
 
 namespace raystep {

@@ -8,9 +8,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "app/render/render_scene.h"
-#include "app/render/tile_renderer.h"
 #include "base/scene/scene_loader.h"
+#include "renderer/render_scene.h"
+#include "renderer/tile_renderer.h"
 #include "studies/common/markdown_table.h"
 #include "studies/common/number_text.h"
 

@@ -15,7 +15,6 @@
 #include "app/compare/render_rule.h"
 #include "app/grade/value_text.h"
 #include "app/protocol/image_json.h"
-#include "app/render/tile_renderer.h"
 #include "base/image/image_io.h"
 #include "base/scene/scene_files.h"
 #include "base/scene/scene_loader.h"
@@ -24,6 +23,7 @@
 #include "grader/grade/checks/stage_checks.h"
 #include "grader/grade/checks/statistics_seed.h"
 #include "grader/grade/kept_renders.h"
+#include "renderer/tile_renderer.h"
 
 namespace raystep::grade {
 

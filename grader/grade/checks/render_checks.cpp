@@ -10,11 +10,11 @@
 #include "app/compare/render_rule.h"
 #include "app/grade/render_judge.h"
 #include "app/protocol/image_json.h"
-#include "app/render/tile_renderer.h"
 #include "base/image/image_io.h"
 #include "base/scene/scene_loader.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
+#include "renderer/tile_renderer.h"
 
 namespace raystep::grade {
 

@@ -1,14 +1,14 @@
-#include "app/render/render_pixel.h"
+#include "renderer/render_pixel.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
 
-#include "app/render/heat_map.h"
-#include "app/render/ray_colour.h"
-#include "app/render/sample_streams.h"
-#include "app/render/shade_hit.h"
+#include "renderer/heat_map.h"
+#include "renderer/ray_colour.h"
+#include "renderer/sample_streams.h"
+#include "renderer/shade_hit.h"
 #include "stages/8_sampling/sampling.h"
 
 namespace raystep {

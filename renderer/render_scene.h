@@ -7,9 +7,9 @@
 #include <variant>
 #include <vector>
 
-#include "app/render/instance.h"
-#include "app/render/instance_bvh.h"
 #include "base/scene/scene.h"
+#include "renderer/instance.h"
+#include "renderer/instance_bvh.h"
 #include "stages/2_rays/camera.h"
 #include "stages/3_intersect/intersect.h"
 #include "stages/4_accel/bvh.h"

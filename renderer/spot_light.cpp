@@ -1,4 +1,4 @@
-#include "app/render/spot_light.h"
+#include "renderer/spot_light.h"
 
 #include <cmath>
 

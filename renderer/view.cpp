@@ -1,4 +1,4 @@
-#include "app/render/view.h"
+#include "renderer/view.h"
 
 #include <array>
 #include <utility>

@@ -4,7 +4,7 @@
 #include <optional>
 #include <vector>
 
-#include "app/render/instance.h"
+#include "renderer/instance.h"
 
 namespace raystep {
 

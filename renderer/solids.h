@@ -3,7 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "app/render/render_scene.h"
+#include "renderer/render_scene.h"
 #include "stages/9_refraction/refraction.h"
 
 namespace raystep {

@@ -4,8 +4,8 @@
 #include <optional>
 #include <vector>
 
-#include "app/render/render_scene.h"
 #include "base/math/types.h"
+#include "renderer/render_scene.h"
 #include "stages/4_accel/traversal.h"
 #include "stages/6_shading/shading.h"
 

@@ -1,11 +1,11 @@
-#include "app/render/instance.h"
+#include "renderer/instance.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include <glm/matrix.hpp>
 
-#include "app/render/render_plan.h"
+#include "renderer/render_plan.h"
 
 namespace raystep {
 

@@ -1,4 +1,4 @@
-#include "app/render/progress_bar.h"
+#include "renderer/progress_bar.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "app/render/terminal.h"
+#include "renderer/terminal.h"
 
 #ifdef _WIN32
 #include <io.h>

@@ -1,4 +1,4 @@
-#include "app/render/pixel_record.h"
+#include "renderer/pixel_record.h"
 
 namespace raystep {
 

@@ -1,4 +1,4 @@
-#include "app/render/solids.h"
+#include "renderer/solids.h"
 
 #include <stdexcept>
 

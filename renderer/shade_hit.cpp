@@ -1,12 +1,12 @@
-#include "app/render/shade_hit.h"
+#include "renderer/shade_hit.h"
 
 #include <stdexcept>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
-#include "app/render/spot_light.h"
-#include "app/render/surface_point.h"
+#include "renderer/spot_light.h"
+#include "renderer/surface_point.h"
 #include "stages/8_sampling/sampling.h"
 
 namespace raystep {

@@ -1,9 +1,9 @@
-#include "app/render/ray_colour.h"
+#include "renderer/ray_colour.h"
 
 #include <glm/geometric.hpp>
 
-#include "app/render/shade_hit.h"
-#include "app/render/solids.h"
+#include "renderer/shade_hit.h"
+#include "renderer/solids.h"
 #include "stages/9_refraction/refraction.h"
 
 namespace raystep {

@@ -1,4 +1,4 @@
-#include "app/render/render_plan.h"
+#include "renderer/render_plan.h"
 
 namespace raystep {
 

@@ -1,8 +1,8 @@
 #pragma once
 
-#include "app/render/pixel_observer.h"
-#include "app/render/render_scene.h"
 #include "base/math/random_stream.h"
+#include "renderer/pixel_observer.h"
+#include "renderer/render_scene.h"
 #include "stages/7_recursion/recursion.h"
 
 namespace raystep {

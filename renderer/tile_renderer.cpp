@@ -1,4 +1,4 @@
-#include "app/render/tile_renderer.h"
+#include "renderer/tile_renderer.h"
 
 #include <algorithm>
 #include <atomic>
@@ -10,8 +10,8 @@
 #include <thread>
 #include <vector>
 
-#include "app/render/progress_bar.h"
-#include "app/render/render_pixel.h"
+#include "renderer/progress_bar.h"
+#include "renderer/render_pixel.h"
 
 namespace raystep {
 

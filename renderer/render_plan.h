@@ -2,8 +2,8 @@
 
 #include <vector>
 
-#include "app/render/view.h"
 #include "base/scene/scene_features.h"
+#include "renderer/view.h"
 
 namespace raystep {
 

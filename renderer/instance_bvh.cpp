@@ -1,10 +1,10 @@
-#include "app/render/instance_bvh.h"
+#include "renderer/instance_bvh.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 
-#include "app/render/nearest_hit.h"
+#include "renderer/nearest_hit.h"
 
 namespace raystep {
 

@@ -1,13 +1,13 @@
-#include "app/render/render_scene.h"
+#include "renderer/render_scene.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <unordered_map>
 
-#include "app/render/nearest_hit.h"
-#include "app/render/render_plan.h"
 #include "base/scene/scene_features.h"
+#include "renderer/nearest_hit.h"
+#include "renderer/render_plan.h"
 #include "stages/8_sampling/sampling.h"
 
 namespace raystep {

@@ -1,4 +1,4 @@
-#include "app/render/heat_map.h"
+#include "renderer/heat_map.h"
 
 #include <algorithm>
 

@@ -5,10 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "app/render/pixel_record.h"
-#include "app/render/render_scene.h"
-#include "app/render/view.h"
 #include "base/image/image.h"
+#include "renderer/pixel_record.h"
+#include "renderer/render_scene.h"
+#include "renderer/view.h"
 
 namespace raystep {
 

@@ -3,9 +3,9 @@
 #include <optional>
 #include <vector>
 
-#include "app/render/pixel_observer.h"
-#include "app/render/render_scene.h"
-#include "app/render/view.h"
+#include "renderer/pixel_observer.h"
+#include "renderer/render_scene.h"
+#include "renderer/view.h"
 
 namespace raystep {
 

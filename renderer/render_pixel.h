@@ -1,10 +1,10 @@
 #pragma once
 
-#include "app/render/pixel_observer.h"
-#include "app/render/render_scene.h"
-#include "app/render/view.h"
 #include "base/image/image.h"
 #include "base/math/types.h"
+#include "renderer/pixel_observer.h"
+#include "renderer/render_scene.h"
+#include "renderer/view.h"
 
 namespace raystep {
 

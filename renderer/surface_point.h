@@ -1,6 +1,6 @@
 #pragma once
 
-#include "app/render/render_scene.h"
+#include "renderer/render_scene.h"
 #include "stages/6_shading/shading.h"
 
 namespace raystep {
