@@ -28,7 +28,8 @@ double largest_residual(const Transform& transform) {
 // its very edge, and then the instance BVH would not find exactly brute force's hits. So the box
 // grows by a relative 2^-40 of its largest coordinate (thousands of ulps, far more than the
 // roundings of one matrix product) plus eight residuals, for transforms whose M^-1 M is far from
-// I. app/tests/instance_test.cpp holds the BVH to brute force on scaled, rotated and tiny objects.
+// I. renderer/tests/instance_test.cpp holds the BVH to brute force on scaled, rotated and tiny
+// objects.
 constexpr double kBoundsMargin = 0x1p-40;
 
 Aabb widened(const Aabb& box, double residual) {

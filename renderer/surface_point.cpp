@@ -128,8 +128,8 @@ Vec3 interpolated_normal(const RenderScene& render_scene, std::size_t index, con
 // of a shadow ray from 2e-17 above it, grazing along x, rounds its t at 1e-16 of x: it finds the
 // floor again at t = 0 (seen on scenes/stage6/acne-scale-1.test, whose slab is two coplanar
 // triangles). So every coordinate gets the largest coordinate's bound, times kTestRounding for
-// the tests' own roundings. app/tests/surface_point_test.cpp leaves every kind of primitive, at
-// every scale, with grazing and steep rays: without the widening, 50 to 70 of its 20,000 leaving
+// the tests' own roundings. renderer/tests/surface_point_test.cpp leaves every kind of primitive,
+// at every scale, with grazing and steep rays: without the widening, 50 to 70 of its 20,000 leaving
 // rays per scene find the slab again; with it (already at kTestRounding = 1), none does. 4 leaves
 // room for triangle tests that round more than the reference's.
 constexpr double kTestRounding = 4.0;

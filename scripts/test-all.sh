@@ -54,7 +54,8 @@ step "sanitizer build"
 # compiles file by file, so that a file that lacks an include of its own still fails there.
 cmake --preset debug-asan -DRAYSTEP_WARNINGS_AS_ERRORS=ON -DCMAKE_UNITY_BUILD=ON \
     -DCMAKE_UNITY_BUILD_BATCH_SIZE=8 >/dev/null
-sanitized=(raystep raystep-reference raystep_base_tests raystep_app_tests raystep_sandbox_tests)
+sanitized=(raystep raystep-reference raystep_base_tests raystep_renderer_tests raystep_app_tests
+    raystep_sandbox_tests)
 for stage in 1 2 3 4 5 6 7 8 9; do
     sanitized+=("raystep_stage${stage}_tests")
 done
@@ -65,7 +66,7 @@ step "sanitizer tests"
 # files needs raystep-grade: the release build's writes them instead, for the tests of
 # `raystep grade` that read them.
 build/release/bin/raystep-grade public-cases build/debug-asan/grader/tests/grading >/dev/null
-ctest --preset debug-asan -j "$jobs" -L '^(base|app|stage[1-9]|cli|view|sandbox)$' \
+ctest --preset debug-asan -j "$jobs" -L '^(base|renderer|app|stage[1-9]|cli|view|sandbox)$' \
     -LE '^(browser|measurement)$' -E '^raystep grade: the release writer writes'
 
 step "all tests passed"
