@@ -6,9 +6,11 @@
 
 namespace raystep {
 
-// The lecture demos of `raystep demo NAME`, one per file. Each renders its panels at the
-// panel_size its figure needs on an image of `size`, through the stages' public API, so that a
-// stage that is not implemented yet stops it with its NotImplemented message.
+// The lecture demos of `raystep demo NAME`, a file per lecture: ray_demos.cpp (stages 2 and 3),
+// cost_demos.cpp (stage 4), shading_demos.cpp (stages 5, 6 and 9), sampling_demos.cpp (stage 8).
+// Each renders its panels at the panel_size its figure needs on an image of `size`, through the
+// stages' public API, so that a stage that is not implemented yet stops it with its NotImplemented
+// message.
 
 /// Stage 2: each camera ray's direction as a colour, perspective beside orthographic.
 DemoFigure ray_directions_demo(const DemoSize& size);

@@ -7,7 +7,7 @@
 
 using namespace raystep;
 
-// The demos of stages 8 and 9 (aliasing_demo.cpp, soft_shadows_demo.cpp, refraction_demo.cpp), at
+// The demos of stages 8 and 9 (sampling_demos.cpp, and shading_demos.cpp's refraction), at
 // half the lecture size, as demos_test.cpp renders the others.
 
 namespace {

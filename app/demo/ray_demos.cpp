@@ -1,4 +1,5 @@
-// raystep demo watertight: rays that slip between the triangles of a closed mesh.
+// The demos of stages 2 and 3: what the cameras make, barycentric coordinates, and rays that
+// slip between the triangles of a closed mesh.
 
 #include <stdexcept>
 #include <string_view>
@@ -10,6 +11,38 @@
 #include "renderer/tile_renderer.h"
 
 namespace raystep {
+
+// raystep demo ray-directions: what stage 2's cameras make, before anything is hit.
+
+DemoFigure ray_directions_demo(const DemoSize& size) {
+    // The two cameras of stage 2's scenes. The rays view colours a direction d as (d + 1) / 2:
+    // red grows to the right, green upwards, and -z (straight ahead) is (0.5, 0.5, 0).
+    const PanelSize panel = panel_size(size, 2, false);
+    DemoFigure figure;
+    figure.title = "Ray directions as colour: (d + 1) / 2, red = x, green = y, blue = z";
+    figure.panels.push_back(view_panel("stage2/perspective-wide.test", panel, View::rays,
+                                       "perspective: a direction per pixel"));
+    figure.panels.push_back(view_panel("stage2/orthographic.test", panel, View::rays,
+                                       "orthographic: one direction, one colour"));
+    return figure;
+}
+
+// raystep demo barycentrics: the beta and gamma that stage 3's triangle tests return.
+
+DemoFigure barycentrics_demo(const DemoSize& size) {
+    // Stage 3's scenes: each triangle runs from red at p0 through green at p1 to blue at p2, so
+    // shared edges show as seams, and a pixel of background on a seam would be a leak.
+    const PanelSize panel = panel_size(size, 2, false);
+    DemoFigure figure;
+    figure.title = "Barycentric coordinates as colour: RGB = (1 - beta - gamma, beta, gamma)";
+    figure.panels.push_back(view_panel("stage3/triangle-fan.test", panel, View::barycentric,
+                                       "eight triangles around one vertex"));
+    figure.panels.push_back(view_panel("stage3/quad-oblique.test", panel, View::barycentric,
+                                       "a square of two triangles, seen obliquely"));
+    return figure;
+}
+
+// raystep demo watertight: rays that slip between the triangles of a closed mesh.
 
 namespace {
 
