@@ -20,9 +20,9 @@ namespace {
 std::vector<std::string> light_names(const Scene& scene) {
     std::vector<std::string> names;
     for (const PointLight& light : scene.point_lights)
-        names.push_back("point light (line " + std::to_string(light.line) + ")");
+        names.push_back(light_name("point", light.line));
     for (const DirectionalLight& light : scene.directional_lights)
-        names.push_back("directional light (line " + std::to_string(light.line) + ")");
+        names.push_back(light_name("directional", light.line));
     return names;
 }
 

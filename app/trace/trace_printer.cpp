@@ -126,11 +126,6 @@ void trace_instances(const RenderScene& render_scene, const Ray& ray, Lines& lin
 
 // -- Shading --
 
-// A light as the trace names it, "point light (line 12)".
-std::string light_name(const char* kind, std::uint32_t line) {
-    return std::string(kind) + " light (line " + std::to_string(line) + ")";
-}
-
 const char* light_kind_name(LightKind kind) {
     switch (kind) {
         case LightKind::point:
@@ -221,6 +216,10 @@ void trace_transmission_path(const RenderScene& render_scene, const Ray& eye_ray
 }
 
 }  // namespace
+
+std::string light_name(const char* kind, std::uint32_t line) {
+    return std::string(kind) + " light (line " + std::to_string(line) + ")";
+}
 
 // A sampled pixel: every step of its first sample, then each sample's film point and colour,
 // then the mean.

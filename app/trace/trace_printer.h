@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -7,6 +8,9 @@
 #include "renderer/render_scene.h"
 
 namespace raystep {
+
+/// A light as a trace names it: "point light (line 12)".
+std::string light_name(const char* kind, std::uint32_t line);
 
 /// The lines `raystep trace` prints for one pixel: each step the renderer tells (pixel_observer.h)
 /// as one line, in the order it took them, numbers as base/math/to_text.h prints them, so that the
