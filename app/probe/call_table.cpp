@@ -1,18 +1,25 @@
 #include "app/probe/call_table.h"
 
+#include "app/probe/ray_calls.h"
+#include "app/probe/recursion_calls.h"
+#include "app/probe/refraction_calls.h"
+#include "app/probe/shading_calls.h"
+#include "app/probe/transform_calls.h"
+#include "app/probe/vector_calls.h"
+
 namespace raystep::probe {
 
 CallTable stage_calls() {
     CallTable table;
-    add_vector_calls(table);
-    add_ray_calls(table);
+    add_calls(table, vector_calls);  // stage 1
+    add_calls(table, ray_calls);     // stage 2
     add_intersect_calls(table);
     add_accel_calls(table);
-    add_transform_calls(table);
-    add_shading_calls(table);
-    add_recursion_calls(table);
+    add_calls(table, transform_calls);  // stage 5
+    add_calls(table, shading_calls);    // stage 6
+    add_calls(table, recursion_calls);  // stage 7
     add_sampling_calls(table);
-    add_refraction_calls(table);
+    add_calls(table, refraction_calls);  // stage 9
     add_render_calls(table);
     return table;
 }

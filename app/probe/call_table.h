@@ -17,18 +17,10 @@ namespace raystep::probe {
 using Call = std::function<Json(const Json& arguments)>;
 using CallTable = std::map<std::string, Call>;
 
-void add_vector_calls(CallTable& table);     ///< stage 1
-void add_ray_calls(CallTable& table);        ///< stage 2
 void add_intersect_calls(CallTable& table);  ///< stage 3
 void add_accel_calls(CallTable& table);      ///< stage 4: a structure's answers, no work counted
-void add_transform_calls(CallTable& table);  ///< stage 5
-void add_shading_calls(CallTable& table);    ///< stage 6
-void add_recursion_calls(CallTable& table);  ///< stage 7
 void add_sampling_calls(CallTable& table);   ///< stage 8
 void add_render_calls(CallTable& table);     ///< whole images, through every stage a view needs
-
-/// Stage 9: Snell's law, Fresnel, the media, the refracted ray, radiance through glass.
-void add_refraction_calls(CallTable& table);
 
 /// The BVH split a stage-4 query names, "sah" or "median"; throws std::invalid_argument for
 /// anything else.

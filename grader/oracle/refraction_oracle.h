@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/grade/expected_ray.h"
+#include "app/probe/refraction_calls.h"
 #include "base/scene/ray_offset.h"
 #include "grader/oracle/wide_vec.h"
 #include "stages/2_rays/ray.h"
@@ -68,10 +69,7 @@ MediumStack expected_after_crossing(const MediumStack& inside, const Medium& sol
 
 /// One hit of a fake scene: the probe's shade answers it for a ray that starts near `key`'s
 /// origin and runs along `key`'s direction (app/probe/refraction_calls.cpp says how near).
-struct KeyedHit {
-    Ray key;
-    MediumHit hit;
-};
+using probe::KeyedHit;
 
 /// What the fake scene holds where a ray lands, asked once for each ray radiance_with_refraction
 /// should trace, with the media that ray is in: a hit, or nullopt for a miss. Case makers answer

@@ -22,7 +22,7 @@ std::string vec3_text(const Vec3& v) {
     return full_text(v);
 }
 
-std::string vectors_text(std::initializer_list<Vec3> vectors) {
+std::string vectors_text(const std::vector<Vec3>& vectors) {
     std::string text;
     for (const Vec3& v : vectors)
         text += (text.empty() ? "" : ", ") + full_text(v);

@@ -1,6 +1,5 @@
 #pragma once
 
-#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -20,7 +19,7 @@ namespace raystep::grade {
 std::string vec3_text(const Vec3& v);
 
 /// The case's vectors, separated by commas.
-std::string vectors_text(std::initializer_list<Vec3> vectors);
+std::string vectors_text(const std::vector<Vec3>& vectors);
 
 /// A surface point: its position, error bound, both normals and the direction to the eye.
 std::string point_text(const SurfacePoint& p);

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "app/grade/value_judges.h"
+#include "app/probe/vector_calls.h"
 #include "base/math/parallel_sine.h"
 #include "base/math/portable_random.h"
 #include "base/math/unit_roundoff.h"
@@ -26,58 +27,64 @@ using probe::Json;
 constexpr const char* kPublicName = "vector functions on hand-worked values";
 
 // Every case of stage 1 is judged by a data judge (app/grade/value_judges.h): the public ones go
-// into the student release as data, and the others are judged by the same code.
-PublicCase vector_case(const std::string& call, std::initializer_list<Vec3> args, Json judge) {
-    Json json_args = Json::array();
+// into the student release as data, and the others are judged by the same code. A case names its
+// call by the call's descriptor (app/probe/vector_calls.h), and its vectors are the call's
+// arguments in order.
+template <class Call>
+PublicCase vector_case(const Call& call, const typename Call::QuestionType& args, Json judge) {
+    const std::vector<Vec3> vectors =
+        std::apply([](const auto&... v) { return std::vector<Vec3>{v...}; }, args);
     std::string code;
-    for (const Vec3& v : args) {
-        json_args.push_back(probe::vec3(v));
+    for (const Vec3& v : vectors)
         code += (code.empty() ? "" : ", ") + cpp(v);
-    }
-    return {
-        call + vectors_text(args), {call, json_args}, std::move(judge), call + "(" + code + ")"};
+    const std::string name = call.name;
+    return {name + vectors_text(vectors), probe::query(call, args), std::move(judge),
+            name + "(" + code + ")"};
 }
 
-PublicCase exact_vector(const std::string& call, std::initializer_list<Vec3> args, Vec3 expected,
+template <class Call>
+PublicCase exact_vector(const Call& call, const typename Call::QuestionType& args, Vec3 expected,
                         double tolerance = 0.0) {
     return vector_case(call, args, near_vec3_judge(expected, tolerance));
 }
 
-PublicCase exact_number(const std::string& call, std::initializer_list<Vec3> args, double expected,
+template <class Call>
+PublicCase exact_number(const Call& call, const typename Call::QuestionType& args, double expected,
                         double tolerance = 0.0) {
     return vector_case(call, args, near_number_judge(expected, tolerance));
 }
 
-PublicCase throws_domain_error(const std::string& call, std::initializer_list<Vec3> args) {
+template <class Call>
+PublicCase throws_domain_error(const Call& call, const typename Call::QuestionType& args) {
     return vector_case(call, args, threw_judge("domain_error"));
 }
 
 // orthonormal_frame(a, b) against the expected frame, each component within `tolerance`.
 PublicCase frame_case(const Vec3& a, const Vec3& b, const Vec3& u, const Vec3& v, const Vec3& w,
                       double tolerance = 4 * kUnitRoundoff) {
-    return vector_case("orthonormal_frame", {a, b}, frame_judge(u, v, w, tolerance));
+    return vector_case(probe::orthonormal_frame_call, {a, b}, frame_judge(u, v, w, tolerance));
 }
 
 std::vector<PublicCase> public_cases() {
     const double r2 = std::sqrt(0.5);
     return {
-        exact_number("dot", {{1, 2, 3}, {4, -5, 6}}, 12.0),
-        exact_vector("cross", {{1, 0, 0}, {0, 1, 0}}, {0, 0, 1}),
-        exact_vector("cross", {{0, 1, 0}, {1, 0, 0}}, {0, 0, -1}),
-        exact_number("length", {{3, 4, 0}}, 5.0),
-        exact_number("length", {{0, 0, 0}}, 0.0),
-        exact_number("length", {{3e200, 4e200, 0}}, 5e200, 4 * kUnitRoundoff * 5e200),
-        exact_number("length", {{3e-200, 4e-200, 0}}, 5e-200, 4 * kUnitRoundoff * 5e-200),
-        exact_vector("normalize", {{0, 3, 4}}, {0, 0.6, 0.8}, 2 * kUnitRoundoff),
-        exact_vector("normalize", {{1e-300, 0, 0}}, {1, 0, 0}, 2 * kUnitRoundoff),
-        throws_domain_error("normalize", {{0, 0, 0}}),
-        exact_vector("reflect", {{1, -1, 0}, {0, 1, 0}}, {1, 1, 0}),
-        exact_vector("project_onto", {{2, 3, 4}, {0, 2, 0}}, {0, 3, 0}),
-        throws_domain_error("project_onto", {{2, 3, 4}, {0, 0, 0}}),
-        exact_vector("perpendicular_to", {{2, 3, 4}, {0, 2, 0}}, {2, 0, 4}),
+        exact_number(probe::dot_call, {{1, 2, 3}, {4, -5, 6}}, 12.0),
+        exact_vector(probe::cross_call, {{1, 0, 0}, {0, 1, 0}}, {0, 0, 1}),
+        exact_vector(probe::cross_call, {{0, 1, 0}, {1, 0, 0}}, {0, 0, -1}),
+        exact_number(probe::length_call, {{3, 4, 0}}, 5.0),
+        exact_number(probe::length_call, {{0, 0, 0}}, 0.0),
+        exact_number(probe::length_call, {{3e200, 4e200, 0}}, 5e200, 4 * kUnitRoundoff * 5e200),
+        exact_number(probe::length_call, {{3e-200, 4e-200, 0}}, 5e-200, 4 * kUnitRoundoff * 5e-200),
+        exact_vector(probe::normalize_call, {{0, 3, 4}}, {0, 0.6, 0.8}, 2 * kUnitRoundoff),
+        exact_vector(probe::normalize_call, {{1e-300, 0, 0}}, {1, 0, 0}, 2 * kUnitRoundoff),
+        throws_domain_error(probe::normalize_call, {{0, 0, 0}}),
+        exact_vector(probe::reflect_call, {{1, -1, 0}, {0, 1, 0}}, {1, 1, 0}),
+        exact_vector(probe::project_onto_call, {{2, 3, 4}, {0, 2, 0}}, {0, 3, 0}),
+        throws_domain_error(probe::project_onto_call, {{2, 3, 4}, {0, 0, 0}}),
+        exact_vector(probe::perpendicular_to_call, {{2, 3, 4}, {0, 2, 0}}, {2, 0, 4}),
         frame_case({0, 0, 5}, {0, 1, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}),
         frame_case({1, 0, 1}, {0, 1, 0}, {r2, 0, -r2}, {0, 1, 0}, {r2, 0, r2}),
-        throws_domain_error("orthonormal_frame", {{0, 0, 1}, {0, 0, 3}}),
+        throws_domain_error(probe::orthonormal_frame_call, {{0, 0, 1}, {0, 0, 3}}),
     };
 }
 
@@ -93,42 +100,45 @@ std::vector<PublicCase> hidden_cases() {
     const double inf = HUGE_VAL;
     const double r2 = std::sqrt(0.5);
     return {
-        exact_number("length", {{1e-320, 0, 0}}, 1e-320),
-        exact_number("length", {{1e300, 1e300, 1e300}}, std::sqrt(3.0) * 1e300,
+        exact_number(probe::length_call, {{1e-320, 0, 0}}, 1e-320),
+        exact_number(probe::length_call, {{1e300, 1e300, 1e300}}, std::sqrt(3.0) * 1e300,
                      4 * kUnitRoundoff * 2e300),
-        throws_domain_error("normalize", {{inf, 0, 0}}),
-        throws_domain_error("normalize", {{std::nan(""), 1, 0}}),
-        exact_vector("normalize", {{-2e250, 0, 0}}, {-1, 0, 0}, 2 * kUnitRoundoff),
+        throws_domain_error(probe::normalize_call, {{inf, 0, 0}}),
+        throws_domain_error(probe::normalize_call, {{std::nan(""), 1, 0}}),
+        exact_vector(probe::normalize_call, {{-2e250, 0, 0}}, {-1, 0, 0}, 2 * kUnitRoundoff),
         // Subnormal vectors are finite and nonzero: 1 / |v| overflows, v / |v| does not.
-        exact_vector("normalize", {{5e-324, 0, 0}}, {1, 0, 0}, 2 * kUnitRoundoff),
-        exact_vector("normalize", {{-3e-320, 4e-320, 1e-321}}, wide_unit({-3e-320, 4e-320, 1e-321}),
-                     2 * kUnitRoundoff),
-        exact_vector("reflect", {{3, -4, 5}, {0, 0, 1}}, {3, -4, -5}),
-        throws_domain_error("perpendicular_to", {{1, 2, 3}, {0, 0, 0}}),
+        exact_vector(probe::normalize_call, {{5e-324, 0, 0}}, {1, 0, 0}, 2 * kUnitRoundoff),
+        exact_vector(probe::normalize_call, {{-3e-320, 4e-320, 1e-321}},
+                     wide_unit({-3e-320, 4e-320, 1e-321}), 2 * kUnitRoundoff),
+        exact_vector(probe::reflect_call, {{3, -4, 5}, {0, 0, 1}}, {3, -4, -5}),
+        throws_domain_error(probe::perpendicular_to_call, {{1, 2, 3}, {0, 0, 0}}),
         // A tiny or huge `onto` is not zero: onto . onto underflows to 0 or overflows to inf, its
         // unit vector does neither.
-        exact_vector("project_onto", {{2, 3, 4}, {0, 1e-200, 0}}, {0, 3, 0}, 2 * kUnitRoundoff),
-        exact_vector("project_onto", {{2, 3, 4}, {0, -1e200, 0}}, {0, 3, 0}, 2 * kUnitRoundoff),
-        exact_vector("perpendicular_to", {{2, 3, 4}, {0, 0, 3e-190}}, {2, 3, 0}, 8 * kUnitRoundoff),
-        throws_domain_error("orthonormal_frame", {{0, 0, 0}, {0, 1, 0}}),
-        throws_domain_error("orthonormal_frame", {{0, 0, 1}, {0, 0, 0}}),
-        throws_domain_error("orthonormal_frame", {{std::nan(""), 0, 1}, {0, 1, 0}}),
-        throws_domain_error("orthonormal_frame", {{0, 0, 1}, {1, std::nan(""), 0}}),
-        throws_domain_error("orthonormal_frame", {{0, -inf, 0}, {1, 0, 0}}),
-        throws_domain_error("orthonormal_frame", {{0, 0, 1}, {0, inf, 0}}),
-        throws_domain_error("orthonormal_frame", {{1, 1, 0}, {-2, -2, 0}}),
+        exact_vector(probe::project_onto_call, {{2, 3, 4}, {0, 1e-200, 0}}, {0, 3, 0},
+                     2 * kUnitRoundoff),
+        exact_vector(probe::project_onto_call, {{2, 3, 4}, {0, -1e200, 0}}, {0, 3, 0},
+                     2 * kUnitRoundoff),
+        exact_vector(probe::perpendicular_to_call, {{2, 3, 4}, {0, 0, 3e-190}}, {2, 3, 0},
+                     8 * kUnitRoundoff),
+        throws_domain_error(probe::orthonormal_frame_call, {{0, 0, 0}, {0, 1, 0}}),
+        throws_domain_error(probe::orthonormal_frame_call, {{0, 0, 1}, {0, 0, 0}}),
+        throws_domain_error(probe::orthonormal_frame_call, {{std::nan(""), 0, 1}, {0, 1, 0}}),
+        throws_domain_error(probe::orthonormal_frame_call, {{0, 0, 1}, {1, std::nan(""), 0}}),
+        throws_domain_error(probe::orthonormal_frame_call, {{0, -inf, 0}, {1, 0, 0}}),
+        throws_domain_error(probe::orthonormal_frame_call, {{0, 0, 1}, {0, inf, 0}}),
+        throws_domain_error(probe::orthonormal_frame_call, {{1, 1, 0}, {-2, -2, 0}}),
         // Parallel, but w = a / |a| is rounded, so b x w is a few 1e-16, not zero
-        throws_domain_error("orthonormal_frame", {{1, 2, 3}, {2, 4, 6}}),
-        throws_domain_error("orthonormal_frame", {{0.1, 0.2, 0.3}, {-3, -6, -9}}),
+        throws_domain_error(probe::orthonormal_frame_call, {{1, 2, 3}, {2, 4, 6}}),
+        throws_domain_error(probe::orthonormal_frame_call, {{0.1, 0.2, 0.3}, {-3, -6, -9}}),
         frame_case({0, 0, 1e-150}, {0, 1e150, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}),
         // "Parallel" is relative to |b|: a short b at right angles to a is no more parallel than
         // a long one, and a long b whose sine with a is 1e-10 is parallel though |b x w| is 1e-4.
         frame_case({0, 0, 1}, {0, 1e-10, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}),
         frame_case({1e250, 0, 0}, {0, 0, 1e-250}, {0, 1, 0}, {0, 0, 1}, {1, 0, 0}),
         frame_case({0, 0, 1}, {1e300, 1e300, 0}, {r2, -r2, 0}, {r2, r2, 0}, {0, 0, 1}),
-        throws_domain_error("orthonormal_frame", {{0, 0, 1}, {1e-4, 0, 1e6}}),
-        throws_domain_error("orthonormal_frame", {{1, 2, 3}, {2e100, 4e100, 6e100}}),
-        throws_domain_error("orthonormal_frame", {{0, 0, 1}, {1e-210, 0, 1e-200}}),
+        throws_domain_error(probe::orthonormal_frame_call, {{0, 0, 1}, {1e-4, 0, 1e6}}),
+        throws_domain_error(probe::orthonormal_frame_call, {{1, 2, 3}, {2e100, 4e100, 6e100}}),
+        throws_domain_error(probe::orthonormal_frame_call, {{0, 0, 1}, {1e-210, 0, 1e-200}}),
     };
 }
 
@@ -160,7 +170,7 @@ void add_product_cases(std::vector<PublicCase>& cases, std::uint64_t seed, int c
         const Wide exact = Wide(a.x) * b.x + Wide(a.y) * b.y + Wide(a.z) * b.z;
         const Wide size =
             std::abs(Wide(a.x) * b.x) + std::abs(Wide(a.y) * b.y) + std::abs(Wide(a.z) * b.z);
-        cases.push_back(exact_number("dot", {a, b}, static_cast<double>(exact),
+        cases.push_back(exact_number(probe::dot_call, {a, b}, static_cast<double>(exact),
                                      static_cast<double>(4 * kUnitRoundoff * size)));
         const Vec3 c{static_cast<double>(Wide(a.y) * b.z - Wide(a.z) * b.y),
                      static_cast<double>(Wide(a.z) * b.x - Wide(a.x) * b.z),
@@ -168,7 +178,7 @@ void add_product_cases(std::vector<PublicCase>& cases, std::uint64_t seed, int c
         const double cross_size = static_cast<double>(
             4 * kUnitRoundoff * (std::abs(Wide(a.x)) + std::abs(Wide(a.y)) + std::abs(Wide(a.z))) *
             (std::abs(Wide(b.x)) + std::abs(Wide(b.y)) + std::abs(Wide(b.z))));
-        cases.push_back(exact_vector("cross", {a, b}, c, cross_size));
+        cases.push_back(exact_vector(probe::cross_call, {a, b}, c, cross_size));
     }
 }
 
@@ -179,9 +189,9 @@ void add_length_cases(std::vector<PublicCase>& cases, std::uint64_t seed, int co
         PortableRandom random(seed, k);
         const Vec3 v = random_vector(random) * (k % 2 ? 1e150 : 1e-150);
         const Wide exact = std::sqrt(Wide(v.x) * v.x + Wide(v.y) * v.y + Wide(v.z) * v.z);
-        cases.push_back(exact_number("length", {v}, static_cast<double>(exact),
+        cases.push_back(exact_number(probe::length_call, {v}, static_cast<double>(exact),
                                      static_cast<double>(3 * kUnitRoundoff * exact)));
-        cases.push_back(exact_vector("normalize", {v}, wide_unit(v), 4 * kUnitRoundoff));
+        cases.push_back(exact_vector(probe::normalize_call, {v}, wide_unit(v), 4 * kUnitRoundoff));
     }
 }
 
@@ -215,7 +225,7 @@ void add_frame_cases(std::vector<PublicCase>& cases, std::uint64_t seed, int cou
         const WideVec b_wide = b_direction * Wide(random.decade(-100, 100));
         const Vec3 b = narrow(b_wide);
         if (k % 3 == 2) {
-            cases.push_back(throws_domain_error("orthonormal_frame", {a, b}));
+            cases.push_back(throws_domain_error(probe::orthonormal_frame_call, {a, b}));
             continue;
         }
         // The expectation from the rounded inputs, as the student's code sees them.

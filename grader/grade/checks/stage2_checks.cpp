@@ -13,6 +13,7 @@
 
 #include "app/grade/camera_judges.h"
 #include "app/grade/value_judges.h"
+#include "app/probe/ray_calls.h"
 #include "base/math/portable_random.h"
 #include "base/math/unit_roundoff.h"
 #include "grader/grade/checks/cpp_literal.h"
@@ -59,22 +60,15 @@ std::string camera_text(const CameraCase& c, int i, int j) {
            " pixels, pixel (" + std::to_string(i) + ", " + std::to_string(j) + ")";
 }
 
-ProbeQuery camera_query(const CameraCase& c, int i, int j) {
-    Json args = {{"lookfrom", probe::vec3(c.lookfrom)},
-                 {"lookat", probe::vec3(c.lookat)},
-                 {"up", probe::vec3(c.up)},
-                 {"width", c.width},
-                 {"height", c.height},
-                 {"pixels", Json::array({Json::array({i, j})})}};
+// The camera's rays of the pixels asked, through the call of its projection.
+ProbeQuery camera_query(const CameraCase& c, const std::vector<probe::PixelIndex>& pixels) {
     if (!c.orthographic) {
-        args["fovy"] = probe::number(c.fovy);
-        return {"perspective_rays", args};
+        return probe::query(probe::perspective_rays_call,
+                            {c.lookfrom, c.lookat, c.up, c.fovy, c.width, c.height, pixels});
     }
-    args["left"] = probe::number(c.left);
-    args["right"] = probe::number(c.right);
-    args["bottom"] = probe::number(c.bottom);
-    args["top"] = probe::number(c.top);
-    return {"orthographic_rays", args};
+    return probe::query(
+        probe::orthographic_rays_call,
+        {c.lookfrom, c.lookat, c.up, c.left, c.right, c.bottom, c.top, c.width, c.height, pixels});
 }
 
 // The camera's maker called as a student would: make_perspective_camera(...) or
@@ -93,7 +87,7 @@ std::string camera_code(const CameraCase& c) {
 PublicCase camera_ray(const CameraCase& c, int i, int j) {
     const ExpectedCameraRay e =
         c.orthographic ? expected_orthographic(c, i, j) : expected_perspective(c, i, j);
-    return {camera_text(c, i, j), camera_query(c, i, j),
+    return {camera_text(c, i, j), camera_query(c, {{i, j}}),
             camera_ray_judge(e.origin, e.origin_tolerance, e.direction, e.direction_tolerance),
             std::string(c.orthographic ? "orthographic_ray(" : "perspective_ray(") +
                 camera_code(c) + ", " + std::to_string(i) + ", " + std::to_string(j) + ")"};
@@ -101,8 +95,7 @@ PublicCase camera_ray(const CameraCase& c, int i, int j) {
 
 // No pixels asked: the camera's maker must throw, not the rays it would make later.
 PublicCase no_camera(const CameraCase& c) {
-    ProbeQuery query = camera_query(c, 0, 0);
-    query.args["pixels"] = Json::array();
+    const ProbeQuery query = camera_query(c, {});
     const std::string text = camera_text(c, 0, 0);
     return {text.substr(0, text.rfind(", pixel")) + ": no such camera", query,
             threw_judge("domain_error"), camera_code(c)};
@@ -111,8 +104,7 @@ PublicCase no_camera(const CameraCase& c) {
 // R(t) = A + t D, within `tolerance` of `expected` per coordinate.
 PublicCase ray_at(const Ray& ray, double t, const Vec3& expected, double tolerance = 0.0) {
     return {"Ray{" + ray_text(ray) + "}.at(" + full_text(t) + ")",
-            {"ray_at", {{"ray", probe::ray(ray)}, {"t", probe::number(t)}}},
-            near_vec3_judge(expected, tolerance),
+            probe::query(probe::ray_at_call, {ray, t}), near_vec3_judge(expected, tolerance),
             cpp(ray) + ".at(" + cpp(t) + ")"};
 }
 

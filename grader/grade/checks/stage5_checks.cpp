@@ -19,6 +19,7 @@
 
 #include "app/grade/transform_judges.h"
 #include "app/grade/value_judges.h"
+#include "app/probe/transform_calls.h"
 #include "base/math/portable_random.h"
 #include "base/math/unit_roundoff.h"
 #include "grader/grade/checks/cpp_literal.h"
@@ -57,32 +58,25 @@ TransformOp scale_op(const Vec3& factors) {
 PublicCase rotation_case(const Vec3& axis, double degrees) {
     const WideOp w = wide_op(rotate_op(axis, degrees));
     return {"rotation(" + full_text(axis) + ", " + full_text(degrees) + ")",
-            {"rotation", Json::array({probe::vec3(axis), probe::number(degrees)})},
+            probe::query(probe::rotation_call, {axis, degrees}),
             near_wide_matrix_judge(double_double(w.matrix),
                                    double_double(8 * kWideUnitRoundoff * w.size)),
             "rotation(" + cpp(axis) + ", " + cpp(degrees) + ")"};
 }
 
 // translation and scaling have exact entries.
-PublicCase exact_matrix_case(const std::string& call, const Vec3& v, const WideMat& expected) {
-    return {call + "(" + full_text(v) + ")",
-            {call, Json::array({probe::vec3(v)})},
+template <class Call>
+PublicCase exact_matrix_case(const Call& call, const Vec3& v, const WideMat& expected) {
+    const std::string name = call.name;
+    return {name + "(" + full_text(v) + ")", probe::query(call, {v}),
             near_wide_matrix_judge(double_double(expected), DoubleDoubleMat4()),
-            call + "(" + cpp(v) + ")"};
+            name + "(" + cpp(v) + ")"};
 }
 
 PublicCase invalid_axis_case(const Vec3& axis, double degrees) {
     return {"rotation(" + full_text(axis) + ", " + full_text(degrees) + "): no axis",
-            {"rotation", Json::array({probe::vec3(axis), probe::number(degrees)})},
-            threw_judge("invalid_argument"),
+            probe::query(probe::rotation_call, {axis, degrees}), threw_judge("invalid_argument"),
             "rotation(" + cpp(axis) + ", " + cpp(degrees) + ")"};
-}
-
-Json ops_json(const std::vector<TransformOp>& ops) {
-    Json list = Json::array();
-    for (const TransformOp& op : ops)
-        list.push_back(probe::transform_op(op));
-    return list;
 }
 
 // compose's argument as a student writes it: the ops in file order.
@@ -95,8 +89,7 @@ std::string compose_code(const std::vector<TransformOp>& ops) {
 
 PublicCase compose_case(const std::vector<TransformOp>& ops) {
     const WideTransform expected = wide_compose(ops);
-    return {"compose(" + ops_text(ops) + ")",
-            {"compose", ops_json(ops)},
+    return {"compose(" + ops_text(ops) + ")", probe::query(probe::compose_call, ops),
             near_wide_transform_judge(
                 double_double(expected.matrix), double_double(expected.matrix_tolerance),
                 double_double(expected.inverse), double_double(expected.inverse_tolerance)),
@@ -109,7 +102,7 @@ PublicCase compose_case(const std::vector<TransformOp>& ops) {
 PublicCase exact_inverse_case(const std::vector<TransformOp>& ops) {
     const WideTransform expected = wide_compose(ops);
     return {"compose(" + ops_text(ops) + "): the inverse from the ops' exact inverses",
-            {"compose", ops_json(ops)},
+            probe::query(probe::compose_call, ops),
             near_wide_transform_judge(
                 double_double(expected.matrix), double_double(expected.matrix_tolerance),
                 DoubleDoubleMat4(narrow(expected.inverse)), DoubleDoubleMat4()),
@@ -127,7 +120,7 @@ PublicCase singular_scale_case(const Vec3& factors) {
         if (factors[k] != 0.0) diagonal[k] = 1.0 / factors[k];
     }
     return {"compose(" + ops_text(ops) + "): a zero factor's reciprocal is infinite",
-            {"compose", ops_json(ops)},
+            probe::query(probe::compose_call, ops),
             singular_transform_judge(narrow(wide_scaling(widen(factors))), diagonal),
             compose_code(ops)};
 }
@@ -137,7 +130,7 @@ PublicCase ray_to_object_case(const std::string& name, const Transform& t, const
     const WideProduct origin = wide_product(t.inverse, ray.origin, 1.0);
     const WideProduct direction = wide_product(t.inverse, ray.direction, 0.0);
     return {name + ": ray_to_object of " + ray_text(ray) + ", " + transform_text(t),
-            {"ray_to_object", Json::array({probe::transform(t), probe::ray(ray)})},
+            probe::query(probe::ray_to_object_call, {t, ray}),
             near_wide_ray_judge(
                 double_double(origin.value), double_double(8 * kWideUnitRoundoff * origin.size),
                 double_double(direction.value),
@@ -149,7 +142,7 @@ PublicCase point_to_world_case(const std::string& name, const Transform& t, cons
     const WideProduct expected = wide_product(t.matrix, p, 1.0);
     const Vec3 tolerance = 8 * kUnitRoundoff * narrow(expected.size);
     return {name + ": point_to_world of " + full_text(p) + ", " + transform_text(t),
-            {"point_to_world", Json::array({probe::transform(t), probe::vec3(p)})},
+            probe::query(probe::point_to_world_call, {t, p}),
             near_wide_vec3_judge(double_double(expected.value), DoubleDoubleVec3(tolerance)),
             "point_to_world(" + cpp(t) + ", " + cpp(p) + ")"};
 }
@@ -157,7 +150,7 @@ PublicCase point_to_world_case(const std::string& name, const Transform& t, cons
 PublicCase normal_to_world_case(const std::string& name, const Transform& t, const Vec3& n) {
     const WideNormal expected = wide_normal(t.inverse, widen(n));
     return {name + ": normal_to_world of " + full_text(n) + ", " + transform_text(t),
-            {"normal_to_world", Json::array({probe::transform(t), probe::vec3(n)})},
+            probe::query(probe::normal_to_world_call, {t, n}),
             near_wide_vec3_judge(double_double(expected.value), double_double(expected.tolerance),
                                  true),
             "normal_to_world(" + cpp(t) + ", " + cpp(n) + ")"};
@@ -168,8 +161,7 @@ PublicCase transformed_sphere_case(const std::string& name, const Ray& ray, cons
     const TransformedSphereHit e = wide_transformed_hit(ray, sphere, t);
     return {name + ": " + ray_text(ray) + ", sphere centre " + full_text(sphere.center) +
                 " radius " + full_text(sphere.radius) + ", " + transform_text(t),
-            {"intersect_transformed_sphere",
-             Json::array({probe::ray(ray), probe::sphere(sphere), probe::transform(t)})},
+            probe::query(probe::intersect_transformed_sphere_call, {ray, sphere, t}),
             e.hit ? near_wide_hit_judge(e.t, e.t_tolerance, double_double(e.normal.value),
                                         double_double(e.normal.tolerance))
                   : wide_miss_judge(),
@@ -186,8 +178,8 @@ std::vector<PublicCase> public_cases() {
     const Transform ellipsoid = transform_of({translate_op({1, 0, 0}), scale_op({3, 2, 1})});
     const Sphere unit{{0, 0, 0}, 1.0};
     return {
-        exact_matrix_case("translation", {2, -3, 0.5}, wide_translation({2, -3, 0.5})),
-        exact_matrix_case("scaling", {2, -0.5, 4}, wide_scaling({2, -0.5, 4})),
+        exact_matrix_case(probe::translation_call, {2, -3, 0.5}, wide_translation({2, -3, 0.5})),
+        exact_matrix_case(probe::scaling_call, {2, -0.5, 4}, wide_scaling({2, -0.5, 4})),
         // A quarter turn about +z takes x to y: columns (0, 1, 0), (-1, 0, 0), (0, 0, 1).
         rotation_case({0, 0, 1}, 90),
         // About +x, y goes to z.
@@ -252,7 +244,7 @@ std::vector<PublicCase> hidden_cases() {
         // And one of length 1.4e200: its square overflows, its direction does not.
         rotation_case({1e200, 0, -1e200}, 60),
         invalid_axis_case({0, 0, 0}, 0),
-        exact_matrix_case("scaling", {0, -2, 0.5}, wide_scaling({0, -2, 0.5})),
+        exact_matrix_case(probe::scaling_call, {0, -2, 0.5}, wide_scaling({0, -2, 0.5})),
         // The inverse of scale(2, 0, 0.5) does not exist: diagonal (0.5, 1 / 0, 2).
         singular_scale_case({2, 0, 0.5}),
         compose_case({rotate_op({2, -1, 0.5}, 33)}),

@@ -17,6 +17,7 @@
 
 #include "app/grade/shading_judges.h"
 #include "app/grade/value_judges.h"
+#include "app/probe/shading_calls.h"
 #include "base/math/portable_random.h"
 #include "base/math/unit_roundoff.h"
 #include "grader/grade/checks/cpp_literal.h"
@@ -73,7 +74,7 @@ PublicCase attenuation_case(const Attenuation& a, double distance) {
     const double tolerance = static_cast<double>(6 * kUnitRoundoff * expected);
     return {"attenuation(" + full_text(Vec3(a.constant, a.linear, a.quadratic)) + ", " +
                 full_text(distance) + ")",
-            {"attenuation", Json::array({probe::attenuation(a), probe::number(distance)})},
+            probe::query(probe::attenuation_call, {a, distance}),
             near_number_judge(static_cast<double>(expected), tolerance),
             "attenuation(" + cpp(a) + ", " + cpp(distance) + ")"};
 }
@@ -95,15 +96,13 @@ PublicCase point_light_case(const PointLight& light, const Vec3& point) {
     return {"sample_light(point light at " + full_text(light.position) + ", colour " +
                 full_text(light.color) + ", attenuation " +
                 full_text(Vec3(a.constant, a.linear, a.quadratic)) + ") from " + full_text(point),
-            {"sample_point_light", Json::array({probe::point_light(light), probe::vec3(point)})},
-            sample_judge(expected),
+            probe::query(probe::sample_point_light_call, {light, point}), sample_judge(expected),
             "sample_light(" + cpp(light) + ", " + cpp(point) + ")"};
 }
 
 PublicCase at_the_light_case(const PointLight& light) {
     return {"sample_light(point light at " + full_text(light.position) + ") from the light itself",
-            {"sample_point_light",
-             Json::array({probe::point_light(light), probe::vec3(light.position)})},
+            probe::query(probe::sample_point_light_call, {light, light.position}),
             threw_judge("domain_error"),
             "sample_light(" + cpp(light) + ", " + cpp(light.position) + ")"};
 }
@@ -113,8 +112,7 @@ PublicCase directional_light_case(const DirectionalLight& light) {
     const WideLightSample expected = wide_directional_light(light);
     return {"sample_light(directional light towards " + full_text(light.direction) + ", colour " +
                 full_text(light.color) + ")",
-            {"sample_directional_light", Json::array({probe::directional_light(light)})},
-            sample_judge(expected),
+            probe::query(probe::sample_directional_light_call, {light}), sample_judge(expected),
             "sample_light(" + cpp(light) + ")"};
 }
 
@@ -124,26 +122,21 @@ PublicCase blinn_phong_case(const Material& m, const SurfacePoint& p, const Ligh
     const WideColor expected = wide_blinn_phong(m, p, l);
     return {"blinn_phong(" + material_text(m) + "; " + point_text(p) + "; " + light_sample_text(l) +
                 ")",
-            {"blinn_phong",
-             Json::array({probe::material(m), probe::surface_point(p), probe::light_sample(l)})},
-            near_channels(expected),
+            probe::query(probe::blinn_phong_call, {m, p, l}), near_channels(expected),
             "blinn_phong(" + cpp(m) + ", " + cpp(p) + ", " + cpp(l) + ")"};
 }
 
 PublicCase local_shading_case(const Material& m, const SurfacePoint& p,
                               const std::vector<LightSample>& lights) {
     const WideColor expected = wide_local_shading(m, p, lights);
-    Json samples = Json::array();
     std::string text;
     std::string code;
     for (const LightSample& l : lights) {
-        samples.push_back(probe::light_sample(l));
         text += "; " + light_sample_text(l);
         code += (code.empty() ? "" : ", ") + cpp(l);
     }
     return {"local_shading(" + material_text(m) + "; " + point_text(p) + text + ")",
-            {"local_shading", Json::array({probe::material(m), probe::surface_point(p), samples})},
-            near_channels(expected),
+            probe::query(probe::local_shading_call, {m, p, lights}), near_channels(expected),
             "local_shading(" + cpp(m) + ", " + cpp(p) + ", {" + code + "})"};
 }
 
@@ -179,8 +172,7 @@ PublicCase spawn_case(const SurfacePoint& p, const Vec3& direction, double dista
                       const RayOffset& offset) {
     return {"spawn_ray(" + point_text(p) + "; direction " + full_text(direction) + ", distance " +
                 full_text(distance) + ", " + offset_text(offset) + ")",
-            {"spawn_ray", Json::array({probe::surface_point(p), probe::vec3(direction),
-                                       probe::number(distance), probe::ray_offset(offset)})},
+            probe::query(probe::spawn_ray_call, {p, direction, distance, offset}),
             spawned_judge(p, direction, distance, offset),
             "spawn_ray(" + cpp(p) + ", " + cpp(direction) + ", " + cpp(distance) + ", " +
                 cpp(offset) + ")"};
@@ -189,8 +181,7 @@ PublicCase spawn_case(const SurfacePoint& p, const Vec3& direction, double dista
 PublicCase shadow_case(const SurfacePoint& p, const LightSample& l, const RayOffset& offset) {
     return {"shadow_ray(" + point_text(p) + "; " + light_sample_text(l) + ", " +
                 offset_text(offset) + ")",
-            {"shadow_ray", Json::array({probe::surface_point(p), probe::light_sample(l),
-                                        probe::ray_offset(offset)})},
+            probe::query(probe::shadow_ray_call, {p, l, offset}),
             spawned_judge(p, l.direction, l.distance, offset),
             "shadow_ray(" + cpp(p) + ", " + cpp(l) + ", " + cpp(offset) + ")"};
 }

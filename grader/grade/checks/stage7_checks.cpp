@@ -17,6 +17,7 @@
 #include <glm/geometric.hpp>
 
 #include "app/grade/recursion_judges.h"
+#include "app/probe/recursion_calls.h"
 #include "base/math/portable_random.h"
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/data_judged.h"
@@ -37,7 +38,7 @@ constexpr const char* kPublicName = "the mirror ray and the recursion over hand-
 
 PublicCase reflected_ray_case(const SurfacePoint& p, const RayOffset& offset) {
     return {"reflected_ray(" + point_text(p) + ", " + offset_text(offset) + ")",
-            {"reflected_ray", Json::array({probe::surface_point(p), probe::ray_offset(offset)})},
+            probe::query(probe::reflected_ray_call, {p, offset}),
             mirror_ray_judge(expected_reflection(p, offset)),
             "reflected_ray(" + cpp(p) + ", " + cpp(offset) + ")"};
 }
@@ -46,8 +47,7 @@ PublicCase reflected_ray_case(const SurfacePoint& p, const RayOffset& offset) {
 // large finite number standing in for it.
 PublicCase unbounded_case(const SurfacePoint& p, const RayOffset& offset) {
     return {"reflected_ray(" + point_text(p) + ", " + offset_text(offset) + "): unbounded",
-            {"reflected_ray", Json::array({probe::surface_point(p), probe::ray_offset(offset)})},
-            unbounded_ray_judge(),
+            probe::query(probe::reflected_ray_call, {p, offset}), unbounded_ray_judge(),
             "reflected_ray(" + cpp(p) + ", " + cpp(offset) + ").t_max"};
 }
 
@@ -66,17 +66,6 @@ std::string script_text(const Script& script) {
                     : "miss";
     }
     return "[" + text + "]";
-}
-
-Json script_json(const Script& script) {
-    Json steps = Json::array();
-    for (const std::optional<ShadedHit>& hit : script) {
-        steps.push_back(hit ? Json{{"point", probe::surface_point(hit->point)},
-                                   {"local", probe::vec3(hit->local)},
-                                   {"reflectance", probe::vec3(hit->reflectance)}}
-                            : Json(nullptr));
-    }
-    return steps;
 }
 
 // radiance over the script in a student's test: shade answers from the script in turn, then
@@ -106,10 +95,7 @@ PublicCase radiance_case(const Script& script, const Ray& eye, int bounces,
     const ExpectedRadiance e = expected_radiance(script, eye, bounces, offset);
     return {"radiance(eye " + ray_text(eye) + ", bounces " + std::to_string(bounces) + ", " +
                 offset_text(offset) + ") over the scene " + script_text(script),
-            {"radiance", Json{{"script", script_json(script)},
-                              {"ray", probe::ray(eye)},
-                              {"bounces", bounces},
-                              {"offset", probe::ray_offset(offset)}}},
+            probe::query(probe::radiance_call, {script, eye, bounces, offset}),
             radiance_judge(double_double(e.colour), double_double(e.colour_tolerance), e.rays),
             radiance_code(script, eye, bounces, offset)};
 }

@@ -20,7 +20,7 @@
 #include "app/grade/recursion_judges.h"
 #include "app/grade/refraction_judges.h"
 #include "app/grade/value_judges.h"
-#include "app/protocol/refraction_json.h"
+#include "app/probe/refraction_calls.h"
 #include "base/math/portable_random.h"
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/data_judged.h"
@@ -73,7 +73,7 @@ PublicCase refract_case(const Vec3& incident, const Vec3& normal, double eta) {
     const std::string args = cpp(incident) + ", " + cpp(normal) + ", " + cpp(eta);
     return {
         "refract(" + vectors_text({incident, normal}) + ", eta " + full_text(eta) + ")",
-        {"refract", Json::array({probe::vec3(incident), probe::vec3(normal), probe::number(eta)})},
+        probe::query(probe::refract_call, {incident, normal, eta}),
         refraction_judge(allowed(e.answer), double_double(e.direction), double_double(e.tolerance)),
         "refract(" + args + ")"};
 }
@@ -90,19 +90,18 @@ PublicCase refract_at(double degrees, const Vec3& normal, const Vec3& along, dou
 PublicCase fresnel_case(bool schlick, double cos_incident, double n1, double n2) {
     const ExpectedNumber e = schlick ? expected_fresnel_schlick(cos_incident, n1, n2)
                                      : expected_fresnel_exact(cos_incident, n1, n2);
-    const std::string name = schlick ? "fresnel_schlick" : "fresnel_exact";
-    return {
-        name + "(cos " + full_text(cos_incident) + ", n1 " + full_text(n1) + ", n2 " +
-            full_text(n2) + ")",
-        {name, Json::array({probe::number(cos_incident), probe::number(n1), probe::number(n2)})},
-        near_wide_number_judge(double_double(e.value), double_double(e.tolerance)),
-        name + "(" + cpp(cos_incident) + ", " + cpp(n1) + ", " + cpp(n2) + ")"};
+    const auto& call = schlick ? probe::fresnel_schlick_call : probe::fresnel_exact_call;
+    const std::string name = call.name;
+    return {name + "(cos " + full_text(cos_incident) + ", n1 " + full_text(n1) + ", n2 " +
+                full_text(n2) + ")",
+            probe::query(call, {cos_incident, n1, n2}),
+            near_wide_number_judge(double_double(e.value), double_double(e.tolerance)),
+            name + "(" + cpp(cos_incident) + ", " + cpp(n1) + ", " + cpp(n2) + ")"};
 }
 
 PublicCase current_index_case(const MediumStack& inside, double expected) {
     return {"current_index(" + media_text(inside) + ")",
-            {"current_index", Json::array({probe::media(inside)})},
-            near_number_judge(expected, 0.0),
+            probe::query(probe::current_index_call, {inside}), near_number_judge(expected, 0.0),
             "current_index(" + media_code(inside) + ")"};
 }
 
@@ -112,7 +111,7 @@ PublicCase after_crossing_case(const MediumStack& inside, const Medium& solid, b
         "Medium{" + std::to_string(solid.solid) + ", " + cpp(solid.index) + "}";
     return {"after_crossing(" + media_text(inside) + ", solid " + std::to_string(solid.solid) +
                 " (" + full_text(solid.index) + "), " + (entering ? "entering" : "leaving") + ")",
-            {"after_crossing", Json::array({probe::media(inside), probe::medium(solid), entering})},
+            probe::query(probe::after_crossing_call, {inside, solid, entering}),
             media_judge(expected),
             "after_crossing(" + media_code(inside) + ", " + solid_code + ", " +
                 (entering ? "true" : "false") + ")"};
@@ -123,8 +122,7 @@ PublicCase refracted_ray_case(const SurfacePoint& p, double n1, double n2,
     const ExpectedRefractedRay e = expected_refracted_ray(p, n1, n2, offset);
     return {"refracted_ray(" + point_text(p) + ", n1 " + full_text(n1) + ", n2 " + full_text(n2) +
                 ", " + offset_text(offset) + ")",
-            {"refracted_ray", Json::array({probe::surface_point(p), probe::number(n1),
-                                           probe::number(n2), probe::ray_offset(offset)})},
+            probe::query(probe::refracted_ray_call, {p, n1, n2, offset}),
             refracted_ray_judge(allowed(e.answer), e.ray),
             "refracted_ray(" + cpp(p) + ", " + cpp(n1) + ", " + cpp(n2) + ", " + cpp(offset) + ")"};
 }

@@ -10,7 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "app/grade/refraction_judges.h"
-#include "app/protocol/refraction_json.h"
+#include "app/probe/refraction_calls.h"
 #include "grader/grade/checks/case_text.h"
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/oracle/refraction_oracle.h"
@@ -97,19 +97,12 @@ PublicCase radiance_case(const HitMaker& make, const Ray& eye, int bounces,
                          const MediumStack& inside, bool schlick, const RayOffset& offset) {
     const ExpectedRefractionRadiance e =
         expected_radiance_with_refraction(make, eye, bounces, inside, schlick, offset);
-    Json scene = Json::array();
-    for (const KeyedHit& entry : e.scene)
-        scene.push_back({{"key", probe::ray(entry.key)}, {"hit", probe::medium_hit(entry.hit)}});
     return {"radiance_with_refraction(eye " + ray_text(eye) + ", bounces " +
                 std::to_string(bounces) + ", inside " + media_text(inside) + ", " +
                 (schlick ? "Schlick" : "exact Fresnel") + ", " + offset_text(offset) +
                 ") over the scene " + scene_text(e.scene),
-            {"radiance_with_refraction", Json{{"scene", std::move(scene)},
-                                              {"ray", probe::ray(eye)},
-                                              {"bounces", bounces},
-                                              {"inside", probe::media(inside)},
-                                              {"schlick", schlick},
-                                              {"offset", probe::ray_offset(offset)}}},
+            probe::query(probe::radiance_with_refraction_call,
+                         {e.scene, eye, bounces, inside, schlick, offset}),
             refraction_radiance_judge(double_double(e.colour), double_double(e.colour_tolerance),
                                       e.rays),
             radiance_code(e.scene, eye, bounces, inside, schlick, offset)};

@@ -1,0 +1,121 @@
+// The typed calls (app/probe/probe_call.h): a query is the JSON the protocol has always carried
+// (grader/probe/README.md), the probe's table answers it with this build's stage code, and a
+// question of the wrong shape is refused as a thrown error, never read as something else.
+
+#include "base/testing/catch.h"
+
+#include <cmath>
+
+#include "app/probe/call_reply.h"
+#include "app/probe/ray_calls.h"
+#include "app/probe/recursion_calls.h"
+#include "app/probe/refraction_calls.h"
+#include "app/probe/shading_calls.h"
+#include "app/probe/transform_calls.h"
+#include "app/probe/vector_calls.h"
+
+namespace raystep {
+namespace {
+
+using probe::Json;
+
+grade::ProbeAnswer answered(const grade::ProbeQuery& query) {
+    static const probe::CallTable table = probe::stage_calls();
+    return probe::answer_in_process(table, query);
+}
+
+TEST_CASE(
+    "probe call: a function's question is its arguments in order, and its answer its result") {
+    const grade::ProbeQuery query = probe::query(probe::dot_call, {{1, 2, 3}, {4, -5, 6}});
+    CHECK(query.call == "dot");
+    CHECK(query.args == Json::parse("[[1.0,2.0,3.0],[4.0,-5.0,6.0]]"));
+    const grade::ProbeAnswer answer = answered(query);
+    REQUIRE(answer.kind == grade::ProbeAnswer::Kind::result);
+    CHECK(answer.value == Json(12.0));
+}
+
+TEST_CASE("probe call: non-finite numbers cross as the protocol's strings, both ways") {
+    const grade::ProbeQuery query =
+        probe::query(probe::normalize_call, {{HUGE_VAL, 0, std::nan("")}});
+    CHECK(query.args == Json::parse(R"([["inf",0.0,"nan"]])"));
+    const grade::ProbeAnswer answer = answered(query);
+    REQUIRE(answer.kind == grade::ProbeAnswer::Kind::threw);
+    CHECK(answer.exception_type == "domain_error");
+}
+
+TEST_CASE("probe call: a struct's question is an object of its named fields") {
+    const Ray ray{{1, 2, 3}, {0, 0, -1}, 0.0, 10.0};
+    const grade::ProbeQuery query = probe::query(probe::ray_at_call, {ray, 2.5});
+    CHECK(query.call == "ray_at");
+    CHECK(query.args.at("ray") == probe::ray(ray));
+    CHECK(query.args.at("t") == Json(2.5));
+    const grade::ProbeAnswer answer = answered(query);
+    REQUIRE(answer.kind == grade::ProbeAnswer::Kind::result);
+    CHECK(probe::vec3_from(answer.value) == Vec3(1, 2, 0.5));
+}
+
+TEST_CASE("probe call: the answer of a struct is an object, a list an array") {
+    probe::RadianceQuestion question;
+    question.ray = {{0, 1, 0}, {1, -1, 0}, 0.0, HUGE_VAL};
+    question.bounces = 2;
+    question.offset = {OffsetRule::along_ray, 1e-4};
+    const grade::ProbeAnswer answer = answered(probe::query(probe::radiance_call, question));
+    REQUIRE(answer.kind == grade::ProbeAnswer::Kind::result);
+    CHECK(answer.value.at("colour") == probe::vec3({0, 0, 0}));
+    REQUIRE(answer.value.at("rays").size() == 1);  // the eye ray, which the empty script misses
+    CHECK(probe::ray_from(answer.value.at("rays")[0]).direction == question.ray.direction);
+}
+
+TEST_CASE("probe call: the ops of compose are the whole question, not one argument") {
+    const TransformOp op{TransformOp::Kind::translate, {1, 2, 3}, 0.0};
+    const grade::ProbeQuery query = probe::query(probe::compose_call, {op});
+    CHECK(query.args == Json::array({probe::transform_op(op)}));
+    const grade::ProbeAnswer answer = answered(query);
+    REQUIRE(answer.kind == grade::ProbeAnswer::Kind::result);
+    CHECK(probe::transform_from(answer.value).matrix[3] == glm::dvec4(1, 2, 3, 1));
+}
+
+TEST_CASE("probe call: a question of the wrong shape is refused, not read another way") {
+    // One vector short, one too many, a number for a vector, a missing field, a fractional
+    // pixel index: each a thrown error that names no result.
+    const std::vector<grade::ProbeQuery> wrong = {
+        {"dot", Json::parse("[[1.0,2.0,3.0]]")},
+        {"dot", Json::parse("[[1.0,2.0,3.0],[1.0,2.0,3.0],[1.0,2.0,3.0]]")},
+        {"length", Json::parse("[4.0]")},
+        {"ray_at", Json{{"t", 1.0}}},
+        {"perspective_rays", Json{{"lookfrom", probe::vec3({0, 0, 0})},
+                                  {"lookat", probe::vec3({0, 0, -1})},
+                                  {"up", probe::vec3({0, 1, 0})},
+                                  {"fovy", 45.0},
+                                  {"width", 4},
+                                  {"height", 4},
+                                  {"pixels", Json::parse("[[0.5,1]]")}}},
+    };
+    for (const grade::ProbeQuery& query : wrong) {
+        INFO(query.call << " " << query.args.dump());
+        CHECK(answered(query).kind == grade::ProbeAnswer::Kind::threw);
+    }
+}
+
+TEST_CASE("probe call: every stage's typed call is in the probe's table once, by its own name") {
+    const probe::CallTable table = probe::stage_calls();
+    std::vector<std::string> names;
+    const auto collect = [&](const auto& calls) {
+        std::apply([&](const auto&... call) { (names.push_back(call.name), ...); }, calls);
+    };
+    collect(probe::vector_calls);
+    collect(probe::ray_calls);
+    collect(probe::transform_calls);
+    collect(probe::shading_calls);
+    collect(probe::recursion_calls);
+    collect(probe::refraction_calls);
+    CHECK(names.size() == 35);  // stages 1, 2, 5, 6, 7 and 9: 8 + 3 + 8 + 7 + 2 + 7
+    for (const std::string& name : names) {
+        INFO(name);
+        CHECK(table.count(name) == 1);
+        CHECK(std::count(names.begin(), names.end(), name) == 1);
+    }
+}
+
+}  // namespace
+}  // namespace raystep
