@@ -5,7 +5,6 @@
 #include <string>
 
 #include "app/protocol/probe_json.h"
-#include "stages/4_accel/bvh.h"
 
 namespace raystep::probe {
 
@@ -17,16 +16,10 @@ namespace raystep::probe {
 using Call = std::function<Json(const Json& arguments)>;
 using CallTable = std::map<std::string, Call>;
 
-void add_intersect_calls(CallTable& table);  ///< stage 3
-void add_accel_calls(CallTable& table);      ///< stage 4: a structure's answers, no work counted
-void add_sampling_calls(CallTable& table);   ///< stage 8
-void add_render_calls(CallTable& table);     ///< whole images, through every stage a view needs
+void add_sampling_calls(CallTable& table);  ///< stage 8
 
-/// The BVH split a stage-4 query names, "sah" or "median"; throws std::invalid_argument for
-/// anything else.
-BvhSplit bvh_split_from(const Json& j);
-
-/// Every call above: what `raystep grade` answers a public case with. Stage 4's structure as data
+/// Every stage's calls (app/probe/<stage>_calls.h): what `raystep grade` answers a public case
+/// with. Stage 4's structure as data
 /// and its timed workloads are for the grader's checks alone, which a release does not run, so
 /// only the grader's probe has them (grader/probe/accel_work_calls.h).
 CallTable stage_calls();

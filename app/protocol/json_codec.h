@@ -1,10 +1,12 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -59,6 +61,24 @@ struct JsonCodec<int> {
 };
 
 template <>
+struct JsonCodec<std::uint64_t> {
+    static Json write(std::uint64_t n) { return Json(n); }
+    static std::uint64_t read(const Json& j) {
+        if (!j.is_number_unsigned()) throw std::invalid_argument("expected a whole number");
+        return j.get<std::uint64_t>();
+    }
+};
+
+template <>
+struct JsonCodec<std::string> {
+    static Json write(const std::string& text) { return Json(text); }
+    static std::string read(const Json& j) {
+        if (!j.is_string()) throw std::invalid_argument("expected a string");
+        return j.get<std::string>();
+    }
+};
+
+template <>
 struct JsonCodec<bool> {
     static Json write(bool b) { return Json(b); }
     static bool read(const Json& j) {
@@ -76,7 +96,18 @@ struct JsonCodec<Ray> : FunctionCodec<Ray, ray, ray_from> {};
 template <>
 struct JsonCodec<std::optional<Hit>> : FunctionCodec<std::optional<Hit>, hit, hit_from> {};
 template <>
+struct JsonCodec<std::optional<PrimitiveHit>>
+    : FunctionCodec<std::optional<PrimitiveHit>, primitive_hit, primitive_hit_from> {};
+template <>
 struct JsonCodec<Sphere> : FunctionCodec<Sphere, sphere, sphere_from> {};
+template <>
+struct JsonCodec<PrimitiveList>
+    : FunctionCodec<PrimitiveList, primitive_list, primitive_list_from> {};
+/// A stage-3 case as the probe gets it: the question only, never the expectations.
+template <>
+struct JsonCodec<RayCase> : FunctionCodec<RayCase, case_question, case_question_from> {};
+template <>
+struct JsonCodec<CaseAnswer> : FunctionCodec<CaseAnswer, case_answer, case_answer_from> {};
 template <>
 struct JsonCodec<Transform> : FunctionCodec<Transform, transform, transform_from> {};
 template <>
@@ -147,33 +178,46 @@ struct JsonCodec<std::tuple<T...>> {
     }
 };
 
-/// A struct with JsonFields: an object of its fields.
+template <class T>
+struct IsOptional : std::false_type {};
+template <class T>
+struct IsOptional<std::optional<T>> : std::true_type {};
+
+/// A struct with JsonFields: an object of its fields. A std::optional field is left out where it
+/// holds nothing, and holds nothing where it is left out; every other field must be there.
 template <class T, class = decltype(JsonFields<T>::list)>
 struct FieldsCodec {
     static Json write(const T& value) {
         Json object = Json::object();
-        std::apply(
-            [&](const auto&... f) {
-                ((object[f.name] = JsonCodec<member_type<decltype(f)>>::write(value.*f.member)),
-                 ...);
-            },
-            JsonFields<T>::list);
+        std::apply([&](const auto&... f) { (write_field(object, value.*f.member, f.name), ...); },
+                   JsonFields<T>::list);
         return object;
     }
     static T read(const Json& j) {
         T value{};
-        std::apply(
-            [&](const auto&... f) {
-                ((value.*f.member = JsonCodec<member_type<decltype(f)>>::read(field(j, f.name))),
-                 ...);
-            },
-            JsonFields<T>::list);
+        std::apply([&](const auto&... f) { (read_field(j, f.name, value.*f.member), ...); },
+                   JsonFields<T>::list);
         return value;
     }
 
   private:
-    template <class F>
-    using member_type = std::decay_t<decltype(std::declval<T&>().*(std::declval<F>().member))>;
+    template <class Member>
+    static void write_field(Json& object, const Member& member, const char* name) {
+        if constexpr (IsOptional<Member>::value) {
+            if (member) object[name] = JsonCodec<typename Member::value_type>::write(*member);
+        } else {
+            object[name] = JsonCodec<Member>::write(member);
+        }
+    }
+    template <class Member>
+    static void read_field(const Json& j, const char* name, Member& member) {
+        if constexpr (IsOptional<Member>::value) {
+            if (j.is_object() && j.contains(name))
+                member = JsonCodec<typename Member::value_type>::read(j.at(name));
+        } else {
+            member = JsonCodec<Member>::read(field(j, name));
+        }
+    }
 };
 
 template <>

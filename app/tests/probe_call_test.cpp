@@ -6,10 +6,13 @@
 
 #include <cmath>
 
+#include "app/probe/accel_calls.h"
 #include "app/probe/call_reply.h"
+#include "app/probe/intersect_calls.h"
 #include "app/probe/ray_calls.h"
 #include "app/probe/recursion_calls.h"
 #include "app/probe/refraction_calls.h"
+#include "app/probe/render_calls.h"
 #include "app/probe/shading_calls.h"
 #include "app/probe/transform_calls.h"
 #include "app/probe/vector_calls.h"
@@ -75,13 +78,50 @@ TEST_CASE("probe call: the ops of compose are the whole question, not one argume
     CHECK(probe::transform_from(answer.value).matrix[3] == glm::dvec4(1, 2, 3, 1));
 }
 
+TEST_CASE("probe call: a structure answers each ray with its hit, or with whether it is blocked") {
+    PrimitiveList primitives;
+    primitives.spheres.push_back({{0, 0, -5}, 1});
+    probe::StructureQuestion question{
+        primitives,
+        {{{0, 0, 0}, {0, 0, -1}, 0.0, HUGE_VAL}, {{0, 0, 0}, {0, 1, 0}, 0.0, HUGE_VAL}},
+        "sah",
+        std::nullopt};
+    const grade::ProbeAnswer hits = answered(probe::query(probe::bvh_call, question));
+    REQUIRE(hits.kind == grade::ProbeAnswer::Kind::result);
+    REQUIRE(hits.value.size() == 2);
+    CHECK(probe::primitive_hit_from(hits.value[0])->hit.t == 4.0);
+    CHECK(hits.value[1].is_null());
+    question.occluded = true;
+    CHECK(answered(probe::query(probe::bvh_call, question)).value == Json::array({true, false}));
+    question.split.reset();  // a BVH's split must be named; a grid has none
+    CHECK(answered(probe::query(probe::bvh_call, question)).kind ==
+          grade::ProbeAnswer::Kind::threw);
+    CHECK(answered(probe::query(probe::grid_call, question)).value == Json::array({true, false}));
+}
+
+TEST_CASE("probe call: an optional field is left out where it holds nothing, and read as absent") {
+    probe::RenderQuestion question{"scenes/a.test", "depth", 64, std::nullopt, 0.5, std::nullopt};
+    const grade::ProbeQuery query = probe::query(probe::render_call, question);
+    CHECK(query.args == Json{{"scene", "scenes/a.test"},
+                             {"view", "depth"},
+                             {"max_width", 64},
+                             {"camera_t_min", 0.5}});
+    const probe::RenderQuestion read = probe::JsonCodec<probe::RenderQuestion>::read(query.args);
+    CHECK_FALSE(read.seed.has_value());
+    CHECK(read.camera_t_min == 0.5);
+    CHECK_FALSE(read.camera_t_max.has_value());
+    question.seed = 7;
+    CHECK(probe::query(probe::render_call, question).args.at("seed") == Json(std::uint64_t(7)));
+}
+
 TEST_CASE("probe call: a question of the wrong shape is refused, not read another way") {
-    // One vector short, one too many, a number for a vector, a missing field, a fractional
-    // pixel index: each a thrown error that names no result.
+    // One vector short, one too many, a number for a vector, a negative seed, a missing field,
+    // a fractional pixel index: each a thrown error that names no result.
     const std::vector<grade::ProbeQuery> wrong = {
         {"dot", Json::parse("[[1.0,2.0,3.0]]")},
         {"dot", Json::parse("[[1.0,2.0,3.0],[1.0,2.0,3.0],[1.0,2.0,3.0]]")},
         {"length", Json::parse("[4.0]")},
+        {"render", Json{{"scene", "x.test"}, {"view", "depth"}, {"max_width", 4}, {"seed", -1}}},
         {"ray_at", Json{{"t", 1.0}}},
         {"perspective_rays", Json{{"lookfrom", probe::vec3({0, 0, 0})},
                                   {"lookat", probe::vec3({0, 0, -1})},
@@ -97,7 +137,7 @@ TEST_CASE("probe call: a question of the wrong shape is refused, not read anothe
     }
 }
 
-TEST_CASE("probe call: every stage's typed call is in the probe's table once, by its own name") {
+TEST_CASE("probe call: every typed call is in the probe's table once, by its own name") {
     const probe::CallTable table = probe::stage_calls();
     std::vector<std::string> names;
     const auto collect = [&](const auto& calls) {
@@ -105,11 +145,15 @@ TEST_CASE("probe call: every stage's typed call is in the probe's table once, by
     };
     collect(probe::vector_calls);
     collect(probe::ray_calls);
+    collect(probe::intersect_calls);
+    collect(probe::accel_calls);
     collect(probe::transform_calls);
     collect(probe::shading_calls);
     collect(probe::recursion_calls);
     collect(probe::refraction_calls);
-    CHECK(names.size() == 35);  // stages 1, 2, 5, 6, 7 and 9: 8 + 3 + 8 + 7 + 2 + 7
+    names.push_back(probe::render_call.name);
+    // Stages 1 to 7 and 9 (8 + 3 + 2 + 4 + 8 + 7 + 2 + 7), and render
+    CHECK(names.size() == 42);
     for (const std::string& name : names) {
         INFO(name);
         CHECK(table.count(name) == 1);

@@ -22,7 +22,7 @@ namespace {
 
 CallTable all_calls() {
     CallTable table = stage_calls();
-    add_accel_work_calls(table);
+    add_calls(table, accel_work_calls);
     return table;
 }
 

@@ -51,14 +51,14 @@ std::vector<CheckDefinition> stage_case_checks(const StageCases& cases) {
                    cases.oracle_cases)};
 }
 
-std::vector<WorkloadTime> timed_workloads(const std::vector<WorkloadRun>& runs,
-                                          const std::string& call, int repeat, int most_rounds) {
+std::vector<WorkloadTime> timed_workloads(const std::vector<WorkloadRun>& runs, int repeat,
+                                          int most_rounds) {
     std::vector<WorkloadTime> timed(runs.size());
     // Each program's query made once, only its pass count set for a run: the arguments may hold
     // a mesh, and copying them for every run cost more than the runs.
     std::vector<std::vector<ProbeQuery>> queries;
     for (const WorkloadRun& run : runs)
-        queries.push_back({{call, run.args}});
+        queries.push_back({run.query});
     const auto run_once = [&](std::size_t p, int passes) {
         queries[p].front().args["repeat"] = passes;
         ProbeRunLimits limits;
@@ -107,9 +107,9 @@ std::vector<WorkloadTime> timed_workloads(const std::vector<WorkloadRun>& runs,
     return timed;
 }
 
-WorkloadTime timed_workload(const std::filesystem::path& program, const std::string& call,
-                            const probe::Json& args, int repeat) {
-    return timed_workloads({{program, args}}, call, repeat).front();
+WorkloadTime timed_workload(const std::filesystem::path& program, const ProbeQuery& query,
+                            int repeat) {
+    return timed_workloads({{program, query}}, repeat).front();
 }
 
 void add_seeded_cases(std::vector<ProbeCase>& cases, std::uint64_t seed, int count,

@@ -57,14 +57,15 @@ struct WorkloadTime {
 };
 
 /// Asks `program` the `call` with `args` and "repeat" set to `repeat` passes, and to 0.
-WorkloadTime timed_workload(const std::filesystem::path& program, const std::string& call,
-                            const probe::Json& args, int repeat);
+WorkloadTime timed_workload(const std::filesystem::path& program, const ProbeQuery& query,
+                            int repeat);
 
-/// One program of a timed comparison, and the arguments its call gets (programs compared on the
-/// same work may still be asked for it differently, as stage 3 asks for two triangle tests).
+/// One program of a timed comparison, and its query of a workload call, whose `repeat` each run
+/// sets (programs compared on the same work may still be asked for it differently, as stage 3
+/// asks for two triangle tests).
 struct WorkloadRun {
     std::filesystem::path program;
-    probe::Json args;
+    ProbeQuery query;
     int repeat = -1;  ///< the passes this program runs; -1 for the call's `repeat`
 };
 
@@ -74,8 +75,8 @@ struct WorkloadRun {
 /// least; then another, up to `most_rounds` (kMostTimedRounds, 5, by default), until two rounds in
 /// a row give every program's
 /// time against the first's within kRoundAgreement of each other (judging.cpp says why).
-std::vector<WorkloadTime> timed_workloads(const std::vector<WorkloadRun>& runs,
-                                          const std::string& call, int repeat, int most_rounds = 5);
+std::vector<WorkloadTime> timed_workloads(const std::vector<WorkloadRun>& runs, int repeat,
+                                          int most_rounds = 5);
 
 /// Appends `count` generated cases, the k-th (k from 0) made by `make(random, k)` from a
 /// generator of its own, PortableRandom(seed, i) with i the index the case gets in `cases`, so

@@ -14,6 +14,7 @@
 #include "app/compare/noisy_render_comparison.h"
 #include "app/compare/render_rule.h"
 #include "app/grade/value_text.h"
+#include "app/probe/render_calls.h"
 #include "app/protocol/image_json.h"
 #include "base/image/image_io.h"
 #include "base/scene/scene_files.h"
@@ -129,13 +130,11 @@ CheckMeasure measure_noisy_render(const GradingContext& context, const BuiltProb
     std::vector<ProbeCase> cases;
     for (int k = 0; k < kStudentRenders; ++k) {
         const std::uint64_t seed = (statistics_seed() << 8) + static_cast<std::uint64_t>(k);
-        probe::Json args = {{"scene", path.string()},
-                            {"view", std::string(view_name(check.view))},
-                            {"max_width", kRenderCheckWidth},
-                            {"seed", seed}};
+        const probe::RenderQuestion question{
+            path.string(), std::string(view_name(check.view)), kRenderCheckWidth, seed, {}, {}};
         cases.push_back({check.scene + ", " + std::string(view_name(check.view)) + " view, seed " +
                              std::to_string(seed),
-                         {"render", args},
+                         probe::query(probe::render_call, question),
                          [&student, k](const ProbeAnswer& answer) {
                              if (answer.kind != ProbeAnswer::Kind::result)
                                  return wrong("an image", "");

@@ -9,6 +9,7 @@
 
 #include "app/compare/render_rule.h"
 #include "app/grade/render_judge.h"
+#include "app/probe/render_calls.h"
 #include "app/protocol/image_json.h"
 #include "base/image/image_io.h"
 #include "base/scene/scene_loader.h"
@@ -73,14 +74,13 @@ Counterexample pixel_counterexample(const GradingContext& context, const std::st
 
 // The probe's query for a render of the scene file at `scene_path`.
 ProbeQuery render_query(const std::string& scene_path, View view, const CameraClip& clip) {
-    probe::Json args = {{"scene", scene_path},
-                        {"view", std::string(view_name(view))},
-                        {"max_width", kRenderCheckWidth}};
+    probe::RenderQuestion question{
+        scene_path, std::string(view_name(view)), kRenderCheckWidth, {}, {}, {}};
     if (!clip.name.empty()) {
-        args["camera_t_min"] = probe::number(clip.t_min);
-        args["camera_t_max"] = probe::number(clip.t_max);
+        question.camera_t_min = clip.t_min;
+        question.camera_t_max = clip.t_max;
     }
-    return {"render", args};
+    return probe::query(probe::render_call, question);
 }
 
 std::string render_input(const std::string& scene, View view, const CameraClip& clip) {

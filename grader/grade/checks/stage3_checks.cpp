@@ -17,6 +17,7 @@
 #include "app/check/case_file.h"
 #include "app/check/case_scoring.h"
 #include "app/grade/stage3_case_checks.h"
+#include "app/probe/intersect_calls.h"
 #include "grader/families/stage3_contract_cases.h"
 #include "grader/families/stage3_families.h"
 #include "grader/grade/checks/judging.h"
@@ -78,9 +79,7 @@ std::string student_case_command(const Stage3Method& method, const CaseFamily& f
 
 ProbeCase method_case(const Stage3Method& method, const CaseFamily& family, const RayCase& ray_case,
                       std::size_t& leaks) {
-    ProbeQuery query{
-        "stage3_cases",
-        {{"method", method.name}, {"cases", probe::Json::array({probe::case_question(ray_case)})}}};
+    ProbeQuery query = probe::query(probe::stage3_cases_call, {method.name, {ray_case}});
     return {method.name + " on " + family.name + " case " + std::to_string(ray_case.index) + "\n" +
                 case_text(ray_case),
             std::move(query),

@@ -13,6 +13,7 @@
 
 #include "app/check/case_scoring.h"
 #include "app/check/check_report.h"
+#include "app/probe/intersect_calls.h"
 #include "grader/families/stage3_families.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage_checks.h"
@@ -45,18 +46,17 @@ const CaseFamily& decided_shared_edges() {
     return family;
 }
 
-Json timed_pairs(const CaseFamily& family) {
-    Json rays = Json::array();
-    PrimitiveList triangles;
+probe::TriangleWorkloadQuestion timed_pairs(const CaseFamily& family) {
+    probe::TriangleWorkloadQuestion pairs;
     for (const RayCase& ray_case : family.cases) {
         for (const CasePrimitive& primitive : ray_case.primitives) {
             const auto* triangle = std::get_if<Triangle>(&primitive.shape);
-            if (!triangle || triangles.triangles.size() == kTimedPairs) continue;
-            rays.push_back(probe::ray(ray_case.ray));
-            triangles.triangles.push_back(*triangle);
+            if (!triangle || pairs.primitives.triangles.size() == kTimedPairs) continue;
+            pairs.rays.push_back(ray_case.ray);
+            pairs.primitives.triangles.push_back(*triangle);
         }
     }
-    return {{"rays", rays}, {"primitives", probe::primitive_list(triangles)}};
+    return pairs;
 }
 
 CheckMeasure measure_speed_error(const GradingContext& context, const BuiltProbe& probe) {
@@ -66,11 +66,8 @@ CheckMeasure measure_speed_error(const GradingContext& context, const BuiltProbe
     Stage3Method method{"intersect_triangle", Stage3Method::Kind::triangle};
 
     // The errors, on every case
-    Json questions = Json::array();
-    for (const RayCase& c : family.cases)
-        questions.push_back(probe::case_question(c));
     const ProbeSession session = ask_probe(
-        *probe.program, {{"stage3_cases", {{"method", method.name}, {"cases", questions}}}}, {});
+        *probe.program, {probe::query(probe::stage3_cases_call, {method.name, family.cases})}, {});
     const ProbeAnswer& answer = session.answers[0];
     if (answer.kind == ProbeAnswer::Kind::not_implemented) {
         measure.outcome = Outcome::not_implemented;
@@ -93,14 +90,14 @@ CheckMeasure measure_speed_error(const GradingContext& context, const BuiltProbe
     }
 
     // The speed, against the reference's Cramer on the same pairs
-    const Json pairs = timed_pairs(family);
-    Json student_args = pairs;
-    student_args["method"] = "intersect_triangle";
-    Json reference_args = pairs;
-    reference_args["method"] = "intersect_triangle_cramer";
-    const std::vector<WorkloadTime> timed =
-        timed_workloads({{*probe.program, student_args}, {context.reference_probe, reference_args}},
-                        "triangle_workload", kPasses);
+    probe::TriangleWorkloadQuestion student_pairs = timed_pairs(family);
+    student_pairs.method = "intersect_triangle";
+    probe::TriangleWorkloadQuestion reference_pairs = student_pairs;
+    reference_pairs.method = "intersect_triangle_cramer";
+    const std::vector<WorkloadTime> timed = timed_workloads(
+        {{*probe.program, probe::query(probe::triangle_workload_call, student_pairs)},
+         {context.reference_probe, probe::query(probe::triangle_workload_call, reference_pairs)}},
+        kPasses);
     const WorkloadTime& student = timed[0];
     const WorkloadTime& reference = timed[1];
     if (!student.answered || !reference.answered) {

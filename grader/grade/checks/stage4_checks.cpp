@@ -21,14 +21,13 @@
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/stage4_cases.h"
 #include "grader/grade/checks/stage_checks.h"
+#include "grader/probe/accel_work_calls.h"
 #include "stages/3_intersect/intersect.h"
 #include "stages/4_accel/traversal.h"
 
 namespace raystep::grade {
 
 namespace {
-
-using probe::Json;
 
 struct AccelScene {
     std::string name;
@@ -427,20 +426,14 @@ CheckMeasure measure_structure(const GradingContext& context, const BuiltProbe& 
     const std::vector<AccelScene> all = scenes();
     std::vector<CaseBatch> batches;
     for (const AccelScene& scene : all) {
-        const auto query = [&scene, call, split, occluded](const Json& rays) {
-            Json args = {{"primitives", probe::primitive_list(scene.primitives)},
-                         {"rays", rays},
-                         {"occluded", occluded}};
-            if (!split.empty()) args["split"] = split;
-            return ProbeQuery{call, args};
+        const auto query = [&scene, call, split, occluded](std::vector<Ray> rays) {
+            const probe::StructureQuestion question{
+                scene.primitives, std::move(rays),
+                split.empty() ? std::nullopt : std::optional<std::string>(split), occluded};
+            return probe::query(call == "bvh" ? probe::bvh_call : probe::grid_call, question);
         };
-        Json ray_list = Json::array();
-        for (const Ray& r : scene.rays)
-            ray_list.push_back(probe::ray(r));
-        CaseBatch batch{query(ray_list),
-                        [&scene, query](std::size_t k) {
-                            return query(Json::array({probe::ray(scene.rays[k])}));
-                        },
+        CaseBatch batch{query(scene.rays),
+                        [&scene, query](std::size_t k) { return query({scene.rays[k]}); },
                         {}};
         const std::string code = scene_code(scene);
         for (std::size_t k = 0; k < scene.rays.size(); ++k) {
@@ -505,31 +498,18 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
     constexpr int kBruteForceRays = 1000;  // each costs a test per primitive: a few suffice
     // Each ray also as a shadow ray cut short before the scene (every origin lies 3 from the
     // middle, the scene within 1.8 of it): the walk's occluded is timed too
-    Json rays = Json::array();
-    Json shadow_rays = Json::array();
-    Json brute_force_rays = Json::array();
-    Json brute_force_shadow_rays = Json::array();
+    probe::WorkloadQuestion walk{scene.primitives, "sah", {}, {}, {0x5BEED, 1e-3, 1e-4}, 0};
     for (int k = 0; k < kRays; ++k) {
         const Vec3 origin = 3.0 * random.unit_vector();
         Ray ray{origin, random.point(0.8) - origin};
-        rays.push_back(probe::ray(ray));
+        walk.rays.push_back(ray);
         ray.t_max = 0.25;
-        shadow_rays.push_back(probe::ray(ray));
-        if (k < kBruteForceRays) {
-            brute_force_rays.push_back(rays.back());
-            brute_force_shadow_rays.push_back(shadow_rays.back());
-        }
+        walk.shadow_rays.push_back(ray);
     }
-    const Json primitives = probe::primitive_list(scene.primitives);
-    const Json jitter = {{"seed", 0x5BEED}, {"origin", 1e-3}, {"direction", 1e-4}};
-    const Json args = {{"primitives", primitives},
-                       {"rays", rays},
-                       {"shadow_rays", shadow_rays},
-                       {"split", "sah"},
-                       {"jitter", jitter}};
-    const std::string call = structure + "_workload";
+    const ProbeQuery query = probe::query(
+        structure == "bvh" ? probe::bvh_workload_call : probe::grid_workload_call, walk);
     const std::vector<WorkloadTime> timed =
-        timed_workloads({{context.reference_probe, args}, {*probe.program, args}}, call, kPasses);
+        timed_workloads({{context.reference_probe, query}, {*probe.program, query}}, kPasses);
     const WorkloadTime& reference = timed[0];
     const WorkloadTime& student = timed[1];
     if (!student.not_implemented.empty()) {
@@ -565,12 +545,13 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
         measure.counterexamples = work.counterexamples;
         return measure;
     }
-    const WorkloadTime brute_force = timed_workload(context.reference_probe, "brute_force_workload",
-                                                    {{"primitives", primitives},
-                                                     {"rays", brute_force_rays},
-                                                     {"shadow_rays", brute_force_shadow_rays},
-                                                     {"jitter", jitter}},
-                                                    1);
+    probe::WorkloadQuestion brute_force_walk = walk;
+    brute_force_walk.split.reset();
+    brute_force_walk.rays.resize(kBruteForceRays);
+    brute_force_walk.shadow_rays.resize(kBruteForceRays);
+    const WorkloadTime brute_force =
+        timed_workload(context.reference_probe,
+                       probe::query(probe::brute_force_workload_call, brute_force_walk), 1);
     const double ratio = reference.seconds / student.seconds;
     const double per_ray = student.seconds / (double(kPasses) * kRays);
     const double brute_force_ratio =

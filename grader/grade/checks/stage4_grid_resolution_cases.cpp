@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "app/grade/accel_judges.h"
+#include "app/probe/accel_calls.h"
 #include "base/math/portable_random.h"
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
@@ -130,8 +131,7 @@ std::vector<PublicCase> grid_resolution_cases() {
     for (const ResolutionCase& c : all) {
         cases.push_back({c.what + ": box " + full_text(c.min) + " to " + full_text(c.max) +
                              ", n = " + std::to_string(c.n),
-                         {"grid_resolution",
-                          {{"min", probe::vec3(c.min)}, {"max", probe::vec3(c.max)}, {"n", c.n}}},
+                         probe::query(probe::grid_resolution_call, {c.min, c.max, c.n}),
                          grid_cells_judge(handout_rule(c).cells),
                          "grid_resolution(Aabb{Vec3" + cpp(c.min) + ", Vec3" + cpp(c.max) + "}, " +
                              std::to_string(c.n) + ")"});

@@ -21,6 +21,7 @@
 #include <cmath>
 
 #include "app/grade/accel_judges.h"
+#include "app/probe/accel_calls.h"
 #include "base/math/portable_random.h"
 #include "grader/grade/checks/cpp_literal.h"
 #include "grader/grade/checks/judging.h"
@@ -325,10 +326,7 @@ std::vector<PublicCase> slab_cases() {
     for (const SlabCase& c : all) {
         cases.push_back({c.what + ": " + ray_text(c.ray) + ", box " + full_text(c.min) + " to " +
                              full_text(c.max),
-                         {"intersect_aabb",
-                          {{"ray", probe::ray(c.ray)},
-                           {"min", probe::vec3(c.min)},
-                           {"max", probe::vec3(c.max)}}},
+                         probe::query(probe::intersect_aabb_call, {c.ray, c.min, c.max}),
                          slab_interval_judge(exact_interval(c)),
                          "intersect_aabb(" + cpp(c.ray) + ", 1.0 / Vec3" + cpp(c.ray.direction) +
                              ", Aabb{" + cpp(c.min) + ", " + cpp(c.max) + "})"});

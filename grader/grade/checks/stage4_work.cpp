@@ -42,6 +42,7 @@
 #include "grader/grade/checks/stage4_cases.h"
 #include "grader/grade/checks/stage4_structure.h"
 #include "grader/grade/checks/stage4_work_scenes.h"
+#include "grader/probe/accel_work_calls.h"
 #include "grader/probe/timed_walk.h"
 
 namespace raystep::grade {
@@ -64,13 +65,6 @@ constexpr double kTimedSeconds = 0.1;
 constexpr int kCalibrationPasses = 4;
 constexpr int kTimedRounds = 3;
 constexpr int kMostPasses = 1000;
-
-Json ray_list(const std::vector<Ray>& rays) {
-    Json list = Json::array();
-    for (const Ray& ray : rays)
-        list.push_back(probe::ray(ray));
-    return list;
-}
 
 CheckMeasure failed(std::string summary) {
     CheckMeasure measure;
@@ -102,13 +96,18 @@ double mean(const std::vector<std::uint64_t>& counts) {
 CheckMeasure measure_structure_data(const GradingContext& context, const BuiltProbe& probe,
                                     const WorkQuery& query) {
     const WorkScene scene = strewn_scene();
-    Json args = {{"primitives", probe::primitive_list(scene.primitives)}};
-    if (!query.split.empty()) args["split"] = query.split;
+    const bool bvh = query.call == "bvh";
+    const probe::StructureBuildQuestion question{
+        scene.primitives,
+        query.split.empty() ? std::nullopt : std::optional<std::string>(query.split)};
     ProbeRunLimits limits;
     limits.cpu_seconds = 30;
     limits.wall = std::chrono::seconds(60);
     const ProbeSession session =
-        ask_probe(*probe.program, {{query.call + "_structure", args}}, limits);
+        ask_probe(*probe.program,
+                  {bvh ? probe::query(probe::bvh_structure_call, question)
+                       : probe::query(probe::grid_structure_call, question)},
+                  limits);
     const ProbeAnswer& answer = session.answers[0];
     if (answer.kind == ProbeAnswer::Kind::not_implemented) {
         CheckMeasure measure;
@@ -116,7 +115,6 @@ CheckMeasure measure_structure_data(const GradingContext& context, const BuiltPr
         measure.summary = answer.message;
         return measure;
     }
-    const bool bvh = query.call == "bvh";
     const std::string what = bvh ? "Bvh::nodes()" : "UniformGrid::cells()";
     if (answer.kind != ProbeAnswer::Kind::result) {
         return failed("the structure could not be read as data from " + what + " (" +
@@ -207,16 +205,16 @@ std::vector<Ray> shadow_rays(const WorkScene& scene) {
     return shadows;
 }
 
-// The arguments of a timed walk of `scene` through the structure `call` (the BVH by the SAH).
-Json walk_arguments(const WorkScene& scene, const std::string& call) {
-    Json args = {
-        {"primitives", probe::primitive_list(scene.primitives)},
-        {"rays", ray_list(scene.rays)},
-        {"shadow_rays", ray_list(shadow_rays(scene))},
-        {"jitter",
-         {{"seed", kJitter.seed}, {"origin", kJitter.origin}, {"direction", kJitter.direction}}}};
-    if (call == "bvh") args["split"] = "sah";
-    return args;
+// The query of a timed walk of `scene` through the structure `call` (the BVH by the SAH); each
+// run sets its passes.
+ProbeQuery walk_query(const WorkScene& scene, const std::string& call) {
+    const bool bvh = call == "bvh";
+    const probe::WorkloadQuestion walk{
+        scene.primitives, bvh ? std::optional<std::string>("sah") : std::nullopt,
+        scene.rays,       shadow_rays(scene),
+        kJitter,          0};
+    return bvh ? probe::query(probe::bvh_workload_call, walk)
+               : probe::query(probe::grid_workload_call, walk);
 }
 
 // The reference structure for `call` over the scene, and what its timed walk answers.
@@ -305,7 +303,6 @@ CheckMeasure measure_traversal_time(const BuiltProbe& probe, const std::string& 
     const WorkScene above = walls_scene(kWalls, Side::above);
     const WorkScene below = walls_scene(kWalls, Side::below);
     const WorkScene wall = walls_scene(1, Side::both);
-    const std::string workload = call + "_workload";
     const WorkScene* const scenes[] = {&above, &below, &wall};
     const ReferenceWalk references[] = {{above, call}, {below, call}, {wall, call}};
     std::vector<ProbeQuery> walks[3];
@@ -324,7 +321,7 @@ CheckMeasure measure_traversal_time(const BuiltProbe& probe, const std::string& 
                       "can be that slow");
     };
     for (int k = 0; k < 3; ++k) {
-        walks[k] = {{workload, walk_arguments(*scenes[k], call)}};
+        walks[k] = {walk_query(*scenes[k], call)};
         const std::optional<int> calibrated = calibrated_passes(probe, walks[k], answer);
         if (!calibrated) return unanswered(*scenes[k]);
         passes[k] = *calibrated;
