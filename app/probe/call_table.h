@@ -19,9 +19,9 @@ using CallTable = std::map<std::string, Call>;
 void add_sampling_calls(CallTable& table);  ///< stage 8
 
 /// Every stage's calls (app/probe/<stage>_calls.h): what `raystep grade` answers a public case
-/// with. Stage 4's structure as data
-/// and its timed workloads are for the grader's checks alone, which a release does not run, so
-/// only the grader's probe has them (grader/probe/accel_work_calls.h).
+/// with. Stage 4's structure as data and its timed workloads are for the grader's checks alone,
+/// which a release does not run, so only the grader's probe has them
+/// (grader/probe/accel_work_calls.h).
 CallTable stage_calls();
 
 }  // namespace raystep::probe

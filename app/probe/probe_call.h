@@ -18,7 +18,6 @@ namespace raystep::probe {
 template <class Question, class Answer>
 struct ProbeCall {
     using QuestionType = Question;
-    using AnswerType = Answer;
 
     const char* name;
     Answer (*answer)(const Question& question);

@@ -17,10 +17,10 @@ namespace raystep::probe {
 
 // Each protocol value's JSON form, chosen by its C++ type: JsonCodec<T>::write and ::read are the
 // functions of probe_json.h for that type, so that a typed call (probe_call.h) writes exactly the
-// JSON the hand-written queries wrote, and reads it as strictly. Three shapes are built from
-// others: a std::vector is an array of its elements, a std::tuple an array of its members in
-// order (a call's positional arguments), and a struct that names its fields in JsonFields an
-// object of those fields (a call's named arguments).
+// JSON the hand-written queries wrote, and reads it as strictly. Four shapes are built from
+// others: a std::vector is an array of its elements, a std::optional its value or null, a
+// std::tuple an array of its members in order (a call's positional arguments), and a struct that
+// names its fields in JsonFields an object of those fields (a call's named arguments).
 
 template <class T>
 struct JsonCodec;
