@@ -53,8 +53,6 @@ struct JsonFields<StructureQuestion> {
         std::make_tuple(json_field("primitives", &Q::primitives), json_field("rays", &Q::rays),
                         json_field("split", &Q::split), json_field("occluded", &Q::occluded));
 };
-template <>
-struct JsonCodec<StructureQuestion> : FieldsCodec<StructureQuestion> {};
 
 /// An answer only: the grader judges each ray's answer as JSON.
 template <>
@@ -71,16 +69,12 @@ struct JsonFields<AabbQuestion> {
                                                  json_field("min", &AabbQuestion::min),
                                                  json_field("max", &AabbQuestion::max));
 };
-template <>
-struct JsonCodec<AabbQuestion> : FieldsCodec<AabbQuestion> {};
 
 template <>
 struct JsonFields<Interval> {
     static constexpr auto list =
         std::make_tuple(json_field("enter", &Interval::enter), json_field("exit", &Interval::exit));
 };
-template <>
-struct JsonCodec<Interval> : FieldsCodec<Interval> {};
 
 template <>
 struct JsonFields<GridResolutionQuestion> {
@@ -88,8 +82,6 @@ struct JsonFields<GridResolutionQuestion> {
     static constexpr auto list = std::make_tuple(
         json_field("min", &Q::min), json_field("max", &Q::max), json_field("n", &Q::n));
 };
-template <>
-struct JsonCodec<GridResolutionQuestion> : FieldsCodec<GridResolutionQuestion> {};
 
 StructureAnswers bvh_answers(const StructureQuestion& question);
 StructureAnswers grid_answers(const StructureQuestion& question);

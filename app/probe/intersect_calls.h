@@ -32,8 +32,6 @@ struct JsonFields<Stage3CasesQuestion> {
     static constexpr auto list = std::make_tuple(json_field("method", &Stage3CasesQuestion::method),
                                                  json_field("cases", &Stage3CasesQuestion::cases));
 };
-template <>
-struct JsonCodec<Stage3CasesQuestion> : FieldsCodec<Stage3CasesQuestion> {};
 
 template <>
 struct JsonFields<TriangleWorkloadQuestion> {
@@ -42,8 +40,6 @@ struct JsonFields<TriangleWorkloadQuestion> {
         std::make_tuple(json_field("method", &Q::method), json_field("rays", &Q::rays),
                         json_field("primitives", &Q::primitives), json_field("repeat", &Q::repeat));
 };
-template <>
-struct JsonCodec<TriangleWorkloadQuestion> : FieldsCodec<TriangleWorkloadQuestion> {};
 
 std::vector<CaseAnswer> answer_stage3_cases(const Stage3CasesQuestion& question);
 

@@ -38,8 +38,6 @@ struct JsonFields<RayAtQuestion> {
     static constexpr auto list =
         std::make_tuple(json_field("ray", &RayAtQuestion::ray), json_field("t", &RayAtQuestion::t));
 };
-template <>
-struct JsonCodec<RayAtQuestion> : FieldsCodec<RayAtQuestion> {};
 
 template <>
 struct JsonFields<PerspectiveRaysQuestion> {
@@ -49,8 +47,6 @@ struct JsonFields<PerspectiveRaysQuestion> {
         json_field("up", &Q::up), json_field("fovy", &Q::fovy), json_field("width", &Q::width),
         json_field("height", &Q::height), json_field("pixels", &Q::pixels));
 };
-template <>
-struct JsonCodec<PerspectiveRaysQuestion> : FieldsCodec<PerspectiveRaysQuestion> {};
 
 template <>
 struct JsonFields<OrthographicRaysQuestion> {
@@ -62,8 +58,6 @@ struct JsonFields<OrthographicRaysQuestion> {
                         json_field("top", &Q::top), json_field("width", &Q::width),
                         json_field("height", &Q::height), json_field("pixels", &Q::pixels));
 };
-template <>
-struct JsonCodec<OrthographicRaysQuestion> : FieldsCodec<OrthographicRaysQuestion> {};
 
 /// The rays of the pixels asked for, made after the camera, so that a camera that cannot be
 /// made throws even when no pixel is asked.

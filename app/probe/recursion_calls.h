@@ -23,25 +23,18 @@ struct RadianceQuestion {
     RayOffset offset;
 };
 
+/// What radiance saw, here and in stage 9 (radiance_with_refraction).
 struct RadianceAnswer {
     Color colour;
     std::vector<Ray> rays;  ///< every ray radiance asked shade about, in order
 };
 
-/// A shaded hit {"point", "local", "reflectance"}, or null for a miss.
+/// A shaded hit {"point", "local", "reflectance"}; a miss in the script is null.
 template <>
-struct JsonCodec<std::optional<ShadedHit>> {
-    static Json write(const std::optional<ShadedHit>& hit) {
-        if (!hit) return Json(nullptr);
-        return {{"point", surface_point(hit->point)},
-                {"local", vec3(hit->local)},
-                {"reflectance", vec3(hit->reflectance)}};
-    }
-    static std::optional<ShadedHit> read(const Json& j) {
-        if (j.is_null()) return std::nullopt;
-        return ShadedHit{surface_point_from(field(j, "point")), vec3_from(field(j, "local")),
-                         vec3_from(field(j, "reflectance"))};
-    }
+struct JsonFields<ShadedHit> {
+    static constexpr auto list = std::make_tuple(
+        json_field("point", &ShadedHit::point), json_field("local", &ShadedHit::local),
+        json_field("reflectance", &ShadedHit::reflectance));
 };
 
 template <>
@@ -51,16 +44,12 @@ struct JsonFields<RadianceQuestion> {
                                                  json_field("bounces", &RadianceQuestion::bounces),
                                                  json_field("offset", &RadianceQuestion::offset));
 };
-template <>
-struct JsonCodec<RadianceQuestion> : FieldsCodec<RadianceQuestion> {};
 
 template <>
 struct JsonFields<RadianceAnswer> {
     static constexpr auto list = std::make_tuple(json_field("colour", &RadianceAnswer::colour),
                                                  json_field("rays", &RadianceAnswer::rays));
 };
-template <>
-struct JsonCodec<RadianceAnswer> : FieldsCodec<RadianceAnswer> {};
 
 inline constexpr auto reflected_ray_call =
     function_call<Ray(const SurfacePoint&, const RayOffset&), &reflected_ray>("reflected_ray");

@@ -35,8 +35,8 @@ std::optional<MediumHit> hit_for(const std::vector<KeyedHit>& scene, const Ray& 
 
 }  // namespace
 
-RefractionRadianceAnswer radiance_over_keyed_scene(const RefractionRadianceQuestion& question) {
-    RefractionRadianceAnswer answer;
+RadianceAnswer radiance_over_keyed_scene(const RefractionRadianceQuestion& question) {
+    RadianceAnswer answer;
     const MediumShadeFunction shade = [&](const Ray& r) {
         answer.rays.push_back(r);
         return hit_for(question.scene, r);

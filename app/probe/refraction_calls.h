@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/probe/probe_call.h"
+#include "app/probe/recursion_calls.h"
 #include "app/protocol/refraction_json.h"
 #include "stages/9_refraction/refraction.h"
 
@@ -39,18 +40,11 @@ struct RefractionRadianceQuestion {
     RayOffset offset;
 };
 
-struct RefractionRadianceAnswer {
-    Color colour;
-    std::vector<Ray> rays;  ///< every ray radiance asked shade about, in order
-};
-
 template <>
 struct JsonFields<KeyedHit> {
     static constexpr auto list =
         std::make_tuple(json_field("key", &KeyedHit::key), json_field("hit", &KeyedHit::hit));
 };
-template <>
-struct JsonCodec<KeyedHit> : FieldsCodec<KeyedHit> {};
 
 template <>
 struct JsonFields<RefractionRadianceQuestion> {
@@ -60,20 +54,9 @@ struct JsonFields<RefractionRadianceQuestion> {
                         json_field("bounces", &Q::bounces), json_field("inside", &Q::inside),
                         json_field("schlick", &Q::schlick), json_field("offset", &Q::offset));
 };
-template <>
-struct JsonCodec<RefractionRadianceQuestion> : FieldsCodec<RefractionRadianceQuestion> {};
-
-template <>
-struct JsonFields<RefractionRadianceAnswer> {
-    static constexpr auto list =
-        std::make_tuple(json_field("colour", &RefractionRadianceAnswer::colour),
-                        json_field("rays", &RefractionRadianceAnswer::rays));
-};
-template <>
-struct JsonCodec<RefractionRadianceAnswer> : FieldsCodec<RefractionRadianceAnswer> {};
 
 /// radiance_with_refraction with shade answering from the question's keyed scene.
-RefractionRadianceAnswer radiance_over_keyed_scene(const RefractionRadianceQuestion& question);
+RadianceAnswer radiance_over_keyed_scene(const RefractionRadianceQuestion& question);
 
 inline constexpr auto refract_call =
     function_call<std::optional<Vec3>(const Vec3&, const Vec3&, double), &refract>("refract");
@@ -89,7 +72,7 @@ inline constexpr auto after_crossing_call =
 inline constexpr auto refracted_ray_call =
     function_call<std::optional<Ray>(const SurfacePoint&, double, double, const RayOffset&),
                   &refracted_ray>("refracted_ray");
-inline constexpr ProbeCall<RefractionRadianceQuestion, RefractionRadianceAnswer>
+inline constexpr ProbeCall<RefractionRadianceQuestion, RadianceAnswer>
     radiance_with_refraction_call{"radiance_with_refraction", &radiance_over_keyed_scene};
 
 inline constexpr auto refraction_calls =

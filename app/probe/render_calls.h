@@ -31,8 +31,6 @@ struct JsonFields<RenderQuestion> {
         json_field("max_width", &Q::max_width), json_field("seed", &Q::seed),
         json_field("camera_t_min", &Q::camera_t_min), json_field("camera_t_max", &Q::camera_t_max));
 };
-template <>
-struct JsonCodec<RenderQuestion> : FieldsCodec<RenderQuestion> {};
 
 /// An answer only: the grader reads an image with a bound on its size (image_json.h).
 template <>

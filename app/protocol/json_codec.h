@@ -20,9 +20,10 @@ namespace raystep::probe {
 // JSON the hand-written queries wrote, and reads it as strictly. Four shapes are built from
 // others: a std::vector is an array of its elements, a std::optional its value or null, a
 // std::tuple an array of its members in order (a call's positional arguments), and a struct that
-// names its fields in JsonFields an object of those fields (a call's named arguments).
+// names its fields in JsonFields an object of those fields (a call's named arguments): naming
+// them is all such a struct needs.
 
-template <class T>
+template <class T, class = void>
 struct JsonCodec;
 
 /// A struct's fields by name, for the struct's JSON object: specialize with
@@ -185,7 +186,7 @@ struct IsOptional<std::optional<T>> : std::true_type {};
 
 /// A struct with JsonFields: an object of its fields. A std::optional field is left out where it
 /// holds nothing, and holds nothing where it is left out; every other field must be there.
-template <class T, class = decltype(JsonFields<T>::list)>
+template <class T>
 struct FieldsCodec {
     static Json write(const T& value) {
         Json object = Json::object();
@@ -220,12 +221,13 @@ struct FieldsCodec {
     }
 };
 
+template <class T>
+struct JsonCodec<T, std::void_t<decltype(JsonFields<T>::list)>> : FieldsCodec<T> {};
+
 template <>
 struct JsonFields<Frame> {
     static constexpr auto list = std::make_tuple(
         json_field("u", &Frame::u), json_field("v", &Frame::v), json_field("w", &Frame::w));
 };
-template <>
-struct JsonCodec<Frame> : FieldsCodec<Frame> {};
 
 }  // namespace raystep::probe

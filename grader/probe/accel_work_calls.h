@@ -42,8 +42,6 @@ struct JsonFields<StructureBuildQuestion> {
         std::make_tuple(json_field("primitives", &StructureBuildQuestion::primitives),
                         json_field("split", &StructureBuildQuestion::split));
 };
-template <>
-struct JsonCodec<StructureBuildQuestion> : FieldsCodec<StructureBuildQuestion> {};
 
 template <>
 struct JsonFields<Jitter> {
@@ -51,8 +49,6 @@ struct JsonFields<Jitter> {
         std::make_tuple(json_field("seed", &Jitter::seed), json_field("origin", &Jitter::origin),
                         json_field("direction", &Jitter::direction));
 };
-template <>
-struct JsonCodec<Jitter> : FieldsCodec<Jitter> {};
 
 template <>
 struct JsonFields<WorkloadQuestion> {
@@ -62,8 +58,6 @@ struct JsonFields<WorkloadQuestion> {
                         json_field("rays", &Q::rays), json_field("shadow_rays", &Q::shadow_rays),
                         json_field("jitter", &Q::jitter), json_field("repeat", &Q::repeat));
 };
-template <>
-struct JsonCodec<WorkloadQuestion> : FieldsCodec<WorkloadQuestion> {};
 
 template <>
 struct JsonCodec<std::vector<BvhNodeData>>
