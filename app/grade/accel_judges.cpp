@@ -25,7 +25,7 @@ std::string interval_text(double enter, double exit) {
     return "[" + full_text(enter) + ", " + full_text(exit) + "]";
 }
 
-std::string expected_text(const SlabInterval& exact) {
+std::string slab_interval_text(const SlabInterval& exact) {
     if (exact.must_miss) return "a miss";
     const std::string interval = "t in " + interval_text(exact.enter.hi, exact.exit.hi) +
                                  " (within " + full_text(exact.enter_tolerance) + " and " +
@@ -34,7 +34,7 @@ std::string expected_text(const SlabInterval& exact) {
 }
 
 // An infinite end is compared exactly; written so that a NaN fails.
-bool within(double got, const DoubleDouble& expected, const DoubleDouble& tolerance) {
+bool within_tolerance(double got, const DoubleDouble& expected, const DoubleDouble& tolerance) {
     if (is_infinite(expected)) return got == expected.hi;
     return near_wide(got, expected, tolerance);
 }
@@ -48,7 +48,7 @@ const JudgeRegistry::Registration slab_interval_registration{
          exact.exit = probe::wide_from(p.at("exit"));
          exact.enter_tolerance = probe::wide_from(p.at("enter_tolerance"));
          exact.exit_tolerance = probe::wide_from(p.at("exit_tolerance"));
-         const std::string expected = expected_text(exact);
+         const std::string expected = slab_interval_text(exact);
          return [=](const ProbeAnswer& answer) {
              if (answer.kind != Kind::result) return verdict_wrong(expected, "");
              if (answer.value.is_null())
@@ -58,8 +58,8 @@ const JudgeRegistry::Registration slab_interval_registration{
              const std::string got = "t in " + interval_text(enter, exit);
              if (exact.must_miss) return verdict_wrong(expected, got);
              if (!(enter <= exit)) return verdict_wrong(expected, got + ", which is empty");
-             const bool ok = within(enter, exact.enter, exact.enter_tolerance) &&
-                             within(exit, exact.exit, exact.exit_tolerance);
+             const bool ok = within_tolerance(enter, exact.enter, exact.enter_tolerance) &&
+                             within_tolerance(exit, exact.exit, exact.exit_tolerance);
              return ok ? verdict_right() : verdict_wrong(expected, got);
          };
      }}};

@@ -13,7 +13,7 @@ namespace {
 using probe::Json;
 using Kind = ProbeAnswer::Kind;
 
-std::string within(const std::string& expected, double tolerance) {
+std::string within_text(const std::string& expected, double tolerance) {
     return expected + " (within " + full_text(tolerance) + ")";
 }
 
@@ -33,7 +33,7 @@ const JudgeRegistry::Registration near_number_registration{
              if (answer.kind != Kind::result) return verdict_wrong(full_text(expected), "");
              const double got = probe::number_from(answer.value);
              if (std::abs(got - expected) <= tolerance) return verdict_right();
-             return verdict_wrong(within(full_text(expected), tolerance), full_text(got));
+             return verdict_wrong(within_text(full_text(expected), tolerance), full_text(got));
          };
      }}};
 
@@ -45,7 +45,7 @@ const JudgeRegistry::Registration near_vec3_registration{
              if (answer.kind != Kind::result) return verdict_wrong(full_text(expected), "");
              const Vec3 got = probe::vec3_from(answer.value);
              if (near_vec(got, expected, tolerance)) return verdict_right();
-             return verdict_wrong(within(full_text(expected), tolerance), full_text(got));
+             return verdict_wrong(within_text(full_text(expected), tolerance), full_text(got));
          };
      }}};
 
@@ -54,7 +54,7 @@ const JudgeRegistry::Registration near_wide_number_registration{
          const DoubleDouble expected = probe::wide_from(p.at("expected"));
          const DoubleDouble tolerance = probe::wide_from(p.at("tolerance"));
          const std::string text =
-             within(full_text(static_cast<double>(expected)), static_cast<double>(tolerance));
+             within_text(full_text(static_cast<double>(expected)), static_cast<double>(tolerance));
          return [=](const ProbeAnswer& answer) {
              if (answer.kind != Kind::result) return verdict_wrong(text, "");
              const double got = probe::number_from(answer.value);
@@ -105,8 +105,8 @@ const JudgeRegistry::Registration frame_registration{
                  return verdict_right();
              }
              return verdict_wrong(
-                 within("u " + full_text(u) + " v " + full_text(v) + " w " + full_text(w),
-                        tolerance),
+                 within_text("u " + full_text(u) + " v " + full_text(v) + " w " + full_text(w),
+                             tolerance),
                  "u " + full_text(got[0]) + " v " + full_text(got[1]) + " w " + full_text(got[2]));
          };
      }}};

@@ -5,33 +5,18 @@
 #include <vector>
 
 #include "app/demo/demo_list.h"
+#include "app/tests/demo_checks.h"
 #include "base/testing/catch.h"
 #include "renderer/view.h"
 
 using namespace raystep;
+using raystep::testing::check_panels;
+using raystep::testing::differing_pixels;
+using raystep::testing::kTestDemoSize;
 
 namespace {
 
-// Half the lecture size in each direction: a quarter of the pixels, so that all the demos
-// together render in about a second.
-const DemoSize kTestSize{320, 240};
-
 const Color kLeak(1.0, 0.0, 1.0);
-
-void check_panels(const DemoFigure& figure, int count) {
-    REQUIRE(figure.panels.size() == static_cast<std::size_t>(count));
-    CHECK_FALSE(figure.title.empty());
-    const PanelSize panel = panel_size(kTestSize, count, figure.scale.has_value());
-    for (const DemoPanel& p : figure.panels) {
-        CAPTURE(p.caption);
-        CHECK_FALSE(p.caption.empty());
-        CHECK(p.image.width() == panel.width);
-        CHECK(p.image.height() == panel.height);
-    }
-    const Image image = draw_figure(figure, kTestSize, std::nullopt);
-    CHECK(image.width() == kTestSize.width);
-    CHECK(image.height() == kTestSize.height);
-}
 
 int count_colour(const Image& image, const Color& colour) {
     int count = 0;
@@ -43,18 +28,7 @@ int count_colour(const Image& image, const Color& colour) {
     return count;
 }
 
-// Pixels where any channel differs by more than `step`, and where `a` is darker than `b` by more.
-int differing_pixels(const Image& a, const Image& b, double step) {
-    int count = 0;
-    for (int j = 0; j < a.height(); ++j) {
-        for (int i = 0; i < a.width(); ++i) {
-            const Color d = glm::abs(a.at(i, j) - b.at(i, j));
-            if (d.r > step || d.g > step || d.b > step) ++count;
-        }
-    }
-    return count;
-}
-
+// Pixels where a channel of `a` is darker than `b`'s by more than `step`.
 int darker_pixels(const Image& a, const Image& b, double step) {
     int count = 0;
     for (int j = 0; j < a.height(); ++j) {
@@ -103,7 +77,7 @@ TEST_CASE("find_demo: an unknown name is refused with the list of demos", "[app]
 
 TEST_CASE("ray_directions_demo: perspective rays fan out, orthographic rays are one colour",
           "[app]") {
-    const DemoFigure figure = ray_directions_demo(kTestSize);
+    const DemoFigure figure = ray_directions_demo(kTestDemoSize);
     check_panels(figure, 2);
     const Image& perspective = figure.panels[0].image;
     const Image& orthographic = figure.panels[1].image;
@@ -118,7 +92,7 @@ TEST_CASE("ray_directions_demo: perspective rays fan out, orthographic rays are 
 }
 
 TEST_CASE("barycentrics_demo: red, green and blue corners on the triangles", "[app]") {
-    const DemoFigure figure = barycentrics_demo(kTestSize);
+    const DemoFigure figure = barycentrics_demo(kTestDemoSize);
     check_panels(figure, 2);
     for (const DemoPanel& panel : figure.panels) {
         CAPTURE(panel.caption);
@@ -140,7 +114,7 @@ TEST_CASE("barycentrics_demo: red, green and blue corners on the triangles", "[a
 }
 
 TEST_CASE("watertight_demo: intersect_triangle never leaks, the half-space test does", "[app]") {
-    const DemoFigure figure = watertight_demo(kTestSize);
+    const DemoFigure figure = watertight_demo(kTestDemoSize);
     check_panels(figure, 2);
     CHECK(count_colour(figure.panels[0].image, kLeak) == 0);
     CHECK(count_colour(figure.panels[1].image, kLeak) > 0);
@@ -152,13 +126,14 @@ TEST_CASE("watertight_demo: intersect_triangle never leaks, the half-space test 
 
 TEST_CASE("watertight_demo_with: one panel per triangle test, leaks only off the watertight one",
           "[app]") {
-    const DemoFigure watertight = watertight_demo_with("intersect_triangle", kTestSize);
+    const DemoFigure watertight = watertight_demo_with("intersect_triangle", kTestDemoSize);
     check_panels(watertight, 1);
     CHECK(watertight.panels[0].caption == "intersect_triangle: 0 leaking pixels");
-    const DemoFigure halfspaces = watertight_demo_with("intersect_triangle_halfspaces", kTestSize);
+    const DemoFigure halfspaces =
+        watertight_demo_with("intersect_triangle_halfspaces", kTestDemoSize);
     check_panels(halfspaces, 1);
     CHECK(count_colour(halfspaces.panels[0].image, kLeak) > 0);
-    CHECK_THROWS_WITH(watertight_demo_with("moller", kTestSize),
+    CHECK_THROWS_WITH(watertight_demo_with("moller", kTestDemoSize),
                       "no triangle test 'moller'; the tests are intersect_triangle, "
                       "intersect_triangle_halfspaces, intersect_triangle_projection, "
                       "intersect_triangle_cramer");
@@ -196,8 +171,8 @@ TEST_CASE("demo_list: a demo explored live opens a scene of scenes/ in a view of
 
 TEST_CASE("bvh_cost_demo and grid_cost_demo: the grid pays far more in the stadium",
           "[app][meshes]") {
-    const DemoFigure bvh = bvh_cost_demo(kTestSize);
-    const DemoFigure grid = grid_cost_demo(kTestSize);
+    const DemoFigure bvh = bvh_cost_demo(kTestDemoSize);
+    const DemoFigure grid = grid_cost_demo(kTestDemoSize);
     check_panels(bvh, 2);
     check_panels(grid, 2);
     REQUIRE(bvh.scale);
@@ -210,7 +185,7 @@ TEST_CASE("bvh_cost_demo and grid_cost_demo: the grid pays far more in the stadi
 
 TEST_CASE("normal_transform_demo: normals by M and by M^-T differ on the ellipsoids only",
           "[app]") {
-    const DemoFigure figure = normal_transform_demo(kTestSize);
+    const DemoFigure figure = normal_transform_demo(kTestDemoSize);
     check_panels(figure, 2);
     const Image& by_m = figure.panels[0].image;
     const Image& by_inverse_transpose = figure.panels[1].image;
@@ -221,7 +196,7 @@ TEST_CASE("normal_transform_demo: normals by M and by M^-T differ on the ellipso
 }
 
 TEST_CASE("shadow_acne_demo: acne falls as epsilon grows, none with the error bound", "[app]") {
-    const DemoFigure figure = shadow_acne_demo(kTestSize);
+    const DemoFigure figure = shadow_acne_demo(kTestDemoSize);
     check_panels(figure, 4);
     const Image& error_bound = figure.panels[3].image;
     const int zero = darker_pixels(figure.panels[0].image, error_bound, 0.05);

@@ -4,6 +4,7 @@
 
 #include "app/probe/probe_answer.h"
 #include "app/protocol/probe_json.h"
+#include "stages/2_rays/ray.h"
 
 namespace raystep::testing {
 
@@ -20,6 +21,11 @@ inline grade::ProbeAnswer result_answer(const probe::Json& value) {
 /// writes one, even where the test gives an integer.
 inline grade::ProbeAnswer result_answer(double x) {
     return result_answer(probe::Json(x));
+}
+
+/// The answer of a call that returned the ray `r`.
+inline grade::ProbeAnswer ray_answer(const Ray& r) {
+    return result_answer(probe::ray(r));
 }
 
 }  // namespace raystep::testing

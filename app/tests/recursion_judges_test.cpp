@@ -22,10 +22,6 @@ using raystep::testing::kInf;
 using raystep::testing::kNaN;
 const double kMax = std::numeric_limits<double>::max();
 
-grade::ProbeAnswer ray(const Ray& r) {
-    return testing::result_answer(probe::ray(r));
-}
-
 grade::ProbeAnswer radiance(const Vec3& colour, const std::vector<Ray>& rays) {
     probe::Json list = probe::Json::array();
     for (const Ray& r : rays)
@@ -34,7 +30,7 @@ grade::ProbeAnswer radiance(const Vec3& colour, const std::vector<Ray>& rays) {
 }
 
 // From (1, 0, 0) on the floor y = 0 towards (1, 1, 0) / sqrt 2, along_normal's origin 1e-4 up.
-const Vec3 kUp{std::sqrt(0.5), std::sqrt(0.5), 0};
+const Vec3 kUpRight{std::sqrt(0.5), std::sqrt(0.5), 0};
 const DoubleDouble kHalfRoot = sqrt(DoubleDouble(0.5));
 const DoubleDoubleVec3 kWideUp{kHalfRoot, kHalfRoot, DoubleDouble()};
 const ExpectedRay kMirror{
@@ -51,15 +47,17 @@ const ExpectedRay kBounded{
 
 TEST_CASE("mirror_ray: every coordinate within its tolerance, an unbounded end, NaN fails") {
     const grade::Judge judge = build_judge(grade::mirror_ray_judge(kMirror));
-    CHECK(judge(ray({{1, 1e-4, 0}, kUp, 0, kInf})).passed);
+    CHECK(judge(testing::ray_answer({{1, 1e-4, 0}, kUpRight, 0, kInf})).passed);
     // The largest double admits the same hits as infinity: only unbounded_ray asks for infinity.
-    CHECK(judge(ray({{1, 1e-4, 0}, kUp, 0, kMax})).passed);
-    CHECK_FALSE(judge(ray({{1, 1e-4, 0}, kUp, 0, 1e300})).passed);
-    CHECK_FALSE(judge(ray({{1, 1e-4 + 2e-15, 0}, kUp, 0, kInf})).passed);
-    CHECK_FALSE(judge(ray({{1, 1e-4, 0}, {kUp.x, kUp.y + 2e-15, 0}, 0, kInf})).passed);
-    CHECK_FALSE(judge(ray({{1, 1e-4, 0}, {kUp.x, kNaN, 0}, 0, kInf})).passed);
-    CHECK_FALSE(judge(ray({{1, 1e-4, 0}, kUp, 1e-4, kInf})).passed);
-    const grade::Verdict off = judge(ray({{1, 1e-4, kNaN}, kUp, 0, kInf}));
+    CHECK(judge(testing::ray_answer({{1, 1e-4, 0}, kUpRight, 0, kMax})).passed);
+    CHECK_FALSE(judge(testing::ray_answer({{1, 1e-4, 0}, kUpRight, 0, 1e300})).passed);
+    CHECK_FALSE(judge(testing::ray_answer({{1, 1e-4 + 2e-15, 0}, kUpRight, 0, kInf})).passed);
+    CHECK_FALSE(
+        judge(testing::ray_answer({{1, 1e-4, 0}, {kUpRight.x, kUpRight.y + 2e-15, 0}, 0, kInf}))
+            .passed);
+    CHECK_FALSE(judge(testing::ray_answer({{1, 1e-4, 0}, {kUpRight.x, kNaN, 0}, 0, kInf})).passed);
+    CHECK_FALSE(judge(testing::ray_answer({{1, 1e-4, 0}, kUpRight, 1e-4, kInf})).passed);
+    const grade::Verdict off = judge(testing::ray_answer({{1, 1e-4, kNaN}, kUpRight, 0, kInf}));
     CHECK_FALSE(off.passed);
     CHECK(off.expected ==
           "origin (1, 0.0001, 0) (within 1.0000000000000001e-15), direction "
@@ -69,20 +67,21 @@ TEST_CASE("mirror_ray: every coordinate within its tolerance, an unbounded end, 
 
 TEST_CASE("mirror_ray: an error-bound origin strictly beyond d, never on the floor's far side") {
     const grade::Judge judge = build_judge(grade::mirror_ray_judge(kBounded));
-    CHECK(judge(ray({{1, 0x1p-55, 0}, kUp, 0, kInf})).passed);
-    CHECK_FALSE(judge(ray({{1, 0x1p-60, 0}, kUp, 0, kInf})).passed);
-    CHECK_FALSE(judge(ray({{1, -0x1p-55, 0}, kUp, 0, kInf})).passed);
-    CHECK_FALSE(judge(ray({{1, 0x1p-48, 0}, kUp, 0, kInf})).passed);
-    CHECK(judge(ray({{1, -0x1p-55, 0}, kUp, 0, kInf})).expected.rfind("origin more than ", 0) == 0);
+    CHECK(judge(testing::ray_answer({{1, 0x1p-55, 0}, kUpRight, 0, kInf})).passed);
+    CHECK_FALSE(judge(testing::ray_answer({{1, 0x1p-60, 0}, kUpRight, 0, kInf})).passed);
+    CHECK_FALSE(judge(testing::ray_answer({{1, -0x1p-55, 0}, kUpRight, 0, kInf})).passed);
+    CHECK_FALSE(judge(testing::ray_answer({{1, 0x1p-48, 0}, kUpRight, 0, kInf})).passed);
+    CHECK(judge(testing::ray_answer({{1, -0x1p-55, 0}, kUpRight, 0, kInf}))
+              .expected.rfind("origin more than ", 0) == 0);
 }
 
 TEST_CASE("unbounded_ray: infinity itself, and the largest double named as not it") {
     const grade::Judge judge = build_judge(grade::unbounded_ray_judge());
-    CHECK(judge(ray({{1, 1e-4, 0}, kUp, 0, kInf})).passed);
-    const grade::Verdict largest = judge(ray({{1, 1e-4, 0}, kUp, 0, kMax}));
+    CHECK(judge(testing::ray_answer({{1, 1e-4, 0}, kUpRight, 0, kInf})).passed);
+    const grade::Verdict largest = judge(testing::ray_answer({{1, 1e-4, 0}, kUpRight, 0, kMax}));
     CHECK_FALSE(largest.passed);
     CHECK(largest.got.find("the header promises infinity") != std::string::npos);
-    CHECK_FALSE(judge(ray({{1, 1e-4, 0}, kUp, 0, kNaN})).passed);
+    CHECK_FALSE(judge(testing::ray_answer({{1, 1e-4, 0}, kUpRight, 0, kNaN})).passed);
 }
 
 TEST_CASE("radiance: the colour within its tolerance and every ray asked, no more, no fewer") {
@@ -90,7 +89,7 @@ TEST_CASE("radiance: the colour within its tolerance and every ray asked, no mor
     const grade::Judge judge =
         build_judge(grade::radiance_judge({0.5, 0.25, 1}, DoubleDoubleVec3(1e-12), {eye, kMirror}));
     const Ray eye_ray{{0, 1, 0}, {1, 0, 0}, 0, kInf};
-    const Ray mirror_ray{{1, 1e-4, 0}, kUp, 0, kInf};
+    const Ray mirror_ray{{1, 1e-4, 0}, kUpRight, 0, kInf};
     CHECK(judge(radiance({0.5, 0.25, 1}, {eye_ray, mirror_ray})).passed);
     CHECK_FALSE(judge(radiance({0.5, 0.25 + 1.1e-12, 1}, {eye_ray, mirror_ray})).passed);
     CHECK_FALSE(judge(radiance({0.5, kNaN, 1}, {eye_ray, mirror_ray})).passed);
@@ -100,7 +99,7 @@ TEST_CASE("radiance: the colour within its tolerance and every ray asked, no mor
     CHECK_FALSE(
         judge(radiance({0.5, 0.25, 1}, {{{0, 1, 1e-300}, {1, 0, 0}, 0, kInf}, mirror_ray})).passed);
     const grade::Verdict second =
-        judge(radiance({0.5, 0.25, 1}, {eye_ray, {{1, 0, 0}, kUp, 0, kInf}}));
+        judge(radiance({0.5, 0.25, 1}, {eye_ray, {{1, 0, 0}, kUpRight, 0, kInf}}));
     CHECK_FALSE(second.passed);
     CHECK(second.expected.rfind("ray 1: origin (1, 0.0001, 0)", 0) == 0);
     CHECK(second.got.rfind("ray 1: origin (1, 0, 0)", 0) == 0);

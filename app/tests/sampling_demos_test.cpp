@@ -3,27 +3,18 @@
 #include <tuple>
 
 #include "app/demo/demos.h"
+#include "app/tests/demo_checks.h"
 #include "base/testing/catch.h"
 
 using namespace raystep;
+using raystep::testing::check_panels;
+using raystep::testing::differing_pixels;
+using raystep::testing::kTestDemoSize;
 
-// The demos of stages 8 and 9 (sampling_demos.cpp, and shading_demos.cpp's refraction), at
-// half the lecture size, as demos_test.cpp renders the others.
+// The demos of stages 8 and 9 (sampling_demos.cpp, and shading_demos.cpp's refraction), at the
+// test size of demo_checks.h, as demos_test.cpp renders the others.
 
 namespace {
-
-const DemoSize kTestSize{320, 240};
-
-void check_panels(const DemoFigure& figure, int count) {
-    REQUIRE(figure.panels.size() == static_cast<std::size_t>(count));
-    const PanelSize panel = panel_size(kTestSize, count, false);
-    for (const DemoPanel& p : figure.panels) {
-        CAPTURE(p.caption);
-        CHECK(p.image.width() == panel.width);
-        CHECK(p.image.height() == panel.height);
-    }
-    CHECK(draw_figure(figure, kTestSize, std::nullopt).width() == kTestSize.width);
-}
 
 std::size_t distinct_colours(const Image& image) {
     std::set<std::tuple<float, float, float>> colours;
@@ -49,21 +40,11 @@ double roughness(const Image& image) {
     return sum;
 }
 
-int differing_pixels(const Image& a, const Image& b) {
-    int count = 0;
-    for (int j = 0; j < a.height(); ++j) {
-        for (int i = 0; i < a.width(); ++i) {
-            if (a.at(i, j) != b.at(i, j)) ++count;
-        }
-    }
-    return count;
-}
-
 }  // namespace
 
 TEST_CASE("aliasing_demo: one ray per pixel keeps three flat colours, 16 jittered blend them",
           "[app]") {
-    const DemoFigure figure = aliasing_demo(kTestSize);
+    const DemoFigure figure = aliasing_demo(kTestDemoSize);
     check_panels(figure, 6);
     CHECK(figure.panels[0].caption == "regular, 1 spp (the centre)");
     CHECK(figure.panels[5].caption == "jittered, 16 spp (4 x 4)");
@@ -78,7 +59,7 @@ TEST_CASE("aliasing_demo: one ray per pixel keeps three flat colours, 16 jittere
 
 TEST_CASE("soft_shadows_demo: 8 x 8 stratified light samples are smoother than 64 random ones",
           "[app]") {
-    const DemoFigure figure = soft_shadows_demo(kTestSize);
+    const DemoFigure figure = soft_shadows_demo(kTestDemoSize);
     check_panels(figure, 8);
     CHECK(figure.panels[3].caption == "stratified 8 x 8");
     CHECK(figure.panels[7].caption == "random 64");
@@ -88,7 +69,7 @@ TEST_CASE("soft_shadows_demo: 8 x 8 stratified light samples are smoother than 6
 }
 
 TEST_CASE("refraction_demo: each index renders the cube differently, captioned", "[app]") {
-    const DemoFigure figure = refraction_demo(kTestSize);
+    const DemoFigure figure = refraction_demo(kTestDemoSize);
     check_panels(figure, 4);
     CHECK(figure.panels[0].caption == "n = 1 (air): no bending");
     CHECK(figure.panels[2].caption == "n = 1.5 (glass): critical angle 41.8 deg");

@@ -25,10 +25,6 @@ grade::ProbeAnswer sample(const Vec3& direction, double distance, const Vec3& in
     return testing::result_answer(probe::light_sample({direction, distance, intensity}));
 }
 
-grade::ProbeAnswer ray(const Vec3& origin, const Vec3& direction, double t_min, double t_max) {
-    return testing::result_answer(probe::ray({origin, direction, t_min, t_max}));
-}
-
 TEST_CASE("light_sample: a distance or intensity just outside its tolerance fails, NaN too") {
     const grade::Judge judge = build_judge(
         grade::light_sample_judge({0.6, 0.8, 0}, 1e-15, DoubleDouble(5), DoubleDouble(1e-12),
@@ -67,19 +63,23 @@ TEST_CASE("leaving_ray error_bound: an origin strictly beyond d, and within the 
     const grade::Judge judge = build_judge(grade::error_bound_judge(kWall, kOut));
     const double at_d = -1 - 0x1p-49;
     const double beyond = std::nextafter(at_d, -kInf);
-    CHECK(judge(ray({beyond, 4, 2}, kOut.direction, 0, 3)).passed);
+    CHECK(judge(testing::ray_answer({{beyond, 4, 2}, kOut.direction, 0, 3})).passed);
     // At d exactly is not beyond it; the other side of the wall is the wrong side.
-    CHECK_FALSE(judge(ray({at_d, 4, 2}, kOut.direction, 0, 3)).passed);
-    CHECK_FALSE(judge(ray({-1 + 0x1p-48, 4, 2}, kOut.direction, 0, 3)).passed);
+    CHECK_FALSE(judge(testing::ray_answer({{at_d, 4, 2}, kOut.direction, 0, 3})).passed);
+    CHECK_FALSE(judge(testing::ray_answer({{-1 + 0x1p-48, 4, 2}, kOut.direction, 0, 3})).passed);
     // More than d + 4 ulps along n, or more than 4 ulps off the line.
-    CHECK_FALSE(judge(ray({-1 - 0x1p-49 - 0x1p-47 - 0x1p-50, 4, 2}, kOut.direction, 0, 3)).passed);
-    CHECK_FALSE(judge(ray({beyond, 4 + 0x1p-47, 2}, kOut.direction, 0, 3)).passed);
-    CHECK_FALSE(judge(ray({beyond, kNaN, 2}, kOut.direction, 0, 3)).passed);
+    CHECK_FALSE(
+        judge(testing::ray_answer({{-1 - 0x1p-49 - 0x1p-47 - 0x1p-50, 4, 2}, kOut.direction, 0, 3}))
+            .passed);
+    CHECK_FALSE(
+        judge(testing::ray_answer({{beyond, 4 + 0x1p-47, 2}, kOut.direction, 0, 3})).passed);
+    CHECK_FALSE(judge(testing::ray_answer({{beyond, kNaN, 2}, kOut.direction, 0, 3})).passed);
     // The t range is [0, distance], exactly, and the direction kept.
-    CHECK_FALSE(judge(ray({beyond, 4, 2}, kOut.direction, 1e-9, 3)).passed);
-    CHECK_FALSE(judge(ray({beyond, 4, 2}, kOut.direction, 0, kInf)).passed);
-    CHECK_FALSE(judge(ray({beyond, 4, 2}, {-0.8, 0, 0.6 + 1e-14}, 0, 3)).passed);
-    const grade::Verdict wrong_side = judge(ray({-0.5, 4, 2}, kOut.direction, 0, 3));
+    CHECK_FALSE(judge(testing::ray_answer({{beyond, 4, 2}, kOut.direction, 1e-9, 3})).passed);
+    CHECK_FALSE(judge(testing::ray_answer({{beyond, 4, 2}, kOut.direction, 0, kInf})).passed);
+    CHECK_FALSE(judge(testing::ray_answer({{beyond, 4, 2}, {-0.8, 0, 0.6 + 1e-14}, 0, 3})).passed);
+    const grade::Verdict wrong_side =
+        judge(testing::ray_answer({{-0.5, 4, 2}, kOut.direction, 0, 3}));
     CHECK(wrong_side.expected ==
           "origin more than 1.7763568394002505e-15 and at most 5.3290705182007514e-15 along (-1, "
           "0, 0) from the point (-1, 4, 2), within 3.5527136788005009e-15 of that line, t in [0, "
@@ -89,18 +89,21 @@ TEST_CASE("leaving_ray error_bound: an origin strictly beyond d, and within the 
 TEST_CASE("leaving_ray along_normal: the origin within its tolerance per coordinate") {
     const grade::Judge judge =
         build_judge(grade::along_normal_judge({-1.125, 4, 2}, DoubleDoubleVec3(1e-15), kOut));
-    CHECK(judge(ray({-1.125, 4, 2}, kOut.direction, 0, 3)).passed);
-    CHECK(judge(ray({-1.125 + 0.9e-15, 4, 2}, kOut.direction, 0, 3)).passed);
-    CHECK_FALSE(judge(ray({-1.125 + 1.2e-15, 4, 2}, kOut.direction, 0, 3)).passed);
-    CHECK_FALSE(judge(ray({-0.875, 4, 2}, kOut.direction, 0, 3)).passed);
-    CHECK_FALSE(judge(ray({-1.125, 4, 2}, kOut.direction, 0.125, 3)).passed);
+    CHECK(judge(testing::ray_answer({{-1.125, 4, 2}, kOut.direction, 0, 3})).passed);
+    CHECK(judge(testing::ray_answer({{-1.125 + 0.9e-15, 4, 2}, kOut.direction, 0, 3})).passed);
+    CHECK_FALSE(
+        judge(testing::ray_answer({{-1.125 + 1.2e-15, 4, 2}, kOut.direction, 0, 3})).passed);
+    CHECK_FALSE(judge(testing::ray_answer({{-0.875, 4, 2}, kOut.direction, 0, 3})).passed);
+    CHECK_FALSE(judge(testing::ray_answer({{-1.125, 4, 2}, kOut.direction, 0.125, 3})).passed);
 }
 
 TEST_CASE("leaving_ray along_ray: the point itself, t from epsilon exactly") {
     const grade::Judge judge = build_judge(grade::along_ray_judge({-1, 4, 2}, 0.125, kOut));
-    CHECK(judge(ray({-1, 4, 2}, kOut.direction, 0.125, 3)).passed);
-    CHECK_FALSE(judge(ray({std::nextafter(-1.0, -2.0), 4, 2}, kOut.direction, 0.125, 3)).passed);
-    CHECK_FALSE(judge(ray({-1, 4, 2}, kOut.direction, 0, 3)).passed);
+    CHECK(judge(testing::ray_answer({{-1, 4, 2}, kOut.direction, 0.125, 3})).passed);
+    CHECK_FALSE(
+        judge(testing::ray_answer({{std::nextafter(-1.0, -2.0), 4, 2}, kOut.direction, 0.125, 3}))
+            .passed);
+    CHECK_FALSE(judge(testing::ray_answer({{-1, 4, 2}, kOut.direction, 0, 3})).passed);
     const grade::Verdict stub = judge(grade::ProbeAnswer{});
     CHECK_FALSE(stub.passed);
     CHECK(stub.got.empty());

@@ -1,10 +1,10 @@
 // The renderer's use of stages 5, 6 and 7: one pixel at a time, on scenes whose colour can be
 // worked out by hand.
 
-#include <algorithm>
 #include <string>
 #include <vector>
 
+#include "app/tests/trace_lines.h"
 #include "app/trace/trace_printer.h"
 #include "base/scene/scene_loader.h"
 #include "base/testing/catch.h"
@@ -12,6 +12,7 @@
 #include "renderer/render_pixel.h"
 
 using namespace raystep;
+using raystep::testing::has_line_starting;
 using raystep::testing::IsNear;
 
 namespace {
@@ -33,11 +34,6 @@ std::vector<std::string> traced(const std::string& text, View view) {
     TracePrinter printer(render_scene, lines);
     render_pixel(render_scene, view, 0, 0, printer);
     return lines;
-}
-
-bool has_line_starting(const std::vector<std::string>& trace, const std::string& start) {
-    return std::any_of(trace.begin(), trace.end(),
-                       [&](const std::string& line) { return line.rfind(start, 0) == 0; });
 }
 
 }  // namespace

@@ -1,13 +1,16 @@
 #include "app/trace/trace_printer.h"
 
-#include <algorithm>
 #include <string>
+#include <vector>
 
+#include "app/tests/trace_lines.h"
 #include "base/scene/scene_loader.h"
 #include "base/testing/catch.h"
 #include "renderer/render_pixel.h"
 
 using namespace raystep;
+using raystep::testing::count_lines_starting;
+using raystep::testing::has_line_starting;
 
 namespace {
 
@@ -96,27 +99,12 @@ TEST_CASE("trace: each primitive under a shared transform is named with its own 
     CHECK(lines[2].rfind("closest_hit: sphere 1 at t=5 ", 0) == 0);
 }
 
-namespace {
-
-bool has_line_starting(const std::vector<std::string>& lines, const std::string& start) {
-    return std::any_of(lines.begin(), lines.end(),
-                       [&](const std::string& line) { return line.rfind(start, 0) == 0; });
-}
-
-std::size_t count_starting(const std::vector<std::string>& lines, const std::string& start) {
-    return static_cast<std::size_t>(
-        std::count_if(lines.begin(), lines.end(),
-                      [&](const std::string& line) { return line.rfind(start, 0) == 0; }));
-}
-
-}  // namespace
-
 TEST_CASE("trace: a sampled pixel shows its first sample's steps, each sample, and the mean",
           "[app]") {
     const std::vector<std::string> lines =
         trace("size 3 3\ncamera 0 0 5 0 0 0 0 1 0 45\nspp 4\nsphere 0 0 0 1\n", View::full, 1, 1);
-    CHECK(count_starting(lines, "camera sample ") == 4);
-    CHECK(count_starting(lines, "camera ray: ") == 1);  // the first sample's, in full
+    CHECK(count_lines_starting(lines, "camera sample ") == 4);
+    CHECK(count_lines_starting(lines, "camera ray: ") == 1);  // the first sample's, in full
     CHECK_THAT(lines[0], Catch::Matchers::StartsWith("camera sample 0 through film point ("));
     CHECK(lines.back().rfind("pixel colour: the mean of 4 samples, ", 0) == 0);
 }
@@ -128,7 +116,7 @@ TEST_CASE("trace: a quad light shows each light sample's shadow ray and the ligh
         "quadLight -0.5 2 -0.5 0 0 1 1 0 0 5 5 5\ndiffuse 1 1 1\nplane 0 0 0 0 1 0\n",
         View::shaded, 1, 1);
     CHECK(has_line_starting(lines, "quad light (line 5): 4 samples, jittered"));
-    CHECK(count_starting(lines, "  light sample ") == 4);
+    CHECK(count_lines_starting(lines, "  light sample ") == 4);
     CHECK(has_line_starting(lines, "  quad light (line 5) term "));
 }
 

@@ -6,7 +6,7 @@ namespace raystep {
 
 namespace {
 
-std::string stamp_of(const std::filesystem::path& file) {
+std::string file_stamp(const std::filesystem::path& file) {
     std::error_code error;
     const auto time = std::filesystem::last_write_time(file, error);
     if (error) return "missing";
@@ -22,12 +22,12 @@ std::string stamp_of(const std::filesystem::path& file) {
 
 FileStamps::FileStamps(std::vector<std::filesystem::path> files) : files_(std::move(files)) {
     for (const std::filesystem::path& file : files_)
-        stamps_.push_back(stamp_of(file));
+        stamps_.push_back(file_stamp(file));
 }
 
 bool FileStamps::changed() const {
     for (std::size_t k = 0; k < files_.size(); ++k) {
-        if (stamp_of(files_[k]) != stamps_[k]) return true;
+        if (file_stamp(files_[k]) != stamps_[k]) return true;
     }
     return false;
 }

@@ -96,7 +96,7 @@ std::string file_text(const fs::path& path) {
 
 // What decides the cache's contents: the scene's files and the reference program, by their
 // times and sizes.
-std::string stamp_of(const std::string& scene_file, const fs::path& program) {
+std::string reference_stamp(const std::string& scene_file, const fs::path& program) {
     std::vector<fs::path> files{program};
     try {
         const std::vector<fs::path> scene = scene_files(load_scene(scene_file));
@@ -155,7 +155,7 @@ fs::path ReferenceFiles::cache_folder(const std::string& scene_file) const {
 
 fs::path ReferenceFiles::fresh_cache_folder(const std::string& scene_file) {
     const fs::path folder = cache_folder(scene_file);
-    const std::string stamp = stamp_of(scene_file, reference_program_);
+    const std::string stamp = reference_stamp(scene_file, reference_program_);
     if (file_text(folder / "stamp") != stamp) {
         std::error_code error;
         fs::remove_all(folder, error);
