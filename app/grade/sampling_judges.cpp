@@ -6,6 +6,7 @@
 
 #include "app/grade/data_judge.h"
 #include "app/grade/value_text.h"
+#include "app/protocol/json_codec.h"
 
 namespace raystep::grade {
 
@@ -13,21 +14,8 @@ namespace {
 
 using probe::Json;
 
-Json point(const Vec2& p) {
-    return Json::array({probe::number(p.x), probe::number(p.y)});
-}
-
 std::vector<Vec2> points_from(const Json& j) {
-    std::vector<Vec2> points;
-    for (const Json& p : j.get_ref<const Json::array_t&>()) {
-        if (p.size() != 2) throw std::invalid_argument("a point is [x, y]");
-        points.push_back({probe::number_from(p.at(0)), probe::number_from(p.at(1))});
-    }
-    return points;
-}
-
-std::string text(const Vec2& p) {
-    return "(" + full_text(p.x) + ", " + full_text(p.y) + ")";
+    return probe::JsonCodec<std::vector<Vec2>>::read(j);
 }
 
 // Row by row, then along the row: the order the two lists are compared in.
@@ -54,7 +42,7 @@ const JudgeRegistry::Registration point_set_registration{
              for (std::size_t k = 0; k < got.size(); ++k) {
                  if (!(std::abs(got[k].x - expected[k].x) <= tolerance &&
                        std::abs(got[k].y - expected[k].y) <= tolerance)) {
-                     return verdict_wrong(text(expected[k]), text(got[k]));
+                     return verdict_wrong(full_text(expected[k]), full_text(got[k]));
                  }
              }
              return verdict_right();
@@ -67,14 +55,14 @@ const JudgeRegistry::Registration sample_points_registration{
          return [=](const ProbeAnswer& answer) {
              const std::string want = std::to_string(count) + " points in [0, 1)^2";
              if (answer.kind != ProbeAnswer::Kind::result) return verdict_wrong(want, "");
-             for (const Json& stream : answer.value.get_ref<const Json::array_t&>()) {
-                 const std::vector<Vec2> got = points_from(stream);
+             for (const std::vector<Vec2>& got :
+                  probe::JsonCodec<std::vector<std::vector<Vec2>>>::read(answer.value)) {
                  if (got.size() != static_cast<std::size_t>(count)) {
                      return verdict_wrong(want, std::to_string(got.size()) + " points");
                  }
                  for (const Vec2& q : got) {
                      if (!(q.x >= 0 && q.x < 1 && q.y >= 0 && q.y < 1)) {
-                         return verdict_wrong(want, text(q));
+                         return verdict_wrong(want, full_text(q));
                      }
                  }
              }
@@ -85,10 +73,9 @@ const JudgeRegistry::Registration sample_points_registration{
 }  // namespace
 
 Json point_set_judge(const std::vector<Vec2>& expected, double tolerance) {
-    Json points = Json::array();
-    for (const Vec2& p : expected)
-        points.push_back(point(p));
-    return {{"judge", "point_set"}, {"expected", points}, {"tolerance", probe::number(tolerance)}};
+    return {{"judge", "point_set"},
+            {"expected", probe::JsonCodec<std::vector<Vec2>>::write(expected)},
+            {"tolerance", probe::number(tolerance)}};
 }
 
 Json sample_points_judge(int count) {

@@ -15,6 +15,10 @@ std::string full_text(const DoubleDouble& x) {
     return full_text(x.hi);
 }
 
+std::string full_text(const Vec2& v) {
+    return "(" + full_text(v.x) + ", " + full_text(v.y) + ")";
+}
+
 std::string full_text(const Vec3& v) {
     return "(" + full_text(v.x) + ", " + full_text(v.y) + ", " + full_text(v.z) + ")";
 }

@@ -19,7 +19,8 @@ std::string full_text(double x);
 /// can be.
 std::string full_text(const DoubleDouble& x);
 
-/// `(1, 2.5, -3)`, each coordinate as full_text writes it.
+/// `(1, 2.5)` and `(1, 2.5, -3)`, each coordinate as full_text writes it.
+std::string full_text(const Vec2& v);
 std::string full_text(const Vec3& v);
 
 /// A 4x4 matrix row by row: `rows [a, b, c, d]; [...]; [...]; [...]`.

@@ -6,6 +6,7 @@
 #include "app/probe/recursion_calls.h"
 #include "app/probe/refraction_calls.h"
 #include "app/probe/render_calls.h"
+#include "app/probe/sampling_calls.h"
 #include "app/probe/shading_calls.h"
 #include "app/probe/transform_calls.h"
 #include "app/probe/vector_calls.h"
@@ -14,14 +15,14 @@ namespace raystep::probe {
 
 CallTable stage_calls() {
     CallTable table;
-    add_calls(table, vector_calls);     // stage 1
-    add_calls(table, ray_calls);        // stage 2
-    add_calls(table, intersect_calls);  // stage 3
-    add_calls(table, accel_calls);      // stage 4: a structure's answers, no work counted
-    add_calls(table, transform_calls);  // stage 5
-    add_calls(table, shading_calls);    // stage 6
-    add_calls(table, recursion_calls);  // stage 7
-    add_sampling_calls(table);
+    add_calls(table, vector_calls);      // stage 1
+    add_calls(table, ray_calls);         // stage 2
+    add_calls(table, intersect_calls);   // stage 3
+    add_calls(table, accel_calls);       // stage 4: a structure's answers, no work counted
+    add_calls(table, transform_calls);   // stage 5
+    add_calls(table, shading_calls);     // stage 6
+    add_calls(table, recursion_calls);   // stage 7
+    add_calls(table, sampling_calls);    // stage 8
     add_calls(table, refraction_calls);  // stage 9
     add_call(table, render_call);        // whole images, through every stage a view needs
     return table;

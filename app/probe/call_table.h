@@ -16,8 +16,6 @@ namespace raystep::probe {
 using Call = std::function<Json(const Json& arguments)>;
 using CallTable = std::map<std::string, Call>;
 
-void add_sampling_calls(CallTable& table);  ///< stage 8
-
 /// Every stage's calls (app/probe/<stage>_calls.h): what `raystep grade` answers a public case
 /// with. Stage 4's structure as data and its timed workloads are for the grader's checks alone,
 /// which a release does not run, so only the grader's probe has them

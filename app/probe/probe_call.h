@@ -58,6 +58,13 @@ grade::ProbeQuery query(const ProbeCall<Question, Answer>& call, const Question&
     return {call.name, JsonCodec<Question>::write(question)};
 }
 
+/// The answer a probe gave to `call`, read as its type: throws where it is not one (an
+/// unreadable answer, which a check reports as such).
+template <class Question, class Answer>
+Answer read_answer(const ProbeCall<Question, Answer>&, const Json& value) {
+    return JsonCodec<Answer>::read(value);
+}
+
 /// `call` in the probe's table: the question read, answered by this build, the answer written.
 template <class Question, class Answer>
 void add_call(CallTable& table, const ProbeCall<Question, Answer>& call) {

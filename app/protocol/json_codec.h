@@ -89,6 +89,8 @@ struct JsonCodec<bool> {
 };
 
 template <>
+struct JsonCodec<Vec2> : FunctionCodec<Vec2, vec2, vec2_from> {};
+template <>
 struct JsonCodec<Vec3> : FunctionCodec<Vec3, vec3, vec3_from> {};
 template <>
 struct JsonCodec<Mat4> : FunctionCodec<Mat4, mat4, mat4_from> {};

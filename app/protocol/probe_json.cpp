@@ -55,6 +55,14 @@ int integer_from(const Json& j) {
     return j.get<int>();
 }
 
+Json vec2(const Vec2& v) {
+    return Json::array({number(v.x), number(v.y)});
+}
+
+Vec2 vec2_from(const Json& j) {
+    return {number_from(element(j, 0, 2)), number_from(element(j, 1, 2))};
+}
+
 Json vec3(const Vec3& v) {
     return Json::array({number(v.x), number(v.y), number(v.z)});
 }

@@ -41,6 +41,8 @@ int integer_from(const Json& j);  ///< a whole number that fits an int, nothing 
 /// The field `name` of an object; throws naming it where there is no such field.
 const Json& field(const Json& j, const char* name);
 
+Json vec2(const Vec2& v);  ///< a film or sample point [x, y]
+Vec2 vec2_from(const Json& j);
 Json vec3(const Vec3& v);
 Vec3 vec3_from(const Json& j);
 

@@ -13,6 +13,7 @@
 #include "app/probe/recursion_calls.h"
 #include "app/probe/refraction_calls.h"
 #include "app/probe/render_calls.h"
+#include "app/probe/sampling_calls.h"
 #include "app/probe/shading_calls.h"
 #include "app/probe/transform_calls.h"
 #include "app/probe/vector_calls.h"
@@ -137,6 +138,49 @@ TEST_CASE("probe call: a question of the wrong shape is refused, not read anothe
     }
 }
 
+TEST_CASE("probe call: a random call answers each stream, the same stream alike") {
+    const grade::ProbeQuery query = probe::query(probe::jittered_samples_call, {2, 8, {5, 5, 6}});
+    CHECK(query.args == Json::parse(R"({"strata": 2, "seed": 8, "streams": [5, 5, 6]})"));
+    const grade::ProbeAnswer answer = answered(query);
+    REQUIRE(answer.kind == grade::ProbeAnswer::Kind::result);
+    const probe::StreamPoints points =
+        probe::read_answer(probe::jittered_samples_call, answer.value);
+    REQUIRE(points.size() == 3);
+    CHECK(points[0].size() == 4);
+    CHECK(points[0] == points[1]);
+    CHECK(points[0] != points[2]);
+}
+
+TEST_CASE("probe call: a film radiance is its kind's function, and names a field it lacks") {
+    probe::FilmRadianceModel ramp;
+    ramp.kind = "ramp";
+    ramp.value = 0.5;
+    ramp.gradient = Vec2(0.25, -1.0);
+    CHECK(probe::film_radiance(ramp)({2, 1}) == Color(0.0));
+    probe::FilmRadianceModel edge;
+    edge.kind = "edge";
+    edge.through = Vec2(1, 1);
+    edge.normal = Vec2(0, 1);
+    edge.bright = 0.75;
+    edge.dark = 0.25;
+    CHECK(probe::film_radiance(edge)({0, 1}) == Color(0.75));
+    CHECK(probe::film_radiance(edge)({0, 0.5}) == Color(0.25));
+    edge.dark.reset();
+    CHECK_THROWS_WITH(probe::film_radiance(edge), "the film radiance \"edge\" needs \"dark\"");
+    probe::FilmRadianceModel unknown;
+    unknown.kind = "noise";
+    CHECK_THROWS_WITH(probe::film_radiance(unknown), "unknown film radiance \"noise\"");
+}
+
+TEST_CASE("probe call: a blocker blocks a ray that crosses it within its t range only") {
+    const std::vector<probe::Parallelogram> blockers = {{{-1, 1, -1}, {2, 0, 0}, {0, 0, 2}}};
+    const Ray up{{0, 0, 0}, {0, 1, 0}, 0.0, 2.0};
+    CHECK(probe::crosses_any(blockers, up));
+    CHECK_FALSE(probe::crosses_any(blockers, Ray{{0, 0, 0}, {0, 1, 0}, 0.0, 0.5}));
+    CHECK_FALSE(probe::crosses_any(blockers, Ray{{3, 0, 0}, {0, 1, 0}, 0.0, 2.0}));
+    CHECK_FALSE(probe::crosses_any({}, up));
+}
+
 TEST_CASE("probe call: every typed call is in the probe's table once, by its own name") {
     const probe::CallTable table = probe::stage_calls();
     std::vector<std::string> names;
@@ -150,10 +194,11 @@ TEST_CASE("probe call: every typed call is in the probe's table once, by its own
     collect(probe::transform_calls);
     collect(probe::shading_calls);
     collect(probe::recursion_calls);
+    collect(probe::sampling_calls);
     collect(probe::refraction_calls);
     names.push_back(probe::render_call.name);
-    // Stages 1 to 7 and 9 (8 + 3 + 2 + 4 + 8 + 7 + 2 + 7), and render
-    CHECK(names.size() == 42);
+    // Stages 1 to 9 (8 + 3 + 2 + 4 + 8 + 7 + 2 + 10 + 7), and render
+    CHECK(names.size() == 52);
     for (const std::string& name : names) {
         INFO(name);
         CHECK(table.count(name) == 1);

@@ -13,9 +13,9 @@
 #include <glm/geometric.hpp>
 
 #include "app/probe/call_table.h"
+#include "app/probe/sampling_calls.h"
 #include "app/tests/probe_answers.h"
 #include "base/testing/catch.h"
-#include "grader/grade/checks/stage8_queries.h"
 #include "grader/grade/checks/stage8_shadow_rays.h"
 #include "grader/grade/checks/stage8_statistics.h"
 #include "stages/6_shading/shading.h"
@@ -23,7 +23,6 @@
 
 using namespace raystep;
 using namespace raystep::grade;
-using probe::Json;
 using raystep::testing::result_answer;
 
 namespace {
@@ -57,19 +56,20 @@ using Pattern = std::function<std::vector<Vec2>(int n, RandomStream& random)>;
 
 // A jittered_samples or samples(jittered) query answered by `pattern` on each of its streams.
 ProbeAnswer pattern_answer(const ProbeQuery& query, const Pattern& pattern) {
-    const int n = query.call == "samples"
-                      ? static_cast<int>(std::lround(std::sqrt(query.args.at("count").get<int>())))
-                      : query.args.at("strata").get<int>();
-    const auto seed = query.args.at("seed").get<std::uint64_t>();
-    Json answers = Json::array();
-    for (const Json& stream : query.args.at("streams")) {
-        RandomStream random(seed, stream.get<std::uint64_t>());
-        Json points = Json::array();
-        for (const Vec2& p : pattern(n, random))
-            points.push_back(point_json(p));
-        answers.push_back(std::move(points));
+    const auto answer = [&](int n, std::uint64_t seed, const std::vector<std::uint64_t>& streams) {
+        probe::StreamPoints points;
+        for (const std::uint64_t stream : streams) {
+            RandomStream random(seed, stream);
+            points.push_back(pattern(n, random));
+        }
+        return result_answer(probe::JsonCodec<probe::StreamPoints>::write(points));
+    };
+    if (query.call == probe::samples_call.name) {
+        const auto q = probe::JsonCodec<probe::SamplesQuestion>::read(query.args);
+        return answer(static_cast<int>(std::lround(std::sqrt(q.count))), q.seed, q.streams);
     }
-    return result_answer(answers);
+    const auto q = probe::JsonCodec<probe::JitteredSamplesQuestion>::read(query.args);
+    return answer(q.strata, q.seed, q.streams);
 }
 
 // Below the far edge (a + 1.0) / n, as the handout clamps.
@@ -165,50 +165,31 @@ TracedShadowRay shadow_ray_to(const QuadLightCall& call, const Vec2& u) {
 // (`copy_for_film`, 8-pixel-colour-stream-copied) or for each film sample's light samples
 // (`copy_for_light`, 8-quad-light-stream-copied).
 ProbeAnswer lit_pixel_answer(const ProbeQuery& query, bool copy_for_film, bool copy_for_light) {
-    const Json& a = query.args;
-    const int i = a.at("i").get<int>();
-    const int j = a.at("j").get<int>();
-    const int count = a.at("count").get<int>();
-    const int light_count = a.at("light_count").get<int>();
-    const Vec3 corner = probe::vec3_from(a.at("floor").at("corner"));
-    const Vec3 edge1 = probe::vec3_from(a.at("floor").at("edge1"));
-    const Vec3 edge2 = probe::vec3_from(a.at("floor").at("edge2"));
-    const Vec3 normal = glm::normalize(glm::cross(edge1, edge2));
-    const Vec3 to_eye = probe::vec3_from(a.at("to_eye"));
-    const Material material = probe::material_from(a.at("material"));
-    const RayOffset offset = probe::ray_offset_from(a.at("offset"));
-    QuadLight light;
-    light.corner = probe::vec3_from(a.at("light").at("corner"));
-    light.edge1 = probe::vec3_from(a.at("light").at("edge1"));
-    light.edge2 = probe::vec3_from(a.at("light").at("edge2"));
-    light.radiance = probe::vec3_from(a.at("light").at("radiance"));
-    const auto seed = a.at("seed").get<std::uint64_t>();
-    Json answers = Json::array();
-    for (const Json& stream : a.at("streams")) {
-        RandomStream random(seed, stream.get<std::uint64_t>());
+    const auto q = probe::JsonCodec<probe::LitPixelQuestion>::read(query.args);
+    std::vector<probe::LitPixelAnswer> answers;
+    for (const std::uint64_t stream : q.streams) {
+        RandomStream random(q.seed, stream);
         RandomStream film_copy = random;
         const std::vector<Vec2> offsets =
-            samples(SamplePattern::jittered, count, copy_for_film ? film_copy : random);
-        Json films = Json::array();
+            samples(q.pattern, q.count, copy_for_film ? film_copy : random);
+        probe::LitPixelAnswer answer;
         Color sum(0.0);
         for (const Vec2& u : offsets) {
-            const Vec2 film = Vec2(i, j) + u;
-            const SurfacePoint p{corner + u.x * edge1 + u.y * edge2, Vec3(0.0), normal, normal,
-                                 to_eye};
-            Json traced = Json::array();
+            probe::LitFilmSample sample{Vec2(q.i, q.j) + u, {}};
             const OccludedFunction occluded = [&](const Ray& ray) {
-                traced.push_back({{"ray", probe::ray(ray)}, {"blocked", false}});
+                sample.shadow_rays.push_back({ray, false});
                 return false;
             };
             RandomStream light_copy = random;
-            sum += quad_light_shading(material, p, light, SamplePattern::jittered, light_count,
-                                      copy_for_light ? light_copy : random, occluded, offset);
-            films.push_back({{"film", point_json(film)}, {"shadow_rays", std::move(traced)}});
+            sum += quad_light_shading(q.material, probe::floor_point_under(q, sample.film), q.light,
+                                      q.light_pattern, q.light_count,
+                                      copy_for_light ? light_copy : random, occluded, q.offset);
+            answer.films.push_back(std::move(sample));
         }
-        answers.push_back({{"colour", probe::vec3(sum / static_cast<double>(count))},
-                           {"films", std::move(films)}});
+        answer.colour = sum / static_cast<double>(q.count);
+        answers.push_back(std::move(answer));
     }
-    return result_answer(answers);
+    return result_answer(probe::JsonCodec<std::vector<probe::LitPixelAnswer>>::write(answers));
 }
 
 }  // namespace
@@ -220,7 +201,7 @@ TEST_CASE("stage8 jittered check: the reference's pattern passes every case", "[
 TEST_CASE("stage8 jittered check: without the clamp, 1 - 2^-53 lands on a stratum's far edge",
           "[grader]") {
     const std::vector<std::string> failures =
-        failed(jittered_cases(), answering("jittered_samples", without_clamp));
+        failed(jittered_cases(), answering(probe::jittered_samples_call.name, without_clamp));
     CAPTURE(failures);
     CHECK(failures.size() == 2);
     CHECK(has(failures, "jittered_samples(3): 0 and 1 - 2^-53 at every draw"));
@@ -230,11 +211,11 @@ TEST_CASE("stage8 jittered check: without the clamp, 1 - 2^-53 lands on a stratu
 TEST_CASE("stage8 jittered check: an offset shared along a row or a column is not independent",
           "[grader]") {
     const std::vector<std::string> rows =
-        failed(jittered_cases(), answering("jittered_samples", row_shares_y));
+        failed(jittered_cases(), answering(probe::jittered_samples_call.name, row_shares_y));
     CAPTURE(rows);
     CHECK(has(rows, "neighbouring strata along rows"));
     const std::vector<std::string> columns =
-        failed(jittered_cases(), answering("jittered_samples", column_shares_x));
+        failed(jittered_cases(), answering(probe::jittered_samples_call.name, column_shares_x));
     CAPTURE(columns);
     CHECK(has(columns, "neighbouring strata along columns"));
 }
@@ -245,7 +226,7 @@ TEST_CASE("stage8 jittered check: samples(jittered) falling through to random is
         return random_samples(n * n, random);
     };
     const std::vector<std::string> failures =
-        failed(jittered_cases(), answering("samples", random_points));
+        failed(jittered_cases(), answering(probe::samples_call.name, random_points));
     CAPTURE(failures);
     REQUIRE(failures.size() == 1);
     CHECK(has(failures, "samples(jittered, 16): one point per stratum"));

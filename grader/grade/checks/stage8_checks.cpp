@@ -18,11 +18,11 @@
 #include "app/grade/shading_judges.h"
 #include "app/grade/value_judges.h"
 #include "app/grade/value_text.h"
+#include "app/probe/sampling_calls.h"
 #include "base/math/double_double_vec.h"
 #include "base/math/portable_random.h"
 #include "grader/grade/checks/data_judged.h"
 #include "grader/grade/checks/judging.h"
-#include "grader/grade/checks/stage8_queries.h"
 #include "grader/grade/checks/stage_checks.h"
 #include "grader/grade/checks/statistics_seed.h"
 #include "grader/oracle/sampling_oracle.h"
@@ -30,8 +30,6 @@
 namespace raystep::grade {
 
 namespace {
-
-using probe::Json;
 
 // A direction's coordinates from two double computations of the same unit vector differ by a
 // few ulps of 1 (2.2e-16 each); 1e-12 leaves room for any order of operations and still sees a
@@ -56,14 +54,13 @@ PublicCase regular_case(int n) {
             expected.push_back({(a + 0.5) / n, (b + 0.5) / n});
     }
     const std::string call = "regular_samples(" + std::to_string(n) + ")";
-    return {call, {"regular_samples", Json{{"strata", n}}}, point_set_judge(expected, 1e-15), call};
+    return {call, probe::query(probe::regular_samples_call, {n}), point_set_judge(expected, 1e-15),
+            call};
 }
 
-Json samples_query(SamplePattern pattern, int count) {
-    return {{"pattern", std::string(sample_pattern_name(pattern))},
-            {"count", count},
-            {"seed", kDefaultStatisticsSeed},
-            {"streams", Json::array({0})}};
+// One stream of the default seed: these cases judge what any stream gives.
+ProbeQuery samples_query(SamplePattern pattern, int count) {
+    return probe::query(probe::samples_call, {pattern, count, kDefaultStatisticsSeed, {0}});
 }
 
 std::string samples_call(SamplePattern pattern, int count) {
@@ -73,29 +70,21 @@ std::string samples_call(SamplePattern pattern, int count) {
 
 PublicCase samples_throw_case(SamplePattern pattern, int count) {
     const std::string call = samples_call(pattern, count);
-    return {call + ": not a square",
-            {"samples", samples_query(pattern, count)},
-            threw_judge("domain_error"),
+    return {call + ": not a square", samples_query(pattern, count), threw_judge("domain_error"),
             call};
 }
 
 PublicCase random_count_throw_case(int count) {
     const std::string call = "random_samples(" + std::to_string(count) + ", random)";
-    return {
-        call + ": no samples",
-        {"random_samples",
-         Json{{"count", count}, {"seed", kDefaultStatisticsSeed}, {"streams", Json::array({0})}}},
-        threw_judge("domain_error"),
-        call};
+    return {call + ": no samples",
+            probe::query(probe::random_samples_call, {count, kDefaultStatisticsSeed, {0}}),
+            threw_judge("domain_error"), call};
 }
 
 // samples(pattern, count) gives `count` points, each in [0, 1)^2.
 PublicCase samples_count_case(SamplePattern pattern, int count) {
     const std::string call = samples_call(pattern, count);
-    return {call + ": the count",
-            {"samples", samples_query(pattern, count)},
-            sample_points_judge(count),
-            call};
+    return {call + ": the count", samples_query(pattern, count), sample_points_judge(count), call};
 }
 
 // --- rays through film points
@@ -115,11 +104,9 @@ PublicCase perspective_case(const PerspectiveCamera& camera, const Vec2& film) {
                 full_text(camera.frame.w) + ", " + std::to_string(camera.width) + " x " +
                 std::to_string(camera.height) + " pixels, half sizes " +
                 full_text(camera.half_width) + " x " + full_text(camera.half_height),
-            {"perspective_ray_through", Json{{"camera", perspective_camera_json(camera)},
-                                             {"films", Json::array({point_json(film)})}}},
+            probe::query(probe::perspective_ray_through_call, {camera, {film}}),
             // The origin is the eye itself: nothing computed.
-            camera_ray_judge(expected.origin, 0.0, expected.direction, kDirectionTolerance),
-            call};
+            camera_ray_judge(expected.origin, 0.0, expected.direction, kDirectionTolerance), call};
 }
 
 PublicCase orthographic_case(const OrthographicCamera& camera, const Vec2& film) {
@@ -135,8 +122,7 @@ PublicCase orthographic_case(const OrthographicCamera& camera, const Vec2& film)
                 full_text(camera.right) + "] x [" + full_text(camera.bottom) + ", " +
                 full_text(camera.top) + "], " + std::to_string(camera.width) + " x " +
                 std::to_string(camera.height) + " pixels",
-            {"orthographic_ray_through", Json{{"camera", orthographic_camera_json(camera)},
-                                              {"films", Json::array({point_json(film)})}}},
+            probe::query(probe::orthographic_ray_through_call, {camera, {film}}),
             camera_ray_judge(expected.origin, kRelativeTolerance * scale, expected.direction,
                              kDirectionTolerance),
             call};
@@ -154,14 +140,10 @@ PublicCase quad_light_sample_case(const QuadLight& light, const Vec3& point, con
     const std::string call =
         "sample_quad_light(light at " + full_text(light.corner) + " + u " + full_text(light.edge1) +
         " + v " + full_text(light.edge2) + ", radiance " + full_text(light.radiance) + ", point " +
-        full_text(point) + ", u " + point_text(u) + ", " + std::to_string(count) + ")";
+        full_text(point) + ", u " + full_text(u) + ", " + std::to_string(count) + ")";
     const LightSample e = expected_quad_light_sample(light, point, u, count);
     const double scale = std::max({e.intensity.x, e.intensity.y, e.intensity.z});
-    return {call,
-            {"sample_quad_light", Json{{"light", quad_light_json(light)},
-                                       {"point", probe::vec3(point)},
-                                       {"u", point_json(u)},
-                                       {"sample_count", count}}},
+    return {call, probe::query(probe::sample_quad_light_call, {light, point, u, count}),
             light_sample_judge(
                 DoubleDoubleVec3(e.direction), kDirectionTolerance, DoubleDouble(e.distance),
                 DoubleDouble(kRelativeTolerance * e.distance), DoubleDoubleVec3(e.intensity),

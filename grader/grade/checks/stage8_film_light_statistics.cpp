@@ -1,7 +1,7 @@
 // Stage 8's check of film and light samples together (stage8_statistics.cpp says how the checks
 // judge): a pixel of a floor under a quad light, pixel_colour over a film radiance that shades
 // the floor point under each film point with quad_light_shading, one stream per pixel handed to
-// both in turn (app/probe/sampling_calls.cpp, "pixel_colour_with_quad_light"). Each film sample
+// both in turn (app/probe/sampling_calls.h, "pixel_colour_with_quad_light"). Each film sample
 // must get light samples of its own, drawn independently of the film points. A stream copied
 // instead of drawn from gives every film sample the same light samples (copied in
 // quad_light_shading), or the light samples the numbers the film points took (copied in
@@ -16,10 +16,10 @@
 #include <glm/geometric.hpp>
 
 #include "app/grade/value_text.h"
+#include "app/probe/sampling_calls.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/sample_statistics.h"
 #include "grader/grade/checks/stage8_light_scene.h"
-#include "grader/grade/checks/stage8_queries.h"
 #include "grader/grade/checks/stage8_shadow_rays.h"
 #include "grader/grade/checks/stage8_statistics.h"
 #include "grader/grade/checks/statistics_seed.h"
@@ -29,8 +29,6 @@ namespace raystep::grade {
 
 namespace {
 
-using probe::Json;
-
 constexpr int kPixelI = 2;
 constexpr int kPixelJ = 7;
 // 4 x 4 jittered film samples, each with 2 x 2 jittered light samples: the renderer's default
@@ -38,13 +36,10 @@ constexpr int kPixelJ = 7;
 constexpr int kFilmSide = 4;
 constexpr int kLightSide = 2;
 
-// The film point (i + x, j + y) shades the floor point kFloorCorner + x kFloorEdge1 + y
-// kFloorEdge2, whose normal, kFloorEdge1 x kFloorEdge2, points up at the light: every light
-// sample is above the surface and nothing blocks, so every film sample traces all its light
-// samples.
-const Vec3 kFloorCorner{-0.5, 0, -0.5};
-const Vec3 kFloorEdge1{0, 0, 1};
-const Vec3 kFloorEdge2{1, 0, 0};
+// The film point (i + x, j + y) shades the floor point corner + x edge1 + y edge2, whose normal,
+// edge1 x edge2, points up at the light: every light sample is above the surface and nothing
+// blocks, so every film sample traces all its light samples.
+const probe::Parallelogram kFloor{{-0.5, 0, -0.5}, {0, 0, 1}, {1, 0, 0}};
 const Vec3 kToEye = glm::normalize(Vec3{2, 2, 1});
 // Along the ray: the origin is the point itself, so the grader's point is the ray's.
 const RayOffset kOffset{OffsetRule::along_ray, 1e-9};
@@ -53,30 +48,23 @@ const RayOffset kOffset{OffsetRule::along_ray, 1e-9};
 // 4e-18; a number reused comes back within rounding, 1e-15 of the unit square.
 constexpr double kSameSample = 1e-9;
 
-// The floor point under a film point, as the probe makes it.
-SurfacePoint floor_point(const Vec2& film) {
-    const Vec3 normal = glm::normalize(glm::cross(kFloorEdge1, kFloorEdge2));
-    return {kFloorCorner + (film.x - kPixelI) * kFloorEdge1 + (film.y - kPixelJ) * kFloorEdge2,
-            Vec3(0.0), normal, normal, kToEye};
-}
-
-Json lit_pixel_query(std::uint64_t seed, const Json& streams) {
-    return {{"i", kPixelI},
-            {"j", kPixelJ},
-            {"pattern", "jittered"},
-            {"count", kFilmSide * kFilmSide},
-            {"floor",
-             {{"corner", probe::vec3(kFloorCorner)},
-              {"edge1", probe::vec3(kFloorEdge1)},
-              {"edge2", probe::vec3(kFloorEdge2)}}},
-            {"to_eye", probe::vec3(kToEye)},
-            {"material", probe::material(shading_check_material())},
-            {"light", quad_light_json(kShadingCheckLight)},
-            {"light_pattern", "jittered"},
-            {"light_count", kLightSide * kLightSide},
-            {"offset", probe::ray_offset(kOffset)},
-            {"seed", seed},
-            {"streams", streams}};
+// The question of every case but its streams: 4 x 4 jittered film samples of the pixel, each
+// with 2 x 2 jittered light samples.
+probe::LitPixelQuestion lit_pixel_question(std::uint64_t seed,
+                                           const std::vector<std::uint64_t>& streams) {
+    return {kPixelI,
+            kPixelJ,
+            SamplePattern::jittered,
+            kFilmSide * kFilmSide,
+            kFloor,
+            kToEye,
+            shading_check_material(),
+            kShadingCheckLight,
+            SamplePattern::jittered,
+            kLightSide * kLightSide,
+            kOffset,
+            seed,
+            streams};
 }
 
 // One pixel's film samples: each film point, in the order the radiance was asked, and the light
@@ -89,8 +77,9 @@ struct LitPixel {
 // Reads one stream's answer: 16 film points inside the pixel, each with 4 shadow rays of its
 // floor point to the light (all above the surface, none blocked), and the colour the mean of
 // what those samples make. Returns the problem, or empty.
-std::string read_lit_pixel(const Json& stream, LitPixel& pixel) {
-    const Json& films = stream.at("films");
+std::string read_lit_pixel(const probe::LitPixelQuestion& question,
+                           const probe::LitPixelAnswer& stream, LitPixel& pixel) {
+    const std::vector<probe::LitFilmSample>& films = stream.films;
     const int count = kFilmSide * kFilmSide;
     const int light_count = kLightSide * kLightSide;
     if (films.size() != static_cast<std::size_t>(count)) {
@@ -99,18 +88,18 @@ std::string read_lit_pixel(const Json& stream, LitPixel& pixel) {
     }
     WideVec sum(0);
     WideVec tolerance(0);
-    for (const Json& film : films) {
-        const Vec2 f = point_from(film.at("film"));
+    for (const probe::LitFilmSample& film : films) {
+        const Vec2& f = film.film;
         if (!(f.x >= kPixelI && f.x <= kPixelI + 1 && f.y >= kPixelJ && f.y <= kPixelJ + 1)) {
-            return "the film point " + point_text(f) + " outside the pixel";
+            return "the film point " + full_text(f) + " outside the pixel";
         }
-        const QuadLightCall call{
-            shading_check_material(), floor_point(f), kShadingCheckLight, light_count, kOffset, {}};
-        const ShadowRayReading reading =
-            read_shadow_rays(call, traced_shadow_rays(film.at("shadow_rays")));
+        const QuadLightCall call{question.material, probe::floor_point_under(question, f),
+                                 question.light,    light_count,
+                                 question.offset,   {}};
+        const ShadowRayReading reading = read_shadow_rays(call, film.shadow_rays);
         if (!reading.problem.empty()) return reading.problem;
         if (reading.samples.size() != static_cast<std::size_t>(light_count)) {
-            return "the film point " + point_text(f) + " shaded with " +
+            return "the film point " + full_text(f) + " shaded with " +
                    std::to_string(reading.samples.size()) + " shadow rays, not " +
                    std::to_string(light_count) + ": every light sample is above the floor";
         }
@@ -119,15 +108,17 @@ std::string read_lit_pixel(const Json& stream, LitPixel& pixel) {
         sum += widen(reading.colour);
         tolerance += widen(reading.tolerance);
     }
-    const Vec3 colour = probe::vec3_from(stream.at("colour"));
-    return colour_problem(colour, narrow(sum / Wide(count)), narrow(tolerance / Wide(count)));
+    return colour_problem(stream.colour, narrow(sum / Wide(count)),
+                          narrow(tolerance / Wide(count)));
 }
 
 // Every stream read, or the first problem.
-std::string read_lit_pixels(const ProbeAnswer& answer, std::vector<LitPixel>& pixels) {
-    for (const Json& stream : answer.value) {
+std::string read_lit_pixels(const probe::LitPixelQuestion& question, const ProbeAnswer& answer,
+                            std::vector<LitPixel>& pixels) {
+    for (const probe::LitPixelAnswer& stream :
+         probe::read_answer(probe::pixel_colour_with_quad_light_call, answer.value)) {
         LitPixel pixel;
-        const std::string problem = read_lit_pixel(stream, pixel);
+        const std::string problem = read_lit_pixel(question, stream, pixel);
         if (!problem.empty()) return problem;
         pixels.push_back(std::move(pixel));
     }
@@ -153,13 +144,14 @@ std::string lit_pixel_call(int streams) {
 // No two film samples of a pixel share a light sample.
 ProbeCase own_light_samples_case(std::uint64_t seed, StreamCounter& streams) {
     constexpr int stream_count = 100;
+    const probe::LitPixelQuestion question = lit_pixel_question(seed, streams.next(stream_count));
     return {lit_pixel_call(stream_count) + ": each film sample's light samples its own",
-            {"pixel_colour_with_quad_light", lit_pixel_query(seed, streams.next(stream_count))},
-            [](const ProbeAnswer& answer) {
+            probe::query(probe::pixel_colour_with_quad_light_call, question),
+            [question](const ProbeAnswer& answer) {
                 const std::string want = "new light samples for every film sample";
                 if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
                 std::vector<LitPixel> pixels;
-                const std::string problem = read_lit_pixels(answer, pixels);
+                const std::string problem = read_lit_pixels(question, answer, pixels);
                 if (!problem.empty()) return wrong(want, problem);
                 for (const LitPixel& pixel : pixels) {
                     for (std::size_t k = 0; k < pixel.lights.size(); ++k) {
@@ -168,9 +160,9 @@ ProbeCase own_light_samples_case(std::uint64_t seed, StreamCounter& streams) {
                                 for (const Vec2& v : pixel.lights[other]) {
                                     if (!same_sample(u, v)) continue;
                                     return wrong(want,
-                                                 "the film points " + point_text(pixel.films[k]) +
-                                                     " and " + point_text(pixel.films[other]) +
-                                                     " share the light sample " + point_text(u));
+                                                 "the film points " + full_text(pixel.films[k]) +
+                                                     " and " + full_text(pixel.films[other]) +
+                                                     " share the light sample " + full_text(u));
                                 }
                             }
                         }
@@ -187,16 +179,17 @@ ProbeCase own_light_samples_case(std::uint64_t seed, StreamCounter& streams) {
 // independent by a chi-square test in x and one in y.
 ProbeCase independent_samples_case(std::uint64_t seed, StreamCounter& streams, double alpha) {
     constexpr int stream_count = 400;
+    const probe::LitPixelQuestion question = lit_pixel_question(seed, streams.next(stream_count));
     return {lit_pixel_call(stream_count) + ": film and light samples independent",
-            {"pixel_colour_with_quad_light", lit_pixel_query(seed, streams.next(stream_count))},
-            [alpha](const ProbeAnswer& answer) {
+            probe::query(probe::pixel_colour_with_quad_light_call, question),
+            [question, alpha](const ProbeAnswer& answer) {
                 const std::string want =
                     "light samples that reuse no film point's numbers, and the offsets of film "
                     "points and their first light samples independent, chi-square p >= " +
                     full_text(alpha) + " for x and for y";
                 if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
                 std::vector<LitPixel> pixels;
-                const std::string problem = read_lit_pixels(answer, pixels);
+                const std::string problem = read_lit_pixels(question, answer, pixels);
                 if (!problem.empty()) return wrong(want, problem);
                 std::vector<Vec2> x_pairs;
                 std::vector<Vec2> y_pairs;
@@ -210,12 +203,12 @@ ProbeCase independent_samples_case(std::uint64_t seed, StreamCounter& streams, d
                             const Vec2 light = offset_in_stratum(u, kLightSide);
                             for (const Vec2& film : film_offsets) {
                                 if (!same_sample(light, film)) continue;
-                                return wrong(
-                                    want, "the light sample " + point_text(u) +
-                                              " of the film point " + point_text(pixel.films[k]) +
-                                              " sits in its stratum at " + point_text(light) +
-                                              ", where a film point of the pixel sits "
-                                              "in its own: the same random numbers");
+                                return wrong(want,
+                                             "the light sample " + full_text(u) +
+                                                 " of the film point " + full_text(pixel.films[k]) +
+                                                 " sits in its stratum at " + full_text(light) +
+                                                 ", where a film point of the pixel sits "
+                                                 "in its own: the same random numbers");
                             }
                         }
                         const Vec2 first = offset_in_stratum(pixel.lights[k].front(), kLightSide);

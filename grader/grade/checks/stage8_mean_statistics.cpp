@@ -19,10 +19,10 @@
 #include <glm/geometric.hpp>
 
 #include "app/grade/value_text.h"
+#include "app/probe/sampling_calls.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/sample_statistics.h"
 #include "grader/grade/checks/stage8_light_scene.h"
-#include "grader/grade/checks/stage8_queries.h"
 #include "grader/grade/checks/stage8_shadow_rays.h"
 #include "grader/grade/checks/stage8_statistics.h"
 #include "grader/grade/checks/statistics_seed.h"
@@ -31,8 +31,6 @@
 namespace raystep::grade {
 
 namespace {
-
-using probe::Json;
 
 // --- pixel_colour
 
@@ -46,10 +44,10 @@ struct FilmValues {
     double high = 0.0;
 };
 
-// A film radiance of the probe's (app/probe/sampling_calls.cpp) and what the grader knows of it.
+// A film radiance of the probe's (app/probe/sampling_calls.h) and what the grader knows of it.
 struct FilmCase {
     std::string text;
-    Json radiance;
+    probe::FilmRadianceModel radiance;
     std::function<FilmValues(const Vec2&)> at;  ///< its value at a film point
     double mean = 0.0;                          ///< its exact mean over the pixel
     /// The exact variance of the jittered estimate with n x n strata.
@@ -61,7 +59,10 @@ struct FilmCase {
 constexpr double kFilmRounding = 1e-12;
 
 FilmCase constant_film(double value) {
-    return {"constant " + full_text(value), Json{{"kind", "constant"}, {"value", value}},
+    probe::FilmRadianceModel model;
+    model.kind = "constant";
+    model.value = value;
+    return {"constant " + full_text(value), model,
             [value](const Vec2&) {
                 return FilmValues{value, value};
             },
@@ -90,13 +91,15 @@ FilmCase edge_film(const Vec2& through, double angle, double bright, double dark
         const double n2 = static_cast<double>(n) * n;
         return (bright - dark) * (bright - dark) * sum / (n2 * n2);
     };
-    return {"an edge through " + point_text(through) + " at " + full_text(angle) +
+    probe::FilmRadianceModel model;
+    model.kind = "edge";
+    model.through = through;
+    model.normal = normal;
+    model.bright = bright;
+    model.dark = dark;
+    return {"an edge through " + full_text(through) + " at " + full_text(angle) +
                 " radians, bright " + full_text(bright) + ", dark " + full_text(dark),
-            Json{{"kind", "edge"},
-                 {"through", point_json(through)},
-                 {"normal", point_json(normal)},
-                 {"bright", bright},
-                 {"dark", dark}},
+            model,
             [=](const Vec2& film) {
                 const Vec2 d = film - through;
                 const double side = d.x * normal.x + d.y * normal.y;
@@ -115,8 +118,11 @@ FilmCase ramp_film(double value, const Vec2& gradient) {
         const double n2 = static_cast<double>(n) * n;
         return (gradient.x * gradient.x + gradient.y * gradient.y) / (12.0 * n2 * n2);
     };
-    return {"a ramp " + full_text(value) + " + " + point_text(gradient) + " . film",
-            Json{{"kind", "ramp"}, {"value", value}, {"gradient", point_json(gradient)}},
+    probe::FilmRadianceModel model;
+    model.kind = "ramp";
+    model.value = value;
+    model.gradient = gradient;
+    return {"a ramp " + full_text(value) + " + " + full_text(gradient) + " . film", model,
             [=](const Vec2& film) {
                 const double at = value + gradient.x * film.x + gradient.y * film.y;
                 const double rounding = kFilmRounding * (1 + std::abs(at));
@@ -125,15 +131,10 @@ FilmCase ramp_film(double value, const Vec2& gradient) {
             mean, variance};
 }
 
-Json pixel_query(const FilmCase& film, SamplePattern pattern, int count, std::uint64_t seed,
-                 const Json& streams) {
-    return {{"radiance", film.radiance},
-            {"i", kPixelI},
-            {"j", kPixelJ},
-            {"pattern", std::string(sample_pattern_name(pattern))},
-            {"count", count},
-            {"seed", seed},
-            {"streams", streams}};
+ProbeQuery pixel_query(const FilmCase& film, SamplePattern pattern, int count, std::uint64_t seed,
+                       const std::vector<std::uint64_t>& streams) {
+    return probe::query(probe::pixel_colour_call,
+                        {film.radiance, kPixelI, kPixelJ, pattern, count, seed, streams});
 }
 
 std::string pixel_call(const FilmCase& film, SamplePattern pattern, int count) {
@@ -147,10 +148,11 @@ std::string pixel_call(const FilmCase& film, SamplePattern pattern, int count) {
 // points the probe hands back and takes the radiance's values there itself, so the count and the
 // colour come from data it checks, not from the probe's word. Returns the red channel of each
 // stream, or the problem.
-std::string read_pixel_answers(const Json& answers, const FilmCase& film, int count,
+std::string read_pixel_answers(const ProbeAnswer& answer, const FilmCase& film, int count,
                                std::vector<double>& colours) {
-    for (const Json& stream : answers) {
-        const std::vector<Vec2> films = points_from(stream.at("films"));
+    for (const probe::PixelColourAnswer& stream :
+         probe::read_answer(probe::pixel_colour_call, answer.value)) {
+        const std::vector<Vec2>& films = stream.films;
         if (films.size() != static_cast<std::size_t>(count)) {
             return "the radiance asked at " + std::to_string(films.size()) + " film points, not " +
                    std::to_string(count);
@@ -160,7 +162,7 @@ std::string read_pixel_answers(const Json& answers, const FilmCase& film, int co
         for (const Vec2& f : films) {
             // Closed: i + u with u just below 1 may round to i + 1.
             if (!(f.x >= kPixelI && f.x <= kPixelI + 1 && f.y >= kPixelJ && f.y <= kPixelJ + 1)) {
-                return "the film point " + point_text(f) + " outside the pixel [" +
+                return "the film point " + full_text(f) + " outside the pixel [" +
                        std::to_string(kPixelI) + ", " + std::to_string(kPixelI + 1) + "] x [" +
                        std::to_string(kPixelJ) + ", " + std::to_string(kPixelJ + 1) + "]";
             }
@@ -168,7 +170,7 @@ std::string read_pixel_answers(const Json& answers, const FilmCase& film, int co
             low += values.low;
             high += values.high;
         }
-        const Vec3 colour = probe::vec3_from(stream.at("colour"));
+        const Color& colour = stream.colour;
         if (!(colour.x == colour.y && colour.y == colour.z)) {
             return "the channels of a grey radiance apart: " + full_text(colour);
         }
@@ -189,12 +191,12 @@ std::string read_pixel_answers(const Json& answers, const FilmCase& film, int co
 ProbeCase pixel_exact_case(const FilmCase& film, SamplePattern pattern, int count, double exact,
                            std::uint64_t seed, StreamCounter& streams) {
     return {pixel_call(film, pattern, count) + ": " + full_text(exact) + " from every stream",
-            {"pixel_colour", pixel_query(film, pattern, count, seed, streams.next(20))},
+            pixel_query(film, pattern, count, seed, streams.next(20)),
             [film, count, exact](const ProbeAnswer& answer) {
                 const std::string want = full_text(exact) + " from every stream";
                 if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
                 std::vector<double> colours;
-                const std::string problem = read_pixel_answers(answer.value, film, count, colours);
+                const std::string problem = read_pixel_answers(answer, film, count, colours);
                 if (!problem.empty()) return wrong(want, problem);
                 for (double c : colours) {
                     if (!(std::abs(c - exact) <= 1e-12 * std::max(1.0, std::abs(exact)))) {
@@ -216,7 +218,7 @@ ProbeCase pixel_mean_case(const FilmCase& film, SamplePattern pattern, int count
     const double jittered_variance = film.jittered_variance(n);
     return {pixel_call(film, pattern, count) + ": the mean over " + std::to_string(kMeanStreams) +
                 " streams" + (variance_test ? ", and its variance that of stratified samples" : ""),
-            {"pixel_colour", pixel_query(film, pattern, count, seed, streams.next(kMeanStreams))},
+            pixel_query(film, pattern, count, seed, streams.next(kMeanStreams)),
             [film, count, exact = film.mean, variance_test, jittered_variance,
              alpha](const ProbeAnswer& answer) {
                 const std::string want =
@@ -225,7 +227,7 @@ ProbeCase pixel_mean_case(const FilmCase& film, SamplePattern pattern, int count
                     (variance_test ? ", a variance near " + full_text(jittered_variance) : "");
                 if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
                 std::vector<double> colours;
-                const std::string problem = read_pixel_answers(answer.value, film, count, colours);
+                const std::string problem = read_pixel_answers(answer, film, count, colours);
                 if (!problem.empty()) return wrong(want, problem);
                 const MeanEstimate estimate = estimate_mean(colours, kDeviationFloor);
                 const std::string got = "the mean " + full_text(estimate.mean) +
@@ -317,23 +319,11 @@ QuadLightCall shading_call_of(const SurfacePoint& point, double blocked_below, i
             blockers(point, blocked_below)};
 }
 
-Json shading_query(const QuadLightCall& call, SamplePattern pattern, std::uint64_t seed,
-                   const Json& streams) {
-    Json parts = Json::array();
-    for (const Parallelogram& p : call.blockers) {
-        parts.push_back({{"corner", probe::vec3(p.corner)},
-                         {"edge1", probe::vec3(p.edge1)},
-                         {"edge2", probe::vec3(p.edge2)}});
-    }
-    return {{"material", probe::material(call.material)},
-            {"point", probe::surface_point(call.point)},
-            {"light", quad_light_json(call.light)},
-            {"pattern", std::string(sample_pattern_name(pattern))},
-            {"count", call.sample_count},
-            {"seed", seed},
-            {"streams", streams},
-            {"blocker", std::move(parts)},
-            {"offset", probe::ray_offset(call.offset)}};
+ProbeQuery shading_query(const QuadLightCall& call, SamplePattern pattern, std::uint64_t seed,
+                         const std::vector<std::uint64_t>& streams) {
+    return probe::query(probe::quad_light_shading_call,
+                        {call.material, call.point, call.light, pattern, call.sample_count,
+                         call.blockers, call.offset, seed, streams});
 }
 
 std::string shading_call(const SurfacePoint& point, double blocked_below, SamplePattern pattern,
@@ -350,11 +340,11 @@ std::string shading_call(const SurfacePoint& point, double blocked_below, Sample
 // behind the surface (it adds nothing, so a right quad_light_shading traces no ray for it), and
 // the colour is what the samples that got through make. Each stream's colour goes into
 // `colours`; returns the first problem, or empty.
-std::string read_shading_answers(const Json& answers, const QuadLightCall& call,
+std::string read_shading_answers(const ProbeAnswer& answer, const QuadLightCall& call,
                                  std::vector<Vec3>& colours) {
-    for (const Json& stream : answers) {
-        const ShadowRayReading reading =
-            read_shadow_rays(call, traced_shadow_rays(stream.at("shadow_rays")));
+    for (const probe::QuadLightShadingAnswer& stream :
+         probe::read_answer(probe::quad_light_shading_call, answer.value)) {
+        const ShadowRayReading reading = read_shadow_rays(call, stream.shadow_rays);
         if (!reading.problem.empty()) return reading.problem;
         if (reading.behind > 0) {
             return std::to_string(reading.behind) + " of " +
@@ -362,7 +352,7 @@ std::string read_shading_answers(const Json& answers, const QuadLightCall& call,
                    " shadow rays traced to light samples behind the surface (N . L <= 0), which "
                    "add nothing";
         }
-        const Vec3 colour = probe::vec3_from(stream.at("colour"));
+        const Color& colour = stream.colour;
         const std::string problem = colour_problem(colour, reading.colour, reading.tolerance);
         if (!problem.empty()) return problem;
         colours.push_back(colour);
@@ -396,14 +386,14 @@ ProbeCase shading_mean_case(const SurfacePoint& point, double blocked_below, Sam
     const QuadLightCall call = shading_call_of(point, blocked_below, count);
     return {shading_call(point, blocked_below, pattern, count) + ": the mean over " +
                 std::to_string(kMeanStreams) + " streams",
-            {"quad_light_shading", shading_query(call, pattern, seed, streams.next(kMeanStreams))},
+            shading_query(call, pattern, seed, streams.next(kMeanStreams)),
             [call, exact, alpha](const ProbeAnswer& answer) {
                 const double bound = two_sided_normal_bound(alpha);
                 const std::string want =
                     "a mean within " + full_text(bound) + " standard errors of " + full_text(exact);
                 if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
                 std::vector<Vec3> colours;
-                const std::string problem = read_shading_answers(answer.value, call, colours);
+                const std::string problem = read_shading_answers(answer, call, colours);
                 if (!problem.empty()) return wrong(want, problem);
                 Vec3 mean;
                 Vec3 error;
@@ -431,12 +421,12 @@ ProbeCase shading_exact_case(const SurfacePoint& point, double blocked_below, Sa
     const QuadLightCall call = shading_call_of(point, blocked_below, count);
     return {shading_call(point, blocked_below, pattern, count) + ": " + full_text(exact) +
                 " from every stream",
-            {"quad_light_shading", shading_query(call, pattern, seed, streams.next(20))},
+            shading_query(call, pattern, seed, streams.next(20)),
             [call, exact](const ProbeAnswer& answer) {
                 const std::string want = full_text(exact) + " from every stream";
                 if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
                 std::vector<Vec3> colours;
-                const std::string problem = read_shading_answers(answer.value, call, colours);
+                const std::string problem = read_shading_answers(answer, call, colours);
                 if (!problem.empty()) return wrong(want, problem);
                 const double scale = std::max({exact.x, exact.y, exact.z, 1e-300});
                 for (const Vec3& colour : colours) {

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <stdexcept>
 
 #include <glm/geometric.hpp>
 
@@ -145,17 +144,6 @@ std::string shadow_ray_problem(const QuadLightCall& call, const TracedShadowRay&
 }
 
 }  // namespace
-
-std::vector<TracedShadowRay> traced_shadow_rays(const probe::Json& list) {
-    if (!list.is_array()) throw std::invalid_argument("shadow_rays is not a list");
-    std::vector<TracedShadowRay> rays;
-    for (const probe::Json& entry : list) {
-        const probe::Json& blocked = entry.at("blocked");
-        if (!blocked.is_boolean()) throw std::invalid_argument("blocked is not true or false");
-        rays.push_back({probe::ray_from(entry.at("ray")), blocked.get<bool>()});
-    }
-    return rays;
-}
 
 ShadowRayReading read_shadow_rays(const QuadLightCall& call,
                                   const std::vector<TracedShadowRay>& rays) {

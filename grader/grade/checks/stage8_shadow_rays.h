@@ -3,13 +3,13 @@
 #include <string>
 #include <vector>
 
-#include "app/protocol/probe_json.h"
+#include "app/probe/sampling_calls.h"
 #include "base/scene/scene.h"
 #include "stages/6_shading/shading.h"
 
 namespace raystep::grade {
 
-// Stage 8's shadow rays as the probe hands them back (app/probe/sampling_calls.cpp): every ray
+// Stage 8's shadow rays as the probe hands them back (app/probe/sampling_calls.h): every ray
 // quad_light_shading traced, in order, and what the probe's blocker answered for it. The grader
 // takes the work and the colour from them, never from a figure the probe reports (student code
 // runs in the probe's process and could write any): it finds each ray's light sample on the
@@ -17,23 +17,8 @@ namespace raystep::grade {
 // the surface, and adds up the colour the samples that got through make, which the student's
 // colour must be.
 
-/// A shadow ray as traced, and whether the blocker said it was blocked.
-struct TracedShadowRay {
-    Ray ray;
-    bool blocked = false;
-};
-
-/// The rays of a "shadow_rays" list; throws std::invalid_argument (an unreadable answer)
-/// otherwise.
-std::vector<TracedShadowRay> traced_shadow_rays(const probe::Json& list);
-
-/// A parallelogram that blocks the rays crossing it within their [t_min, t_max], as the probe's
-/// blockers do.
-struct Parallelogram {
-    Vec3 corner;
-    Vec3 edge1;
-    Vec3 edge2;
-};
+using probe::Parallelogram;
+using probe::TracedShadowRay;
 
 /// One quad_light_shading call as the grader asked it.
 struct QuadLightCall {

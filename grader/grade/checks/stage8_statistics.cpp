@@ -24,9 +24,9 @@
 #include <vector>
 
 #include "app/grade/value_text.h"
+#include "app/probe/sampling_calls.h"
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/sample_statistics.h"
-#include "grader/grade/checks/stage8_queries.h"
 #include "grader/grade/checks/stage8_statistics.h"
 #include "grader/grade/checks/stage_checks.h"
 #include "grader/grade/checks/statistics_seed.h"
@@ -36,7 +36,12 @@ namespace raystep::grade {
 
 namespace {
 
-using probe::Json;
+using probe::StreamPoints;
+
+// Every stream's points, as a sample call answers them; throws where the answer is not that.
+StreamPoints stream_points(const ProbeAnswer& answer) {
+    return probe::JsonCodec<StreamPoints>::read(answer.value);
+}
 
 std::string p_text(double p, double alpha) {
     return "p = " + full_text(p) + " (fails below " + full_text(alpha) + ")";
@@ -73,27 +78,27 @@ std::string stratification_problem(const std::vector<Vec2>& points, int n) {
     std::vector<int> seen(points.size(), 0);
     for (const Vec2& p : points) {
         if (!(p.x >= 0 && p.x < 1 && p.y >= 0 && p.y < 1)) {
-            return "the point " + point_text(p) + " outside [0, 1)^2";
+            return "the point " + full_text(p) + " outside [0, 1)^2";
         }
         const StratumPlace place = place_of(p, n);
         if (++seen[static_cast<std::size_t>(place.b) * n + place.a] > 1) {
             return "two points in stratum (" + std::to_string(place.a) + ", " +
-                   std::to_string(place.b) + "), one of them " + point_text(p);
+                   std::to_string(place.b) + "), one of them " + full_text(p);
         }
     }
     return "";
 }
 
-Json jittered_query(int n, std::uint64_t seed, const Json& streams) {
-    return {{"strata", n}, {"seed", seed}, {"streams", streams}};
+ProbeQuery jittered_query(int n, std::uint64_t seed, const std::vector<std::uint64_t>& streams) {
+    return probe::query(probe::jittered_samples_call, {n, seed, streams});
 }
 
 // Every stream's points one per stratum of n x n.
 std::function<Judgement(const ProbeAnswer&)> stratified_judge(int n, const std::string& want) {
     return [n, want](const ProbeAnswer& answer) {
         if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
-        for (const Json& stream : answer.value) {
-            const std::string problem = stratification_problem(points_from(stream), n);
+        for (const std::vector<Vec2>& points : stream_points(answer)) {
+            const std::string problem = stratification_problem(points, n);
             if (!problem.empty()) return wrong(want, problem);
         }
         return right();
@@ -103,22 +108,17 @@ std::function<Judgement(const ProbeAnswer&)> stratified_judge(int n, const std::
 ProbeCase stratified_case(int n, std::uint64_t seed, StreamCounter& streams) {
     const std::string want = "n^2 = " + std::to_string(n * n) + " points, one in each stratum";
     return {"jittered_samples(" + std::to_string(n) + "): one point per stratum, 64 streams",
-            {"jittered_samples", jittered_query(n, seed, streams.next(64))},
-            stratified_judge(n, want),
-            ""};
+            jittered_query(n, seed, streams.next(64)), stratified_judge(n, want), ""};
 }
 
 // samples(jittered, n^2) is jittered_samples(n): one point per stratum, not a fall through to
 // random points.
 ProbeCase samples_stratified_case(int n, std::uint64_t seed, StreamCounter& streams) {
     const std::string want = "n^2 = " + std::to_string(n * n) + " points, one in each stratum";
-    return {"samples(jittered, " + std::to_string(n * n) + "): one point per stratum, 64 streams",
-            {"samples", Json{{"pattern", "jittered"},
-                             {"count", n * n},
-                             {"seed", seed},
-                             {"streams", streams.next(64)}}},
-            stratified_judge(n, want),
-            ""};
+    return {
+        "samples(jittered, " + std::to_string(n * n) + "): one point per stratum, 64 streams",
+        probe::query(probe::samples_call, {SamplePattern::jittered, n * n, seed, streams.next(64)}),
+        stratified_judge(n, want), ""};
 }
 
 // The offsets within their strata, pooled over every stream, binned in 10 x 10 against the
@@ -128,14 +128,14 @@ ProbeCase offsets_uniform_case(int n, int stream_count, std::uint64_t seed, Stre
                                double alpha) {
     return {"jittered_samples(" + std::to_string(n) + "): offsets in their strata uniform, " +
                 std::to_string(stream_count) + " streams pooled",
-            {"jittered_samples", jittered_query(n, seed, streams.next(stream_count))},
+            jittered_query(n, seed, streams.next(stream_count)),
             [n, alpha](const ProbeAnswer& answer) {
                 const std::string want =
                     "offsets uniform over the stratum, chi-square p >= " + full_text(alpha);
                 if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
                 std::vector<Vec2> offsets;
-                for (const Json& stream : answer.value) {
-                    for (const Vec2& p : points_from(stream))
+                for (const std::vector<Vec2>& points : stream_points(answer)) {
+                    for (const Vec2& p : points)
                         offsets.push_back(place_of(p, n).offset);
                 }
                 const double p = chi_square_p_value(uniform_square_chi_square(offsets, kBins),
@@ -155,7 +155,7 @@ ProbeCase neighbours_independent_case(int n, bool along_rows, int stream_count, 
     const std::string along = along_rows ? "rows" : "columns";
     return {"jittered_samples(" + std::to_string(n) + "): neighbouring strata along " + along +
                 " independent in x and in y, " + std::to_string(stream_count) + " streams",
-            {"jittered_samples", jittered_query(n, seed, streams.next(stream_count))},
+            jittered_query(n, seed, streams.next(stream_count)),
             [n, along_rows, alpha](const ProbeAnswer& answer) {
                 const std::string want =
                     "the offsets of neighbouring strata independent, chi-square p >= " +
@@ -163,9 +163,9 @@ ProbeCase neighbours_independent_case(int n, bool along_rows, int stream_count, 
                 if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
                 std::vector<Vec2> x_pairs;
                 std::vector<Vec2> y_pairs;
-                for (const Json& stream : answer.value) {
+                for (const std::vector<Vec2>& points : stream_points(answer)) {
                     std::vector<Vec2> by_stratum(static_cast<std::size_t>(n) * n, Vec2(0.5));
-                    for (const Vec2& p : points_from(stream)) {
+                    for (const Vec2& p : points) {
                         const StratumPlace place = place_of(p, n);
                         if (place.a < 0 || place.a >= n || place.b < 0 || place.b >= n) continue;
                         by_stratum[static_cast<std::size_t>(place.b) * n + place.a] = place.offset;
@@ -209,7 +209,7 @@ int stratum_by_double_edges(double x, int n) {
 // [0, 1)^2 and below its stratum's far edge (a + 1.0) / n, the handout's clamp. Without the
 // clamp a + (1 - 2^-53) rounds to a + 1, onto the next stratum's edge, or onto 1.
 ProbeCase stratum_edge_case(int n, std::uint64_t seed) {
-    Json chosen = Json::array();
+    std::vector<std::uint64_t> chosen;
     for (const double value : {0.0, 1.0 - 0x1p-53}) {
         for (int draw = 0; draw < 3 * n * n; ++draw)
             chosen.push_back(stream_with_draw(seed, static_cast<std::uint64_t>(draw), value));
@@ -218,25 +218,24 @@ ProbeCase stratum_edge_case(int n, std::uint64_t seed) {
         "n^2 = " + std::to_string(n * n) + " points in [0, 1)^2, one below each stratum's far edge";
     return {"jittered_samples(" + std::to_string(n) + "): 0 and 1 - 2^-53 at every draw, " +
                 std::to_string(chosen.size()) + " streams",
-            {"jittered_samples", jittered_query(n, seed, chosen)},
+            jittered_query(n, seed, chosen),
             [n, want](const ProbeAnswer& answer) {
                 if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
-                for (const Json& stream : answer.value) {
-                    const std::vector<Vec2> points = points_from(stream);
+                for (const std::vector<Vec2>& points : stream_points(answer)) {
                     if (points.size() != static_cast<std::size_t>(n) * n) {
                         return wrong(want, std::to_string(points.size()) + " points");
                     }
                     std::vector<int> seen(points.size(), 0);
                     for (const Vec2& p : points) {
                         if (!(p.x >= 0 && p.x < 1 && p.y >= 0 && p.y < 1)) {
-                            return wrong(want, "the point " + point_text(p) + " outside [0, 1)^2");
+                            return wrong(want, "the point " + full_text(p) + " outside [0, 1)^2");
                         }
                         const int a = stratum_by_double_edges(p.x, n);
                         const int b = stratum_by_double_edges(p.y, n);
                         if (++seen[static_cast<std::size_t>(b) * n + a] > 1) {
                             return wrong(want, "two points in stratum (" + std::to_string(a) +
                                                    ", " + std::to_string(b) + "), one of them " +
-                                                   point_text(p));
+                                                   full_text(p));
                         }
                     }
                 }
@@ -247,26 +246,28 @@ ProbeCase stratum_edge_case(int n, std::uint64_t seed) {
 
 // The same stream twice gives the same points, and the next stream others: the samples come from
 // the RandomStream handed in, not from a generator of the student's own, nor from constants.
-ProbeCase streams_case(const std::string& call, const Json& args_without_streams,
+template <class Question>
+ProbeCase streams_case(const probe::ProbeCall<Question, StreamPoints>& call, Question question,
                        std::uint64_t seed, StreamCounter& streams) {
-    Json args = args_without_streams;
-    const Json two = streams.next(2);
-    args["seed"] = seed;
-    args["streams"] = Json::array({two.at(0), two.at(0), two.at(1)});
-    return {call + ": one stream twice gives the same points, another stream others",
-            {call, args},
-            [](const ProbeAnswer& answer) {
-                const std::string want =
-                    "the same points from the same stream, others from the next";
-                if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
-                const std::vector<Vec2> first = points_from(answer.value.at(0));
-                const std::vector<Vec2> again = points_from(answer.value.at(1));
-                const std::vector<Vec2> other = points_from(answer.value.at(2));
-                if (first != again) return wrong(want, "different points from the same stream");
-                if (first == other) return wrong(want, "the same points from another stream");
-                return right();
-            },
-            ""};
+    const std::vector<std::uint64_t> two = streams.next(2);
+    question.seed = seed;
+    question.streams = {two[0], two[0], two[1]};
+    return {
+        std::string(call.name) + ": one stream twice gives the same points, another stream others",
+        probe::query(call, question),
+        [](const ProbeAnswer& answer) {
+            const std::string want = "the same points from the same stream, others from the next";
+            if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
+            const StreamPoints points = stream_points(answer);
+            if (points.size() != 3) return wrong(want, std::to_string(points.size()) + " streams");
+            const std::vector<Vec2>& first = points[0];
+            const std::vector<Vec2>& again = points[1];
+            const std::vector<Vec2>& other = points[2];
+            if (first != again) return wrong(want, "different points from the same stream");
+            if (first == other) return wrong(want, "the same points from another stream");
+            return right();
+        },
+        ""};
 }
 
 std::vector<ProbeCase> make_jittered_cases() {
@@ -281,7 +282,7 @@ std::vector<ProbeCase> make_jittered_cases() {
     cases.push_back(offsets_uniform_case(4, 500, seed, streams, alpha));
     cases.push_back(offsets_uniform_case(2, 2000, seed, streams, alpha));
     cases.push_back(neighbours_independent_case(4, true, 500, seed, streams, alpha));
-    cases.push_back(streams_case("jittered_samples", Json{{"strata", 3}}, seed, streams));
+    cases.push_back(streams_case(probe::jittered_samples_call, {3, 0, {}}, seed, streams));
     cases.push_back(neighbours_independent_case(4, false, 500, seed, streams, alpha));
     cases.push_back(samples_stratified_case(4, seed, streams));
     for (int n : {3, 4})
@@ -292,26 +293,24 @@ std::vector<ProbeCase> make_jittered_cases() {
 // --- random_samples
 
 ProbeCase random_points_case(int count, std::uint64_t seed, StreamCounter& streams) {
-    return {
-        "random_samples(" + std::to_string(count) + "): the count, in [0, 1)^2, 30 streams",
-        {"random_samples", Json{{"count", count}, {"seed", seed}, {"streams", streams.next(30)}}},
-        [count](const ProbeAnswer& answer) {
-            const std::string want = std::to_string(count) + " points in [0, 1)^2";
-            if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
-            for (const Json& stream : answer.value) {
-                const std::vector<Vec2> points = points_from(stream);
-                if (points.size() != static_cast<std::size_t>(count)) {
-                    return wrong(want, std::to_string(points.size()) + " points");
-                }
-                for (const Vec2& p : points) {
-                    if (!(p.x >= 0 && p.x < 1 && p.y >= 0 && p.y < 1)) {
-                        return wrong(want, point_text(p));
+    return {"random_samples(" + std::to_string(count) + "): the count, in [0, 1)^2, 30 streams",
+            probe::query(probe::random_samples_call, {count, seed, streams.next(30)}),
+            [count](const ProbeAnswer& answer) {
+                const std::string want = std::to_string(count) + " points in [0, 1)^2";
+                if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
+                for (const std::vector<Vec2>& points : stream_points(answer)) {
+                    if (points.size() != static_cast<std::size_t>(count)) {
+                        return wrong(want, std::to_string(points.size()) + " points");
+                    }
+                    for (const Vec2& p : points) {
+                        if (!(p.x >= 0 && p.x < 1 && p.y >= 0 && p.y < 1)) {
+                            return wrong(want, full_text(p));
+                        }
                     }
                 }
-            }
-            return right();
-        },
-        ""};
+                return right();
+            },
+            ""};
 }
 
 // All points pooled (`pairs` false), or the x of successive points paired, (p0.x, p1.x),
@@ -324,14 +323,12 @@ ProbeCase random_uniform_case(bool pairs, std::uint64_t seed, StreamCounter& str
     return {std::string("random_samples(8): ") +
                 (pairs ? "the x of successive points independent" : "points uniform") + ", " +
                 std::to_string(stream_count) + " streams pooled",
-            {"random_samples",
-             Json{{"count", count}, {"seed", seed}, {"streams", streams.next(stream_count)}}},
+            probe::query(probe::random_samples_call, {count, seed, streams.next(stream_count)}),
             [pairs, alpha](const ProbeAnswer& answer) {
                 const std::string want = "uniform, chi-square p >= " + full_text(alpha);
                 if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
                 std::vector<Vec2> binned;
-                for (const Json& stream : answer.value) {
-                    const std::vector<Vec2> points = points_from(stream);
+                for (const std::vector<Vec2>& points : stream_points(answer)) {
                     if (!pairs) {
                         binned.insert(binned.end(), points.begin(), points.end());
                         continue;
@@ -354,7 +351,7 @@ std::vector<ProbeCase> random_cases() {
     return {random_points_case(7, seed, streams), random_points_case(1, seed, streams),
             random_uniform_case(false, seed, streams, alpha),
             random_uniform_case(true, seed, streams, alpha),
-            streams_case("random_samples", Json{{"count", 5}}, seed, streams)};
+            streams_case(probe::random_samples_call, {5, 0, {}}, seed, streams)};
 }
 
 }  // namespace
