@@ -1,27 +1,24 @@
 #!/usr/bin/env python3
-"""Names in anonymous namespaces, checked for twins: the unity builds (the student preset's, and
-scripts/test-all.sh's sanitizer build) compile several files of a target as one, so two files of
-base/, renderer/, app/ or the sandbox that each define a helper `kUp` or `ray` in `namespace {`
-compile until a new file moves them into the same unity file, and then fail far from the change.
-A unity file holds files of one target, and a target's files are those of a folder, so a name
-must be unique within each folder of those layers. The stages' files compile one by one
-(cmake/RaystepCompileOptions.cmake) and are not checked.
+"""Names in anonymous namespaces, checked for twins within each target. A unity build (the
+student preset's, scripts/test-all.sh's sanitizer build) compiles several files of a target as
+one, so two files of a target that each define a helper `kUp` or `ray` in `namespace {` compile
+until a new file moves them into the same unity file, and then fail far from the change: in a
+student's build, or only in the sanitizer build, at the end of CI. Checked for every target a
+unity build may join, whatever the batch size; the stages' files compile one by one and are left
+out. CMake lists the targets' files at configure time (cmake/RaystepUnitySources.cmake).
 
-    scripts/check-unity-names.py [ROOT]
+    scripts/check-unity-names.py ROOT UNITY_SOURCES
 
-A name is a twin when two files of the same folder give it in an anonymous namespace, overloads
-included, unless both are the same alias (`using Kind = ProbeAnswer::Kind;`). Prints each twin
-with the files and lines that define it and exits 1; exits 0 when there is none."""
+UNITY_SOURCES has a line "TARGET<TAB>absolute path" per file. A name is a twin when two files of
+one target give it in an anonymous namespace, overloads included, unless both are the same alias
+(`using Kind = ProbeAnswer::Kind;`). Prints each twin with the files and lines that define it and
+exits 1; exits 0 when there is none."""
 
 import collections
 import pathlib
 import re
 import sys
 
-# The layers built as unity files; each of their folders is a unit within which a name must be
-# unique, and the sandbox's tests, which sit among the grader's, are one more.
-LAYERS = ("base/", "renderer/", "app/", "grader/sandbox/")
-SANDBOX_TESTS = "grader/tests/sandbox_"
 ALIAS = re.compile(r"^(?:using|namespace)\s+(\w+)\s*=\s*(.+);")
 TYPE = re.compile(r"^(?:struct|class|enum(?:\s+class)?|union)\s+(\w+)")
 # A declaration's name: the last identifier before its first (, =, {, [ or ;.
@@ -51,16 +48,14 @@ def names_in(source: pathlib.Path):
                 yield declared.group(1), None, number
 
 
-def units_of(root: pathlib.Path):
-    """Each unity-built folder, by the name it is shown with, and its .cpp files."""
-    units = collections.defaultdict(list)
-    for source in sorted(root.rglob("*.cpp")):
-        shown = source.relative_to(root).as_posix()
-        if shown.startswith(LAYERS):
-            units[shown.rsplit("/", 1)[0] + "/"].append(source)
-        elif shown.startswith(SANDBOX_TESTS):
-            units[SANDBOX_TESTS + "*"].append(source)
-    return units
+def targets_in(listing: pathlib.Path):
+    """Each target of the listing CMake writes, and its files."""
+    targets = collections.defaultdict(list)
+    for line in listing.read_text(encoding="utf-8").splitlines():
+        target, _, path = line.partition("\t")
+        if path:
+            targets[target].append(pathlib.Path(path))
+    return targets
 
 
 def twins_in(root: pathlib.Path, sources):
@@ -75,24 +70,29 @@ def twins_in(root: pathlib.Path, sources):
         if len(files) > 1 and not same_alias:
             yield name, places
 
+
 def main() -> int:
-    root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else ".").resolve()
-    units = units_of(root)
-    checked = sum(len(sources) for sources in units.values())
+    if len(sys.argv) != 3:
+        print(__doc__, file=sys.stderr)
+        return 2
+    root = pathlib.Path(sys.argv[1]).resolve()
+    targets = targets_in(pathlib.Path(sys.argv[2]))
+    checked = sum(len(sources) for sources in targets.values())
+    if not checked:
+        print(f"no files listed in {sys.argv[2]}: the check would prove nothing", file=sys.stderr)
+        return 1
     problems = []
-    for unit, sources in units.items():
+    for target, sources in sorted(targets.items()):
         for name, places in twins_in(root, sources):
             where = ", ".join(f"{shown}:{number}" for shown, number, _ in places)
-            problems.append(f"{unit}: `{name}` in anonymous namespaces of {where}")
-    if not checked:
-        print(f"no source files under {root}: the check would prove nothing", file=sys.stderr)
-        return 1
+            problems.append(f"{target}: `{name}` in anonymous namespaces of {where}")
     if problems:
-        print("names that two files of a unity-built folder define in anonymous namespaces "
-              "(rename one, or share it through a header):", file=sys.stderr)
+        print("names that two files of a target define in anonymous namespaces, which a unity "
+              "build joins (rename one, or share it through a header):", file=sys.stderr)
         print("\n".join(problems), file=sys.stderr)
         return 1
-    print(f"{checked} files: no name twice in the anonymous namespaces of a unity-built folder")
+    print(f"{checked} files of {len(targets)} targets: no name twice in the anonymous namespaces "
+          "of a target")
     return 0
 
 

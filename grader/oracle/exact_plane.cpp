@@ -18,7 +18,7 @@ struct PlaneGeometry {
     bool in_range = false;
 };
 
-PlaneGeometry solve(const Ray& ray, const Plane& plane) {
+PlaneGeometry solve_plane(const Ray& ray, const Plane& plane) {
     using namespace exact;
     PlaneGeometry g;
     if (ray.direction == Vec3(0.0) || plane.normal == Vec3(0.0)) return g;
@@ -37,7 +37,7 @@ PlaneGeometry solve(const Ray& ray, const Plane& plane) {
 }  // namespace
 
 std::optional<exact::HitTime> exact::plane_hit_time(const Ray& ray, const Plane& plane) {
-    const PlaneGeometry g = solve(ray, plane);
+    const PlaneGeometry g = solve_plane(ray, plane);
     if (g.degenerate || g.parallel || !g.in_range) return std::nullopt;
     HitTime time;
     time.rational = g.t;
@@ -46,7 +46,7 @@ std::optional<exact::HitTime> exact::plane_hit_time(const Ray& ray, const Plane&
 
 Expectation expect_plane(const Ray& ray, const Plane& plane) {
     Expectation expected;  // a miss, away from any boundary, until shown otherwise
-    const PlaneGeometry g = solve(ray, plane);
+    const PlaneGeometry g = solve_plane(ray, plane);
     // A zero direction or normal is a miss by the contract. A parallel ray is one too, but
     // turned by a rounding it would cross.
     if (g.degenerate) return expected;

@@ -21,7 +21,7 @@ struct SphereGeometry {
     bool larger_in_range = false;
 };
 
-SphereGeometry solve(const Ray& ray, const Sphere& sphere) {
+SphereGeometry solve_sphere(const Ray& ray, const Sphere& sphere) {
     using namespace exact;
     SphereGeometry g;
     if (ray.direction == Vec3(0.0) || !(sphere.radius > 0.0)) return g;
@@ -74,7 +74,7 @@ Vec3 outward_normal(const Ray& ray, const Sphere& sphere, double t) {
 }  // namespace
 
 std::optional<exact::HitTime> exact::sphere_hit_time(const Ray& ray, const Sphere& sphere) {
-    const SphereGeometry g = solve(ray, sphere);
+    const SphereGeometry g = solve_sphere(ray, sphere);
     if (g.degenerate || !g.real_roots) return std::nullopt;
     if (g.smaller_in_range) return root(g, true);
     if (g.larger_in_range) return root(g, false);
@@ -83,7 +83,7 @@ std::optional<exact::HitTime> exact::sphere_hit_time(const Ray& ray, const Spher
 
 Expectation expect_sphere(const Ray& ray, const Sphere& sphere) {
     Expectation expected;  // a miss, away from any boundary, until shown otherwise
-    const SphereGeometry g = solve(ray, sphere);
+    const SphereGeometry g = solve_sphere(ray, sphere);
     if (g.degenerate) return expected;  // a miss by the contract
 
     // How deep the ray's line passes inside the sphere: the half chord h, with

@@ -22,7 +22,7 @@ struct TriangleGeometry {
     bool in_range = false;  ///< t is in [t_min, t_max]
 };
 
-TriangleGeometry solve(const Ray& ray, const Triangle& tri) {
+TriangleGeometry solve_triangle(const Ray& ray, const Triangle& tri) {
     using namespace exact;
     TriangleGeometry g;
     const Point p0 = point(tri.p0);
@@ -109,7 +109,7 @@ RoundedNormal rounded_normal(const exact::Vector& n) {
 }  // namespace
 
 std::optional<exact::HitTime> exact::triangle_hit_time(const Ray& ray, const Triangle& triangle) {
-    const TriangleGeometry g = solve(ray, triangle);
+    const TriangleGeometry g = solve_triangle(ray, triangle);
     if (g.degenerate || g.parallel || !g.inside || !g.in_range) return std::nullopt;
     HitTime time;
     time.rational = g.t;
@@ -118,7 +118,7 @@ std::optional<exact::HitTime> exact::triangle_hit_time(const Ray& ray, const Tri
 
 Expectation expect_triangle(const Ray& ray, const Triangle& tri) {
     Expectation expected;  // a miss, away from any boundary, until shown otherwise
-    const TriangleGeometry g = solve(ray, tri);
+    const TriangleGeometry g = solve_triangle(ray, tri);
     // Degenerate input is a miss by the contract, whatever rounding might suggest. A ray parallel
     // to the plane is one too, but turned by a rounding it would cross the plane.
     if (g.degenerate) return expected;

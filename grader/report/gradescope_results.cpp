@@ -16,7 +16,7 @@ namespace {
 // reads it, and the HTML report has everything.
 constexpr std::size_t kGradescopeTestOutputBytes = 16000;
 
-nlohmann::json test_of(const CheckResult& check, int place_in_stage) {
+nlohmann::json gradescope_test_of(const CheckResult& check, int place_in_stage) {
     std::string output = outcome_name(check.outcome);
     if (!check.summary.empty()) output += ": " + clipped_text(check.summary, kMaxFieldBytes);
     // Gradescope shows a test's output to the student: the student's commands, never the
@@ -54,7 +54,7 @@ nlohmann::json gradescope_results(const GradeReport& report) {
     nlohmann::json tests = nlohmann::json::array();
     std::map<int, int> placed_in_stage;
     for (const CheckResult& check : report.checks) {
-        tests.push_back(test_of(check, ++placed_in_stage[check.stage]));
+        tests.push_back(gradescope_test_of(check, ++placed_in_stage[check.stage]));
     }
     const GradeReport seen = seen_by(report, Audience::student);
     std::string output = intake_problem_line(report.intake_problem);

@@ -113,8 +113,8 @@ std::map<std::size_t, nlohmann::json> images_within_budget(
     return chosen;
 }
 
-nlohmann::json test_of(const CheckResult& check, std::size_t max_output_bytes,
-                       const nlohmann::json* images) {
+nlohmann::json prairielearn_test_of(const CheckResult& check, std::size_t max_output_bytes,
+                                    const nlohmann::json* images) {
     std::string message = outcome_name(check.outcome);
     if (!check.summary.empty()) message += ": " + clipped_text(check.summary, kMaxFieldBytes);
     // PrairieLearn shows every test to the student: the student's commands, never the
@@ -169,8 +169,8 @@ nlohmann::json prairielearn_results(const GradeReport& report,
         const CheckResult& check = report.checks[k];
         if (shown_to(check, Audience::student)) {
             const auto found = images.find(k);
-            tests.push_back(
-                test_of(check, share, found == images.end() ? nullptr : &found->second));
+            tests.push_back(prairielearn_test_of(check, share,
+                                                 found == images.end() ? nullptr : &found->second));
             continue;
         }
         WithheldChecks& sums = withheld[check.stage];

@@ -9,7 +9,7 @@ namespace raystep::grade {
 
 namespace {
 
-nlohmann::json field(const std::string& text) {
+nlohmann::json result_field(const std::string& text) {
     return clipped_text(text, kMaxFieldBytes);
 }
 
@@ -17,10 +17,10 @@ nlohmann::json check_of(const CheckResult& check) {
     nlohmann::json counterexamples = nlohmann::json::array();
     for (const Counterexample& example : check.counterexamples) {
         counterexamples.push_back(
-            {{"input", field(example.input)},
-             {"expected", field(example.expected)},
-             {"got", field(example.got)},
-             {"reproduce", field(reproduce_command(example, Audience::student))}});
+            {{"input", result_field(example.input)},
+             {"expected", result_field(example.expected)},
+             {"got", result_field(example.got)},
+             {"reproduce", result_field(reproduce_command(example, Audience::student))}});
     }
     nlohmann::json metrics = nlohmann::json::object();
     for (const auto& [name, value] : check.metrics) {
@@ -34,7 +34,7 @@ nlohmann::json check_of(const CheckResult& check) {
             {"passed", check.outcome == Outcome::passed},
             {"score", check.score},
             {"max_score", check.max_score},
-            {"summary", field(check.summary)},
+            {"summary", result_field(check.summary)},
             {"seconds", check.seconds},
             {"metrics", metrics},
             {"details", clipped_text(check.details, kMaxDetailsBytes)},

@@ -9,7 +9,7 @@ using namespace raystep::grade;
 
 namespace {
 
-CheckDefinition check(const std::string& id) {
+CheckDefinition oracle_check(const std::string& id) {
     return {id, 3, "oracle", "a check", {}};
 }
 
@@ -30,23 +30,23 @@ CheckMeasure measured(Outcome outcome, double fraction) {
 
 TEST_CASE("score_check: full points short of every case is passed", "[grader]") {
     // The lecture's projection method loses a few slivers by design; the rubric allows for it.
-    const CheckResult r = score_check(check("stage3.oracle.x"), measured(Outcome::failed, 0.98),
-                                      rubric(3, 0.97, 0.7));
+    const CheckResult r = score_check(oracle_check("stage3.oracle.x"),
+                                      measured(Outcome::failed, 0.98), rubric(3, 0.97, 0.7));
     CHECK(r.score == 3.0);
     CHECK(r.outcome == Outcome::passed);
 }
 
 TEST_CASE("score_check: a passed measure short of full points is failed", "[grader]") {
     // A speed check that answered right but ran slowly.
-    const CheckResult r = score_check(check("stage3.oracle.x"), measured(Outcome::passed, 0.06),
-                                      rubric(2, 0.1, 0.02));
+    const CheckResult r = score_check(oracle_check("stage3.oracle.x"),
+                                      measured(Outcome::passed, 0.06), rubric(2, 0.1, 0.02));
     CHECK(r.score == Approx(1.0));
     CHECK(r.outcome == Outcome::failed);
 }
 
 TEST_CASE("score_check: a crash that still earned full points is passed", "[grader]") {
-    const CheckResult r = score_check(check("stage3.oracle.x"), measured(Outcome::crashed, 0.995),
-                                      rubric(3, 0.99, 0.7));
+    const CheckResult r = score_check(oracle_check("stage3.oracle.x"),
+                                      measured(Outcome::crashed, 0.995), rubric(3, 0.99, 0.7));
     CHECK(r.score == 3.0);
     CHECK(r.outcome == Outcome::passed);
 }
@@ -56,8 +56,8 @@ TEST_CASE(
     "outcome",
     "[grader]") {
     for (const Outcome outcome : {Outcome::not_implemented, Outcome::did_not_compile}) {
-        const CheckResult r =
-            score_check(check("stage3.oracle.x"), measured(outcome, 1.0), rubric(3, 1.0, 0.5));
+        const CheckResult r = score_check(oracle_check("stage3.oracle.x"), measured(outcome, 1.0),
+                                          rubric(3, 1.0, 0.5));
         CHECK(r.score == 0.0);
         CHECK(r.outcome == outcome);
     }
@@ -67,16 +67,16 @@ TEST_CASE("score_check: a grader error earns nothing, even where the rubric pays
           "[grader]") {
     CheckMeasure m = measured(Outcome::failed, 0.0);
     m.grader_error = true;
-    const CheckResult r = score_check(check("stage3.oracle.x"), m, rubric(3, 1.0, -1.0));
+    const CheckResult r = score_check(oracle_check("stage3.oracle.x"), m, rubric(3, 1.0, -1.0));
     CHECK(r.score == 0.0);
     CHECK(r.outcome == Outcome::failed);
 }
 
 TEST_CASE("score_check: a check worth no points keeps what it measured", "[grader]") {
-    const CheckResult passed =
-        score_check(check("stage3.oracle.x"), measured(Outcome::passed, 1.0), rubric(0, 1.0, 0.5));
+    const CheckResult passed = score_check(oracle_check("stage3.oracle.x"),
+                                           measured(Outcome::passed, 1.0), rubric(0, 1.0, 0.5));
     CHECK(passed.outcome == Outcome::passed);
-    const CheckResult failed =
-        score_check(check("stage3.oracle.x"), measured(Outcome::failed, 0.0), rubric(0, 1.0, 0.5));
+    const CheckResult failed = score_check(oracle_check("stage3.oracle.x"),
+                                           measured(Outcome::failed, 0.0), rubric(0, 1.0, 0.5));
     CHECK(failed.outcome == Outcome::failed);
 }

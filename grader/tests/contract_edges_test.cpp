@@ -26,8 +26,8 @@ namespace {
 constexpr std::uint64_t kSeeds = 100;
 constexpr std::size_t kDrawn = 24;  // as stage3_contract_checks.cpp draws
 
-CaseFamily decided(CaseFamily (*family)(std::uint64_t, std::size_t), std::uint64_t seed,
-                   bool exact) {
+CaseFamily decided_family(CaseFamily (*family)(std::uint64_t, std::size_t), std::uint64_t seed,
+                          bool exact) {
     CaseFamily cases = family(seed, kDrawn);
     decide_cases(cases);
     if (exact) tighten_exact_family(cases);
@@ -135,8 +135,9 @@ TEST_CASE("contract edges: every right form of every function passes every case,
     const std::vector<Stage3Method> forms = right_forms();
     for (std::uint64_t seed = 1; seed <= 20; ++seed) {
         for (const CaseFamily& family :
-             {decided(range_end_family, seed, true), decided(tie_family, seed, true),
-              decided(in_plane_family, seed, true), decided(degenerate_family, seed, false)}) {
+             {decided_family(range_end_family, seed, true), decided_family(tie_family, seed, true),
+              decided_family(in_plane_family, seed, true),
+              decided_family(degenerate_family, seed, false)}) {
             for (const Stage3Method& form : forms) {
                 const MethodScore s = score_in_process(form, family);
                 CAPTURE(seed, family.name, form.name);
@@ -149,8 +150,8 @@ TEST_CASE("contract edges: every right form of every function passes every case,
 
 TEST_CASE("contract edges: the exact families leave nothing to rounding", "[oracle]") {
     for (const CaseFamily& family :
-         {decided(range_end_family, 1, true), decided(tie_family, 1, true),
-          decided(in_plane_family, 1, true)}) {
+         {decided_family(range_end_family, 1, true), decided_family(tie_family, 1, true),
+          decided_family(in_plane_family, 1, true)}) {
         for (const RayCase& ray_case : family.cases) {
             for (const CasePrimitive& primitive : ray_case.primitives) {
                 CAPTURE(family.name, ray_case.index);
@@ -179,7 +180,7 @@ TEST_CASE(
         method("intersect_sphere", open_at_t_min<Sphere, intersect_sphere>),
     };
     for (std::uint64_t seed = 1; seed <= kSeeds; ++seed) {
-        const CaseFamily family = decided(range_end_family, seed, true);
+        const CaseFamily family = decided_family(range_end_family, seed, true);
         for (std::size_t k = 0; k < open_forms.size(); ++k) {
             CAPTURE(seed, k);
             const MethodScore s = score_in_process(open_forms[k], family);
@@ -192,7 +193,7 @@ TEST_CASE("contract edges: a tie given to the last primitive fails ties on every
           "[oracle]") {
     const Stage3Method closest{"closest_hit", Stage3Method::Kind::closest};
     for (std::uint64_t seed = 1; seed <= kSeeds; ++seed) {
-        const CaseFamily family = decided(tie_family, seed, true);
+        const CaseFamily family = decided_family(tie_family, seed, true);
         std::size_t wrong = 0;
         for (const RayCase& ray_case : family.cases) {
             std::string detail;
@@ -210,7 +211,8 @@ TEST_CASE("contract edges: a ray lying in a plane taken as a hit fails rays-in-p
           "[oracle]") {
     const Stage3Method in_plane_hits = method("intersect_plane", plane_in_plane_hits);
     for (std::uint64_t seed = 1; seed <= kSeeds; ++seed) {
-        const MethodScore s = score_in_process(in_plane_hits, decided(in_plane_family, seed, true));
+        const MethodScore s =
+            score_in_process(in_plane_hits, decided_family(in_plane_family, seed, true));
         CAPTURE(seed);
         CHECK(s.count(Verdict::false_hit) >= 2);
     }
@@ -222,7 +224,8 @@ TEST_CASE(
     "[oracle]") {
     const Stage3Method cramer = method("intersect_triangle_cramer", cramer_without_normal_test);
     for (std::uint64_t seed = 1; seed <= kSeeds; ++seed) {
-        const MethodScore s = score_in_process(cramer, decided(degenerate_family, seed, false));
+        const MethodScore s =
+            score_in_process(cramer, decided_family(degenerate_family, seed, false));
         CAPTURE(seed);
         CHECK(s.count(Verdict::not_finite) >= 1);
     }
@@ -248,7 +251,7 @@ TEST_CASE(
 TEST_CASE("contract edges: the cross-kind tie goes to the sphere, listed last", "[oracle]") {
     // A plane, a triangle and a sphere all at t = 5, listed plane first: closest_hit must choose
     // the sphere.
-    const CaseFamily ties = decided(tie_family, 1, true);
+    const CaseFamily ties = decided_family(tie_family, 1, true);
     const auto tie = std::find_if(ties.cases.begin(), ties.cases.end(), [](const RayCase& c) {
         return c.primitives.size() == 3 && std::holds_alternative<Plane>(c.primitives[0].shape) &&
                std::holds_alternative<Sphere>(c.primitives[2].shape);

@@ -20,7 +20,7 @@ namespace {
 
 // A submission is a few dozen files: past this many entries, a folder is not looked through
 // further.
-constexpr long kMostEntries = 20000;
+constexpr long kMostListedEntries = 20000;
 
 // Folders nested deeper than this are listed but not entered: a student's files sit three deep
 // (stages/<stage>/<file>), under a few folders of a repository at most.
@@ -158,7 +158,7 @@ int list_folder(int root, const FolderTake& take) {
             return 4;
         }
         for (const std::string& name : names_in(folder)) {
-            if (index >= kMostEntries) {
+            if (index >= kMostListedEntries) {
                 std::fprintf(stderr, "the folder was cut after %ld entries\n", index);
                 close(folder);
                 return 4;

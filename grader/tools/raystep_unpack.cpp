@@ -36,7 +36,7 @@ namespace {
 
 // A submission is a few dozen files: an archive of more entries than this is not one, and
 // listing it would only cost time.
-constexpr long kMostEntries = 100000;
+constexpr long kMostArchiveEntries = 100000;
 
 std::string kind_of(archive_entry* entry) {
     if (archive_entry_hardlink(entry) != nullptr) return "link";
@@ -116,9 +116,9 @@ int main(int argc, char** argv) {
     for (long index = 0;; ++index) {
         const int read = archive_read_next_header(reader, &entry);
         if (read == ARCHIVE_EOF) break;
-        if (read < ARCHIVE_WARN || index >= kMostEntries) {
+        if (read < ARCHIVE_WARN || index >= kMostArchiveEntries) {
             std::fprintf(stderr, "the archive %s after %ld entries%s%s\n",
-                         index >= kMostEntries ? "was cut" : "broke", index,
+                         index >= kMostArchiveEntries ? "was cut" : "broke", index,
                          read < ARCHIVE_WARN ? ": " : "",
                          read < ARCHIVE_WARN ? archive_error_string(reader) : "");
             status = 4;

@@ -12,9 +12,9 @@ namespace raystep {
 namespace {
 
 constexpr double kWidth = 820;
-constexpr double kTop = 60;
-constexpr double kPlotWidth = 300;
-constexpr double kPlotHeight = 220;
+constexpr double kParetoTop = 60;
+constexpr double kParetoPlotWidth = 300;
+constexpr double kParetoPlotHeight = 220;
 constexpr double kLefts[2] = {70, 470};
 constexpr double kLegendColumn = 150;
 
@@ -42,9 +42,9 @@ std::string pareto_chart_svg(const ParetoFamily& family, const std::string& foot
 
     ScatterPanel wrong;
     wrong.left = kLefts[0];
-    wrong.top = kTop;
-    wrong.width = kPlotWidth;
-    wrong.height = kPlotHeight;
+    wrong.top = kParetoTop;
+    wrong.width = kParetoPlotWidth;
+    wrong.height = kParetoPlotHeight;
     wrong.title = "wrong answers: false hits + false misses, % of cases";
     wrong.x_title = "Mrays/s, one thread (ray-primitive tests)";
     wrong.x_max = fastest > 0.0 ? fastest * 1.1 : 1.0;
@@ -74,7 +74,7 @@ std::string pareto_chart_svg(const ParetoFamily& family, const std::string& foot
     // The legend wraps into rows under the panels; the height follows.
     const int per_row = static_cast<int>((kWidth - kLefts[0]) / kLegendColumn);
     const int rows = (static_cast<int>(labels.size()) + per_row - 1) / per_row;
-    const double legend_top = kTop + kPlotHeight + 58;
+    const double legend_top = kParetoTop + kParetoPlotHeight + 58;
     const double height = legend_top + 18.0 * rows + 50;
 
     std::string svg = svg_start(kWidth, height);

@@ -3,17 +3,12 @@
 #include <string>
 
 #include "base/testing/catch.h"
+#include "studies/tests/text_occurrences.h"
 
 using namespace raystep;
+using raystep::testing::occurrences;
 
 namespace {
-
-std::size_t occurrences(const std::string& text, const std::string& what) {
-    std::size_t count = 0;
-    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
-        ++count;
-    return count;
-}
 
 EpsilonSceneResult result_for(const std::string& scene) {
     EpsilonSceneResult r;

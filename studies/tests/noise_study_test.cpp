@@ -4,8 +4,10 @@
 
 #include "base/testing/catch.h"
 #include "studies/sampling/noise_chart.h"
+#include "studies/tests/text_occurrences.h"
 
 using namespace raystep;
+using raystep::testing::occurrences;
 
 namespace {
 
@@ -20,13 +22,6 @@ NoiseCurve power_curve(const std::string& method, SamplingKind kind, double firs
 
 NoiseScene light_scene(const NoiseCurve& stratified, const NoiseCurve& random) {
     return {"soft-shadows", "light samples", "a test scene", {stratified, random}};
-}
-
-std::size_t occurrences(const std::string& text, const std::string& what) {
-    std::size_t count = 0;
-    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
-        ++count;
-    return count;
 }
 
 }  // namespace

@@ -54,7 +54,7 @@ constexpr double kDeviationFloor = 1e-4;
 // of them or more. Measured: docs/measurements/stage8-checks.md.
 constexpr double kTilesApartPassed = 0.01;
 
-Scene scaled_scene(const fs::path& path, std::uint64_t seed) {
+Scene seeded_scaled_scene(const fs::path& path, std::uint64_t seed) {
     Scene scene = load_scene(path);
     if (scene.width > kRenderCheckWidth) {
         const double scale = static_cast<double>(kRenderCheckWidth) / scene.width;
@@ -88,7 +88,8 @@ std::vector<Image> make_reference_renders(const GradingContext& context, const f
     }
     std::vector<Image> renders;
     for (int k = 0; k < kReferenceRenders; ++k) {
-        const Scene scene = scaled_scene(path, kReferenceSeeds + static_cast<std::uint64_t>(k));
+        const Scene scene =
+            seeded_scaled_scene(path, kReferenceSeeds + static_cast<std::uint64_t>(k));
         RenderOptions options;
         options.view = view;
         options.threads = 1;
