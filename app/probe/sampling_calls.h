@@ -12,8 +12,6 @@
 // only what the student's code, which runs here too, lets it be.
 
 #include <cstdint>
-#include <optional>
-#include <string>
 #include <vector>
 
 #include <glm/geometric.hpp>
