@@ -17,45 +17,56 @@ SamplePattern JsonCodec<SamplePattern>::read(const Json& j) {
     throw std::invalid_argument("unknown sample pattern \"" + name + "\"");
 }
 
-Json perspective_camera(const PerspectiveCamera& c) {
-    return {{"eye", vec3(c.eye)},
-            {"u", vec3(c.frame.u)},
-            {"v", vec3(c.frame.v)},
-            {"w", vec3(c.frame.w)},
-            {"half_width", number(c.half_width)},
-            {"half_height", number(c.half_height)},
-            {"width", c.width},
-            {"height", c.height}};
+namespace {
+
+// The fields both cameras have: the eye, the frame's u, v and w, and the image size.
+template <class Camera>
+Json camera_common(const Camera& c) {
+    return {{"eye", vec3(c.eye)},   {"u", vec3(c.frame.u)}, {"v", vec3(c.frame.v)},
+            {"w", vec3(c.frame.w)}, {"width", c.width},     {"height", c.height}};
 }
 
-PerspectiveCamera perspective_camera_from(const Json& j) {
-    PerspectiveCamera c;
+template <class Camera>
+Camera camera_common_from(const Json& j) {
+    Camera c{};
     c.eye = vec3_from(field(j, "eye"));
     c.frame = {vec3_from(field(j, "u")), vec3_from(field(j, "v")), vec3_from(field(j, "w"))};
-    c.half_width = number_from(field(j, "half_width"));
-    c.half_height = number_from(field(j, "half_height"));
     c.width = integer_from(field(j, "width"));
     c.height = integer_from(field(j, "height"));
     return c;
 }
 
+}  // namespace
+
+Json perspective_camera(const PerspectiveCamera& c) {
+    Json j = camera_common(c);
+    j["half_width"] = number(c.half_width);
+    j["half_height"] = number(c.half_height);
+    return j;
+}
+
+PerspectiveCamera perspective_camera_from(const Json& j) {
+    PerspectiveCamera c = camera_common_from<PerspectiveCamera>(j);
+    c.half_width = number_from(field(j, "half_width"));
+    c.half_height = number_from(field(j, "half_height"));
+    return c;
+}
+
 Json orthographic_camera(const OrthographicCamera& c) {
-    return {{"eye", vec3(c.eye)},         {"u", vec3(c.frame.u)},   {"v", vec3(c.frame.v)},
-            {"w", vec3(c.frame.w)},       {"left", number(c.left)}, {"right", number(c.right)},
-            {"bottom", number(c.bottom)}, {"top", number(c.top)},   {"width", c.width},
-            {"height", c.height}};
+    Json j = camera_common(c);
+    j["left"] = number(c.left);
+    j["right"] = number(c.right);
+    j["bottom"] = number(c.bottom);
+    j["top"] = number(c.top);
+    return j;
 }
 
 OrthographicCamera orthographic_camera_from(const Json& j) {
-    OrthographicCamera c;
-    c.eye = vec3_from(field(j, "eye"));
-    c.frame = {vec3_from(field(j, "u")), vec3_from(field(j, "v")), vec3_from(field(j, "w"))};
+    OrthographicCamera c = camera_common_from<OrthographicCamera>(j);
     c.left = number_from(field(j, "left"));
     c.right = number_from(field(j, "right"));
     c.bottom = number_from(field(j, "bottom"));
     c.top = number_from(field(j, "top"));
-    c.width = integer_from(field(j, "width"));
-    c.height = integer_from(field(j, "height"));
     return c;
 }
 

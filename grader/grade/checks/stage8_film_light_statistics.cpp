@@ -80,8 +80,8 @@ struct LitPixel {
 std::string read_lit_pixel(const probe::LitPixelQuestion& question,
                            const probe::LitPixelAnswer& stream, LitPixel& pixel) {
     const std::vector<probe::LitFilmSample>& films = stream.films;
-    const int count = kFilmSide * kFilmSide;
-    const int light_count = kLightSide * kLightSide;
+    const int count = question.count;
+    const int light_count = question.light_count;
     if (films.size() != static_cast<std::size_t>(count)) {
         return "the radiance asked at " + std::to_string(films.size()) + " film points, not " +
                std::to_string(count);
