@@ -26,11 +26,11 @@ function(raystep_set_compile_options target)
 endfunction()
 
 # raystep_compile_file_by_file(TARGET): TARGET's files compile one by one even in a unity build
-# (CMAKE_UNITY_BUILD, which the student preset and scripts/test-all.sh's sanitizer build turn on;
-# every other target compiles whole at any batch size, so no two files may share a name in an
-# anonymous namespace: scripts/check-unity-names.py). A stage's files
-# are a student's: helpers of the same name in two of them are theirs to write, and a unity build
-# would join them into one file where the names clash.
+# (CMAKE_UNITY_BUILD, which the release and student presets and scripts/test-all.sh's sanitizer
+# build turn on; every other target compiles whole at any batch size, so no two files may share a
+# name in an anonymous namespace: scripts/check-unity-names.py). A stage's files are a student's:
+# helpers of the same name in two of them are theirs to write, and a unity build would join them
+# into one file where the names clash.
 function(raystep_compile_file_by_file target)
     set_target_properties(${target} PROPERTIES UNITY_BUILD OFF)
 endfunction()

@@ -81,12 +81,6 @@ if ! grep -q "^scripts/setup.sh$" "$release/README.md"; then
     exit 1
 fi
 # Built as its README says, with warnings as errors on top (setup.sh keeps the cached option).
-# RAYSTEP_STUDENT_UNITY=OFF turns the student preset's unity build off in this copy's
-# CMakePresets.json, so that the files compile one by one as in the release build and ccache gives
-# their objects (scripts/test-all.sh, where the Windows stand-in builds the unity files).
-if [ "${RAYSTEP_STUDENT_UNITY:-ON}" = OFF ]; then
-    sed -i 's/"CMAKE_UNITY_BUILD": "ON"/"CMAKE_UNITY_BUILD": "OFF"/' "$release/CMakePresets.json"
-fi
 (cd "$release" && cmake --preset student -DRAYSTEP_WARNINGS_AS_ERRORS=ON >/dev/null &&
     scripts/setup.sh)
 bin=$release/build/student/bin
@@ -285,7 +279,9 @@ check_command "raystep view with every stage written finds the click's trace the
     "finds the traces the same" python3 "$root/app/tests/view/view_release_check.py" \
     "$bin/raystep" "$compare_scene" written
 
+# The release preset's batches, so that the files other than stage 1's come from its objects.
 cmake -S "$root" -B "$root/build/student-stage1" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+    -DCMAKE_UNITY_BUILD=ON -DCMAKE_UNITY_BUILD_BATCH_SIZE=16 \
     -DRAYSTEP_STUDENT_STAGES=1 -DRAYSTEP_WARNINGS_AS_ERRORS=ON >/dev/null
 cmake --build "$root/build/student-stage1" --target raystep
 check_command "with stage 1 the student's, the reference camera calls the stage-1 stubs" 1 \

@@ -87,8 +87,9 @@ for standin in "${standins[@]}"; do
         toolchain_option=()
         [ -f "$build/CMakeCache.txt" ] || toolchain_option=(--toolchain "$toolchain")
         # libc++ compiles file by file, not in the preset's unity build, so that a file that
-        # reaches a header only through libstdc++'s own includes fails here as on a Mac. MinGW's
-        # standard library is libstdc++, whose includes the release build checks file by file.
+        # reaches a header only through libstdc++'s own includes, or through a file its unity
+        # file holds before it, fails here as on a Mac. MinGW builds the preset's unity files, as
+        # a student's Windows build does.
         unity=ON
         [ "$standin" = libcxx ] && unity=OFF
         (cd "$release" && cmake --preset student "${toolchain_option[@]}" --no-warn-unused-cli \

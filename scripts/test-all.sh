@@ -14,7 +14,7 @@
 # stages are written.
 # Where ccache is installed, every build compiles through one cache of the run's own
 # (scripts/use-ccache.sh): the student builds and the Gradescope test's setup.sh take most of their
-# objects from the release build. Each step prints the seconds since the start, and the end the
+# objects from the release build, a unity build at the student preset's batch size. Each step prints the seconds since the start, and the end the
 # cache's hits: docs/measurements/ci-time.md has the figures of a fresh clone.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -39,21 +39,18 @@ step "student build: every stub fails cleanly"
 export RAYSTEP_RELEASE=$PWD/build/pristine-release
 rm -rf "$RAYSTEP_RELEASE"
 build/release/bin/raystep-grade release "$RAYSTEP_RELEASE" >/dev/null
-# The student's build file by file here, as the release build compiles, so that its objects
-# come from the cache; the student preset's unity build is the Windows stand-in's below.
-RAYSTEP_STUDENT_UNITY=OFF scripts/check-student-build.sh
+scripts/check-student-build.sh
 step "student release on the Mac and Windows stand-ins"
 scripts/check-student-platforms.sh
 rm -rf "$RAYSTEP_RELEASE"
 unset RAYSTEP_RELEASE
 
 step "sanitizer build"
-# A unity build (CMake's CMAKE_UNITY_BUILD, eight files compiled as one): the sanitizers make each
-# instantiated template dear to compile, and one unity file compiles it once for eight files; the
-# stages' files still compile one by one (cmake/RaystepCompileOptions.cmake). The release build
-# compiles file by file, so that a file that lacks an include of its own still fails there.
+# A unity build of 16 files a unit, the release preset's: the sanitizers make each instantiated
+# template dear to compile, and one unity file compiles it once for sixteen files. The same batches
+# as the release build's, so that a file that compiles only beside another fails there first.
 cmake --preset debug-asan -DRAYSTEP_WARNINGS_AS_ERRORS=ON -DCMAKE_UNITY_BUILD=ON \
-    -DCMAKE_UNITY_BUILD_BATCH_SIZE=8 >/dev/null
+    -DCMAKE_UNITY_BUILD_BATCH_SIZE=16 >/dev/null
 sanitized=(raystep raystep-reference raystep_base_tests raystep_renderer_tests raystep_app_tests
     raystep_sandbox_tests)
 for stage in 1 2 3 4 5 6 7 8 9; do
