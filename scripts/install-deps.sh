@@ -33,16 +33,17 @@ grading_packages=(
 # What the rest needs: OpenImageIO's command-line tools (iv, idiff) to look at renders; the labels
 # of `raystep demo` (OpenImageIO draws text only with a TrueType font it is given); the report
 # tests (the XML parsed back with libxml2, the HTML report and `raystep view` in headless
-# Chromium, `raystep view` served by cpp-httplib); and
-# `raystep-reference bench` (the Embree baseline, and the bunny mesh of CGAL's demo data); the
-# format check (clang-format 14, Debian 12's); ccache, through which scripts/test-all.sh compiles
-# each object once for its several builds (scripts/use-ccache.sh); and the stand-ins for a
-# student's Mac and Windows laptop (release/standins/, scripts/check-student-platforms.sh): clang
-# 16 with libc++, and MinGW-w64 with Wine. The build configures without any of them, and the
-# tests that need one say so and are skipped.
+# Chromium, `raystep view` served by cpp-httplib); `raystep-reference bench` (the Embree
+# baseline, and the bunny mesh of CGAL's demo data); the format check (clang-format 14, Debian
+# 12's); ccache, through which scripts/test-all.sh compiles each object once for its several
+# builds (scripts/use-ccache.sh); matplotlib, which draws the studies' charts and the chart of
+# the grader's HTML report (scripts/draw-charts.py; without it a report has no chart); and the
+# stand-ins for a student's Mac and Windows laptop (release/standins/,
+# scripts/check-student-platforms.sh): clang 16 with libc++, and MinGW-w64 with Wine. The build
+# configures without any of them, and the tests that need one say so and are skipped.
 other_packages=(
     openimageio-tools fonts-dejavu-core libxml2-dev chromium libcpp-httplib-dev libembree-dev
-    libcgal-demo clang-format ccache
+    libcgal-demo clang-format ccache python3-matplotlib
     clang-16 libc++-16-dev libc++abi-16-dev g++-mingw-w64-x86-64-posix wine wine64
 )
 

@@ -7,11 +7,14 @@
 #include <memory>
 #include <thread>
 
+#include <nlohmann/json.hpp>
+
 #include "app/cli/command_registry.h"
 #include "renderer/terminal.h"
 #include "studies/common/machine_description.h"
 #include "studies/common/number_text.h"
 #include "studies/epsilon/epsilon_measure.h"
+#include "studies/epsilon/epsilon_study.h"
 #include "studies/sampling/noise_command.h"
 #include "studies/scale/scene_scale.h"
 #include "studies/speed_error/pareto_registry.h"
@@ -194,11 +197,12 @@ void run_epsilon(const BenchArguments& arguments) {
         std::printf("\n#### %s\n\n%s\n- %s\n", scene.filename().string().c_str(),
                     epsilon_table(results.back()).c_str(), epsilon_notes(results.back()).c_str());
     }
-    if (arguments.chart.empty()) return;
-    std::ofstream chart(arguments.chart);
-    chart << epsilon_chart_svg(results);
-    if (!chart) throw std::runtime_error("could not write the chart to " + arguments.chart);
-    std::printf("\n- the chart: %s\n", arguments.chart.c_str());
+    if (arguments.json.empty()) return;
+    std::ofstream file(arguments.json);
+    file << epsilon_json(results).dump(2) << "\n";
+    if (!file) throw std::runtime_error("could not write the figures to " + arguments.json);
+    std::printf("\n- the figures: %s (scripts/draw-charts.py %s draws them)\n",
+                arguments.json.c_str(), arguments.json.c_str());
 }
 
 }  // namespace
@@ -220,9 +224,9 @@ CLI::App* add_bench_command(CLI::App& app, BenchArguments& arguments) {
         "--epsilon", arguments.epsilon,
         "The epsilon study: acne and light leaks of each ray offset rule on the acne scenes "
         "(docs/stage6.md)");
-    command->add_option("--chart", arguments.chart,
-                        "With --epsilon or --sampling: also draw the study as an SVG chart into "
-                        "this file");
+    command->add_option("--json", arguments.json,
+                        "With --epsilon or --sampling: also write the study's figures into this "
+                        "JSON file, which scripts/draw-charts.py draws");
     command->add_flag("--scale", arguments.scale,
                       "The scale bars on scenes/scale/: a thousand transformed spheres against a "
                       "127,408-triangle scene, a thousand instanced bunnies against one "
@@ -255,7 +259,8 @@ CLI::App* add_bench_command(CLI::App& app, BenchArguments& arguments) {
         ->needs(pareto);
     command
         ->add_option("--out", arguments.out,
-                     "With --pareto: the folder for the charts and pareto.json (default: pareto)")
+                     "With --pareto: the folder for pareto.json, which scripts/draw-charts.py "
+                     "draws (default: pareto)")
         ->needs(pareto);
     command
         ->add_option("--threads", arguments.threads,
@@ -276,11 +281,11 @@ CLI::App* add_bench_command(CLI::App& app, BenchArguments& arguments) {
 }
 
 int run_bench(const BenchArguments& arguments) {
-    if (!arguments.chart.empty() && !arguments.epsilon && !arguments.sampling) {
-        std::fprintf(stderr, "raystep bench: --chart requires --epsilon or --sampling\n");
+    if (!arguments.json.empty() && !arguments.epsilon && !arguments.sampling) {
+        std::fprintf(stderr, "raystep bench: --json requires --epsilon or --sampling\n");
         return 2;
     }
-    if (arguments.sampling) return run_noise_study(arguments.quick, arguments.chart);
+    if (arguments.sampling) return run_noise_study(arguments.quick, arguments.json);
     if (arguments.pareto) {
         const std::vector<ParetoStudy>& studies = ParetoStudyRegistry::entries();
         if (studies.empty()) {

@@ -7,19 +7,19 @@
 
 namespace raystep {
 
-/// `raystep bench [--workload NAME]... [--growth] [--threshold] [--epsilon [--chart FILE]]
+/// `raystep bench [--workload NAME]... [--growth] [--threshold] [--epsilon [--json FILE]]
 /// [--threads N] [--embree-isa ISA] [--quick]` or
 /// `raystep bench --pareto [--cases PATH]... [--out FOLDER] [--quick]` or
-/// `raystep bench --sampling [--chart FILE] [--quick]`
+/// `raystep bench --sampling [--json FILE] [--quick]`
 struct BenchArguments {
     std::vector<std::string> workloads;  ///< scenes or workloads; none: every one
     bool growth = false;                 ///< the growth table
     bool threshold = false;              ///< where a BVH starts to pay
     bool epsilon = false;                ///< the epsilon study of stage 6
-    std::string chart;    ///< where the epsilon or sampling study's SVG chart goes; empty: none
+    std::string json;     ///< where the epsilon or sampling study's figures go; empty: nowhere
     bool pareto = false;  ///< the speed-against-error study, alone
     std::vector<std::string> cases;  ///< its case files or folders; none: stage 3's own
-    std::string out;                 ///< where its charts and JSON go
+    std::string out;                 ///< the folder its pareto.json goes into
     int threads = 0;                 ///< the all-threads columns' threads; 0: every hardware thread
     std::string embree_isa;          ///< the instruction set Embree is held to; empty: its best
     bool scale = false;              ///< the scale bars on scenes/scale/
@@ -37,7 +37,7 @@ CLI::App* add_bench_command(CLI::App& app, BenchArguments& arguments);
 /// "Measuring acne"; with --pareto, only the speed-against-error study of docs/stage3.md, which
 /// raystep-reference alone links (pareto_registry.h); with --sampling, only the noise study of
 /// docs/measurements/sampling-noise.md (studies/sampling/noise_command.h), exit code 1 when one
-/// of its findings does not hold; --chart without --epsilon or --sampling exits 2. Without
+/// of its findings does not hold; --json without --epsilon or --sampling exits 2. Without
 /// --workload, --growth, --threshold or
 /// --epsilon, runs them all. A structure that is a stub or fails gets its reason in its row and the
 /// others go on. Exit code 0; 1 when a cross-check found two structures that return different hits.

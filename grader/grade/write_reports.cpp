@@ -1,7 +1,10 @@
 #include "grader/grade/write_reports.h"
 
 #include <fstream>
+#include <optional>
 #include <stdexcept>
+
+#include <nlohmann/json.hpp>
 
 #include "app/report/audience.h"
 #include "grader/grade/report_json.h"
@@ -40,10 +43,14 @@ void write_reports(const GradeReport& report, const fs::path& output) {
     make_folder(instructor);
 
     // The student's folder: every file made from the student's view alone. The chart too, so
-    // that a withheld speed check's measurements stay out of it.
+    // that a withheld speed check's measurements stay out of it; drawn once when both views
+    // hold the same.
+    const std::optional<nlohmann::json> student_chart =
+        speed_error_chart_data(seen_by(report, Audience::student), RAYSTEP_PARETO_REFERENCE);
+    const std::optional<nlohmann::json> instructor_chart =
+        speed_error_chart_data(report, RAYSTEP_PARETO_REFERENCE);
     HtmlReportOptions student_page;
-    student_page.speed_error_chart_svg =
-        speed_error_chart_svg(seen_by(report, Audience::student), RAYSTEP_PARETO_REFERENCE);
+    if (student_chart) student_page.speed_error_chart_svg = draw_chart_svg(*student_chart);
     write_file(student / "index.html", html_report(report, instructor, student_page));
     write_file(student / "results.json", student_results(report).dump(2) + "\n");
     write_file(student / "junit.xml", junit_xml(report, Audience::student));
@@ -51,7 +58,11 @@ void write_reports(const GradeReport& report, const fs::path& output) {
     HtmlReportOptions instructor_page;
     instructor_page.audience = Audience::instructor;
     instructor_page.self_contained = false;
-    instructor_page.speed_error_chart_svg = speed_error_chart_svg(report, RAYSTEP_PARETO_REFERENCE);
+    if (instructor_chart) {
+        instructor_page.speed_error_chart_svg = instructor_chart == student_chart
+                                                    ? student_page.speed_error_chart_svg
+                                                    : draw_chart_svg(*instructor_chart);
+    }
     write_file(instructor / "instructor.html", html_report(report, instructor, instructor_page));
     write_file(instructor / "results.json", gradescope_results(report).dump(2) + "\n");
     write_file(instructor / "prairielearn.json",

@@ -20,9 +20,9 @@ struct HtmlReportOptions {
 
     /// The speed-versus-error chart (docs/measurements/pareto.md, "In the grader's report") as one
     /// inline <svg> element, placed after the stage table under "Speed versus error". Inserted as
-    /// it is, so it must be made by raystep's own code from the speed checks' metrics the page's
-    /// audience is shown, with any text from a submission escaped, and be well-formed XML like the
-    /// rest of the page. Empty: the page has no chart section.
+    /// it is, so it must be drawn by raystep's own script (grader/grade/speed_error_chart.h) from
+    /// the speed checks' metrics the page's audience is shown, with no text from a submission,
+    /// and be well-formed XML like the rest of the page. Empty: the page has no chart section.
     std::string speed_error_chart_svg;
 };
 

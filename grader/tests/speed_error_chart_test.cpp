@@ -4,6 +4,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
+
+#include <nlohmann/json.hpp>
 
 #include "base/testing/catch.h"
 #include "base/testing/scratch_folder.h"
@@ -48,29 +51,55 @@ GradeReport report_with_measurement(Outcome outcome) {
 
 }  // namespace
 
-TEST_CASE("speed_error_chart_svg: the submission is a labelled diamond at its speed ratio",
+TEST_CASE("speed_error_chart_data: the submission is a point of its own at its speed ratio",
           "[report]") {
     const testing::ScratchFolder scratch("speed-error-chart-test");
-    const std::string svg = speed_error_chart_svg(report_with_measurement(Outcome::passed),
-                                                  write_reference(scratch, "shared-edges"));
-    REQUIRE(!svg.empty());
-    CHECK(svg.find(">your intersect_triangle</text>") != std::string::npos);
-    CHECK(svg.find("Diamond: yours on 2000 cases") != std::string::npos);
-    // Half of Cramer's 20 Mrays/s: the x axis ends at 1.1 times the fastest point (22), so the
-    // diamond sits at 10/22 of the 300-unit-wide panel that starts at x = 70.
-    CHECK(svg.find("<path d=\"M206.4,") != std::string::npos);
+    const std::optional<nlohmann::json> data = speed_error_chart_data(
+        report_with_measurement(Outcome::passed), write_reference(scratch, "shared-edges"));
+    REQUIRE(data);
+    CHECK(data->at("study") == "pareto-family");
+    CHECK(data->at("footnote").get<std::string>().find("Diamond: yours on 2000 cases") !=
+          std::string::npos);
+    const nlohmann::json& points = data->at("family").at("points");
+    REQUIRE(points.size() == 2);
+    const nlohmann::json& yours = points.at(1);
+    CHECK(yours.at("label") == "your intersect_triangle");
+    CHECK(yours.at("precision") == "submission");
+    CHECK(yours.at("mrays_per_second") == 10.0);  // half of Cramer's 20 Mrays/s
+    CHECK(yours.at("wrong_share") == 0.1);        // 200 false misses of 2000 cases
+    CHECK(yours.at("t_ulps").at("p99") == 20.0);
 }
 
-TEST_CASE("speed_error_chart_svg: no chart without a measurement or a reference", "[report]") {
+TEST_CASE("speed_error_chart_data: none without a measurement or a reference", "[report]") {
     const testing::ScratchFolder scratch("speed-error-chart-test");
     const std::filesystem::path reference = write_reference(scratch, "shared-edges");
-    CHECK(speed_error_chart_svg(report_with_measurement(Outcome::not_implemented), reference)
-              .empty());
-    CHECK(speed_error_chart_svg(GradeReport{}, reference).empty());
-    CHECK(speed_error_chart_svg(report_with_measurement(Outcome::passed),
-                                reference.string() + ".missing")
-              .empty());
-    CHECK(speed_error_chart_svg(report_with_measurement(Outcome::passed),
-                                write_reference(scratch, "slivers"))
-              .empty());
+    CHECK(!speed_error_chart_data(report_with_measurement(Outcome::not_implemented), reference));
+    CHECK(!speed_error_chart_data(GradeReport{}, reference));
+    CHECK(!speed_error_chart_data(report_with_measurement(Outcome::passed),
+                                  reference.string() + ".missing"));
+    CHECK(!speed_error_chart_data(report_with_measurement(Outcome::passed),
+                                  write_reference(scratch, "slivers")));
+}
+
+// scripts/draw-charts.py draws it where CMake found a Python with matplotlib; else no chart.
+TEST_CASE("draw_chart_svg: one inline <svg> element with the submission labelled", "[report]") {
+    const testing::ScratchFolder scratch("speed-error-chart-test");
+    const std::optional<nlohmann::json> data = speed_error_chart_data(
+        report_with_measurement(Outcome::passed), write_reference(scratch, "shared-edges"));
+    REQUIRE(data);
+    const std::string svg = draw_chart_svg(*data);
+    if (std::string(RAYSTEP_CHART_PYTHON).empty()) {
+        CHECK(svg.empty());
+        return;
+    }
+    CHECK(svg.rfind("<svg ", 0) == 0);
+    CHECK(svg.size() - svg.rfind("</svg>") == 6);
+    CHECK(svg.find("<?xml") == std::string::npos);
+    CHECK(svg.find("<!DOCTYPE") == std::string::npos);
+    CHECK(svg.find(">your intersect_triangle</text>") != std::string::npos);
+    CHECK(svg.find("Diamond: yours on 2000 cases") != std::string::npos);
+}
+
+TEST_CASE("draw_chart_svg: no chart from data the script cannot draw", "[report]") {
+    CHECK(draw_chart_svg(nlohmann::json{{"study", "pareto-family"}}).empty());
 }

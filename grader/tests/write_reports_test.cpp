@@ -10,6 +10,7 @@
 #include "app/report/report_text.h"
 #include "base/testing/catch.h"
 #include "base/testing/scratch_folder.h"
+#include "grader/grade/checks/stage_checks.h"
 #include "grader/grade/report_json.h"
 #include "grader/report/markup_escape.h"
 #include "report_example.h"
@@ -165,6 +166,34 @@ TEST_CASE("write_reports: the student's page is one file, and its JUnit XML is v
     CHECK(prairielearn.at("tests")[7].at("name") == "stage7.render.mirrors");
     CHECK(prairielearn.at("tests")[7].at("images").size() == 3);
     CHECK(prairielearn.at("tests")[8].at("images").size() == 3);
+}
+
+// The chart is drawn by scripts/draw-charts.py where CMake found a Python with matplotlib.
+TEST_CASE("write_reports: a speed-against-error measurement puts the drawn chart in both pages",
+          "[report]") {
+    GradeReport report = example_report();
+    CheckResult speed;
+    speed.id = kSpeedErrorCheck;
+    speed.stage = 3;
+    speed.outcome = Outcome::passed;
+    speed.metrics = {{kSpeedErrorCases, 2000},    {kSpeedErrorFalseHits, 0},
+                     {kSpeedErrorFalseMisses, 0}, {kSpeedErrorUlpsMedian, 1},
+                     {kSpeedErrorUlpsP99, 20},    {kSpeedErrorAgainstCramer, 1.0}};
+    report.checks.push_back(speed);
+    const ScratchFolder scratch("write-reports-test");
+    const fs::path output = written(scratch.path() / "out", report);
+    const bool drawn = !std::string(RAYSTEP_CHART_PYTHON).empty();
+    for (const fs::path& page_file :
+         {student_folder(output) / "index.html", instructor_folder(output) / "instructor.html"}) {
+        const XmlDocument page(read(page_file));
+        INFO(page_file << ": " << page.errors());
+        REQUIRE(page.well_formed());
+        const std::string chart = "//section[@id='speed-versus-error']/*[local-name()='svg']";
+        CHECK(page.count(chart) == (drawn ? 1 : 0));
+        if (drawn) {
+            CHECK_THAT(read(page_file), Catch::Matchers::Contains("your intersect_triangle"));
+        }
+    }
 }
 
 TEST_CASE("write_reports: report.json in the instructor's folder reads back as the report",

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 namespace raystep {
 
 // The epsilon study of docs/stage6.md, "Measuring acne": on each acne scene, every pixel's light
@@ -41,9 +43,10 @@ std::string epsilon_table(const EpsilonSceneResult& result);
 /// A line under the table: how many pixels were lit and shadowed, and how many were left out.
 std::string epsilon_notes(const EpsilonSceneResult& result);
 
-/// A chart of the study as an SVG image: one panel per scene, epsilon (log scale) across, wrong
-/// pixels (log scale, 0 on the bottom line) up, acne and leaks of both fixed rules; error-bound's
-/// counts said in words under each panel.
-std::string epsilon_chart_svg(const std::vector<EpsilonSceneResult>& results);
+/// The study's figures as the JSON `bench --epsilon --json FILE` writes, which
+/// scripts/draw-charts.py draws: {"study": "epsilon", "scenes": [{"scene" (the file's stem), "lit",
+/// "shadowed", "undecided", "other_hit", "epsilons", "along_ray" and "along_normal" (an {"acne",
+/// "leaks"} per epsilon), "error_bound": {"acne", "leaks"}, "stopped"}]}.
+nlohmann::json epsilon_json(const std::vector<EpsilonSceneResult>& results);
 
 }  // namespace raystep

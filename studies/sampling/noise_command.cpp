@@ -5,9 +5,10 @@
 #include <fstream>
 #include <stdexcept>
 
+#include <nlohmann/json.hpp>
+
 #include "renderer/terminal.h"
 #include "studies/common/machine_description.h"
-#include "studies/sampling/noise_chart.h"
 #include "studies/sampling/noise_measure.h"
 
 namespace raystep {
@@ -23,12 +24,14 @@ std::string counts_text(const std::vector<int>& counts) {
 
 }  // namespace
 
-int run_noise_study(bool quick, const std::string& chart) {
+int run_noise_study(bool quick, const std::string& json_path) {
     NoiseStudyOptions options = quick ? quick_noise_options() : NoiseStudyOptions{};
     const bool terminal = is_terminal(stderr);
     options.progress = [terminal](const std::string& what) {
         if (terminal) std::fprintf(stderr, "\r\033[K  measuring %s", what.c_str());
     };
+    const std::string machine = machine_description();
+    const std::string date = local_time();
     std::printf(
         "raystep bench --sampling: %s; %s\n"
         "Each render %d x %d pixels on %d thread(s), its processor time (std::clock) from the "
@@ -36,9 +39,8 @@ int run_noise_study(bool quick, const std::string& chart) {
         "regular grid: 1, it has "
         "no randomness); RMSE over every pixel and channel against a converged render of %d "
         "stratified samples.\n",
-        machine_description().c_str(), local_time().c_str(), options.width, options.height,
-        options.threads, counts_text(options.counts).c_str(), options.seeds,
-        options.converged_samples);
+        machine.c_str(), date.c_str(), options.width, options.height, options.threads,
+        counts_text(options.counts).c_str(), options.seeds, options.converged_samples);
 
     const std::vector<NoiseScene> scenes =
         measure_noise(std::filesystem::path(RAYSTEP_SOURCE_DIR) / "scenes/demos", options);
@@ -54,11 +56,12 @@ int run_noise_study(bool quick, const std::string& chart) {
         std::printf("- %s: %s\n", finding.text.c_str(), finding.holds ? "yes" : "NO");
         all_hold = all_hold && finding.holds;
     }
-    if (!chart.empty()) {
-        std::ofstream file(chart);
-        file << noise_chart_svg(scenes);
-        if (!file) throw std::runtime_error("could not write the chart to " + chart);
-        std::printf("- the chart: %s\n", chart.c_str());
+    if (!json_path.empty()) {
+        std::ofstream file(json_path);
+        file << noise_json(machine, date, scenes).dump(2) << "\n";
+        if (!file) throw std::runtime_error("could not write the figures to " + json_path);
+        std::printf("- the figures: %s (scripts/draw-charts.py %s draws them)\n", json_path.c_str(),
+                    json_path.c_str());
     }
     return all_hold ? 0 : 1;
 }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <nlohmann/json.hpp>
+
 #include "studies/common/markdown_table.h"
 #include "studies/common/number_text.h"
 #include "studies/sampling/noise_statistics.h"
@@ -72,6 +74,46 @@ std::vector<NoiseFinding> noise_findings(const std::vector<NoiseScene>& scenes) 
              strata.samples == independent.samples && strata.rmse < independent.rmse});
     }
     return findings;
+}
+
+const char* sampling_kind_name(SamplingKind kind) {
+    switch (kind) {
+        case SamplingKind::stratified:
+            return "stratified";
+        case SamplingKind::regular:
+            return "regular";
+        case SamplingKind::random:
+            return "random";
+    }
+    return "random";
+}
+
+nlohmann::json noise_json(const std::string& machine, const std::string& date,
+                          const std::vector<NoiseScene>& scenes) {
+    nlohmann::json scenes_json = nlohmann::json::array();
+    for (const NoiseScene& scene : scenes) {
+        nlohmann::json curves = nlohmann::json::array();
+        for (const NoiseCurve& curve : scene.curves) {
+            nlohmann::json points = nlohmann::json::array();
+            for (const NoisePoint& p : curve.points) {
+                points.push_back({{"samples", p.samples},
+                                  {"runs", p.runs},
+                                  {"seconds", p.seconds},
+                                  {"rmse", p.rmse},
+                                  {"rmse_spread", p.rmse_spread}});
+            }
+            curves.push_back({{"method", curve.method},
+                              {"kind", sampling_kind_name(curve.kind)},
+                              {"slope", noise_slope(curve)},
+                              {"points", points}});
+        }
+        scenes_json.push_back({{"name", scene.name},
+                               {"sampled", scene.sampled},
+                               {"description", scene.description},
+                               {"curves", curves}});
+    }
+    return {
+        {"study", "sampling-noise"}, {"machine", machine}, {"date", date}, {"scenes", scenes_json}};
 }
 
 }  // namespace raystep

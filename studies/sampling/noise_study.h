@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 namespace raystep {
 
 // The sampling noise study (`raystep bench --sampling`, docs/measurements/sampling-noise.md): the
@@ -59,5 +61,15 @@ struct NoiseFinding {
 /// falls at each larger sample count, and at the largest count the stratified curve's mean RMSE is
 /// below the random one's. A scene without a random or a stratified curve adds no finding.
 std::vector<NoiseFinding> noise_findings(const std::vector<NoiseScene>& scenes);
+
+/// The kind's name in the study's JSON: "stratified", "regular", "random".
+const char* sampling_kind_name(SamplingKind kind);
+
+/// The study's figures as the JSON `bench --sampling --json FILE` writes, which
+/// scripts/draw-charts.py draws: {"study": "sampling-noise", "machine", "date", "scenes": [{"name",
+/// "sampled", "description", "curves": [{"method", "kind", "slope" (noise_slope), "points":
+/// [{"samples", "runs", "seconds", "rmse", "rmse_spread"}]}]}]}.
+nlohmann::json noise_json(const std::string& machine, const std::string& date,
+                          const std::vector<NoiseScene>& scenes);
 
 }  // namespace raystep

@@ -12,10 +12,8 @@
 #include "studies/common/machine_description.h"
 #include "studies/common/markdown_table.h"
 #include "studies/common/number_text.h"
-#include "studies/common/svg_chart.h"
 #include "studies/epsilon/epsilon_measure.h"
 #include "studies/epsilon/offset_cost.h"
-#include "studies/speed_error/pareto_chart.h"
 #include "studies/speed_error/pareto_json.h"
 #include "studies/speed_error/pareto_reference_methods.h"
 #include "studies/speed_error/pareto_registry.h"
@@ -113,66 +111,9 @@ std::string offset_table(const std::vector<OffsetRuleResult>& rows) {
     return table.text();
 }
 
-// One panel per scene: shadow-ray throughput across, wrong pixel-lights up, a point per rule and
-// epsilon.
-std::string offset_chart_svg(const std::vector<OffsetRuleResult>& rows,
-                             const std::string& footnote) {
-    std::vector<std::string> scenes;
-    for (const OffsetRuleResult& r : rows) {
-        if (std::find(scenes.begin(), scenes.end(), r.scene) == scenes.end()) {
-            scenes.push_back(r.scene);
-        }
-    }
-    const char* const rules[] = {"along-ray", "along-normal", "error-bound"};
-    constexpr double kPanelWidth = 260;
-    constexpr double kStride = 330;
-    const double width = 70 + kStride * static_cast<double>(scenes.size());
-    std::string svg = svg_start(width, 400);
-    svg += svg_text(width / 2, 20, "middle",
-                    "ray offset rules: the cost of a shadow ray against its acne and leaks",
-                    " font-weight=\"bold\" font-size=\"13\"");
-    for (std::size_t s = 0; s < scenes.size(); ++s) {
-        ScatterPanel panel;
-        panel.left = 70 + kStride * static_cast<double>(s);
-        panel.top = 60;
-        panel.width = kPanelWidth;
-        panel.title = scenes[s];
-        panel.x_title = "million shadow rays/s, one thread";
-        panel.y = {-3, 2, "%"};
-        std::vector<ScatterPoint> points;
-        double fastest = 0.0;
-        for (const OffsetRuleResult& r : rows) {
-            if (r.scene != scenes[s]) continue;
-            ScatterPoint point;
-            point.x = r.nanoseconds_per_ray > 0.0 ? 1e3 / r.nanoseconds_per_ray : 0.0;
-            point.y = r.decided ? 100.0 * static_cast<double>(r.acne + r.leaks) /
-                                      static_cast<double>(r.decided)
-                                : 0.0;
-            const auto rule = std::find(std::begin(rules), std::end(rules), r.rule);
-            point.colour = series_colour(static_cast<std::size_t>(rule - std::begin(rules)));
-            points.push_back(point);
-            fastest = std::max(fastest, point.x);
-        }
-        panel.x_max = fastest > 0.0 ? fastest * 1.15 : 1.0;
-        svg += svg_scatter_panel(panel, points);
-    }
-    double x = 70;
-    for (std::size_t k = 0; k < std::size(rules); ++k) {
-        svg += svg_legend_entry(x, 340, series_colour(k), ScatterPoint::Marker::filled, rules[k]);
-        x += 120;
-    }
-    svg += svg_text(x, 340, "start",
-                    "(a point per epsilon: 1e-10, 1e-8, 1e-6, 1e-4, 1e-2; up: acne + leaks, % of "
-                    "the decided pixel-lights)");
-    svg += svg_text(70, 362, "start", footnote, " fill=\"#555\"");
-    svg += "</svg>\n";
-    return svg;
-}
-
 int run_pareto_study(const ParetoOptions& options) {
     const std::string machine = machine_description();
     const std::string date = local_time();
-    const std::string footnote = "raystep-reference bench --pareto, " + date + ", " + machine;
     ParetoTiming timing;
     if (options.quick) {
         timing.sample_seconds = 0.002;
@@ -208,14 +149,12 @@ int run_pareto_study(const ParetoOptions& options) {
     const fs::path out =
         options.out_folder.empty() ? fs::path("pareto") : fs::path(options.out_folder);
     fs::create_directories(out);
-    for (const ParetoFamily& family : families) {
-        write_file(out / ("pareto-" + family.name + ".svg"), pareto_chart_svg(family, footnote));
-    }
-    write_file(out / "pareto-offsets.svg", offset_chart_svg(offset_rules, footnote));
-    write_file(out / "pareto.json",
-               pareto_json(machine, date, families, offset_rules).dump(2) + "\n");
-    std::printf("\n- wrote %zu family charts, pareto-offsets.svg and pareto.json into %s\n",
-                families.size(), out.string().c_str());
+    const fs::path json = out / "pareto.json";
+    write_file(json, pareto_json(machine, date, families, offset_rules).dump(2) + "\n");
+    std::printf(
+        "\n- the figures: %s (scripts/draw-charts.py %s draws a chart per family and "
+        "pareto-offsets.svg beside it)\n",
+        json.string().c_str(), json.string().c_str());
     return 0;
 }
 

@@ -6,6 +6,7 @@ nlohmann::json pareto_json(const std::string& machine, const std::string& date,
                            const std::vector<ParetoFamily>& families,
                            const std::vector<OffsetRuleResult>& offset_rules) {
     nlohmann::json json;
+    json["study"] = "pareto";
     json["machine"] = machine;
     json["date"] = date;
     json["families"] = nlohmann::json::array();

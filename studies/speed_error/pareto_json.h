@@ -21,7 +21,8 @@ struct OffsetRuleResult {
     std::size_t decided = 0;  ///< the pixel-light pairs whose exact answer is known
 };
 
-/// Everything `bench --pareto` measured, as the JSON file it writes: {"machine", "date",
+/// Everything `bench --pareto` measured, as the JSON file it writes, which scripts/draw-charts.py
+/// draws: {"study": "pareto", "machine", "date",
 /// "families": [{"name", "description", "cases", "points": [{"label", "precision",
 /// "function", "cases", "false_hits", "false_misses", "wrong_share", "t_ulps": {"median",
 /// "p99", "max"}, "mrays_per_second"}]}], "offset_rules": [{"scene", "rule", "epsilon",

@@ -2,11 +2,11 @@
 
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "base/testing/catch.h"
-#include "studies/tests/text_occurrences.h"
 
 using namespace raystep;
-using raystep::testing::occurrences;
 
 namespace {
 
@@ -51,13 +51,17 @@ TEST_CASE("epsilon_notes: the pixels counted and those left out, or why it stopp
     CHECK(epsilon_notes(r) == "stopped: stage 6: shadow_ray is not implemented yet");
 }
 
-TEST_CASE("epsilon_chart_svg: a panel per scene with four lines and error-bound in words",
+TEST_CASE("epsilon_json: a scene per result by its stem, acne and leaks per epsilon and rule",
           "[bench]") {
-    const std::string svg =
-        epsilon_chart_svg({result_for("acne-scale-1e-3"), result_for("acne-scale-1")});
-    CHECK(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0) == 0);
-    CHECK(svg.find("</svg>") != std::string::npos);
-    CHECK(occurrences(svg, "<polyline") == 8);
-    CHECK(svg.find(">acne-scale-1e-3</text>") != std::string::npos);
-    CHECK(occurrences(svg, "error-bound: 0 acne, 0 leaks") == 2);
+    const nlohmann::json json =
+        epsilon_json({result_for("acne-scale-1e-3"), result_for("acne-scale-1")});
+    CHECK(json.at("study") == "epsilon");
+    REQUIRE(json.at("scenes").size() == 2);
+    const nlohmann::json& scene = json.at("scenes").at(1);
+    CHECK(scene.at("scene") == "acne-scale-1");
+    CHECK(scene.at("lit") == 1000);
+    CHECK(scene.at("epsilons") == nlohmann::json::array({1e-3, 1e-2}));
+    CHECK(scene.at("along_ray").at(1) == nlohmann::json{{"acne", 3}, {"leaks", 40}});
+    CHECK(scene.at("along_normal").at(1) == nlohmann::json{{"acne", 12}, {"leaks", 150}});
+    CHECK(scene.at("error_bound") == nlohmann::json{{"acne", 0}, {"leaks", 0}});
 }

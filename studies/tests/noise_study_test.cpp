@@ -1,13 +1,13 @@
 #include "studies/sampling/noise_study.h"
 
+#include <cmath>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "base/testing/catch.h"
-#include "studies/sampling/noise_chart.h"
-#include "studies/tests/text_occurrences.h"
 
 using namespace raystep;
-using raystep::testing::occurrences;
 
 namespace {
 
@@ -75,21 +75,19 @@ TEST_CASE("noise_table: a row per point and each curve's slope", "[bench]") {
           std::string::npos);
 }
 
-TEST_CASE("noise_chart_svg: a panel per scene, a line and a legend with its slope per curve",
-          "[bench]") {
+TEST_CASE("noise_json: a scene per panel, each curve's kind, slope and points", "[bench]") {
     const NoiseScene light =
         light_scene(power_curve("stratified", SamplingKind::stratified, 0.1, 0.75),
                     power_curve("random", SamplingKind::random, 0.1, 0.5));
-    NoiseScene pixels = light;
-    pixels.name = "stripes";
-    pixels.sampled = "pixel samples";
-    const std::string svg = noise_chart_svg({pixels, light});
-    CHECK(svg.rfind("<svg", 0) == 0);
-    CHECK(svg.find("</svg>") != std::string::npos);
-    CHECK(occurrences(svg, "<polyline") == 4);
-    CHECK(occurrences(svg, "<circle") == 4 * 3 + 4);  // a dot per point, one per legend entry
-    CHECK(svg.find("stripes: pixel samples") != std::string::npos);
-    CHECK(svg.find("soft-shadows: light samples") != std::string::npos);
-    CHECK(occurrences(svg, "random: RMSE ~ N^-0.50") == 2);
-    CHECK(occurrences(svg, "stratified: RMSE ~ N^-0.75") == 2);
+    const nlohmann::json json = noise_json("a machine", "today", {light});
+    CHECK(json.at("study") == "sampling-noise");
+    CHECK(json.at("machine") == "a machine");
+    REQUIRE(json.at("scenes").size() == 1);
+    CHECK(json.at("scenes").at(0).at("sampled") == "light samples");
+    const nlohmann::json& random = json.at("scenes").at(0).at("curves").at(1);
+    CHECK(random.at("kind") == "random");
+    CHECK(random.at("slope").get<double>() == Approx(-0.5));
+    REQUIRE(random.at("points").size() == 3);
+    CHECK(random.at("points").at(2).at("samples") == 16);
+    CHECK(random.at("points").at(2).at("rmse").get<double>() == Approx(0.025));
 }

@@ -1,5 +1,5 @@
 // The speed-against-error study (`raystep-reference bench --pareto`): its scoring, the float
-// variants it measures, its JSON and its chart. No time is asserted.
+// variants it measures, its JSON. No time is asserted.
 
 #include "studies/speed_error/pareto_study.h"
 
@@ -10,7 +10,6 @@
 
 #include "app/check/case_file.h"
 #include "base/testing/catch.h"
-#include "studies/speed_error/pareto_chart.h"
 #include "studies/speed_error/pareto_json.h"
 #include "studies/speed_error/pareto_reference_methods.h"
 
@@ -159,6 +158,7 @@ TEST_CASE("pareto_json: the families read back as they were written", "[pareto]"
     family.points = {point};
 
     const nlohmann::json json = pareto_json("a machine", "today", {family}, {});
+    CHECK(json.at("study") == "pareto");
     CHECK(json.at("families").at(0).at("points").at(0).at("wrong_share") == 0.13);
     const std::vector<ParetoFamily> back = pareto_families_from_json(json);
     REQUIRE(back.size() == 1);
@@ -170,38 +170,4 @@ TEST_CASE("pareto_json: the families read back as they were written", "[pareto]"
     CHECK(read.false_misses == 12);
     CHECK(read.t_ulps_p99 == point.t_ulps_p99);
     CHECK(read.mrays_per_second == point.mrays_per_second);
-}
-
-TEST_CASE("pareto_chart_svg: double filled, float open, another point a labelled diamond",
-          "[pareto]") {
-    ParetoFamily family;
-    family.name = "slivers";
-    family.description = "needle <and> cap triangles";
-    family.cases = 10;
-    ParetoPoint point;
-    point.label = "watertight";
-    point.cases = 10;
-    point.mrays_per_second = 50.0;
-    point.precision = "double";
-    family.points.push_back(point);
-    point.precision = "float";
-    family.points.push_back(point);
-    point.label = "your intersect_triangle";
-    point.precision = "submission";
-    family.points.push_back(point);
-
-    const std::string svg = pareto_chart_svg(family, "measured here");
-    const auto count = [&](const std::string& what) {
-        std::size_t n = 0;
-        for (std::size_t at = svg.find(what); at != std::string::npos; at = svg.find(what, at + 1))
-            ++n;
-        return n;
-    };
-    // Two panels: each point twice; the legend adds a filled marker for the method's colour.
-    CHECK(count("fill=\"white\" stroke=\"#c0392b\"") == 2);
-    CHECK(count("fill=\"#c0392b\" stroke=\"#c0392b\"") == 3);
-    CHECK(count("<path d=") == 2);
-    CHECK(count(">your intersect_triangle</text>") == 2);
-    CHECK(count("needle &lt;and&gt; cap triangles") == 1);
-    CHECK(count("measured here") == 1);
 }
