@@ -92,6 +92,16 @@ ObjectCache::ObjectCache(fs::path folder, const ProbeToolchain& toolchain, fs::p
                         std::to_string(fs::last_write_time(compiler).time_since_epoch().count());
     for (const std::string& flag : toolchain.compile_flags)
         toolchain_inputs_ += " " + flag;
+    // The precompiled header (work/precompiled, from the build tree) by the build's file, whose
+    // size and time move with every rebuild of it: it is the grader's, like the headers.
+    if (!toolchain.precompiled_header.empty()) {
+        const fs::path compiled = toolchain.precompiled_header.string() + ".gch";
+        std::error_code none;
+        toolchain_inputs_ +=
+            "\nprecompiled " + compiled.string() + " " +
+            std::to_string(fs::file_size(compiled, none)) + " " +
+            std::to_string(fs::last_write_time(compiled, none).time_since_epoch().count());
+    }
     // The headers are the grader's own, so a hash that only finds them is enough here.
     toolchain_inputs_ +=
         "\nheaders " + hex(std::hash<std::string>{}(folder_bytes(work_ / "include")));
@@ -158,7 +168,10 @@ void ObjectCache::keep(const fs::path& source, const fs::path& object) const {
         const fs::path rule = fs::path(object).replace_extension(".d");
         for (const fs::path& file : dependencies_in(read_bytes(rule))) {
             const fs::path path = fs::absolute(file).lexically_normal();
-            if (path == source.lexically_normal() || is_under(path, work_ / "include")) continue;
+            if (path == source.lexically_normal() || is_under(path, work_ / "include") ||
+                is_under(path, work_ / "precompiled")) {
+                continue;
+            }
             read.push_back(is_under(path, work_)
                                ? "@/" + path.lexically_relative(work_).generic_string()
                                : path.string());

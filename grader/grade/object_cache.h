@@ -14,7 +14,8 @@ namespace raystep::grade {
 /// the corpus leaves as they are.
 ///
 /// An entry is found by the compiled file's name and bytes, the compiler (its path, size and time)
-/// and flags, and a digest of the grader's headers; and it is used only when every other file
+/// and flags, and a digest of the grader's headers (its precompiled header by size and time); and
+/// it is used only when every other file
 /// that compile read (the compiler's own list of them, -MD) is as it was: a file of the
 /// submission byte for byte, a system header by its size and time. The entry's folder name is a
 /// hash of the first part, which only finds it: a student who made a file whose hash is another's

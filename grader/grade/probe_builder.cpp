@@ -50,6 +50,26 @@ void copy_headers(const fs::path& source, const fs::path& include) {
     }
 }
 
+// The precompiled header (probe_precompiled.h) where the sandbox's user can read it: linked into
+// `folder` from the build tree when anyone may read the build's file and both lie on one file
+// system, else copied (some 50 MB). The header's path there, for -include; empty where the build
+// made none, and a compile then parses everything itself.
+fs::path place_precompiled_header(const ProbeToolchain& toolchain, const fs::path& folder) {
+    const fs::path& header = toolchain.precompiled_header;
+    const fs::path compiled = header.string() + ".gch";
+    if (header.empty() || !fs::is_regular_file(header) || !fs::is_regular_file(compiled)) return {};
+    fs::create_directories(folder);
+    for (const fs::path& from : {header, compiled}) {
+        const fs::path to = folder / from.filename();
+        const bool readable =
+            (fs::status(from).permissions() & fs::perms::others_read) != fs::perms::none;
+        std::error_code not_linked;
+        if (readable) fs::create_hard_link(from, to, not_linked);
+        if (!readable || not_linked) copy_file_for_sandbox(from, to, kSharedFile);
+    }
+    return folder / header.filename();
+}
+
 // What a probe's link reads, copied into work/link: the parts every probe shares in common/, and
 // each reference stage in stageN/, so that a link is shown only the stages it takes from the
 // reference. System libraries stay where they are: the sandbox shows /usr.
@@ -156,7 +176,8 @@ void require_sandbox_reaches(const fs::path& include, const fs::path& work) {
 // Compiles a stage's files one after another, each under what is left of the stage's budget: a
 // template bomb or a huge constant array ends, and so does a stage split into many slow files.
 CompiledStage compile_stage(const SubmittedStage& stage, const ProbeToolchain& toolchain,
-                            const fs::path& include, const fs::path& work, const ObjectCache* cache,
+                            const fs::path& include, const fs::path& precompiled,
+                            const fs::path& work, const ObjectCache* cache,
                             const BuildBudget& budget) {
     CompiledStage compiled;
     compiled.number = stage.manifest.number;
@@ -185,6 +206,7 @@ CompiledStage compile_stage(const SubmittedStage& stage, const ProbeToolchain& t
         }
         std::vector<std::string> argv = {toolchain.compiler.string()};
         argv.insert(argv.end(), toolchain.compile_flags.begin(), toolchain.compile_flags.end());
+        if (!precompiled.empty()) argv.insert(argv.end(), {"-include", precompiled.string()});
         argv.insert(argv.end(),
                     {"-I" + include.string(), "-c", file.string(), "-o", object.string()});
         if (cache) {
@@ -194,6 +216,7 @@ CompiledStage compile_stage(const SubmittedStage& stage, const ProbeToolchain& t
 
         SandboxPolicy policy;
         policy.read_only = {include, file.parent_path()};
+        if (!precompiled.empty()) policy.read_only.push_back(precompiled.parent_path());
         policy.writable = objects;
         policy.working_directory = objects;
         policy.limits.cpu_seconds = seconds_left;
@@ -322,6 +345,7 @@ ProbeSet build_probes(const Submission& submission, const ProbeToolchain& toolch
     const fs::path include = work / "include";
     copy_headers(toolchain.source, include);
     require_sandbox_reaches(include, work);
+    const fs::path precompiled = place_precompiled_header(toolchain, work / "precompiled");
     std::optional<ObjectCache> cache;
     if (!object_cache.empty()) cache.emplace(object_cache, toolchain, work);
 
@@ -333,7 +357,7 @@ ProbeSet build_probes(const Submission& submission, const ProbeToolchain& toolch
     }
     std::vector<CompiledStage> compiled(to_compile.size());
     run_at_a_time(compiled.size(), jobs, [&](std::size_t s) {
-        compiled[s] = compile_stage(*to_compile[s], toolchain, include, work,
+        compiled[s] = compile_stage(*to_compile[s], toolchain, include, precompiled, work,
                                     cache ? &*cache : nullptr, budget);
     });
 

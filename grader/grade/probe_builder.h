@@ -56,8 +56,10 @@ struct BuildBudget {
 /// (grade_submission makes it so):
 /// - work/include: the headers of base/ and stages/ (no solutions, no studies, no grader); each
 ///   stage's files are compiled there with the reference's flags, each compile in the sandbox
-///   with only that tree, the stage's sources and its own output folder in view, `jobs` stages
-///   at a time;
+///   with only that tree, the precompiled header, the stage's sources and its own output folder
+///   in view, `jobs` stages at a time;
+/// - work/precompiled: the precompiled header (probe_precompiled.h) that every such compile takes
+///   first, where the build made one;
 /// - work/link: what the links read, copied out of the build tree (the probe's own objects, the
 ///   libraries below the stages, each reference stage in a folder of its own), so that each link
 ///   sees only the reference stages its probe takes; removed once the probes are linked, before

@@ -29,6 +29,7 @@ ProbeToolchain load_probe_toolchain(const std::filesystem::path& file) {
         ProbeToolchain t;
         t.compiler = j.at("compiler").get<std::string>();
         t.compile_flags = words(j.at("compile_flags").get<std::string>());
+        t.precompiled_header = j.at("precompiled_header").get<std::string>();
         for (const auto& o : j.at("probe_objects"))
             t.probe_objects.emplace_back(o.get<std::string>());
         for (const auto& l : j.at("libraries"))

@@ -13,6 +13,9 @@ namespace raystep::grade {
 struct ProbeToolchain {
     std::filesystem::path compiler;
     std::vector<std::string> compile_flags;
+    /// Taken first by every compile of a submission's file (`-include`), precompiled beside it
+    /// with compile_flags (probe_precompiled.h); empty: none.
+    std::filesystem::path precompiled_header;
     std::vector<std::filesystem::path> probe_objects;  ///< the calls, the renderer, app/check
     std::vector<std::filesystem::path> libraries;      ///< below the stages: protocol, scene, core
     std::vector<std::string> link_flags;

@@ -2,6 +2,7 @@
 // when everything its compile read is as it was. Each case compiles a small file of a work folder
 // laid out as a grade's (include/, submission/stages/...) with the compiler the build uses.
 
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -61,6 +62,25 @@ struct Work {
     }
 
     ObjectCache cache() const { return ObjectCache(folder.path() / "cache", toolchain, work); }
+
+    // A precompiled header as the grader's build makes one, placed in work/precompiled as the
+    // probe builder places it, and taken first by every compile from then on.
+    void precompile_header() {
+        const fs::path built = folder.path() / "build/probe_precompiled.h";
+        write(built, "inline int base() { return 40; }\n");
+        std::string command = toolchain.compiler.string();
+        for (const std::string& flag : toolchain.compile_flags)
+            command += " " + flag;
+        command += " -x c++-header " + built.string() + " -o " + built.string() + ".gch";
+        REQUIRE(std::system(command.c_str()) == 0);
+        toolchain.precompiled_header = built;
+        const fs::path placed = work / "precompiled/probe_precompiled.h";
+        fs::create_directories(placed.parent_path());
+        fs::copy_file(built, placed);
+        fs::copy_file(built.string() + ".gch", placed.string() + ".gch");
+        toolchain.compile_flags.insert(toolchain.compile_flags.end(),
+                                       {"-include", placed.string()});
+    }
 };
 
 }  // namespace
@@ -131,4 +151,16 @@ TEST_CASE("a cache that cannot be used costs a compile and nothing else", "[grad
          fs::directory_iterator(w.folder.path() / "cache"))
         ++entries;
     CHECK(entries == 0);
+}
+
+TEST_CASE("an object compiled with the precompiled header is taken again until it is rebuilt",
+          "[grader]") {
+    Work w;
+    w.precompile_header();
+    w.cache().keep(w.source, w.compile("first"));
+    CHECK(w.cache().take(w.source, w.objects / "taken.o"));
+    // The build's header made again: its time moves, and every object compiled with it is stale.
+    const fs::path built = w.toolchain.precompiled_header.string() + ".gch";
+    fs::last_write_time(built, fs::last_write_time(built) + std::chrono::seconds(1));
+    CHECK_FALSE(w.cache().take(w.source, w.objects / "stale.o"));
 }
