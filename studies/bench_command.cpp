@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <memory>
 #include <thread>
 
@@ -11,6 +10,7 @@
 
 #include "app/cli/command_registry.h"
 #include "renderer/terminal.h"
+#include "studies/common/figures_file.h"
 #include "studies/common/machine_description.h"
 #include "studies/common/number_text.h"
 #include "studies/epsilon/epsilon_measure.h"
@@ -198,11 +198,8 @@ void run_epsilon(const BenchArguments& arguments) {
                     epsilon_table(results.back()).c_str(), epsilon_notes(results.back()).c_str());
     }
     if (arguments.json.empty()) return;
-    std::ofstream file(arguments.json);
-    file << epsilon_json(results).dump(2) << "\n";
-    if (!file) throw std::runtime_error("could not write the figures to " + arguments.json);
-    std::printf("\n- the figures: %s (scripts/draw-charts.py %s draws them)\n",
-                arguments.json.c_str(), arguments.json.c_str());
+    std::printf("\n");
+    write_figures(arguments.json, epsilon_json(results));
 }
 
 }  // namespace

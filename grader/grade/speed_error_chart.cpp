@@ -62,10 +62,7 @@ std::optional<nlohmann::json> speed_error_chart_data(const GradeReport& report,
                                  " cases, timed against the reference's Cramer.";
     return nlohmann::json{{"study", "pareto-family"},
                           {"footnote", footnote},
-                          {"family", pareto_json(json.value("machine", std::string()),
-                                                 json.value("date", std::string()), {*family}, {})
-                                         .at("families")
-                                         .at(0)}};
+                          {"family", pareto_family_json(*family)}};
 }
 
 std::string draw_chart_svg(const nlohmann::json& data) {

@@ -1,6 +1,5 @@
 #include "studies/epsilon/epsilon_study.h"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>

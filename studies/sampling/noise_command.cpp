@@ -2,12 +2,11 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
 #include "renderer/terminal.h"
+#include "studies/common/figures_file.h"
 #include "studies/common/machine_description.h"
 #include "studies/sampling/noise_measure.h"
 
@@ -56,13 +55,7 @@ int run_noise_study(bool quick, const std::string& json_path) {
         std::printf("- %s: %s\n", finding.text.c_str(), finding.holds ? "yes" : "NO");
         all_hold = all_hold && finding.holds;
     }
-    if (!json_path.empty()) {
-        std::ofstream file(json_path);
-        file << noise_json(machine, date, scenes).dump(2) << "\n";
-        if (!file) throw std::runtime_error("could not write the figures to " + json_path);
-        std::printf("- the figures: %s (scripts/draw-charts.py %s draws them)\n", json_path.c_str(),
-                    json_path.c_str());
-    }
+    if (!json_path.empty()) write_figures(json_path, noise_json(machine, date, scenes));
     return all_hold ? 0 : 1;
 }
 

@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <stdexcept>
 
 #include "app/check/case_file.h"
+#include "studies/common/figures_file.h"
 #include "studies/common/machine_description.h"
 #include "studies/common/markdown_table.h"
 #include "studies/common/number_text.h"
@@ -43,12 +43,6 @@ std::vector<fs::path> case_files(const std::vector<std::string>& named) {
         paths.insert(paths.end(), in_folder.begin(), in_folder.end());
     }
     return paths;
-}
-
-void write_file(const fs::path& path, const std::string& text) {
-    std::ofstream out(path);
-    out << text;
-    if (!out) throw std::runtime_error("could not write " + path.string());
 }
 
 // The errors of `offset` among the epsilon study's counts.
@@ -149,12 +143,8 @@ int run_pareto_study(const ParetoOptions& options) {
     const fs::path out =
         options.out_folder.empty() ? fs::path("pareto") : fs::path(options.out_folder);
     fs::create_directories(out);
-    const fs::path json = out / "pareto.json";
-    write_file(json, pareto_json(machine, date, families, offset_rules).dump(2) + "\n");
-    std::printf(
-        "\n- the figures: %s (scripts/draw-charts.py %s draws a chart per family and "
-        "pareto-offsets.svg beside it)\n",
-        json.string().c_str(), json.string().c_str());
+    std::printf("\n");
+    write_figures(out / "pareto.json", pareto_json(machine, date, families, offset_rules));
     return 0;
 }
 

@@ -2,6 +2,27 @@
 
 namespace raystep {
 
+nlohmann::json pareto_family_json(const ParetoFamily& family) {
+    nlohmann::json points = nlohmann::json::array();
+    for (const ParetoPoint& p : family.points) {
+        points.push_back(
+            {{"label", p.label},
+             {"precision", p.precision},
+             {"function", p.function},
+             {"cases", p.cases},
+             {"false_hits", p.false_hits},
+             {"false_misses", p.false_misses},
+             {"wrong_share", p.wrong_share()},
+             {"t_ulps",
+              {{"median", p.t_ulps_median}, {"p99", p.t_ulps_p99}, {"max", p.t_ulps_max}}},
+             {"mrays_per_second", p.mrays_per_second}});
+    }
+    return {{"name", family.name},
+            {"description", family.description},
+            {"cases", family.cases},
+            {"points", points}};
+}
+
 nlohmann::json pareto_json(const std::string& machine, const std::string& date,
                            const std::vector<ParetoFamily>& families,
                            const std::vector<OffsetRuleResult>& offset_rules) {
@@ -10,26 +31,8 @@ nlohmann::json pareto_json(const std::string& machine, const std::string& date,
     json["machine"] = machine;
     json["date"] = date;
     json["families"] = nlohmann::json::array();
-    for (const ParetoFamily& family : families) {
-        nlohmann::json points = nlohmann::json::array();
-        for (const ParetoPoint& p : family.points) {
-            points.push_back(
-                {{"label", p.label},
-                 {"precision", p.precision},
-                 {"function", p.function},
-                 {"cases", p.cases},
-                 {"false_hits", p.false_hits},
-                 {"false_misses", p.false_misses},
-                 {"wrong_share", p.wrong_share()},
-                 {"t_ulps",
-                  {{"median", p.t_ulps_median}, {"p99", p.t_ulps_p99}, {"max", p.t_ulps_max}}},
-                 {"mrays_per_second", p.mrays_per_second}});
-        }
-        json["families"].push_back({{"name", family.name},
-                                    {"description", family.description},
-                                    {"cases", family.cases},
-                                    {"points", points}});
-    }
+    for (const ParetoFamily& family : families)
+        json["families"].push_back(pareto_family_json(family));
     json["offset_rules"] = nlohmann::json::array();
     for (const OffsetRuleResult& r : offset_rules) {
         json["offset_rules"].push_back({{"scene", r.scene},

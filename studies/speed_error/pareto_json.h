@@ -31,6 +31,9 @@ nlohmann::json pareto_json(const std::string& machine, const std::string& date,
                            const std::vector<ParetoFamily>& families,
                            const std::vector<OffsetRuleResult>& offset_rules);
 
+/// One family as that JSON holds it: {"name", "description", "cases", "points"}.
+nlohmann::json pareto_family_json(const ParetoFamily& family);
+
 /// The families back from that JSON, for a chart that adds a point to them (the grader's
 /// report). Throws nlohmann::json::exception for JSON of another shape.
 std::vector<ParetoFamily> pareto_families_from_json(const nlohmann::json& json);
