@@ -77,10 +77,13 @@ Color quad_light_term(const Material& material, const SurfacePoint& point, const
     return narrow(s.share * (radiance * reflected));
 }
 
-Color quad_light_integral(const Material& material, const SurfacePoint& point,
-                          const QuadLight& light, double blocked_below, int resolution) {
-    // Cells in x: `resolution` over the seen part [blocked_below, 1), so that the boundary
-    // between seen and blocked is a cell edge and the rule never straddles it.
+namespace {
+
+// The midpoint rule on `resolution` x `resolution` cells: in x over the seen part
+// [blocked_below, 1), so that the boundary between seen and blocked is a cell edge and the rule
+// never straddles it.
+WideVec midpoint_rule(const Material& material, const SurfacePoint& point, const QuadLight& light,
+                      double blocked_below, int resolution) {
     const double seen = 1.0 - blocked_below;
     WideVec sum{0, 0, 0};
     for (int b = 0; b < resolution; ++b) {
@@ -90,7 +93,16 @@ Color quad_light_integral(const Material& material, const SurfacePoint& point,
             sum = sum + widen(quad_light_term(material, point, light, {x, y}));
         }
     }
-    return narrow((static_cast<Wide>(seen) / (static_cast<Wide>(resolution) * resolution)) * sum);
+    return (static_cast<Wide>(seen) / (static_cast<Wide>(resolution) * resolution)) * sum;
+}
+
+}  // namespace
+
+Color quad_light_integral(const Material& material, const SurfacePoint& point,
+                          const QuadLight& light, double blocked_below, int resolution) {
+    const WideVec coarse = midpoint_rule(material, point, light, blocked_below, resolution);
+    const WideVec fine = midpoint_rule(material, point, light, blocked_below, 2 * resolution);
+    return narrow((static_cast<Wide>(4) * fine - coarse) / static_cast<Wide>(3));
 }
 
 Color regular_quad_light_sum(const Material& material, const SurfacePoint& point,
