@@ -9,7 +9,7 @@
 #      build holds (base/, the stages, the renderer and the student's tools) and of the grader's
 #      sandbox, the code that reads what another process wrote; and their tests. The grader's
 #      checks, reports and oracles and the studies, whose tests run in step 1, are left out of it:
-#      they were three fifths of its build (docs/measurements/ci-time.md).
+#      they were three fifths of its build (docs/measurements/ci-time.md). It runs beside step 2.
 # In a student release (no solutions/) only the first: the public tests, which fail until the
 # stages are written.
 # Where ccache is installed, every build compiles through one cache of the run's own
@@ -34,6 +34,44 @@ if [ ! -d solutions ]; then
     exit 0
 fi
 
+# The student checks, mostly one command at a time, and the sanitizer run, compiles and tests
+# that fill both cores, side by side: together they take some minutes less than one after the
+# other (docs/measurements/ci-time.md). The sanitizer run's output is kept in a log of its own and
+# printed when it ends.
+sanitizer_log=$PWD/build/sanitizer-run.log
+sanitizer_run() {
+    step "sanitizer build"
+    # A unity build of 16 files a unit, the release preset's: the sanitizers make each
+    # instantiated template dear to compile, and one unity file compiles it once for sixteen
+    # files. The same batches as the release build's, so that a file that compiles only beside
+    # another fails there first. Line tables only (-g1), not the Debug type's full -g: a
+    # sanitizer's report names each frame's file and line from them, and the build takes four
+    # fifths of the time.
+    cmake --preset debug-asan -DRAYSTEP_WARNINGS_AS_ERRORS=ON -DCMAKE_UNITY_BUILD=ON \
+        -DCMAKE_UNITY_BUILD_BATCH_SIZE=16 -DCMAKE_CXX_FLAGS_DEBUG=-g1 >/dev/null
+    local sanitized=(raystep raystep-reference raystep_base_tests raystep_renderer_tests
+        raystep_app_tests raystep_sandbox_tests)
+    local stage
+    for stage in 1 2 3 4 5 6 7 8 9; do
+        sanitized+=("raystep_stage${stage}_tests")
+    done
+    cmake --build --preset debug-asan --target "${sanitized[@]}"
+    step "sanitizer tests"
+    # The tests of those programs, by label; of them, the page in a browser and the studies' runs
+    # (browser, measurement) run the code the others run, and the test that writes the public
+    # case files needs raystep-grade: the release build's writes them instead, for the tests of
+    # `raystep grade` that read them.
+    build/release/bin/raystep-grade public-cases build/debug-asan/grader/tests/grading >/dev/null
+    ctest --preset debug-asan -j "$jobs" -L '^(base|renderer|app|stage[1-9]|cli|view|sandbox)$' \
+        -LE '^(browser|measurement)$' -E '^raystep grade: the release writer writes'
+}
+# In a process group of its own (set -m), so that a failure here stops all of it.
+set -m
+sanitizer_run >"$sanitizer_log" 2>&1 &
+sanitizer=$!
+set +m
+trap 'kill -- -"$sanitizer" 2>/dev/null || true' EXIT
+
 step "student build: every stub fails cleanly"
 # One release for the student checks, each of which works on a copy of its own.
 export RAYSTEP_RELEASE=$PWD/build/pristine-release
@@ -45,26 +83,15 @@ scripts/check-student-platforms.sh
 rm -rf "$RAYSTEP_RELEASE"
 unset RAYSTEP_RELEASE
 
-step "sanitizer build"
-# A unity build of 16 files a unit, the release preset's: the sanitizers make each instantiated
-# template dear to compile, and one unity file compiles it once for sixteen files. The same batches
-# as the release build's, so that a file that compiles only beside another fails there first.
-cmake --preset debug-asan -DRAYSTEP_WARNINGS_AS_ERRORS=ON -DCMAKE_UNITY_BUILD=ON \
-    -DCMAKE_UNITY_BUILD_BATCH_SIZE=16 >/dev/null
-sanitized=(raystep raystep-reference raystep_base_tests raystep_renderer_tests raystep_app_tests
-    raystep_sandbox_tests)
-for stage in 1 2 3 4 5 6 7 8 9; do
-    sanitized+=("raystep_stage${stage}_tests")
-done
-cmake --build --preset debug-asan --target "${sanitized[@]}"
-step "sanitizer tests"
-# The tests of those programs, by label; of them, the page in a browser and the studies' runs
-# (browser, measurement) run the code the others run, and the test that writes the public case
-# files needs raystep-grade: the release build's writes them instead, for the tests of
-# `raystep grade` that read them.
-build/release/bin/raystep-grade public-cases build/debug-asan/grader/tests/grading >/dev/null
-ctest --preset debug-asan -j "$jobs" -L '^(base|renderer|app|stage[1-9]|cli|view|sandbox)$' \
-    -LE '^(browser|measurement)$' -E '^raystep grade: the release writer writes'
+step "the sanitizer run, begun beside the student checks"
+sanitized=0
+wait "$sanitizer" || sanitized=$?
+trap - EXIT
+cat "$sanitizer_log"
+if [ "$sanitized" -ne 0 ]; then
+    echo "the sanitizer run failed (exit $sanitized): its output is above"
+    exit 1
+fi
 
 step "all tests passed"
 if command -v ccache >/dev/null; then
