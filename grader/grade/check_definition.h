@@ -24,6 +24,8 @@ struct GradingContext {
                                             ///< " --check ID --case N" is appended
     std::optional<std::size_t> only_case;   ///< --case N: ask the probe that case alone
     std::filesystem::path cache;            ///< --cache: what grades keep for the next; or empty
+    std::filesystem::path built_renders;    ///< the reference's renders the build made, read only
+                                            ///< (keep_reference_renders); or empty
 };
 
 /// What a check found, before the rubric turns it into points: `fraction` in [0, 1] is what the

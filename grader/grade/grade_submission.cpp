@@ -140,6 +140,7 @@ GradeReport grade_submission(const GradeOptions& options, const Rubric& rubric,
     context.reference_probe = probes.reference.program.value_or(fs::path());
     context.reproduce = options.reproduce;
     context.cache = options.cache;
+    context.built_renders = toolchain.reference_renders;
     context.only_case = options.only_case;
 
     // Checks run `jobs` at a time: each talks to its own probe process. Speed checks run alone

@@ -5,9 +5,11 @@
 # $AUTOGRADER/source.
 #
 # It installs only what grading needs (the packages already there are taken as they are), builds
-# only raystep-grade, the reference probe and the unpacker, and then closes the repository to every
-# user but root: probes never run as root (grader/sandbox/sandbox_user.h), and where Gradescope's
-# container has no user namespaces, bubblewrap cannot hide the files, so their modes must.
+# only raystep-grade, the reference probe, the unpacker and the reference's renders of the noisy
+# render checks (which every grade would otherwise make again), and then closes the repository to
+# every user but root: probes never run as root (grader/sandbox/sandbox_user.h), and where
+# Gradescope's container has no user namespaces, bubblewrap cannot hide the files, so their modes
+# must.
 set -euo pipefail
 AUTOGRADER=${AUTOGRADER:-/autograder}
 source=$AUTOGRADER/source
@@ -15,7 +17,8 @@ cd "$source"
 
 scripts/install-deps.sh --grading
 cmake --preset release
-cmake --build --preset release --target raystep-grade raystep-probe-reference raystep-unpack
+cmake --build --preset release --target raystep-grade raystep-probe-reference raystep-unpack \
+    raystep_reference_renders
 
 # Nothing of the repository or its build is open to others: not solutions/, the rubric, the
 # grader's sources, the reference's libraries and probes, nor the history. Everything a sandboxed

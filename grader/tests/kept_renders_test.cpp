@@ -1,12 +1,15 @@
 // The reference's renders a grade keeps for the next (grader/grade/kept_renders.h): read back bit
-// for bit under the same key, and never under another or from a damaged entry.
+// for bit under the same key, and never under another or from a damaged entry; and those the build
+// makes for every grade (keep_reference_renders).
 
+#include <cstddef>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
 
 #include "base/testing/catch.h"
+#include "grader/grade/checks/stage_checks.h"
 #include "grader/grade/kept_renders.h"
 #include "sandbox_test_support.h"
 
@@ -87,4 +90,20 @@ TEST_CASE("the grader's identity names its program and stays the same within a r
     const std::string identity = grader_identity();
     CHECK(identity.find("raystep_intake_tests") != std::string::npos);
     CHECK(grader_identity() == identity);
+}
+
+TEST_CASE(
+    "keep_reference_renders keeps each noisy render check's view once, and a second call finds "
+    "them all",
+    "[grader]") {
+    const TempFolder temp(0700);
+    const fs::path folder = temp.path() / "renders";
+    const std::size_t views = noisy_render_checks().size();
+    REQUIRE(views > 0);
+    CHECK(keep_reference_renders(RAYSTEP_SOURCE_DIR, folder) == views);
+    std::size_t entries = 0;
+    for (const fs::directory_entry& entry : fs::directory_iterator(folder))
+        entries += entry.path().extension() == ".renders" ? 1 : 0;
+    CHECK(entries == views);
+    CHECK(keep_reference_renders(RAYSTEP_SOURCE_DIR, folder) == 0);
 }

@@ -18,6 +18,7 @@
 #include "app/report/audience.h"
 #include "app/report/console_summary.h"
 #include "grader/grade/batch.h"
+#include "grader/grade/checks/stage_checks.h"
 #include "grader/grade/checks/statistics_seed.h"
 #include "grader/grade/grade_submission.h"
 #include "grader/grade/merge_shards.h"
@@ -271,6 +272,13 @@ int main(int argc, char** argv) {
         "Write a release's grading/ folder alone: the public case files and the rubric");
     public_cases_command->add_option("folder", grading_folder, "Where they go")->required();
 
+    std::string renders_folder;
+    CLI::App* renders_command = app.add_subcommand(
+        "reference-renders",
+        "Render the reference's renders of the noisy render checks into a folder, for every "
+        "grade of this build to read (the build does this)");
+    renders_command->add_option("folder", renders_folder, "Where they go")->required();
+
     std::string sweep_probe;
     std::string sweep_prefix = "stage8.statistics.";
     std::uint64_t sweep_first = 1;
@@ -304,6 +312,13 @@ int main(int argc, char** argv) {
                                                    sweep_first, sweep_count))
                            .c_str(),
                        stdout);
+            return 0;
+        }
+        if (renders_command->parsed()) {
+            const std::size_t made =
+                keep_reference_renders(this_build_toolchain().source, renders_folder);
+            std::printf("rendered %zu of the noisy render checks' views into %s\n", made,
+                        renders_folder.c_str());
             return 0;
         }
         if (public_cases_command->parsed()) {

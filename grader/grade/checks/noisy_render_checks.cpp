@@ -8,6 +8,7 @@
 #include <array>
 #include <filesystem>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -77,15 +78,9 @@ std::string reference_renders_key(const fs::path& path, View view) {
            "\ngrader " + grader + "\n";
 }
 
-// The reference's renders of a view, made here, or taken from the grade's cache (--cache) where
-// an earlier grade kept them under `key`, and kept there for the next.
-std::vector<Image> make_reference_renders(const GradingContext& context, const fs::path& path,
-                                          View view, const std::string& key) {
-    const fs::path kept =
-        context.cache.empty() || key.empty() ? fs::path() : context.cache / "renders";
-    if (!kept.empty()) {
-        if (std::optional<std::vector<Image>> found = kept_renders(kept, key)) return *found;
-    }
+// The reference's kReferenceRenders renders of a view, from kReferenceSeeds on, one thread each:
+// a grade makes the noisy checks' views side by side.
+std::vector<Image> render_reference(const fs::path& path, View view) {
     std::vector<Image> renders;
     for (int k = 0; k < kReferenceRenders; ++k) {
         const Scene scene =
@@ -95,6 +90,24 @@ std::vector<Image> make_reference_renders(const GradingContext& context, const f
         options.threads = 1;
         renders.push_back(render_image(prepare_render_scene(scene), options));
     }
+    return renders;
+}
+
+// The reference's renders of a view: from the grade's cache (--cache) where an earlier grade kept
+// them under `key`, or from those the build made (context.built_renders), or made here, and kept
+// in the cache for the next grade.
+std::vector<Image> make_reference_renders(const GradingContext& context, const fs::path& path,
+                                          View view, const std::string& key) {
+    const fs::path kept =
+        context.cache.empty() || key.empty() ? fs::path() : context.cache / "renders";
+    if (!kept.empty()) {
+        if (std::optional<std::vector<Image>> found = kept_renders(kept, key)) return *found;
+    }
+    if (!context.built_renders.empty() && !key.empty()) {
+        if (std::optional<std::vector<Image>> found = kept_renders(context.built_renders, key))
+            return *found;
+    }
+    std::vector<Image> renders = render_reference(path, view);
     if (!kept.empty()) keep_renders(kept, key, renders);
     return renders;
 }
@@ -214,6 +227,24 @@ std::vector<NoisyRenderCheck> noisy_render_check_list() {
 }
 
 }  // namespace
+
+std::size_t keep_reference_renders(const fs::path& source, const fs::path& folder) {
+    std::size_t made = 0;
+    for (const NoisyRenderCheck& check : noisy_render_check_list()) {
+        const fs::path path = source / "scenes" / check.scene;
+        const std::string key = reference_renders_key(path, check.view);
+        if (key.empty()) {
+            throw std::runtime_error("cannot read " + path.string() +
+                                     " or this grader's program, which its renders are kept by");
+        }
+        if (kept_renders(folder, key)) continue;
+        keep_renders(folder, key, render_reference(path, check.view));
+        if (!kept_renders(folder, key))
+            throw std::runtime_error("cannot write to " + folder.string());
+        ++made;
+    }
+    return made;
+}
 
 std::vector<CheckDefinition> noisy_render_checks() {
     std::vector<CheckDefinition> checks;
