@@ -45,8 +45,8 @@ sanitizer_run() {
     # instantiated template dear to compile, and one unity file compiles it once for sixteen
     # files. The same batches as the release build's, so that a file that compiles only beside
     # another fails there first. Line tables only (-g1), not the Debug type's full -g: a
-    # sanitizer's report names each frame's file and line from them, and the build takes four
-    # fifths of the time.
+    # sanitizer's report names each frame's file and line from them, and the largest unity file
+    # compiles in four fifths of the time.
     cmake --preset debug-asan -DRAYSTEP_WARNINGS_AS_ERRORS=ON -DCMAKE_UNITY_BUILD=ON \
         -DCMAKE_UNITY_BUILD_BATCH_SIZE=16 -DCMAKE_CXX_FLAGS_DEBUG=-g1 >/dev/null
     local sanitized=(raystep raystep-reference raystep_base_tests raystep_renderer_tests

@@ -34,9 +34,9 @@ Color quad_light_term(const Material& material, const SurfacePoint& point, const
 /// The midpoint rule on `resolution` x `resolution` cells placed so that u.x = blocked_below is a
 /// cell boundary, and again on cells half as wide, combined by Richardson extrapolation: the
 /// integrand is smooth where it is not 0, so the rule's error is c h^2 + O(h^4), and
-/// (4 I(h/2) - I(h)) / 3 cancels the first term. Resolution 128 puts the error below 1e-9 of the
-/// value for the checks' lights, where the plain rule needs 1024 x 1024 cells, twelve times the
-/// evaluations, for 1e-7 (the figures: docs/measurements/grading-time.md).
+/// (4 I(h/2) - I(h)) / 3 cancels the first term. Resolution 128 puts the error near 1e-9 of the
+/// value or below for the checks' lights, where the plain rule needs 1024 x 1024 cells, twelve
+/// times the evaluations, for 1e-7 to 6e-7 (the figures: docs/measurements/grading-time.md).
 Color quad_light_integral(const Material& material, const SurfacePoint& point,
                           const QuadLight& light, double blocked_below, int resolution);
 

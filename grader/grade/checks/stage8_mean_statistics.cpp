@@ -362,8 +362,8 @@ std::string read_shading_answers(const ProbeAnswer& answer, const QuadLightCall&
 
 // The light's integral over its part not blocked, seen from `point`, by the midpoint rule on
 // 128 x 128 and 256 x 256 cells with Richardson extrapolation (quad_light_integral: an error
-// below 1e-9 of the value, far below the checks' standard errors). It depends on no seed: each is
-// computed once per run, however many seeds a sweep grades at (seed_sweep.h).
+// near 1e-9 of the value or below, far below the checks' standard errors). It depends on no seed:
+// each is computed once per run, however many seeds a sweep grades at (seed_sweep.h).
 Color light_integral(const SurfacePoint& point, double blocked_below) {
     static std::mutex mutex;
     static std::map<std::array<double, 4>, Color> known;
