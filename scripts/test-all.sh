@@ -35,8 +35,8 @@ if [ ! -d solutions ]; then
 fi
 
 # The student checks, mostly one command at a time, and the sanitizer run, compiles and tests
-# that fill both cores, side by side: together they take some minutes less than one after the
-# other (docs/measurements/ci-time.md). The sanitizer run's output is kept in a log of its own and
+# that fill both cores, side by side: together they take about two minutes less than one after
+# the other (docs/measurements/ci-time.md). The sanitizer run's output is kept in a log of its own and
 # printed when it ends.
 sanitizer_log=$PWD/build/sanitizer-run.log
 sanitizer_run() {
