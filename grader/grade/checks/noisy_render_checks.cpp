@@ -100,12 +100,9 @@ std::vector<Image> make_reference_renders(const GradingContext& context, const f
                                           View view, const std::string& key) {
     const fs::path kept =
         context.cache.empty() || key.empty() ? fs::path() : context.cache / "renders";
-    if (!kept.empty()) {
-        if (std::optional<std::vector<Image>> found = kept_renders(kept, key)) return *found;
-    }
-    if (!context.built_renders.empty() && !key.empty()) {
-        if (std::optional<std::vector<Image>> found = kept_renders(context.built_renders, key))
-            return *found;
+    for (const fs::path& folder : {kept, context.built_renders}) {
+        if (folder.empty() || key.empty()) continue;
+        if (std::optional<std::vector<Image>> found = kept_renders(folder, key)) return *found;
     }
     std::vector<Image> renders = render_reference(path, view);
     if (!kept.empty()) keep_renders(kept, key, renders);
