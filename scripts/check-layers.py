@@ -1,7 +1,10 @@
 #!/usr/bin/env python3
 """The layers of ARCHITECTURE.md, checked on every #include: a file may include its own layer and
-the layers below it, never one above. CGAL is the grader's oracle's alone (grader/oracle/ and its
-tests) and Embree the bench baseline's (studies/structures/embree/): students build neither.
+the layers below it, never one above. A file's layer is its top folder, but for grading/, whose
+stage folders hold both sides: the calls, their JSON and the judges (*_calls, *_json, *_judges) are
+app/'s, which a student release holds; the rest is grader/'s. CGAL is stage 3's exact oracle's
+alone (grading/3_intersect/exact_kernel.h and the oracle's tests) and Embree the bench baseline's
+(studies/structures/embree/): students build neither.
 
     scripts/check-layers.py [ROOT]
 
@@ -22,24 +25,34 @@ ALLOWED = {
     "studies": {"base", "stages", "solutions", "renderer", "app", "studies"},
     "grader": {"base", "stages", "solutions", "renderer", "app", "studies", "grader"},
 }
+# The files of grading/ that a student release holds (grader/grade/release.cpp says the same).
+SHIPPED_GRADING = re.compile(r"^grading/[^/]+/[^/]+_(calls|json|judges)\.(h|cpp)$")
 INCLUDE = re.compile(r'^\s*#\s*include\s*["<]([^">]+)[">]')
 # Outside libraries that only some folders may include: (include prefix, folders, why).
 CONFINED = [
-    ("CGAL/", ("grader/oracle/", "grader/tests/"), "CGAL belongs to grader/oracle/ and its tests"),
+    ("CGAL/", ("grading/3_intersect/exact_kernel.h", "grading/3_intersect/tests/"),
+     "CGAL belongs to stage 3's exact oracle (grading/3_intersect/exact_kernel.h) and its tests"),
     ("embree", ("studies/structures/embree/",), "Embree belongs to studies/structures/embree/"),
 ]
 
 
+def layer_of(shown: str) -> str:
+    layer = shown.split("/")[0]
+    if layer == "grading":
+        return "app" if SHIPPED_GRADING.match(shown) else "grader"
+    return layer
+
+
 def problems_in(root: pathlib.Path, source: pathlib.Path):
     shown = source.relative_to(root).as_posix()
-    layer = shown.split("/")[0]
+    layer = layer_of(shown)
     lines = source.read_text(encoding="utf-8", errors="replace").splitlines()
     for number, line in enumerate(lines, start=1):
         match = INCLUDE.match(line)
         if not match:
             continue
         included = match.group(1)
-        top = included.split("/")[0]
+        top = layer_of(included)
         if top in ALLOWED and top not in ALLOWED[layer]:
             yield (f"{shown}:{number}: {layer}/ includes {included}, a layer above it "
                    f"(allowed: {', '.join(sorted(ALLOWED[layer]))})")
@@ -50,7 +63,7 @@ def problems_in(root: pathlib.Path, source: pathlib.Path):
 
 def main() -> int:
     root = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else ".").resolve()
-    sources = [path for layer in ALLOWED for path in sorted((root / layer).rglob("*"))
+    sources = [path for top in (*ALLOWED, "grading") for path in sorted((root / top).rglob("*"))
                if path.suffix in (".h", ".cpp") and path.is_file()]
     if not sources:
         print(f"no source files under {root}: the check would prove nothing", file=sys.stderr)

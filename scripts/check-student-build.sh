@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # What students meet, checked.
 #   1. A student release, as `raystep-grade release` writes it (no solutions/, studies/ or
-#      grader/, no workflow but Classroom's, each platform's list of libraries, the student's
-#      README, the reference images in scenes/), built as its README says
-#      (scripts/setup.sh), and scripts/test.sh run as it says.
+#      grader/, of grading/ only the calls and judges, no workflow but Classroom's, each
+#      platform's list of libraries, the student's README, the reference images in scenes/),
+#      built as its README says (scripts/setup.sh), and scripts/test.sh run as it says.
 #      Every public test must fail with a NotImplemented message and no test binary may crash;
 #      `raystep render` and `raystep trace` must stop with the message of the stub that stopped
 #      them, `raystep trace --compare` too, having found the reference trace the release ships;
@@ -53,6 +53,15 @@ for folder in solutions studies grader release; do
         exit 1
     fi
 done
+# Of grading/'s stage folders, the release holds the calls, their JSON and the judges, which
+# `raystep grade` runs the public checks with: no check, oracle or test (grader/grade/release.cpp).
+held=$(cd "$release" && find grading -mindepth 2 -type f ! -path 'grading/public/*' | sort)
+shipped=$(cd "$root" && ls grading/*/*_calls.* grading/*/*_json.* grading/*/*_judges.* | sort)
+if [ "$held" != "$shipped" ] || [ ! -f "$release/grading/CMakeLists.txt" ]; then
+    echo "FAIL the release's grading/ holds other files than the stages' calls, JSON and judges:"
+    diff <(echo "$shipped") <(echo "$held") || true
+    exit 1
+fi
 if [ -e "$release/docs/instructor.md" ]; then
     echo "FAIL the release holds the instructor's guide, docs/instructor.md"
     exit 1

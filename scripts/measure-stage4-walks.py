@@ -3,7 +3,7 @@
 the corpus's model and the stage-4 entries whose walk the time decides, each on its structure's
 oracle check alone, `--runs` times, each in a grader of its own (the walk is measured once per
 grader), and prints each run's ratios: the walk through 192 walls against one wall, and against
-the reference's (grader/grade/checks/stage4_work.cpp).
+the reference's (grading/4_accel/stage4_work.cpp).
 
     scripts/measure-stage4-walks.py [--runs 10] [--grader build/release/bin/raystep-grade]
 

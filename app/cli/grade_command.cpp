@@ -3,9 +3,9 @@
 // A student release holds the checks as data (grading/public/*.json and grading/rubric.json,
 // written by `raystep-grade release`): each case's query, its expected answer and tolerance, as
 // the reference's oracle decided them, never the oracle; stage 3's functions run on the case files
-// of `raystep check`, each scored against the reference's count (app/grade/stage3_case_checks.h).
-// The hidden checks, the generated ones and the speed checks are not run, and the report says which
-// and what they are worth.
+// of `raystep check`, each scored against the reference's count
+// (grading/3_intersect/case_file_judges.h). The hidden checks, the generated ones and the speed
+// checks are not run, and the report says which and what they are worth.
 
 #include <algorithm>
 #include <cstdio>
@@ -21,11 +21,11 @@
 #include "app/grade/public_case.h"
 #include "app/grade/public_check_run.h"
 #include "app/grade/rubric.h"
-#include "app/grade/stage3_case_checks.h"
 #include "app/report/console_summary.h"
 #include "app/report/grade_report.h"
 #include "app/report/report_text.h"
 #include "base/errors/input_error.h"
+#include "grading/3_intersect/case_file_judges.h"
 
 namespace raystep {
 

@@ -8,8 +8,8 @@
 namespace raystep::grade {
 
 // A ray that stage 7's judges expect (recursion_judges.h), as the grader's oracle decides it with
-// more bits than a double (grader/oracle/recursion_oracle.h), kept in double-double. No JSON here:
-// the oracle's own library includes this header.
+// more bits than a double (grading/7_recursion/recursion_oracle.h), kept in double-double. No JSON
+// here: the oracle's own library includes this header.
 
 /// A ray as the judges expect it: each coordinate within its tolerance and t_min exact; t_max
 /// exact, except that where infinity is expected the largest double passes too, since no finite

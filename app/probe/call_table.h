@@ -19,7 +19,7 @@ using CallTable = std::map<std::string, Call>;
 /// Every stage's calls (app/probe/<stage>_calls.h): what `raystep grade` answers a public case
 /// with. Stage 4's structure as data and its timed workloads are for the grader's checks alone,
 /// which a release does not run, so only the grader's probe has them
-/// (grader/probe/accel_work_calls.h).
+/// (grading/4_accel/accel_workloads.h).
 CallTable stage_calls();
 
 }  // namespace raystep::probe

@@ -6,17 +6,17 @@
 
 #include <cmath>
 
-#include "app/probe/accel_calls.h"
 #include "app/probe/call_reply.h"
-#include "app/probe/intersect_calls.h"
-#include "app/probe/ray_calls.h"
-#include "app/probe/recursion_calls.h"
-#include "app/probe/refraction_calls.h"
 #include "app/probe/render_calls.h"
-#include "app/probe/sampling_calls.h"
-#include "app/probe/shading_calls.h"
-#include "app/probe/transform_calls.h"
-#include "app/probe/vector_calls.h"
+#include "grading/1_vectors/vector_calls.h"
+#include "grading/2_rays/ray_calls.h"
+#include "grading/3_intersect/intersect_calls.h"
+#include "grading/4_accel/accel_calls.h"
+#include "grading/5_transforms/transform_calls.h"
+#include "grading/6_shading/shading_calls.h"
+#include "grading/7_recursion/recursion_calls.h"
+#include "grading/8_sampling/sampling_calls.h"
+#include "grading/9_refraction/refraction_calls.h"
 
 namespace raystep {
 namespace {

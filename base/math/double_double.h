@@ -7,12 +7,12 @@ namespace raystep {
 
 // A number carried as the unevaluated sum hi + lo of two doubles (Dekker 1971, "A floating-point
 // technique for extending the available precision"), some 106 bits: the arithmetic of the judges
-// (app/grade/) that hold a student's double against an expectation decided with more bits than a
-// double has. Not long double, because `raystep grade` judges on the student's laptop, where long
-// double is a double (MSVC, Apple silicon), 64 bits (x86-64 Linux) or 113 (arm64 Linux), and a
-// case within half an ulp of its tolerance would get each platform's own verdict. Every operation
-// below is a fixed sequence of IEEE-754 double operations (+, -, *, /, sqrt, fma), each correctly
-// rounded, so every platform computes the same bits and gives the same verdict.
+// (app/grade/, grading/*/) that hold a student's double against an expectation decided with more
+// bits than a double has. Not long double, because `raystep grade` judges on the student's laptop,
+// where long double is a double (MSVC, Apple silicon), 64 bits (x86-64 Linux) or 113 (arm64 Linux),
+// and a case within half an ulp of its tolerance would get each platform's own verdict. Every
+// operation below is a fixed sequence of IEEE-754 double operations (+, -, *, /, sqrt, fma), each
+// correctly rounded, so every platform computes the same bits and gives the same verdict.
 //
 // That holds where each operation rounds once, to double: no x87 excess precision (every 64-bit
 // target evaluates double in double) and no multiply-add contracted behind the code's back

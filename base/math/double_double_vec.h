@@ -8,9 +8,9 @@
 namespace raystep {
 
 // Vectors and matrices of double-doubles (double_double.h says why double-doubles): how the
-// judges of app/grade/ hold an expectation decided with more bits than a double, and the little
-// they and their tests compute on one (differences, dot and cross products, lengths). Not glm's
-// templates: glm's functions accept only the built-in floating-point types.
+// judges (app/grade/, grading/*/) hold an expectation decided with more bits than a double, and the
+// little they and their tests compute on one (differences, dot and cross products, lengths). Not
+// glm's templates: glm's functions accept only the built-in floating-point types.
 
 /// Three double-doubles, x, y, z.
 struct DoubleDoubleVec3 {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include <glm/common.hpp>
 
@@ -35,8 +37,32 @@ const fs::path kReleaseWorkflow = ".github/workflows/classroom.yml";
 // grader: in a student's repository they would run, and fail, on every push; the release's own
 // workflow is written there below). Of scripts/ only the students' own are kept, so that an
 // instructor's script added later stays out without anyone listing it.
-bool withheld(const fs::path& relative) {
+// Of grading/, a release holds what `raystep grade` runs the public checks with: each stage's
+// calls, their JSON and its judges (files named *_calls, *_json, *_judges, the layer of app/ by
+// scripts/check-layers.py), and the CMakeLists.txt that builds them. The checks, the oracles and
+// the tests are the instructor's.
+bool withheld_from_grading(const fs::path& relative, bool is_directory) {
+    const std::vector<fs::path> parts(relative.begin(), relative.end());
+    if (parts.size() == 2) return !is_directory && parts[1] != "CMakeLists.txt";
+    if (parts.size() != 3 || is_directory) return true;
+    const std::string stem = relative.stem().string();
+    const std::string extension = relative.extension().string();
+    const bool source = extension == ".h" || extension == ".cpp";
+    for (const char* role : {"_calls", "_json", "_judges"}) {
+        const std::string suffix = role;
+        if (source && stem.size() > suffix.size() &&
+            stem.compare(stem.size() - suffix.size(), suffix.size(), suffix) == 0) {
+            return false;
+        }
+    }
+    return true;
+}
+
+bool withheld(const fs::path& relative, bool is_directory) {
     const std::string first = relative.begin()->string();
+    if (first == "grading" && relative != "grading") {
+        return withheld_from_grading(relative, is_directory);
+    }
     if (first == "solutions" || first == "studies" || first == "grader" || first == ".git" ||
         first == ".ci" || first == ".github" || first == "build" || first == "out" ||
         first == "release") {
@@ -60,7 +86,7 @@ std::size_t copy_tree(const fs::path& source, const fs::path& output) {
     for (auto it = fs::recursive_directory_iterator(source);
          it != fs::recursive_directory_iterator(); ++it) {
         const fs::path relative = fs::relative(it->path(), source);
-        if (withheld(relative)) {
+        if (withheld(relative, it->is_directory())) {
             if (it->is_directory()) it.disable_recursion_pending();
             continue;
         }

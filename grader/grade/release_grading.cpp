@@ -3,8 +3,8 @@
 #include <fstream>
 
 #include "app/grade/public_case.h"
-#include "app/grade/stage3_case_checks.h"
 #include "grader/grade/checks/data_judged.h"
+#include "grading/3_intersect/case_file_judges.h"
 
 namespace raystep::grade {
 
@@ -15,7 +15,7 @@ std::size_t write_release_grading(const std::filesystem::path& source,
     std::filesystem::copy_file(rubric, folder / "rubric.json",
                                std::filesystem::copy_options::overwrite_existing);
     // What the reference gets right of stage 3's public case files, which a student's function
-    // must match (app/grade/stage3_case_checks.h).
+    // must match (grading/3_intersect/case_file_judges.h).
     std::ofstream(folder / "stage3-reference.json")
         << probe::Json(stage3_cases_right(stage3_public_families(source))) << "\n";
     std::size_t written = 0;

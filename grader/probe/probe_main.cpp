@@ -13,7 +13,7 @@
 #include <unistd.h>
 
 #include "app/probe/call_reply.h"
-#include "grader/probe/accel_work_calls.h"
+#include "grading/4_accel/accel_workloads.h"
 
 using namespace raystep;
 using namespace raystep::probe;
@@ -22,7 +22,7 @@ namespace {
 
 CallTable all_calls() {
     CallTable table = stage_calls();
-    add_calls(table, accel_work_calls);
+    add_calls(table, accel_workload_calls);
     return table;
 }
 

@@ -76,7 +76,7 @@ set(source ${autograder}/source)
 file(GLOB solution_files ${source}/solutions/*/*.cpp)
 list(GET solution_files 0 solution_file)
 foreach(secret ${solution_file} ${source}/grader/rubric/rubric.json
-               ${source}/grader/grade/probe_builder.cpp ${source}/grader/grade/checks/stage3_checks.cpp
+               ${source}/grader/grade/probe_builder.cpp ${source}/grading/3_intersect/stage3_checks.cpp
                ${source}/build/release/bin/raystep-probe-reference
                ${source}/build/release/grader/probe-toolchain.json)
     if(NOT EXISTS ${secret})

@@ -1,16 +1,16 @@
-// Tests of the long-double oracles of stages 2 and 5 to 7 (grader/oracle/camera_oracle.h,
+// Tests of the long-double oracles of stages 2 and 5 to 7 (grading/2_rays/camera_oracle.h,
 // transform_oracle.h, shading_oracle.h, recursion_oracle.h) on answers worked out by hand, the same
-// ones the public cases of grader/grade/checks/ state in their comments.
+// ones the public cases of the stages' checks (grading/) state in their comments.
 
 #include <cmath>
 
 #include "base/testing/catch.h"
 #include "base/testing/special_values.h"
-#include "grader/oracle/camera_oracle.h"
-#include "grader/oracle/recursion_oracle.h"
-#include "grader/oracle/shading_oracle.h"
-#include "grader/oracle/transform_oracle.h"
 #include "grader/tests/wide_near.h"
+#include "grading/2_rays/camera_oracle.h"
+#include "grading/5_transforms/transform_oracle.h"
+#include "grading/6_shading/shading_oracle.h"
+#include "grading/7_recursion/recursion_oracle.h"
 
 using namespace raystep;
 

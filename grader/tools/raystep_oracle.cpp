@@ -28,8 +28,8 @@
 #include "app/check/case_scoring.h"
 #include "app/check/check_report.h"
 #include "app/check/stage3_methods.h"
-#include "grader/families/stage3_families.h"
-#include "grader/oracle/decide_cases.h"
+#include "grading/3_intersect/decide_cases.h"
+#include "grading/3_intersect/stage3_families.h"
 #include "solutions/3_intersect/intersect_methods.h"
 
 namespace raystep {

@@ -35,7 +35,7 @@
 // Two implementations compute the same floats, operation for operation: SSE2, which every
 // x86-64 processor has and which tests one plane of four children in one instruction, and
 // plain C++ for other processors; ChildTest is the one this build uses.
-// grader/tests/accel_agreement_test.cpp checks that they agree bit for bit.
+// grading/4_accel/tests/accel_agreement_test.cpp checks that they agree bit for bit.
 
 #include <algorithm>
 #include <cmath>

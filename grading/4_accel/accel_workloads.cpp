@@ -1,0 +1,47 @@
+#include "grading/4_accel/accel_workloads.h"
+
+#include "stages/3_intersect/intersect.h"
+#include "stages/4_accel/uniform_grid.h"
+
+namespace raystep::probe {
+
+namespace {
+
+// The timed walk of timed_walk.h through `structure`: its digest.
+template <class Structure>
+std::uint64_t run_workload(const Structure& structure, const WorkloadQuestion& question) {
+    return timed_walk(structure, question.rays, question.shadow_rays, question.jitter,
+                      question.repeat);
+}
+
+struct BruteForce {
+    PrimitiveList primitives;
+    std::optional<PrimitiveHit> closest_hit(const Ray& ray) const {
+        return raystep::closest_hit(ray, primitives);
+    }
+    bool occluded(const Ray& ray) const { return closest_hit(ray).has_value(); }
+};
+
+}  // namespace
+
+std::vector<BvhNodeData> bvh_structure(const StructureBuildQuestion& question) {
+    return Bvh(question.primitives, bvh_split_from(question.split)).nodes();
+}
+
+UniformGridData grid_structure(const StructureBuildQuestion& question) {
+    return UniformGrid(question.primitives).cells();
+}
+
+std::uint64_t bvh_workload(const WorkloadQuestion& question) {
+    return run_workload(Bvh(question.primitives, bvh_split_from(question.split)), question);
+}
+
+std::uint64_t grid_workload(const WorkloadQuestion& question) {
+    return run_workload(UniformGrid(question.primitives), question);
+}
+
+std::uint64_t brute_force_workload(const WorkloadQuestion& question) {
+    return run_workload(BruteForce{question.primitives}, question);
+}
+
+}  // namespace raystep::probe

@@ -1,0 +1,77 @@
+#include "grading/4_accel/stage4_work_scenes.h"
+
+#include <cmath>
+
+#include "base/math/portable_random.h"
+
+namespace raystep::grade {
+
+namespace {
+
+constexpr std::uint64_t kStrewnSeed = 0x3017C;
+
+}  // namespace
+
+WorkScene strewn_scene() {
+    constexpr int kTriangles = 1500;
+    constexpr int kSpheres = 150;
+    constexpr int kRays = 400;
+    WorkScene scene;
+    scene.name = "the strewn scene (" + std::to_string(kTriangles) + " triangles and " +
+                 std::to_string(kSpheres) + " spheres from seed " + std::to_string(kStrewnSeed) +
+                 ")";
+    PortableRandom random(kStrewnSeed);
+    for (int k = 0; k < kTriangles; ++k) {
+        const Vec3 c = random.point(1.0);
+        scene.primitives.triangles.push_back({c, c + random.point(0.1), c + random.point(0.1)});
+    }
+    for (int k = 0; k < kSpheres; ++k)
+        scene.primitives.spheres.push_back({random.point(1.0), random.uniform(0.01, 0.08)});
+    for (int k = 0; k < kRays; ++k) {
+        const Vec3 origin = 3.0 * random.unit_vector();
+        Ray ray{origin, random.point(0.8) - origin};
+        if (k % 4 == 1) ray.t_min = random.uniform(0.3, 0.8);
+        if (k % 4 == 2) ray.t_max = random.uniform(0.5, 1.2);
+        scene.rays.push_back(ray);
+    }
+    return scene;
+}
+
+WorkScene walls_scene(int layers, Side side) {
+    constexpr int kSide = 4;
+    constexpr int kRays = 1000;
+    WorkScene scene;
+    scene.name = "the walls scene (" + std::to_string(layers) + (layers == 1 ? " wall" : " walls") +
+                 " of " + std::to_string(2 * kSide * kSide) + " triangles, rays from " +
+                 (side == Side::above   ? "above"
+                  : side == Side::below ? "below"
+                                        : "both sides") +
+                 ", seed " + std::to_string(kTraversalSeed) + ")";
+    const double step = 1.0 / kSide;
+    for (int layer = 0; layer < layers; ++layer) {
+        const double z = (layer + 0.5) / layers;
+        for (int i = 0; i < kSide; ++i) {
+            for (int j = 0; j < kSide; ++j) {
+                const Vec3 a(i * step, j * step, z), b((i + 1) * step, j * step, z);
+                const Vec3 c((i + 1) * step, (j + 1) * step, z), d(i * step, (j + 1) * step, z);
+                scene.primitives.triangles.push_back({a, b, c});
+                scene.primitives.triangles.push_back({a, c, d});
+            }
+        }
+    }
+    // Two specks at opposite corners, so that every number of walls fills the same cube
+    for (const Vec3 corner : {Vec3(0.0), Vec3(1.0)})
+        scene.primitives.triangles.push_back(
+            {corner, corner + Vec3(1e-3, 0, 0), corner + Vec3(0, 1e-3, 0)});
+    PortableRandom random(kTraversalSeed);
+    for (int k = 0; k < kRays; ++k) {
+        Vec3 from = random.unit_vector();
+        const bool up = side == Side::above || (side == Side::both && k % 2 == 0);
+        from.z = up ? std::abs(from.z) : -std::abs(from.z);
+        const Vec3 origin = Vec3(0.5) + 2.0 * from;
+        scene.rays.push_back({origin, Vec3(0.5) + random.point(0.4) - origin});
+    }
+    return scene;
+}
+
+}  // namespace raystep::grade

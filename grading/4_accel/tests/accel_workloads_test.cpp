@@ -1,0 +1,63 @@
+// The grader's probe answers every stage-4 call of its protocol (grader/probe/README.md): the
+// structure's answers, which grading/4_accel/accel_calls.cpp gives it as it gives `raystep grade`,
+// and the structure as data and the timed workloads, which it alone has
+// (grading/4_accel/accel_workloads.cpp).
+
+#include "base/testing/catch.h"
+#include "grader/grade/probe_client.h"
+#include "grading/4_accel/stage4_structure.h"
+#include "grading/4_accel/structure_json.h"
+#include "grading/4_accel/timed_walk.h"
+
+using namespace raystep;
+
+TEST_CASE("the reference probe answers every stage-4 call of the protocol") {
+    PrimitiveList list;
+    list.triangles.push_back({{-1, -1, 0}, {1, -1, 0}, {0, 1, 0}});
+    list.spheres.push_back({{0, 0, 3}, 0.5});
+    const probe::Json rays = probe::Json::array({probe::ray({{0, 0, -5}, {0, 0, 1}})});
+    const probe::Json scene = {{"primitives", probe::primitive_list(list)},
+                               {"rays", rays},
+                               {"split", "sah"},
+                               {"shadow_rays", rays},
+                               {"repeat", 2},
+                               {"jitter", {{"seed", 9}, {"origin", 1e-3}, {"direction", 1e-4}}}};
+    const std::vector<grade::ProbeQuery> queries = {
+        {"bvh", scene},
+        {"grid", scene},
+        {"bvh_structure", scene},
+        {"grid_structure", scene},
+        {"bvh_workload", scene},
+        {"grid_workload", scene},
+        {"brute_force_workload", scene},
+        {"intersect_aabb",
+         {{"ray", rays[0]}, {"min", probe::vec3({-1, -1, -1})}, {"max", probe::vec3({1, 1, 1})}}},
+        {"grid_resolution",
+         {{"min", probe::vec3({0, 0, 0})}, {"max", probe::vec3({1, 1, 1})}, {"n", 9}}},
+    };
+    const grade::ProbeSession session =
+        grade::ask_probe(RAYSTEP_REFERENCE_PROBE, queries, grade::ProbeRunLimits{});
+    REQUIRE(session.answers.size() == queries.size());
+    for (std::size_t k = 0; k < queries.size(); ++k) {
+        INFO(queries[k].call);
+        CHECK(session.answers[k].kind == grade::ProbeAnswer::Kind::result);
+    }
+    // The triangle at t = 5 is the first hit, for the structures and the work counts alike
+    CHECK(probe::primitive_hit_from(session.answers[0].value[0])->hit.t == 5.0);
+    CHECK(probe::primitive_hit_from(session.answers[1].value[0])->hit.t == 5.0);
+    // The structures as data are the reference's, whole
+    CHECK_FALSE(grade::bvh_problem(probe::bvh_nodes_from(session.answers[2].value), list));
+    CHECK_FALSE(grade::grid_problem(probe::uniform_grid_data_from(session.answers[3].value), list));
+    // Two passes of the ray, moved a little each time: the digest of the triangle's hit and the
+    // occlusion, both times, as the grader's own walk of the reference finds it
+    const probe::Jitter jitter{9, 1e-3, 1e-4};
+    const std::vector<Ray> ray_list = probe::rays_from(rays);
+    CHECK(session.answers[4].value ==
+          probe::timed_walk(Bvh(list, BvhSplit::sah), ray_list, ray_list, jitter, 2));
+    CHECK(session.answers[5].value ==
+          probe::timed_walk(UniformGrid(list), ray_list, ray_list, jitter, 2));
+    CHECK(session.answers[4].value !=
+          probe::timed_walk(Bvh(list, BvhSplit::sah), ray_list, ray_list, jitter, 1));
+    CHECK(session.answers[7].value.at("enter") == 4.0);
+    CHECK(session.answers[8].value == probe::Json::array({3, 3, 3}));
+}
