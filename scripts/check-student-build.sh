@@ -118,7 +118,7 @@ check_command "raystep trace --compare finds the shipped reference trace and sto
 # raystep view: the page's render, a click's trace and its comparison with the shipped reference
 # trace all stop at the stub, and the page names it.
 check_command "raystep view names the stub in its render, trace and comparison" 0 \
-    "stop at $stub_message" python3 "$root/app/tests/view/view_release_check.py" "$bin/raystep" \
+    "stop at $stub_message" python3 "$root/app/view/tests/view_release_check.py" "$bin/raystep" \
     "$compare_scene" stubs
 check_command "raystep check reports every stage-3 function as a stub" 1 \
     "nothing was checked: 7 methods are not implemented" "$bin/raystep" check --stage 3
@@ -285,7 +285,7 @@ if ! scripts/check-student-readme.py "$release" grader/tests/submissions/model/s
     problems=$((problems + 1))
 fi
 check_command "raystep view with every stage written finds the click's trace the reference's" 0 \
-    "finds the traces the same" python3 "$root/app/tests/view/view_release_check.py" \
+    "finds the traces the same" python3 "$root/app/view/tests/view_release_check.py" \
     "$bin/raystep" "$compare_scene" written
 
 # The release preset's batches, so that the files other than stage 1's come from its objects.

@@ -15,7 +15,7 @@ namespace {
 // (its em) is a 26th of the image's height has capitals (0.73 em in DejaVu Sans) of 16 minutes of
 // arc, the smallest that human-factors guides give for reading a label (NUREG-0700), and a title
 // at a 20th has them at 21 minutes, those guides' preferred size. On a 640 x 480 image that is 18
-// and 24 pixels; on 1920 x 1080, 42 and 54. app/tests/demo/demo_size_test.py measures the
+// and 24 pixels; on 1920 x 1080, 42 and 54. app/demo/tests/demo_size_test.py measures the
 // captions' height in a written figure.
 constexpr double kCaptionTextPerHeight = 1.0 / 26;
 constexpr double kTitleTextPerHeight = 1.0 / 20;

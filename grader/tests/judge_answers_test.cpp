@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "app/tests/probe_answers.h"
+#include "app/probe/tests/probe_answers.h"
 #include "base/testing/catch.h"
 #include "grader/grade/check_definition.h"
 #include "grader/tests/hand_made_cases.h"

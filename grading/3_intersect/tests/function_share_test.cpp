@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "app/tests/probe_answers.h"
+#include "app/probe/tests/probe_answers.h"
 #include "base/testing/catch.h"
 #include "grader/tests/hand_made_cases.h"
 #include "grading/3_intersect/function_share.h"

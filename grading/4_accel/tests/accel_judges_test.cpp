@@ -6,7 +6,7 @@
 #include "base/testing/catch.h"
 
 #include "app/grade/data_judge.h"
-#include "app/tests/probe_answers.h"
+#include "app/probe/tests/probe_answers.h"
 #include "grading/4_accel/accel_judges.h"
 
 namespace raystep {

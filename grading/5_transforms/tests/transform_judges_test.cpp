@@ -8,8 +8,8 @@
 #include "base/testing/catch.h"
 
 #include "app/grade/data_judge.h"
+#include "app/probe/tests/probe_answers.h"
 #include "app/protocol/wide_json.h"
-#include "app/tests/probe_answers.h"
 #include "base/testing/special_values.h"
 #include "grading/5_transforms/transform_judges.h"
 

@@ -13,7 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include "app/probe/call_table.h"
-#include "app/tests/probe_answers.h"
+#include "app/probe/tests/probe_answers.h"
 #include "base/testing/catch.h"
 #include "grading/8_sampling/sampling_calls.h"
 #include "grading/8_sampling/stage8_shadow_rays.h"

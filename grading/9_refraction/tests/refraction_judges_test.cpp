@@ -7,7 +7,7 @@
 #include "base/testing/catch.h"
 
 #include "app/grade/data_judge.h"
-#include "app/tests/probe_answers.h"
+#include "app/probe/tests/probe_answers.h"
 #include "base/testing/special_values.h"
 #include "grading/9_refraction/refraction_json.h"
 #include "grading/9_refraction/refraction_judges.h"

@@ -3,7 +3,7 @@
 #include <tuple>
 
 #include "app/demo/demos.h"
-#include "app/tests/demo_checks.h"
+#include "app/demo/tests/demo_checks.h"
 #include "base/testing/catch.h"
 
 using namespace raystep;

@@ -11,8 +11,8 @@
 
 #include "app/grade/data_judge.h"
 #include "app/grade/value_judges.h"
+#include "app/probe/tests/probe_answers.h"
 #include "app/protocol/wide_json.h"
-#include "app/tests/probe_answers.h"
 
 namespace raystep {
 namespace {

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "app/tests/trace_lines.h"
+#include "app/trace/tests/trace_lines.h"
 #include "base/scene/scene_loader.h"
 #include "base/testing/catch.h"
 #include "renderer/render_pixel.h"

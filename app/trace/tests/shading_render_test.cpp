@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "app/tests/trace_lines.h"
+#include "app/trace/tests/trace_lines.h"
 #include "app/trace/trace_printer.h"
 #include "base/scene/scene_loader.h"
 #include "base/testing/catch.h"

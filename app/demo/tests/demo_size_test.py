@@ -16,7 +16,8 @@ import os
 import subprocess
 import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "view"))
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "..", "view", "tests"))
 from view_process import read_ppm  # noqa: E402
 
 RAYSTEP, WORK = sys.argv[1:3]

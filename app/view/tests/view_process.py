@@ -1,4 +1,4 @@
-"""Starting and talking to `raystep view` for the tests of app/tests/view/."""
+"""Starting and talking to `raystep view` for the tests of app/view/tests/."""
 
 import json
 import re

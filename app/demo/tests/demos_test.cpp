@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "app/demo/demo_list.h"
-#include "app/tests/demo_checks.h"
+#include "app/demo/tests/demo_checks.h"
 #include "base/testing/catch.h"
 #include "renderer/view.h"
 
