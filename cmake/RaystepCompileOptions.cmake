@@ -1,5 +1,5 @@
-# raystep_set_compile_options(TARGET): the warnings and floating-point rules every target of ours
-# compiles with.
+# raystep_set_compile_options(TARGET): the warnings, floating-point rules and optimization every
+# target of ours compiles with.
 #
 # -ffp-contract=off: a fused multiply-add rounds once where a*b + c rounds twice, so a compiler
 # that fuses where it likes (clang does on ARM, GCC does in GNU mode) makes results differ between
@@ -21,6 +21,13 @@ function(raystep_set_compile_options target)
                                                  -Woverloaded-virtual -Wnull-dereference)
         if(RAYSTEP_WARNINGS_AS_ERRORS)
             target_compile_options(${target} PRIVATE -Werror)
+        endif()
+        # A program of tests (its name ends in _tests) compiles at -O1 where a release build is
+        # -O3 (not in the stand-ins, already lower): its own code is set-up and assertions, and
+        # what it tests is the libraries', at -O3. The largest unity file of tests, app/'s, then
+        # compiles in 25 s instead of 41, and the tests take as long as before.
+        if(target MATCHES "_tests$" AND CMAKE_CXX_FLAGS_RELEASE MATCHES "-O3")
+            target_compile_options(${target} PRIVATE $<$<CONFIG:Release>:-O1>)
         endif()
     endif()
 endfunction()
