@@ -7,6 +7,18 @@ namespace raystep::probe {
 
 namespace {
 
+// The question with its scene as data: the walls scene it names made here.
+WorkloadQuestion with_scene(WorkloadQuestion question) {
+    if (question.walls) {
+        const grade::WorkScene scene =
+            grade::walls_scene(question.walls->layers, question.walls->side);
+        question.primitives = scene.primitives;
+        question.rays = scene.rays;
+        question.shadow_rays = grade::shadow_rays(scene);
+    }
+    return question;
+}
+
 // The timed walk of timed_walk.h through `structure`: its digest.
 template <class Structure>
 std::uint64_t run_workload(const Structure& structure, const WorkloadQuestion& question) {
@@ -32,15 +44,18 @@ UniformGridData grid_structure(const StructureBuildQuestion& question) {
     return UniformGrid(question.primitives).cells();
 }
 
-std::uint64_t bvh_workload(const WorkloadQuestion& question) {
+std::uint64_t bvh_workload(const WorkloadQuestion& asked) {
+    const WorkloadQuestion question = with_scene(asked);
     return run_workload(Bvh(question.primitives, bvh_split_from(question.split)), question);
 }
 
-std::uint64_t grid_workload(const WorkloadQuestion& question) {
+std::uint64_t grid_workload(const WorkloadQuestion& asked) {
+    const WorkloadQuestion question = with_scene(asked);
     return run_workload(UniformGrid(question.primitives), question);
 }
 
-std::uint64_t brute_force_workload(const WorkloadQuestion& question) {
+std::uint64_t brute_force_workload(const WorkloadQuestion& asked) {
+    const WorkloadQuestion question = with_scene(asked);
     return run_workload(BruteForce{question.primitives}, question);
 }
 

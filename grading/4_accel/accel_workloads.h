@@ -12,10 +12,12 @@
 
 #include <cstdint>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "grading/4_accel/accel_calls.h"
+#include "grading/4_accel/stage4_work_scenes.h"
 #include "grading/4_accel/structure_json.h"
 #include "grading/4_accel/timed_walk.h"
 
@@ -27,6 +29,12 @@ struct StructureBuildQuestion {
     std::optional<std::string> split;
 };
 
+/// A walls scene of stage4_work_scenes.h, named rather than sent: the probe makes it.
+struct WallsScene {
+    int layers = 0;
+    grade::Side side = grade::Side::both;
+};
+
 struct WorkloadQuestion {
     PrimitiveList primitives;
     std::optional<std::string> split;  ///< the BVH's; the grid and brute force take none
@@ -34,6 +42,8 @@ struct WorkloadQuestion {
     std::vector<Ray> shadow_rays;
     Jitter jitter;
     int repeat = 0;
+    /// In place of the primitives and both kinds of rays: the walls scene, with its shadow rays.
+    std::optional<WallsScene> walls;
 };
 
 template <>
@@ -51,12 +61,30 @@ struct JsonFields<Jitter> {
 };
 
 template <>
+struct JsonCodec<grade::Side> {
+    static Json write(grade::Side side) { return static_cast<int>(side); }
+    static grade::Side read(const Json& value) {
+        const int side = JsonCodec<int>::read(value);
+        if (side < 0 || side > static_cast<int>(grade::Side::both))
+            throw std::invalid_argument("a walls scene's side is 0, 1 or 2");
+        return static_cast<grade::Side>(side);
+    }
+};
+
+template <>
+struct JsonFields<WallsScene> {
+    static constexpr auto list = std::make_tuple(json_field("layers", &WallsScene::layers),
+                                                 json_field("side", &WallsScene::side));
+};
+
+template <>
 struct JsonFields<WorkloadQuestion> {
     using Q = WorkloadQuestion;
     static constexpr auto list =
         std::make_tuple(json_field("primitives", &Q::primitives), json_field("split", &Q::split),
                         json_field("rays", &Q::rays), json_field("shadow_rays", &Q::shadow_rays),
-                        json_field("jitter", &Q::jitter), json_field("repeat", &Q::repeat));
+                        json_field("walls", &Q::walls), json_field("jitter", &Q::jitter),
+                        json_field("repeat", &Q::repeat));
 };
 
 template <>

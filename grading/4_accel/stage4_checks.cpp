@@ -498,7 +498,10 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
     constexpr int kBruteForceRays = 1000;  // each costs a test per primitive: a few suffice
     // Each ray also as a shadow ray cut short before the scene (every origin lies 3 from the
     // middle, the scene within 1.8 of it): the walk's occluded is timed too
-    probe::WorkloadQuestion walk{scene.primitives, "sah", {}, {}, {0x5BEED, 1e-3, 1e-4}, 0};
+    probe::WorkloadQuestion walk;
+    walk.primitives = scene.primitives;
+    walk.split = "sah";
+    walk.jitter = {0x5BEED, 1e-3, 1e-4};
     for (int k = 0; k < kRays; ++k) {
         const Vec3 origin = 3.0 * random.unit_vector();
         Ray ray{origin, random.point(0.8) - origin};

@@ -205,24 +205,15 @@ CheckMeasure measure_structure_data(const GradingContext& context, const BuiltPr
 // ten-thousandth of a direction's length, far too little to change what a ray meets.
 const probe::Jitter kJitter = {kTraversalSeed, 1e-3, 1e-4};
 
-// A scene's shadow rays: its rays, each cut short before the scene (every origin lies some 2 from
-// the unit cube's centre and every direction about as long, so t 0.25 ends well outside it). A walk
-// answers them from its first box; brute force tests every primitive.
-std::vector<Ray> shadow_rays(const WorkScene& scene) {
-    std::vector<Ray> shadows = scene.rays;
-    for (Ray& ray : shadows)
-        ray.t_max = 0.25;
-    return shadows;
-}
-
-// The query of a timed walk of `scene` through the structure `call` (the BVH by the SAH); each
-// run sets its passes.
-ProbeQuery walk_query(const WorkScene& scene, const std::string& call) {
+// The query of a timed walk of the walls scene `walls` through the structure `call` (the BVH by
+// the SAH), which the probe makes itself: a query of a few bytes, where the scene as data, 1.4 MB,
+// took most of every run's start to write here and parse there. Each run sets its passes.
+ProbeQuery walk_query(const probe::WallsScene& walls, const std::string& call) {
     const bool bvh = call == "bvh";
-    const probe::WorkloadQuestion walk{
-        scene.primitives, bvh ? std::optional<std::string>("sah") : std::nullopt,
-        scene.rays,       shadow_rays(scene),
-        kJitter,          0};
+    probe::WorkloadQuestion walk;
+    walk.split = bvh ? std::optional<std::string>("sah") : std::nullopt;
+    walk.walls = walls;
+    walk.jitter = kJitter;
     return bvh ? probe::query(probe::bvh_workload_call, walk)
                : probe::query(probe::grid_workload_call, walk);
 }
@@ -304,9 +295,11 @@ std::optional<int> calibrated_passes(const BuiltProbe& probe, std::vector<ProbeQ
 // 2. The submission's own walk, timed by the kernel through the walls, from above and from below,
 // against its own walk through one wall.
 CheckMeasure measure_traversal_time(const BuiltProbe& probe, const std::string& call) {
-    const WorkScene above = walls_scene(kWalls, Side::above);
-    const WorkScene below = walls_scene(kWalls, Side::below);
-    const WorkScene wall = walls_scene(1, Side::both);
+    const probe::WallsScene walls[] = {
+        {kWalls, Side::above}, {kWalls, Side::below}, {1, Side::both}};
+    const WorkScene above = walls_scene(walls[0].layers, walls[0].side);
+    const WorkScene below = walls_scene(walls[1].layers, walls[1].side);
+    const WorkScene wall = walls_scene(walls[2].layers, walls[2].side);
     const WorkScene* const scenes[] = {&above, &below, &wall};
     const ReferenceWalk references[] = {{above, call}, {below, call}, {wall, call}};
     std::vector<ProbeQuery> walks[3];
@@ -325,7 +318,7 @@ CheckMeasure measure_traversal_time(const BuiltProbe& probe, const std::string& 
                       "can be that slow");
     };
     for (int k = 0; k < 3; ++k) {
-        walks[k] = {walk_query(*scenes[k], call)};
+        walks[k] = {walk_query(walls[k], call)};
         const std::optional<int> calibrated = calibrated_passes(probe, walks[k], answer);
         if (!calibrated) return unanswered(*scenes[k]);
         passes[k] = *calibrated;

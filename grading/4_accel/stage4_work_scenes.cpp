@@ -74,4 +74,11 @@ WorkScene walls_scene(int layers, Side side) {
     return scene;
 }
 
+std::vector<Ray> shadow_rays(const WorkScene& scene) {
+    std::vector<Ray> shadows = scene.rays;
+    for (Ray& ray : shadows)
+        ray.t_max = 0.25;
+    return shadows;
+}
+
 }  // namespace raystep::grade

@@ -9,7 +9,8 @@
 namespace raystep::grade {
 
 // The scenes stage 4's work is measured on (stage4_work.cpp): one to walk a structure handed over
-// as data, one to time the submission's own walk.
+// as data, one to time the submission's own walk, which the grader's probe makes too
+// (accel_workloads.h), so that a timed run's query names it in a few bytes.
 
 /// Primitives and the rays asked about them, with a name for reports.
 struct WorkScene {
@@ -33,11 +34,16 @@ inline constexpr std::uint64_t kTraversalSeed = 0x7A1C;
 /// `layers` walls across the unit cube, each a 4 x 4 mesh of squares (two triangles each)
 /// that no ray crosses without a hit, spread evenly in z (one lies at z = 0.5), and a speck at two
 /// opposite corners so that every number of walls fills the same cube; 1,000 rays from a sphere
-/// of radius 2 around it, on `side`, towards its middle (few, since every timed run parses them
-/// before its first pass; the passes make the time). A walk that stops at the nearest hit
-/// visits a wall's worth of nodes or cells whatever the number of walls; one that goes on visits
-/// every wall behind; one that visits a node's children in a fixed order, not the nearer first,
-/// takes the far walls first for rays from one side.
+/// of radius 2 around it, on `side`, towards its middle (few, since every timed run makes them and
+/// its structure before its first pass; the passes make the time). A walk that stops at the nearest
+/// hit visits a wall's worth of nodes or cells whatever the number of walls; one that goes on
+/// visits every wall behind; one that visits a node's children in a fixed order, not the nearer
+/// first, takes the far walls first for rays from one side.
 WorkScene walls_scene(int layers, Side side);
+
+/// A scene's shadow rays: its rays, each cut short before the scene (every origin lies some 2 from
+/// the unit cube's centre and every direction about as long, so t 0.25 ends well outside it). A
+/// walk answers them from its first box; brute force tests every primitive.
+std::vector<Ray> shadow_rays(const WorkScene& scene);
 
 }  // namespace raystep::grade

@@ -3,6 +3,7 @@
 // and the structure as data and the timed workloads, which it alone has
 // (grading/4_accel/accel_workloads.cpp).
 
+#include "grading/4_accel/accel_workloads.h"
 #include "base/testing/catch.h"
 #include "grader/grade/probe_client.h"
 #include "grading/4_accel/stage4_structure.h"
@@ -60,4 +61,40 @@ TEST_CASE("the reference probe answers every stage-4 call of the protocol") {
           probe::timed_walk(Bvh(list, BvhSplit::sah), ray_list, ray_list, jitter, 1));
     CHECK(session.answers[7].value.at("enter") == 4.0);
     CHECK(session.answers[8].value == probe::Json::array({3, 3, 3}));
+}
+
+TEST_CASE("a walls scene the probe makes itself is walked as the same scene sent as data") {
+    const grade::WorkScene scene = grade::walls_scene(3, grade::Side::below);
+    probe::WorkloadQuestion named;
+    named.split = "sah";
+    named.jitter = {9, 1e-3, 1e-4};
+    named.repeat = 2;
+    named.walls = probe::WallsScene{3, grade::Side::below};
+    probe::WorkloadQuestion sent = named;
+    sent.walls.reset();
+    sent.primitives = scene.primitives;
+    sent.rays = scene.rays;
+    sent.shadow_rays = grade::shadow_rays(scene);
+    // By the calls' names: the workloads' answers are the probe's own objects, not this program's
+    const auto args = [](const probe::WorkloadQuestion& question) {
+        return probe::JsonCodec<probe::WorkloadQuestion>::write(question);
+    };
+    const grade::ProbeSession session =
+        grade::ask_probe(RAYSTEP_REFERENCE_PROBE,
+                         {{"bvh_workload", args(named)},
+                          {"bvh_workload", args(sent)},
+                          {"grid_workload", args(named)},
+                          {"bvh_workload", {{"walls", {{"layers", 3}, {"side", 7}}}}}},
+                         grade::ProbeRunLimits{});
+    REQUIRE(session.answers.size() == 4);
+    CHECK(session.answers[0].kind == grade::ProbeAnswer::Kind::result);
+    CHECK(session.answers[0].value == session.answers[1].value);
+    CHECK(session.answers[0].value == probe::timed_walk(Bvh(scene.primitives, BvhSplit::sah),
+                                                        scene.rays, grade::shadow_rays(scene),
+                                                        named.jitter, 2));
+    CHECK(session.answers[2].value == probe::timed_walk(UniformGrid(scene.primitives), scene.rays,
+                                                        grade::shadow_rays(scene), named.jitter,
+                                                        2));
+    // A side that is none of the three is refused, not taken as one
+    CHECK(session.answers[3].kind != grade::ProbeAnswer::Kind::result);
 }
