@@ -258,9 +258,8 @@ class ReferenceWalk {
 
 // The CPU time of one run of the probe on `walk` (one workload query) with `passes` passes, as the
 // kernel accounts it for the single-process probe; nullopt when the run gave no result (a stub, a
-// crash, a timeout), with the answer kept in `answer`. The query's arguments, thousands of
-// triangles, are made once and only their pass count is set here: copying them for each of the
-// some thirty runs of a structure cost the grader more time than the runs themselves.
+// crash, a timeout), with the answer kept in `answer`. The query is made once; each run sets its
+// pass count.
 std::optional<double> cpu_seconds(const BuiltProbe& probe, std::vector<ProbeQuery>& walk,
                                   int passes, ProbeAnswer& answer) {
     walk.front().args["repeat"] = passes;
