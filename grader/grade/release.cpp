@@ -45,12 +45,11 @@ bool withheld_from_grading(const fs::path& relative, bool is_directory) {
     const std::vector<fs::path> parts(relative.begin(), relative.end());
     if (parts.size() == 2) return !is_directory && parts[1] != "CMakeLists.txt";
     if (parts.size() != 3 || is_directory) return true;
-    const std::string stem = relative.stem().string();
     const std::string extension = relative.extension().string();
-    const bool source = extension == ".h" || extension == ".cpp";
-    for (const char* role : {"_calls", "_json", "_judges"}) {
-        const std::string suffix = role;
-        if (source && stem.size() > suffix.size() &&
+    if (extension != ".h" && extension != ".cpp") return true;
+    const std::string stem = relative.stem().string();
+    for (const std::string suffix : {"_calls", "_json", "_judges"}) {
+        if (stem.size() > suffix.size() &&
             stem.compare(stem.size() - suffix.size(), suffix.size(), suffix) == 0) {
             return false;
         }

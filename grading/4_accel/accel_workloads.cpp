@@ -1,5 +1,7 @@
 #include "grading/4_accel/accel_workloads.h"
 
+#include <utility>
+
 #include "stages/3_intersect/intersect.h"
 #include "stages/4_accel/uniform_grid.h"
 
@@ -7,16 +9,16 @@ namespace raystep::probe {
 
 namespace {
 
-// The question with its scene as data: the walls scene it names made here.
-WorkloadQuestion with_scene(WorkloadQuestion question) {
-    if (question.walls) {
-        const grade::WorkScene scene =
-            grade::walls_scene(question.walls->layers, question.walls->side);
-        question.primitives = scene.primitives;
-        question.rays = scene.rays;
-        question.shadow_rays = grade::shadow_rays(scene);
-    }
-    return question;
+// The question with its scene as data: `asked` itself, whose meshes (the speed checks') are not
+// copied, or, where it names a walls scene, `made`, that scene made here.
+const WorkloadQuestion& with_scene(const WorkloadQuestion& asked, WorkloadQuestion& made) {
+    if (!asked.walls) return asked;
+    grade::WorkScene scene = grade::walls_scene(asked.walls->layers, asked.walls->side);
+    made = asked;
+    made.shadow_rays = grade::shadow_rays(scene);
+    made.primitives = std::move(scene.primitives);
+    made.rays = std::move(scene.rays);
+    return made;
 }
 
 // The timed walk of timed_walk.h through `structure`: its digest.
@@ -45,17 +47,20 @@ UniformGridData grid_structure(const StructureBuildQuestion& question) {
 }
 
 std::uint64_t bvh_workload(const WorkloadQuestion& asked) {
-    const WorkloadQuestion question = with_scene(asked);
+    WorkloadQuestion made;
+    const WorkloadQuestion& question = with_scene(asked, made);
     return run_workload(Bvh(question.primitives, bvh_split_from(question.split)), question);
 }
 
 std::uint64_t grid_workload(const WorkloadQuestion& asked) {
-    const WorkloadQuestion question = with_scene(asked);
+    WorkloadQuestion made;
+    const WorkloadQuestion& question = with_scene(asked, made);
     return run_workload(UniformGrid(question.primitives), question);
 }
 
 std::uint64_t brute_force_workload(const WorkloadQuestion& asked) {
-    const WorkloadQuestion question = with_scene(asked);
+    WorkloadQuestion made;
+    const WorkloadQuestion& question = with_scene(asked, made);
     return run_workload(BruteForce{question.primitives}, question);
 }
 
