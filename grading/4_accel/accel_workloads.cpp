@@ -1,5 +1,7 @@
 #include "grading/4_accel/accel_workloads.h"
 
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "stages/3_intersect/intersect.h"
@@ -9,11 +11,16 @@ namespace raystep::probe {
 
 namespace {
 
-// The question with its scene as data: `asked` itself, whose meshes (the speed checks') are not
-// copied, or, where it names a walls scene, `made`, that scene made here.
+// The question with its scene as data: `asked` itself, whose primitives and rays are not copied,
+// or, where it names a scene, `made`, that scene made here.
 const WorkloadQuestion& with_scene(const WorkloadQuestion& asked, WorkloadQuestion& made) {
-    if (!asked.walls) return asked;
-    grade::WorkScene scene = grade::walls_scene(asked.walls->layers, asked.walls->side);
+    if (!asked.walls && !asked.speed) return asked;
+    if (asked.speed && asked.speed->rays < 0)
+        throw std::invalid_argument("the speed scene's rays are a count, not " +
+                                    std::to_string(asked.speed->rays));
+    grade::WorkScene scene = asked.walls
+                                 ? grade::walls_scene(asked.walls->layers, asked.walls->side)
+                                 : grade::speed_scene(asked.speed->rays);
     made = asked;
     made.shadow_rays = grade::shadow_rays(scene);
     made.primitives = std::move(scene.primitives);

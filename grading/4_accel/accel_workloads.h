@@ -35,6 +35,11 @@ struct WallsScene {
     grade::Side side = grade::Side::both;
 };
 
+/// The speed scene of stage4_work_scenes.h, with its first `rays` rays, named rather than sent.
+struct SpeedScene {
+    int rays = 0;
+};
+
 struct WorkloadQuestion {
     PrimitiveList primitives;
     std::optional<std::string> split;  ///< the BVH's; the grid and brute force take none
@@ -42,8 +47,11 @@ struct WorkloadQuestion {
     std::vector<Ray> shadow_rays;
     Jitter jitter;
     int repeat = 0;
-    /// In place of the primitives and both kinds of rays: the walls scene, with its shadow rays.
+    /// In place of the primitives and both kinds of rays, a scene the probe makes, with its shadow
+    /// rays: a walls scene, or the speed scene (some 5 MB of JSON, for each of a check's timed
+    /// runs to write and read, when sent).
     std::optional<WallsScene> walls;
+    std::optional<SpeedScene> speed;
 };
 
 template <>
@@ -78,13 +86,18 @@ struct JsonFields<WallsScene> {
 };
 
 template <>
+struct JsonFields<SpeedScene> {
+    static constexpr auto list = std::make_tuple(json_field("rays", &SpeedScene::rays));
+};
+
+template <>
 struct JsonFields<WorkloadQuestion> {
     using Q = WorkloadQuestion;
     static constexpr auto list =
         std::make_tuple(json_field("primitives", &Q::primitives), json_field("split", &Q::split),
                         json_field("rays", &Q::rays), json_field("shadow_rays", &Q::shadow_rays),
-                        json_field("walls", &Q::walls), json_field("jitter", &Q::jitter),
-                        json_field("repeat", &Q::repeat));
+                        json_field("walls", &Q::walls), json_field("speed", &Q::speed),
+                        json_field("jitter", &Q::jitter), json_field("repeat", &Q::repeat));
 };
 
 template <>

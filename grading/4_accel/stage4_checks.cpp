@@ -49,15 +49,7 @@ void bound_interval(PortableRandom& random, int k, Ray& ray) {
 // it; three planes beside them, which the structure must leave out.
 AccelScene random_soup(std::uint64_t seed) {
     PortableRandom random(seed);
-    AccelScene s{"random soup", {}, {}, ""};
-    for (int k = 0; k < 300; ++k) {
-        const Vec3 c = random.point(1.0);
-        s.primitives.triangles.push_back({c, c + random.point(0.2), c + random.point(0.2)});
-    }
-    for (int k = 0; k < 60; ++k)
-        s.primitives.spheres.push_back({random.point(1.0), random.uniform(0.01, 0.15)});
-    for (int k = 0; k < 3; ++k)
-        s.primitives.planes.push_back({random.point(1.0), random.unit_vector()});
+    AccelScene s{"random soup", soup_primitives(random), {}, ""};
     for (int k = 0; k < 600; ++k) {
         // Half from outside the scene, half from inside it.
         const Vec3 origin = k % 2 ? random.point(1.0) : 3.0 * random.unit_vector();
@@ -486,29 +478,16 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
                            const std::string& structure) {
     if (!probe.program) return not_compiled(probe);
     CheckMeasure measure;
-    AccelScene scene = random_soup(0x5BEED);
-    PortableRandom random(3);
-    // Many rays through a scene big enough that the structure is what costs.
-    for (int k = 0; k < 3000; ++k) {
-        const Vec3 c = random.point(1.0);
-        scene.primitives.triangles.push_back({c, c + random.point(0.05), c + random.point(0.05)});
-    }
+    // Many rays through a scene big enough that the structure is what costs, made by each probe
+    // (stage4_work_scenes.h). Each ray also as a shadow ray cut short before the scene (every
+    // origin lies 3 from the middle, the scene within 1.8 of it): the walk's occluded is timed too
     constexpr int kRays = 20000;
     constexpr int kPasses = 20;
     constexpr int kBruteForceRays = 1000;  // each costs a test per primitive: a few suffice
-    // Each ray also as a shadow ray cut short before the scene (every origin lies 3 from the
-    // middle, the scene within 1.8 of it): the walk's occluded is timed too
     probe::WorkloadQuestion walk;
-    walk.primitives = scene.primitives;
+    walk.speed = probe::SpeedScene{kRays};
     walk.split = "sah";
     walk.jitter = {0x5BEED, 1e-3, 1e-4};
-    for (int k = 0; k < kRays; ++k) {
-        const Vec3 origin = 3.0 * random.unit_vector();
-        Ray ray{origin, random.point(0.8) - origin};
-        walk.rays.push_back(ray);
-        ray.t_max = 0.25;
-        walk.shadow_rays.push_back(ray);
-    }
     const ProbeQuery query = probe::query(
         structure == "bvh" ? probe::bvh_workload_call : probe::grid_workload_call, walk);
     const std::vector<WorkloadTime> timed =
@@ -550,8 +529,7 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
     }
     probe::WorkloadQuestion brute_force_walk = walk;
     brute_force_walk.split.reset();
-    brute_force_walk.rays.resize(kBruteForceRays);
-    brute_force_walk.shadow_rays.resize(kBruteForceRays);
+    brute_force_walk.speed = probe::SpeedScene{kBruteForceRays};
     const WorkloadTime brute_force =
         timed_workload(context.reference_probe,
                        probe::query(probe::brute_force_workload_call, brute_force_walk), 1);
@@ -565,6 +543,7 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
                        {"reference CPU seconds", reference.seconds},
                        {"submission CPU seconds", student.seconds},
                        {"timed rounds", static_cast<double>(student.rounds)}};
+    const WorkScene scene = speed_scene(0);
     char text[260];
     std::snprintf(text, sizeof text,
                   " traced %d rays through %zu primitives %d times, new rays every pass, at %.2f "

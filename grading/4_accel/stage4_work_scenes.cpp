@@ -9,6 +9,8 @@ namespace raystep::grade {
 namespace {
 
 constexpr std::uint64_t kStrewnSeed = 0x3017C;
+constexpr std::uint64_t kSpeedSoupSeed = 0x5BEED;
+constexpr std::uint64_t kSpeedSeed = 3;
 
 }  // namespace
 
@@ -33,6 +35,38 @@ WorkScene strewn_scene() {
         if (k % 4 == 1) ray.t_min = random.uniform(0.3, 0.8);
         if (k % 4 == 2) ray.t_max = random.uniform(0.5, 1.2);
         scene.rays.push_back(ray);
+    }
+    return scene;
+}
+
+PrimitiveList soup_primitives(PortableRandom& random) {
+    PrimitiveList primitives;
+    for (int k = 0; k < 300; ++k) {
+        const Vec3 c = random.point(1.0);
+        primitives.triangles.push_back({c, c + random.point(0.2), c + random.point(0.2)});
+    }
+    for (int k = 0; k < 60; ++k)
+        primitives.spheres.push_back({random.point(1.0), random.uniform(0.01, 0.15)});
+    for (int k = 0; k < 3; ++k)
+        primitives.planes.push_back({random.point(1.0), random.unit_vector()});
+    return primitives;
+}
+
+WorkScene speed_scene(int rays) {
+    constexpr int kSmallTriangles = 3000;
+    PortableRandom soup(kSpeedSoupSeed);
+    WorkScene scene;
+    scene.primitives = soup_primitives(soup);
+    PortableRandom random(kSpeedSeed);
+    for (int k = 0; k < kSmallTriangles; ++k) {
+        const Vec3 c = random.point(1.0);
+        scene.primitives.triangles.push_back({c, c + random.point(0.05), c + random.point(0.05)});
+    }
+    scene.name = "the speed scene (" + std::to_string(scene.primitives.triangles.size()) +
+                 " triangles and " + std::to_string(scene.primitives.spheres.size()) + " spheres)";
+    for (int k = 0; k < rays; ++k) {
+        const Vec3 origin = 3.0 * random.unit_vector();
+        scene.rays.push_back({origin, random.point(0.8) - origin});
     }
     return scene;
 }

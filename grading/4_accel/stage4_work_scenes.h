@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "base/math/portable_random.h"
 #include "stages/3_intersect/intersect.h"
 
 namespace raystep::grade {
@@ -40,6 +41,17 @@ inline constexpr std::uint64_t kTraversalSeed = 0x7A1C;
 /// visits every wall behind; one that visits a node's children in a fixed order, not the nearer
 /// first, takes the far walls first for rays from one side.
 WorkScene walls_scene(int layers, Side side);
+
+/// Small triangles and spheres in the cube [-1, 1]^3 and three planes through it: 300 triangles
+/// (edges up to 0.2 on each axis), 60 spheres (radii 0.01 to 0.15), 3 planes, drawn from
+/// `random`. The random soups of stage 4's checks, and the speed scene's first primitives.
+PrimitiveList soup_primitives(PortableRandom& random);
+
+/// The scene stage 4's speed checks time, which the grader's probe makes too: the soup of seed
+/// 0x5BEED, 3,000 triangles of edges up to 0.05 among it, and `rays` rays from a sphere of radius 3
+/// around it towards its middle. The rays are drawn last, one after the other, so the first 1,000
+/// of 20,000 are the scene of 1,000 rays (on which brute force is timed).
+WorkScene speed_scene(int rays);
 
 /// A scene's shadow rays: its rays, each cut short before the scene (every origin lies some 2 from
 /// the unit cube's centre and every direction about as long, so t 0.25 ends well outside it). A

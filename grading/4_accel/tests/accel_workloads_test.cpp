@@ -63,22 +63,40 @@ TEST_CASE("the reference probe answers every stage-4 call of the protocol") {
     CHECK(session.answers[8].value == probe::Json::array({3, 3, 3}));
 }
 
+namespace {
+
+// Two passes through the SAH BVH, with the jitter the tests below check against; no scene yet.
+probe::WorkloadQuestion two_passes() {
+    probe::WorkloadQuestion question;
+    question.split = "sah";
+    question.jitter = {9, 1e-3, 1e-4};
+    question.repeat = 2;
+    return question;
+}
+
+// `named`, its scene sent as data instead: the scene the probe would make from the name.
+probe::WorkloadQuestion sent_as_data(probe::WorkloadQuestion named, const grade::WorkScene& scene) {
+    named.walls.reset();
+    named.speed.reset();
+    named.primitives = scene.primitives;
+    named.rays = scene.rays;
+    named.shadow_rays = grade::shadow_rays(scene);
+    return named;
+}
+
+// A workload's arguments, for the probe to be asked by the calls' names: the workloads' answers
+// are the probe's own objects, not this program's.
+probe::Json args(const probe::WorkloadQuestion& question) {
+    return probe::JsonCodec<probe::WorkloadQuestion>::write(question);
+}
+
+}  // namespace
+
 TEST_CASE("a walls scene the probe makes itself is walked as the same scene sent as data") {
     const grade::WorkScene scene = grade::walls_scene(3, grade::Side::below);
-    probe::WorkloadQuestion named;
-    named.split = "sah";
-    named.jitter = {9, 1e-3, 1e-4};
-    named.repeat = 2;
+    probe::WorkloadQuestion named = two_passes();
     named.walls = probe::WallsScene{3, grade::Side::below};
-    probe::WorkloadQuestion sent = named;
-    sent.walls.reset();
-    sent.primitives = scene.primitives;
-    sent.rays = scene.rays;
-    sent.shadow_rays = grade::shadow_rays(scene);
-    // By the calls' names: the workloads' answers are the probe's own objects, not this program's
-    const auto args = [](const probe::WorkloadQuestion& question) {
-        return probe::JsonCodec<probe::WorkloadQuestion>::write(question);
-    };
+    const probe::WorkloadQuestion sent = sent_as_data(named, scene);
     const grade::ProbeSession session =
         grade::ask_probe(RAYSTEP_REFERENCE_PROBE,
                          {{"bvh_workload", args(named)},
@@ -97,4 +115,38 @@ TEST_CASE("a walls scene the probe makes itself is walked as the same scene sent
                                                         2));
     // A side that is none of the three is refused, not taken as one
     CHECK(session.answers[3].kind != grade::ProbeAnswer::Kind::result);
+}
+
+TEST_CASE("the speed scene the probe makes itself is walked as the same scene sent as data") {
+    const grade::WorkScene scene = grade::speed_scene(300);
+    // 3,300 triangles, 60 spheres and 3 planes, whatever the number of rays; a shorter list of
+    // rays is the longer one's start, as the speed check's brute force takes it
+    CHECK(scene.primitives.triangles.size() == 3300);
+    CHECK(scene.primitives.spheres.size() == 60);
+    CHECK(scene.primitives.planes.size() == 3);
+    const grade::WorkScene fewer = grade::speed_scene(100);
+    REQUIRE(fewer.rays.size() == 100);
+    CHECK(fewer.rays.back().origin == scene.rays[99].origin);
+    CHECK(fewer.rays.back().direction == scene.rays[99].direction);
+
+    probe::WorkloadQuestion named = two_passes();
+    named.speed = probe::SpeedScene{300};
+    const probe::WorkloadQuestion sent = sent_as_data(named, scene);
+    const grade::ProbeSession session =
+        grade::ask_probe(RAYSTEP_REFERENCE_PROBE,
+                         {{"bvh_workload", args(named)},
+                          {"bvh_workload", args(sent)},
+                          {"grid_workload", args(named)},
+                          {"grid_workload", args(sent)},
+                          {"bvh_workload", {{"speed", {{"rays", -1}}}}}},
+                         grade::ProbeRunLimits{});
+    REQUIRE(session.answers.size() == 5);
+    CHECK(session.answers[0].kind == grade::ProbeAnswer::Kind::result);
+    CHECK(session.answers[0].value == session.answers[1].value);
+    CHECK(session.answers[2].value == session.answers[3].value);
+    CHECK(session.answers[0].value == probe::timed_walk(Bvh(scene.primitives, BvhSplit::sah),
+                                                        scene.rays, grade::shadow_rays(scene),
+                                                        named.jitter, 2));
+    // A count of rays below zero is refused, not taken as none
+    CHECK(session.answers[4].kind != grade::ProbeAnswer::Kind::result);
 }
