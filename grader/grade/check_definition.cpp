@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <csignal>
 #include <cstring>
+#include <random>
 
 namespace raystep::grade {
 
@@ -255,6 +256,11 @@ std::vector<std::size_t> check_start_order(const std::vector<CheckDefinition>& c
         }
     }
     return order;
+}
+
+std::uint64_t fresh_timed_walk_seed() {
+    std::random_device source;
+    return (std::uint64_t{source()} << 32) ^ std::uint64_t{source()};
 }
 
 }  // namespace raystep::grade

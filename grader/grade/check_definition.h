@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -26,7 +27,14 @@ struct GradingContext {
     std::filesystem::path cache;            ///< --cache: what grades keep for the next; or empty
     std::filesystem::path built_renders;    ///< the reference's renders the build made, read only
                                             ///< (keep_reference_renders); or empty
+    /// The seed of the timed runs' jitter (stage 4's walks and speed checks), drawn anew for
+    /// every grade: the digest a timed run answers is then one no submission can know before it
+    /// walks, so a run's time is the time of its walk, not of a digest written in beforehand.
+    std::uint64_t timed_walk_seed = 0;
 };
+
+/// A seed for GradingContext::timed_walk_seed, from the system's source of random numbers.
+std::uint64_t fresh_timed_walk_seed();
 
 /// What a check found, before the rubric turns it into points: `fraction` in [0, 1] is what the
 /// rubric scores (cases passed, pixels matching, speed against the reference).

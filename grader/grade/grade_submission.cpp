@@ -142,6 +142,7 @@ GradeReport grade_submission(const GradeOptions& options, const Rubric& rubric,
     context.cache = options.cache;
     context.built_renders = toolchain.reference_renders;
     context.only_case = options.only_case;
+    context.timed_walk_seed = fresh_timed_walk_seed();
 
     // Checks run `jobs` at a time: each talks to its own probe process. Speed checks run alone
     // afterwards, so that nothing else competes for the processors while they time.

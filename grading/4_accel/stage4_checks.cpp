@@ -471,7 +471,8 @@ CheckMeasure measure_structure(const GradingContext& context, const BuiltProbe& 
 // The structure's speed against the reference's on the same rays, in the same run, scored by the
 // kernel's account of each probe's CPU time; and against no structure at all (stage 3's
 // closest_hit over every primitive, run by the reference probe), reported. The rays change every
-// pass, so a structure that remembers answers gains nothing. A structure whose hits differ from
+// pass, by a jitter drawn from the grade's own seed, so a structure that remembers answers gains
+// nothing and no digest can be written in beforehand. A structure whose hits differ from
 // the reference's earns nothing for speed: fast and wrong is not fast. Nor does one that does not
 // do a structure's work (measure_work).
 CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& probe,
@@ -487,7 +488,7 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
     probe::WorkloadQuestion walk;
     walk.speed = probe::SpeedScene{kRays};
     walk.split = "sah";
-    walk.jitter = {0x5BEED, 1e-3, 1e-4};
+    walk.jitter = {context.timed_walk_seed, 1e-3, 1e-4};
     const ProbeQuery query = probe::query(
         structure == "bvh" ? probe::bvh_workload_call : probe::grid_workload_call, walk);
     const std::vector<WorkloadTime> timed =

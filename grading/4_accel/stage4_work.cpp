@@ -202,18 +202,22 @@ CheckMeasure measure_structure_data(const GradingContext& context, const BuiltPr
 }
 
 // How far every pass moves the timed rays (timed_walk.h): a thousandth of the scene's size, and a
-// ten-thousandth of a direction's length, far too little to change what a ray meets.
-const probe::Jitter kJitter = {kTraversalSeed, 1e-3, 1e-4};
+// ten-thousandth of a direction's length, far too little to change what a ray meets; drawn from
+// the grade's own seed.
+probe::Jitter walk_jitter(std::uint64_t seed) {
+    return {seed, 1e-3, 1e-4};
+}
 
 // The query of a timed walk of the walls scene `walls` through the structure `call` (the BVH by
 // the SAH), which the probe makes itself: a query of a few bytes, where the scene as data, 1.4 MB,
 // took most of every run's start to write here and parse there. Each run sets its passes.
-ProbeQuery walk_query(const probe::WallsScene& walls, const std::string& call) {
+ProbeQuery walk_query(const probe::WallsScene& walls, const std::string& call,
+                      const probe::Jitter& jitter) {
     const bool bvh = call == "bvh";
     probe::WorkloadQuestion walk;
     walk.split = bvh ? std::optional<std::string>("sah") : std::nullopt;
     walk.walls = walls;
-    walk.jitter = kJitter;
+    walk.jitter = jitter;
     return bvh ? probe::query(probe::bvh_workload_call, walk)
                : probe::query(probe::grid_workload_call, walk);
 }
@@ -230,8 +234,8 @@ double thread_seconds() {
 // thread's CPU time). The grader is the reference's own program, so no probe need run for it.
 class ReferenceWalk {
   public:
-    ReferenceWalk(const WorkScene& scene, const std::string& call)
-        : scene_(scene), shadows_(shadow_rays(scene)) {
+    ReferenceWalk(const WorkScene& scene, const std::string& call, const probe::Jitter& jitter)
+        : scene_(scene), shadows_(shadow_rays(scene)), jitter_(jitter) {
         if (call == "bvh") {
             bvh_.emplace(scene.primitives, BvhSplit::sah);
         } else {
@@ -243,8 +247,8 @@ class ReferenceWalk {
     std::uint64_t digest(int passes, double& seconds) const {
         const double before = thread_seconds();
         const std::uint64_t digest =
-            bvh_ ? probe::timed_walk(*bvh_, scene_.rays, shadows_, kJitter, passes)
-                 : probe::timed_walk(*grid_, scene_.rays, shadows_, kJitter, passes);
+            bvh_ ? probe::timed_walk(*bvh_, scene_.rays, shadows_, jitter_, passes)
+                 : probe::timed_walk(*grid_, scene_.rays, shadows_, jitter_, passes);
         seconds = thread_seconds() - before;
         return digest;
     }
@@ -252,6 +256,7 @@ class ReferenceWalk {
   private:
     const WorkScene& scene_;
     std::vector<Ray> shadows_;
+    probe::Jitter jitter_;
     std::optional<Bvh> bvh_;
     std::optional<UniformGrid> grid_;
 };
@@ -293,14 +298,17 @@ std::optional<int> calibrated_passes(const BuiltProbe& probe, std::vector<ProbeQ
 
 // 2. The submission's own walk, timed by the kernel through the walls, from above and from below,
 // against its own walk through one wall.
-CheckMeasure measure_traversal_time(const BuiltProbe& probe, const std::string& call) {
+CheckMeasure measure_traversal_time(const BuiltProbe& probe, const std::string& call,
+                                    std::uint64_t seed) {
+    const probe::Jitter jitter = walk_jitter(seed);
     const probe::WallsScene walls[] = {
         {kWalls, Side::above}, {kWalls, Side::below}, {1, Side::both}};
     const WorkScene above = walls_scene(walls[0].layers, walls[0].side);
     const WorkScene below = walls_scene(walls[1].layers, walls[1].side);
     const WorkScene wall = walls_scene(walls[2].layers, walls[2].side);
     const WorkScene* const scenes[] = {&above, &below, &wall};
-    const ReferenceWalk references[] = {{above, call}, {below, call}, {wall, call}};
+    const ReferenceWalk references[] = {
+        {above, call, jitter}, {below, call, jitter}, {wall, call, jitter}};
     std::vector<ProbeQuery> walks[3];
     int passes[3];
     ProbeAnswer answer;
@@ -317,7 +325,7 @@ CheckMeasure measure_traversal_time(const BuiltProbe& probe, const std::string& 
                       "can be that slow");
     };
     for (int k = 0; k < 3; ++k) {
-        walks[k] = {walk_query(walls[k], call)};
+        walks[k] = {walk_query(walls[k], call, jitter)};
         const std::optional<int> calibrated = calibrated_passes(probe, walks[k], answer);
         if (!calibrated) return unanswered(*scenes[k]);
         passes[k] = *calibrated;
@@ -439,8 +447,9 @@ CheckMeasure measure_work(const GradingContext& context, const BuiltProbe& probe
         return measure_structure_data(context, probe, query);
     });
     if (data.outcome != Outcome::passed) return data;
-    CheckMeasure time =
-        measured_once(program, [&] { return measure_traversal_time(probe, query.call); });
+    CheckMeasure time = measured_once(program, [&] {
+        return measure_traversal_time(probe, query.call, context.timed_walk_seed);
+    });
     for (const auto& [name, value] : data.metrics)
         time.metrics[name] = value;
     time.summary = data.summary + "; " + time.summary;

@@ -29,7 +29,8 @@ WorkScene strewn_scene();
 /// half from each side.
 enum class Side { above, below, both };
 
-/// The traversal seed: the walls scene's rays, and the jitter of every timed pass.
+/// The seed of the walls scene's rays. The jitter of the timed passes has a seed of its own,
+/// drawn for each grade (GradingContext::timed_walk_seed).
 inline constexpr std::uint64_t kTraversalSeed = 0x7A1C;
 
 /// `layers` walls across the unit cube, each a 4 x 4 mesh of squares (two triangles each)

@@ -1,10 +1,15 @@
 // The grader's probe answers every stage-4 call of its protocol (grader/probe/README.md): the
 // structure's answers, which grading/4_accel/accel_calls.cpp gives it as it gives `raystep grade`,
 // and the structure as data and the timed workloads, which it alone has
-// (grading/4_accel/accel_workloads.cpp).
+// (grading/4_accel/accel_workloads.cpp); and the timed walk's digest, which hangs on a seed each
+// grade draws anew.
 
 #include "grading/4_accel/accel_workloads.h"
+
+#include <set>
+
 #include "base/testing/catch.h"
+#include "grader/grade/check_definition.h"
 #include "grader/grade/probe_client.h"
 #include "grading/4_accel/stage4_structure.h"
 #include "grading/4_accel/structure_json.h"
@@ -149,4 +154,21 @@ TEST_CASE("the speed scene the probe makes itself is walked as the same scene se
                                                         named.jitter, 2));
     // A count of rays below zero is refused, not taken as none
     CHECK(session.answers[4].kind != grade::ProbeAnswer::Kind::result);
+}
+
+TEST_CASE("a timed walk's digest depends on its seed, and each grade draws a seed of its own") {
+    // What a digest worked out for one seed beforehand is worth under another: nothing.
+    const grade::WorkScene scene = grade::walls_scene(3, grade::Side::both);
+    const std::vector<Ray> shadows = grade::shadow_rays(scene);
+    const Bvh bvh(scene.primitives, BvhSplit::sah);
+    const auto digest = [&](std::uint64_t seed) {
+        return probe::timed_walk(bvh, scene.rays, shadows, probe::Jitter{seed, 1e-3, 1e-4}, 3);
+    };
+    CHECK(digest(1) == digest(1));
+    CHECK(digest(1) != digest(2));
+    // Sixteen grades' seeds, no two alike.
+    std::set<std::uint64_t> seeds;
+    for (int k = 0; k < 16; ++k)
+        seeds.insert(grade::fresh_timed_walk_seed());
+    CHECK(seeds.size() == 16);
 }
