@@ -6,6 +6,7 @@
 
 #include "app/grade/public_case.h"
 #include "grader/grade/check_definition.h"
+#include "grading/4_accel/timed_walk.h"
 #include "stages/3_intersect/intersect.h"
 
 namespace raystep::grade {
@@ -33,6 +34,11 @@ struct WorkQuery {
     std::string call;      ///< "bvh" or "grid"
     std::string split;     ///< the BVH's split, "sah" or "median"; empty for the grid
 };
+
+/// How far every pass of a timed walk moves its rays (timed_walk.h), for the walls walks and the
+/// speed checks alike: a thousandth of the scene's size and a ten-thousandth of a direction's
+/// length, far too little to change what a ray meets, drawn from the grade's own seed.
+probe::Jitter timed_walk_jitter(const GradingContext& context);
 
 /// Whether the submission's structure does a structure's work, measured from outside its probe:
 /// the structure handed back as data (Bvh::nodes, UniformGrid::cells), checked and walked by the

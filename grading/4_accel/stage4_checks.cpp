@@ -488,7 +488,7 @@ CheckMeasure measure_speed(const GradingContext& context, const BuiltProbe& prob
     probe::WorkloadQuestion walk;
     walk.speed = probe::SpeedScene{kRays};
     walk.split = "sah";
-    walk.jitter = {context.timed_walk_seed, 1e-3, 1e-4};
+    walk.jitter = timed_walk_jitter(context);
     const ProbeQuery query = probe::query(
         structure == "bvh" ? probe::bvh_workload_call : probe::grid_workload_call, walk);
     const std::vector<WorkloadTime> timed =

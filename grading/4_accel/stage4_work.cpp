@@ -201,13 +201,6 @@ CheckMeasure measure_structure_data(const GradingContext& context, const BuiltPr
     return measure;
 }
 
-// How far every pass moves the timed rays (timed_walk.h): a thousandth of the scene's size, and a
-// ten-thousandth of a direction's length, far too little to change what a ray meets; drawn from
-// the grade's own seed.
-probe::Jitter walk_jitter(std::uint64_t seed) {
-    return {seed, 1e-3, 1e-4};
-}
-
 // The query of a timed walk of the walls scene `walls` through the structure `call` (the BVH by
 // the SAH), which the probe makes itself: a query of a few bytes, where the scene as data, 1.4 MB,
 // took most of every run's start to write here and parse there. Each run sets its passes.
@@ -299,8 +292,7 @@ std::optional<int> calibrated_passes(const BuiltProbe& probe, std::vector<ProbeQ
 // 2. The submission's own walk, timed by the kernel through the walls, from above and from below,
 // against its own walk through one wall.
 CheckMeasure measure_traversal_time(const BuiltProbe& probe, const std::string& call,
-                                    std::uint64_t seed) {
-    const probe::Jitter jitter = walk_jitter(seed);
+                                    const probe::Jitter& jitter) {
     const probe::WallsScene walls[] = {
         {kWalls, Side::above}, {kWalls, Side::below}, {1, Side::both}};
     const WorkScene above = walls_scene(walls[0].layers, walls[0].side);
@@ -438,6 +430,10 @@ CheckMeasure measured_once(const std::string& key, Measure measure) {
 
 }  // namespace
 
+probe::Jitter timed_walk_jitter(const GradingContext& context) {
+    return {context.timed_walk_seed, 1e-3, 1e-4};
+}
+
 CheckMeasure measure_work(const GradingContext& context, const BuiltProbe& probe,
                           const WorkQuery& query) {
     if (!probe.program) return not_compiled(probe);
@@ -448,7 +444,7 @@ CheckMeasure measure_work(const GradingContext& context, const BuiltProbe& probe
     });
     if (data.outcome != Outcome::passed) return data;
     CheckMeasure time = measured_once(program, [&] {
-        return measure_traversal_time(probe, query.call, context.timed_walk_seed);
+        return measure_traversal_time(probe, query.call, timed_walk_jitter(context));
     });
     for (const auto& [name, value] : data.metrics)
         time.metrics[name] = value;
