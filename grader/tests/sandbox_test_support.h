@@ -11,9 +11,11 @@ namespace raystep::grade::testing {
 // What the sandbox's tests share: the hostile programs built beside them, small limits, temporary
 // folders, and a run that also says how long it took and what it left behind.
 
-/// A run's wall time must stay under this: the limits are a few seconds, and the machine may be
-/// small and busy.
-inline constexpr double kBoundSeconds = 10.0;
+/// How long after its wall-clock limit a run may take to come back: the kill, the reaping and
+/// bubblewrap's teardown. The bound is the wall limit, which run_sandboxed enforces by its own
+/// clock, rather than a fixed time: on a busy machine a run held to 2 s of CPU time can take 11 s
+/// of wall time, and that is the sandbox working, not failing.
+inline constexpr double kReturnGraceSeconds = 5.0;
 
 /// The path of a program under grader/tests/hostile_programs/ ("segfault", "echo").
 std::string hostile(const std::string& name);
@@ -31,12 +33,13 @@ bool files_protected(bool isolate);
 
 struct HostileRun {
     SandboxRun run;
-    double seconds = 0.0;  ///< run_sandboxed's own wall time, as its caller sees it
-    int left_behind = 0;   ///< processes of the run still there (a second after it returned)
+    double seconds = 0.0;             ///< run_sandboxed's own wall time, as its caller sees it
+    double wall_limit_seconds = 0.0;  ///< the policy's wall-clock limit
+    int left_behind = 0;  ///< processes of the run still there (a second after it returned)
 };
 
-/// What every run must show, however it ended: isolated as asked, back within kBoundSeconds,
-/// nothing left running.
+/// What every run must show, however it ended: isolated as asked, back within its wall-clock limit
+/// and kReturnGraceSeconds, nothing left running.
 void check_contained(const HostileRun& hostile_run, bool isolate);
 
 /// Makes this test process a child subreaper (Linux): every process that a run leaves behind,
