@@ -1,6 +1,6 @@
 // The zip `raystep submit` writes (app/submit/stored_zip.h), byte by byte against APPNOTE.TXT. That
-// real unpackers read it is the grader's intake test (grader/tests/submitted_zip_test.cpp) and the
-// command tests' `python3 -m zipfile -t`.
+// real unpackers read it is the grader's intake test (grader/grade/tests/submitted_zip_test.cpp)
+// and the command tests' `python3 -m zipfile -t`.
 #include <cstdint>
 #include <stdexcept>
 #include <string>

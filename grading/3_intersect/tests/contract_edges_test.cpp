@@ -11,7 +11,7 @@
 #include "app/check/case_scoring.h"
 #include "app/check/stage3_methods.h"
 #include "base/testing/catch.h"
-#include "grader/tests/score_in_process.h"
+#include "grader/grade/tests/score_in_process.h"
 #include "grading/3_intersect/collinear_triangles.h"
 #include "grading/3_intersect/decide_cases.h"
 #include "grading/3_intersect/stage3_contract_cases.h"

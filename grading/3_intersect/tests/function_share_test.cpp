@@ -6,7 +6,7 @@
 
 #include "app/probe/tests/probe_answers.h"
 #include "base/testing/catch.h"
-#include "grader/tests/hand_made_cases.h"
+#include "grader/grade/tests/hand_made_cases.h"
 #include "grading/3_intersect/function_share.h"
 
 using namespace raystep::grade;

@@ -13,7 +13,7 @@
 #include "base/math/portable_random.h"
 #include "base/testing/catch.h"
 #include "base/testing/special_values.h"
-#include "grader/tests/wide_near.h"
+#include "grader/oracle/tests/wide_near.h"
 #include "grading/9_refraction/refraction_oracle.h"
 #include "stages/9_refraction/refraction.h"
 

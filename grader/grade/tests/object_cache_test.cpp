@@ -10,7 +10,7 @@
 
 #include "base/testing/catch.h"
 #include "grader/grade/object_cache.h"
-#include "sandbox_test_support.h"
+#include "grader/sandbox/tests/sandbox_test_support.h"
 
 using namespace raystep::grade;
 using raystep::grade::testing::read_text;

@@ -6,7 +6,7 @@
 
 #include "base/testing/catch.h"
 #include "base/testing/special_values.h"
-#include "grader/tests/wide_near.h"
+#include "grader/oracle/tests/wide_near.h"
 #include "grading/2_rays/camera_oracle.h"
 #include "grading/5_transforms/transform_oracle.h"
 #include "grading/6_shading/shading_oracle.h"

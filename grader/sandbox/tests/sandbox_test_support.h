@@ -17,7 +17,7 @@ namespace raystep::grade::testing {
 /// of wall time, and that is the sandbox working, not failing.
 inline constexpr double kReturnGraceSeconds = 5.0;
 
-/// The path of a program under grader/tests/hostile_programs/ ("segfault", "echo").
+/// The path of a program under grader/sandbox/tests/hostile_programs/ ("segfault", "echo").
 std::string hostile(const std::string& name);
 
 /// Small limits (1 s of CPU, 3 s of wall clock, 256 MiB of address space, 16 processes, 1 MiB of

@@ -12,7 +12,7 @@
 #include "grader/grade/stage_manifests.h"
 #include "grader/grade/submission.h"
 #include "grader/grade/work_folder.h"
-#include "sandbox_test_support.h"
+#include "grader/sandbox/tests/sandbox_test_support.h"
 
 using namespace raystep::grade;
 using raystep::grade::testing::read_text;

@@ -8,7 +8,7 @@
 #include "app/probe/tests/probe_answers.h"
 #include "base/testing/catch.h"
 #include "grader/grade/check_definition.h"
-#include "grader/tests/hand_made_cases.h"
+#include "grader/grade/tests/hand_made_cases.h"
 
 using namespace raystep::grade;
 using raystep::grade::hand_made::session;

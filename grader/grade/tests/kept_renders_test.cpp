@@ -11,7 +11,7 @@
 #include "base/testing/catch.h"
 #include "grader/grade/checks/stage_checks.h"
 #include "grader/grade/kept_renders.h"
-#include "sandbox_test_support.h"
+#include "grader/sandbox/tests/sandbox_test_support.h"
 
 using namespace raystep;
 using namespace raystep::grade;
@@ -88,7 +88,7 @@ TEST_CASE("an entry is read only when the key it holds is the one asked for, and
 
 TEST_CASE("the grader's identity names its program and stays the same within a run", "[grader]") {
     const std::string identity = grader_identity();
-    CHECK(identity.find("raystep_intake_tests") != std::string::npos);
+    CHECK(identity.find("raystep_grader_tests") != std::string::npos);
     CHECK(grader_identity() == identity);
 }
 

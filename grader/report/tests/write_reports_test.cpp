@@ -26,7 +26,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string read(const fs::path& file) {
+std::string file_text(const fs::path& file) {
     std::ifstream in(file, std::ios::binary);
     std::ostringstream text;
     text << in.rdbuf();
@@ -43,7 +43,8 @@ std::set<std::string> files_under(const fs::path& folder) {
 }
 
 // The report written as raystep-grade writes it, its render images where the checks put them.
-fs::path written(const fs::path& output, const GradeReport& report = example_report()) {
+fs::path write_example_reports(const fs::path& output,
+                               const GradeReport& report = example_report()) {
     raystep::testing::write_example_images(instructor_folder(output));
     write_reports(report, output);
     return output;
@@ -87,7 +88,7 @@ std::vector<std::string> leaks_in(const std::string& text, const GradeReport& re
 TEST_CASE("write_reports: the student's folder and the instructor's, and nothing else",
           "[report]") {
     const ScratchFolder scratch("write-reports-test");
-    const fs::path output = written(scratch.path() / "out");
+    const fs::path output = write_example_reports(scratch.path() / "out");
     CHECK(files_under(student_folder(output)) ==
           std::set<std::string>{"index.html", "junit.xml", "results.json"});
     CHECK(files_under(instructor_folder(output)) ==
@@ -106,10 +107,10 @@ TEST_CASE("write_reports: the student's folder and the instructor's, and nothing
 TEST_CASE("write_reports: no student's file names a withheld check or its inputs", "[report]") {
     const ScratchFolder scratch("write-reports-test");
     const GradeReport report = example_report();
-    const fs::path output = written(scratch.path() / "out", report);
+    const fs::path output = write_example_reports(scratch.path() / "out", report);
     for (const std::string& file : files_under(student_folder(output))) {
         CAPTURE(file);
-        const std::string text = read(student_folder(output) / file);
+        const std::string text = file_text(student_folder(output) / file);
         CHECK(leaks_in(text, report).empty());
         CHECK(text.find(kHiddenSecret) == std::string::npos);
         // Nor the instructor's commands, which need the grader.
@@ -121,10 +122,10 @@ TEST_CASE("write_reports: no student's file names a withheld check or its inputs
     GradeReport every_check_shown = report;
     for (CheckResult& check : every_check_shown.checks)
         check.visibility = Visibility::visible;
-    const fs::path shown = written(scratch.path() / "shown", every_check_shown);
+    const fs::path shown = write_example_reports(scratch.path() / "shown", every_check_shown);
     for (const std::string& file : files_under(student_folder(shown))) {
         CAPTURE(file);
-        const std::string text = read(student_folder(shown) / file);
+        const std::string text = file_text(student_folder(shown) / file);
         for (const CheckResult& check : report.checks) {
             if (check.visibility == Visibility::visible) continue;
             CAPTURE(check.id);
@@ -141,28 +142,30 @@ TEST_CASE("write_reports: no student's file names a withheld check or its inputs
 
 TEST_CASE("write_reports: the student's page is one file, and its JUnit XML is valid", "[report]") {
     const ScratchFolder scratch("write-reports-test");
-    const fs::path output = written(scratch.path() / "out");
-    const XmlDocument page(read(student_folder(output) / "index.html"));
+    const fs::path output = write_example_reports(scratch.path() / "out");
+    const XmlDocument page(file_text(student_folder(output) / "index.html"));
     REQUIRE(page.well_formed());
     const std::vector<std::string> sources = page.values("//img/@src");
     CHECK(sources.size() == 6);
     for (const std::string& source : sources)
         CHECK_THAT(source, Catch::Matchers::StartsWith("data:image/png;base64,"));
     // The instructor's page links its images, which sit beside it.
-    const XmlDocument instructor(read(instructor_folder(output) / "instructor.html"));
+    const XmlDocument instructor(file_text(instructor_folder(output) / "instructor.html"));
     for (const std::string& source : instructor.values("//img/@src"))
         CHECK_THAT(source, Catch::Matchers::StartsWith("render/"));
 
     const fs::path schema = RAYSTEP_JUNIT_SCHEMA;
-    CHECK(XmlDocument(read(student_folder(output) / "junit.xml")).schema_violations(schema) == "");
-    CHECK(XmlDocument(read(instructor_folder(output) / "junit.xml")).schema_violations(schema) ==
+    CHECK(XmlDocument(file_text(student_folder(output) / "junit.xml")).schema_violations(schema) ==
           "");
+    CHECK(
+        XmlDocument(file_text(instructor_folder(output) / "junit.xml")).schema_violations(schema) ==
+        "");
     const nlohmann::json results =
-        nlohmann::json::parse(read(student_folder(output) / "results.json"));
+        nlohmann::json::parse(file_text(student_folder(output) / "results.json"));
     CHECK(results.at("checks").size() == 9);
     // PrairieLearn's carries the visible render checks' images, which are the 8th and 9th tests.
     const nlohmann::json prairielearn =
-        nlohmann::json::parse(read(instructor_folder(output) / "prairielearn.json"));
+        nlohmann::json::parse(file_text(instructor_folder(output) / "prairielearn.json"));
     CHECK(prairielearn.at("tests")[7].at("name") == "stage7.render.mirrors");
     CHECK(prairielearn.at("tests")[7].at("images").size() == 3);
     CHECK(prairielearn.at("tests")[8].at("images").size() == 3);
@@ -181,17 +184,17 @@ TEST_CASE("write_reports: a speed-against-error measurement puts the drawn chart
                      {kSpeedErrorUlpsP99, 20},    {kSpeedErrorAgainstCramer, 1.0}};
     report.checks.push_back(speed);
     const ScratchFolder scratch("write-reports-test");
-    const fs::path output = written(scratch.path() / "out", report);
+    const fs::path output = write_example_reports(scratch.path() / "out", report);
     const bool drawn = !std::string(RAYSTEP_CHART_PYTHON).empty();
     for (const fs::path& page_file :
          {student_folder(output) / "index.html", instructor_folder(output) / "instructor.html"}) {
-        const XmlDocument page(read(page_file));
+        const XmlDocument page(file_text(page_file));
         INFO(page_file << ": " << page.errors());
         REQUIRE(page.well_formed());
         const std::string chart = "//section[@id='speed-versus-error']/*[local-name()='svg']";
         CHECK(page.count(chart) == (drawn ? 1 : 0));
         if (drawn) {
-            CHECK_THAT(read(page_file), Catch::Matchers::Contains("your intersect_triangle"));
+            CHECK_THAT(file_text(page_file), Catch::Matchers::Contains("your intersect_triangle"));
         }
     }
 }
@@ -200,9 +203,9 @@ TEST_CASE("write_reports: report.json in the instructor's folder reads back as t
           "[report]") {
     const ScratchFolder scratch("write-reports-test");
     const GradeReport report = example_report();
-    const fs::path output = written(scratch.path() / "out", report);
+    const fs::path output = write_example_reports(scratch.path() / "out", report);
     const GradeReport back =
-        report_from_json(nlohmann::json::parse(read(finished_report_file(output))));
+        report_from_json(nlohmann::json::parse(file_text(finished_report_file(output))));
     REQUIRE(back.checks.size() == report.checks.size());
     CHECK(back.score() == report.score());
     CHECK(back.checks[3].seconds == report.checks[3].seconds);
