@@ -17,7 +17,7 @@ namespace raystep {
 // That holds where each operation rounds once, to double: no x87 excess precision (every 64-bit
 // target evaluates double in double) and no multiply-add contracted behind the code's back
 // (raystep_set_compile_options turns contraction off; MSVC does not contract). Each building
-// block's exactness is tested on hard cases in base/tests/double_double_test.cpp
+// block's exactness is tested on hard cases in base/math/tests/double_double_test.cpp
 // (`build/release/bin/raystep_base_tests "[math]"`).
 #if defined(FLT_EVAL_METHOD)
 static_assert(FLT_EVAL_METHOD <= 0, "double-double arithmetic needs double rounded to double");

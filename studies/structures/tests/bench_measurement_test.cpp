@@ -8,7 +8,7 @@
 #include "base/errors/not_implemented.h"
 #include "base/testing/catch.h"
 #include "studies/structures/ray_chunks.h"
-#include "studies/tests/bench_fakes.h"
+#include "studies/structures/tests/bench_fakes.h"
 
 using namespace raystep;
 using raystep::testing::fake_candidate;

@@ -1,7 +1,7 @@
 #include "studies/structures/cross_check.h"
 
 #include "base/testing/catch.h"
-#include "studies/tests/bench_fakes.h"
+#include "studies/structures/tests/bench_fakes.h"
 
 using namespace raystep;
 using raystep::testing::fake_candidate;
