@@ -12,6 +12,12 @@ GradeReport seen_by(const GradeReport& report, Audience audience) {
     for (const CheckResult& check : report.checks) {
         if (shown_to(check, audience)) seen.checks.push_back(check);
     }
+    if (seen.checks.size() < report.checks.size()) {
+        seen.times.checks = 0.0;
+        for (const CheckResult& check : seen.checks)
+            seen.times.checks += check.seconds;
+        seen.times.reports = 0.0;
+    }
     return seen;
 }
 

@@ -15,7 +15,10 @@ enum class Audience { student, instructor };
 bool shown_to(const CheckResult& check, Audience audience);
 
 /// The report as this audience sees it: the same, minus the checks it is not shown, so that its
-/// scores add up only what the audience can see.
+/// scores add up only what the audience can see. Its times too: a check's time depends on its
+/// inputs (a submission can take as long as a hidden input says), so when checks are withheld,
+/// the checks' phase is the sum of the shown checks' times, and the reports' phase (which writes
+/// the withheld checks' counterexamples for the instructor) is 0.
 GradeReport seen_by(const GradeReport& report, Audience audience);
 
 /// The command that reruns a counterexample, for this audience: for the student,

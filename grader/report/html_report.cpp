@@ -271,7 +271,7 @@ std::string html_report(const GradeReport& report, const std::filesystem::path& 
                 h(stage == 0 ? "The whole pipeline" : "Stage " + std::to_string(stage)) +
                 "</h2>\n" + sections + "</section>\n";
     }
-    return html + times_footer(report.times) + "</main>\n</body>\n</html>\n";
+    return html + times_footer(seen.times) + "</main>\n</body>\n</html>\n";
 }
 
 }  // namespace raystep::grade

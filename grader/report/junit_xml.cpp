@@ -105,7 +105,7 @@ std::string intake_suite(const GradeReport& report) {
 
 std::string junit_xml(const GradeReport& report, Audience audience) {
     const GradeReport seen = seen_by(report, audience);
-    const PhaseTimes& times = report.times;
+    const PhaseTimes& times = seen.times;
     const std::string who = report.student.empty() ? report.submission : report.student;
     const bool intake_problem = !report.intake_problem.empty();
 

@@ -59,7 +59,7 @@ nlohmann::json student_results(const GradeReport& report) {
     for (const CheckResult& check : seen.checks)
         checks.push_back(check_of(check));
 
-    const PhaseTimes& times = report.times;
+    const PhaseTimes& times = seen.times;
     return {{"student", displayable_text(report.student)},
             {"submission", displayable_text(report.submission)},
             {"intake_problem", intake_problem_line(report.intake_problem)},

@@ -140,6 +140,23 @@ TEST_CASE("write_reports: no student's file names a withheld check or its inputs
     }
 }
 
+TEST_CASE("write_reports: no student's file holds a time that counts the withheld checks",
+          "[report]") {
+    // A check's time depends on its inputs: a submission can take as long as a hidden input says.
+    // The checks' phase, with the withheld ones, took 4321.5 s here; the shown ones, a second.
+    const ScratchFolder scratch("write-reports-test");
+    GradeReport report = example_report();
+    report.times.checks = 4321.5;
+    const fs::path output = write_example_reports(scratch.path() / "out", report);
+    for (const std::string& file : files_under(student_folder(output))) {
+        CAPTURE(file);
+        const std::string text = file_text(student_folder(output) / file);
+        CHECK(text.find("4321") == std::string::npos);  // the phase
+        CHECK(text.find("4334") == std::string::npos);  // the whole run: 4334.35 s
+    }
+    CHECK(file_text(finished_report_file(output)).find("4321.5") != std::string::npos);
+}
+
 TEST_CASE("write_reports: the student's page is one file, and its JUnit XML is valid", "[report]") {
     const ScratchFolder scratch("write-reports-test");
     const fs::path output = write_example_reports(scratch.path() / "out");
