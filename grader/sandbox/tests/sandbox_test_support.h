@@ -13,8 +13,8 @@ namespace raystep::grade::testing {
 
 /// How long after its wall-clock limit a run may take to come back: the kill, the reaping and
 /// bubblewrap's teardown. The bound is the wall limit, which run_sandboxed enforces by its own
-/// clock, rather than a fixed time: on a busy machine a run held to 2 s of CPU time can take 11 s
-/// of wall time, and that is the sandbox working, not failing.
+/// clock, rather than a fixed time: on a busy machine a run held to its CPU limit can take several
+/// times that in wall time, and that is the sandbox working, not failing.
 inline constexpr double kReturnGraceSeconds = 5.0;
 
 /// The path of a program under grader/sandbox/tests/hostile_programs/ ("segfault", "echo").
