@@ -38,6 +38,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArguments& arguments) {
         ->check(CLI::IsMember(view_names()));
     add_ray_offset_options(*command, arguments.ray_offset);
     add_sampling_options(*command, arguments.sampling);
+    add_eye_option(*command, arguments.lookfrom);
     command->add_option("--trace-data", arguments.trace_data,
                         "Also write every pixel's steps (camera ray, hit, lights, colours) to this "
                         "file, the reference trace `trace --compare` reads: a student release "
@@ -46,11 +47,11 @@ CLI::App* add_render_command(CLI::App& app, RenderArguments& arguments) {
 }
 
 int run_render(const RenderArguments& arguments) {
-    // trace --compare holds a pixel against the scene as it is, ray offset included.
-    if (!arguments.trace_data.empty() && !arguments.ray_offset.rule.empty()) {
+    // trace --compare holds a pixel against the scene as it is, ray offset and eye included.
+    if (!arguments.trace_data.empty() &&
+        (!arguments.ray_offset.rule.empty() || !arguments.lookfrom.empty())) {
         throw std::invalid_argument(
-            "--trace-data records the scene's own ray offset: leave out "
-            "--ray-offset");
+            "--trace-data records the scene as it is: leave out --ray-offset and --lookfrom");
     }
     Scene scene = load_scene(arguments.scene);
     // What the scene asks for that raystep reads but does not render (a CSE168 integrator, say):
@@ -59,6 +60,7 @@ int run_render(const RenderArguments& arguments) {
         std::fprintf(stderr, "%s\n", warning_text(scene, note).c_str());
     apply_ray_offset(arguments.ray_offset, scene);
     apply_sampling(arguments.sampling, scene);
+    apply_eye(arguments.lookfrom, scene);
     const View view = *parse_view(arguments.view);
 
     std::filesystem::path output = arguments.output;

@@ -1,16 +1,18 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "app/cli/eye_option.h"
 #include "app/cli/ray_offset_option.h"
 #include "app/cli/sampling_options.h"
 
 namespace raystep {
 
 /// `raystep render SCENE [-o FILE] [--threads N] [--view VIEW] [--ray-offset RULE [--epsilon E]]
-/// [--spp N] [--pixel-sampling PATTERN] [--seed S] [--trace-data FILE]`
+/// [--spp N] [--pixel-sampling PATTERN] [--seed S] [--lookfrom X Y Z] [--trace-data FILE]`
 struct RenderArguments {
     std::string scene;
     std::string output;
@@ -19,6 +21,7 @@ struct RenderArguments {
     std::string view = "full";
     RayOffsetArguments ray_offset;
     SamplingArguments sampling;
+    std::vector<double> lookfrom;  ///< --lookfrom: empty, or the eye in place of the scene's
 };
 
 CLI::App* add_render_command(CLI::App& app, RenderArguments& arguments);

@@ -42,10 +42,10 @@ void print_comparison(const TraceComparison& comparison, const std::string& stop
 // trace --compare: 0 when this build's pixel is the reference's, 1 when it differs or a stub
 // stopped it, 2 when there is nothing to compare with (bad input).
 int compare_with_reference(const TraceArguments& arguments) {
-    if (!arguments.ray_offset.rule.empty()) {
+    if (!arguments.ray_offset.rule.empty() || !arguments.lookfrom.empty()) {
         std::fprintf(stderr,
                      "raystep: --compare holds this build against the reference's trace, "
-                     "recorded with the scene's own ray offset: leave out --ray-offset\n");
+                     "recorded from the scene as it is: leave out --ray-offset and --lookfrom\n");
         return 2;
     }
     const Scene scene = load_scene(arguments.scene);
@@ -85,6 +85,7 @@ CLI::App* add_trace_command(CLI::App& app, TraceArguments& arguments) {
                       "differs");
     add_ray_offset_options(*command, arguments.ray_offset);
     add_sampling_options(*command, arguments.sampling);
+    add_eye_option(*command, arguments.lookfrom);
     return command;
 }
 
@@ -102,6 +103,7 @@ int run_trace(const TraceArguments& arguments) {
     Scene scene = load_scene(arguments.scene);
     apply_ray_offset(arguments.ray_offset, scene);
     apply_sampling(arguments.sampling, scene);
+    apply_eye(arguments.lookfrom, scene);
     const PixelTrace ours =
         trace_pixel(scene, *parse_view(arguments.view), arguments.x, arguments.y);
     for (const std::string& line : ours.lines)

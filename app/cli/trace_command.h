@@ -1,19 +1,21 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "app/cli/eye_option.h"
 #include "app/cli/ray_offset_option.h"
 #include "app/cli/sampling_options.h"
 
 namespace raystep {
 
 /// `raystep trace SCENE X Y [--view VIEW] [--ray-offset RULE [--epsilon E]] [--spp N]
-/// [--pixel-sampling PATTERN] [--seed S] [--compare]`. A pixel with several samples (spp) shows
-/// every step of its first sample, each sample's film point and colour, and their mean; quad
-/// lights show each light sample's shadow ray, and transmitting surfaces the media on both
-/// sides, Fresnel and the refracted ray (render_pixel.h, ray_colour.h).
+/// [--pixel-sampling PATTERN] [--seed S] [--lookfrom X Y Z] [--compare]`. A pixel with several
+/// samples (spp) shows every step of its first sample, each sample's film point and colour, and
+/// their mean; quad lights show each light sample's shadow ray, and transmitting surfaces the media
+/// on both sides, Fresnel and the refracted ray (render_pixel.h, ray_colour.h).
 struct TraceArguments {
     std::string scene;
     int x = 0;
@@ -22,6 +24,7 @@ struct TraceArguments {
     bool compare = false;
     RayOffsetArguments ray_offset;
     SamplingArguments sampling;
+    std::vector<double> lookfrom;  ///< --lookfrom: empty, or the eye in place of the scene's
 };
 
 CLI::App* add_trace_command(CLI::App& app, TraceArguments& arguments);

@@ -107,6 +107,8 @@ NoisyComparison compare_noisy_renders(const std::vector<Image>& student,
                     std::abs(a.mean - b.mean) / (deviation * std::sqrt(1.0 / ks + 1.0 / kr));
                 // Written so that a NaN is apart.
                 if (!(z <= bound)) apart = true;
+                if (!(a.deviation <= kSpreadRatioBound * std::max(b.deviation, deviation_floor)))
+                    apart = true;
                 if (std::isnan(z) || z > tile_z) tile_z = z;
             }
             count_tile(result, apart, tile_z, i0, j0, student_mean, reference_mean);

@@ -25,12 +25,20 @@ struct NoisyComparison {
     Color worst_reference;
 };
 
+/// How much more the student's renders of a tile may spread than the reference's. A right renderer
+/// draws its samples as the reference does, so the two spreads differ by chance alone: a variance
+/// ratio of 16 between 8 and 16 renders lies in F(7, 15)'s tail of 7e-6. Without this bound,
+/// noise added to any image would widen its own standard error until every tile passed.
+inline constexpr double kSpreadRatioBound = 4.0;
+
 /// Per tile of tile x tile pixels (smaller at the right and bottom edges) and channel: the tile's
 /// mean in each render, then the difference between the mean of those over `student` and over
 /// `reference`, against its standard error s sqrt(1/K_s + 1/K_r), s the larger of the two sets'
 /// standard deviations over renders and `deviation_floor` (a tile with no noise, where rounding
-/// alone differs). A tile is apart when a channel's |difference| exceeds `bound` standard errors.
-/// Throws std::invalid_argument unless both sets hold at least two renders, all of one size.
+/// alone differs). A tile is apart when a channel's |difference| exceeds `bound` standard errors,
+/// or when the student's deviation exceeds kSpreadRatioBound times the larger of the reference's
+/// and the floor. Throws std::invalid_argument unless both sets hold at least two renders, all of
+/// one size.
 NoisyComparison compare_noisy_renders(const std::vector<Image>& student,
                                       const std::vector<Image>& reference, int tile, double bound,
                                       double deviation_floor);

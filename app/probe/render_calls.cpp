@@ -21,6 +21,7 @@ Image render_for_probe(const RenderQuestion& question) {
     // A sampled scene's seed, for renders of one view at several (the grader's noisy render
     // checks).
     if (question.seed) scene.seed = *question.seed;
+    if (question.lookfrom) scene.camera.lookfrom = *question.lookfrom;
     RenderOptions options;
     options.view = *view;
     options.threads = 1;

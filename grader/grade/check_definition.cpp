@@ -258,7 +258,7 @@ std::vector<std::size_t> check_start_order(const std::vector<CheckDefinition>& c
     return order;
 }
 
-std::uint64_t fresh_timed_walk_seed() {
+std::uint64_t fresh_grade_seed() {
     std::random_device source;
     return (std::uint64_t{source()} << 32) ^ std::uint64_t{source()};
 }

@@ -24,17 +24,18 @@ struct GradingContext {
     std::string reproduce;                  ///< "raystep-grade submission PATH", to which
                                             ///< " --check ID --case N" is appended
     std::optional<std::size_t> only_case;   ///< --case N: ask the probe that case alone
-    std::filesystem::path cache;            ///< --cache: what grades keep for the next; or empty
-    std::filesystem::path built_renders;    ///< the reference's renders the build made, read only
-                                            ///< (keep_reference_renders); or empty
     /// The seed of the timed runs' jitter (stage 4's walks and speed checks), drawn anew for
     /// every grade: the digest a timed run answers is then one no submission can know before it
     /// walks, so a run's time is the time of its walk, not of a digest written in beforehand.
     std::uint64_t timed_walk_seed = 0;
+    /// The seed of the eyes the render checks look from (checks/moved_eye.h): drawn anew for
+    /// every grade unless given (`--eye-seed`), which a render check's reproduce lines name.
+    std::uint64_t eye_seed = 0;
 };
 
-/// A seed for GradingContext::timed_walk_seed, from the system's source of random numbers.
-std::uint64_t fresh_timed_walk_seed();
+/// A seed drawn anew for a grade (GradingContext::timed_walk_seed, eye_seed), from the system's
+/// source of random numbers.
+std::uint64_t fresh_grade_seed();
 
 /// What a check found, before the rubric turns it into points: `fraction` in [0, 1] is what the
 /// rubric scores (cases passed, pixels matching, speed against the reference).

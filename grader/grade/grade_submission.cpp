@@ -138,11 +138,10 @@ GradeReport grade_submission(const GradeOptions& options, const Rubric& rubric,
     context.grader_source = toolchain.source;
     context.report_folder = instructor_folder(output);
     context.reference_probe = probes.reference.program.value_or(fs::path());
+    context.eye_seed = options.eye_seed.value_or(fresh_grade_seed());
     context.reproduce = options.reproduce;
-    context.cache = options.cache;
-    context.built_renders = toolchain.reference_renders;
     context.only_case = options.only_case;
-    context.timed_walk_seed = fresh_timed_walk_seed();
+    context.timed_walk_seed = fresh_grade_seed();
 
     // Checks run `jobs` at a time: each talks to its own probe process. Speed checks run alone
     // afterwards, so that nothing else competes for the processors while they time.

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -17,7 +18,7 @@ struct GradeOptions {
     std::filesystem::path work_parent;
     bool keep_work = false;  ///< keep the work folder after grading (--keep-work), to look into
     /// What one grade keeps for the next (--cache): the objects it compiled in cache/objects
-    /// (object_cache.h), the reference's renders in cache/renders (kept_renders.h); empty: none.
+    /// (object_cache.h); empty: none.
     std::filesystem::path cache;
     int jobs = 1;                   ///< compiles and checks run this many at a time
     std::string only_check;         ///< run just this check (--check), for reproducing
@@ -25,6 +26,8 @@ struct GradeOptions {
     bool skip_speed = false;        ///< leave the speed checks out (--no-speed)
     bool only_speed = false;        ///< run just the speed checks (a batch's second pass)
     std::optional<std::size_t> only_case;  ///< and of it just this case (--case)
+    /// The render checks' eyes (--eye-seed, GradingContext::eye_seed); unset: drawn for this grade.
+    std::optional<std::uint64_t> eye_seed;
     std::filesystem::path reference_probe;
     std::string reproduce;  ///< how a reproduce command starts: "raystep-grade submission PATH"
 };

@@ -39,7 +39,6 @@ ProbeToolchain load_probe_toolchain(const std::filesystem::path& file) {
             t.stage_libraries[std::stoi(stage)] = library.get<std::string>();
         }
         t.source = j.at("source").get<std::string>();
-        t.reference_renders = j.at("reference_renders").get<std::string>();
         return t;
     } catch (const nlohmann::json::exception& error) {
         throw std::runtime_error(file.string() + ": " + error.what());

@@ -21,9 +21,6 @@ struct ProbeToolchain {
     std::vector<std::string> link_flags;
     std::map<int, std::filesystem::path> stage_libraries;  ///< each stage's reference library
     std::filesystem::path source;  ///< the repository: its base/ and stages/ headers, scenes/
-    /// The reference's renders of the noisy render checks, made by the build
-    /// (keep_reference_renders); empty: none.
-    std::filesystem::path reference_renders;
 };
 
 /// Reads probe-toolchain.json. Throws std::runtime_error naming the file when it is missing or

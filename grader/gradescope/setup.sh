@@ -17,8 +17,7 @@ cd "$source"
 
 scripts/install-deps.sh --grading
 cmake --preset release
-cmake --build --preset release --target raystep-grade raystep-probe-reference raystep-unpack \
-    raystep_reference_renders
+cmake --build --preset release --target raystep-grade raystep-probe-reference raystep-unpack
 
 # Nothing of the repository or its build is open to others: not solutions/, the rubric, the
 # grader's sources, the reference's libraries and probes, nor the history. Everything a sandboxed

@@ -77,8 +77,7 @@ std::vector<fs::path> diffs_in(const std::string& folder) {
 
 // Runs raystep-grade on `submission`; `arguments` narrow it (--stage N --no-speed). Every entry
 // shares one --cache, as a class's submissions do in a batch: a mutant compiles the one file it
-// changes, the reference's noisy renders are made once, and the hostile entries meet the cache
-// the others fill.
+// changes, and the hostile entries meet the cache the others fill.
 void grade(Graded& entry, const fs::path& submission, const std::string& arguments) {
     fs::remove_all(entry.output);
     fs::create_directories(entry.output.parent_path());

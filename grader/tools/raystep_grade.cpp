@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <exception>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -62,6 +63,7 @@ struct SubmissionArguments {
     bool keep_work = false;
     std::string cache;
     std::uint64_t seed = kDefaultStatisticsSeed;
+    std::optional<std::uint64_t> eye_seed;
 };
 
 int grade_one(const SubmissionArguments& arguments) {
@@ -81,6 +83,7 @@ int grade_one(const SubmissionArguments& arguments) {
     options.skip_speed = arguments.no_speed;
     if (arguments.case_index >= 0)
         options.only_case = static_cast<std::size_t>(arguments.case_index);
+    options.eye_seed = arguments.eye_seed;
     options.reference_probe = RAYSTEP_REFERENCE_PROBE;
     options.reproduce = "raystep-grade submission " + arguments.path;
     // The statistical checks' seed is part of how a case is reproduced: a command for one of
@@ -213,11 +216,14 @@ int main(int argc, char** argv) {
                            "The seed of the statistical checks (stage 8's random samples) and "
                            "of stage 3's contract cases: a right submission passes at any seed at "
                            "their stated false-fail rate");
+    submission->add_option("--eye-seed", one.eye_seed,
+                           "The seed of the eyes the render checks look from, as a reproduce line "
+                           "names it (default: drawn anew for each grade)");
     submission->add_flag("--keep-work", one.keep_work,
                          "Keep the build (the submission's files, objects, probes) to look into");
     submission->add_option("--cache", one.cache,
-                           "Keep what this grade makes for the next here (compiled objects, the "
-                           "reference's noisy renders): a folder the grader alone writes");
+                           "Keep what this grade compiles for the next here: a folder the grader "
+                           "alone writes");
 
     BatchArguments many;
     CLI::App* batch = app.add_subcommand(
@@ -272,13 +278,6 @@ int main(int argc, char** argv) {
         "Write a release's grading/ folder alone: the public case files and the rubric");
     public_cases_command->add_option("folder", grading_folder, "Where they go")->required();
 
-    std::string renders_folder;
-    CLI::App* renders_command = app.add_subcommand(
-        "reference-renders",
-        "Render the reference's renders of the noisy render checks into a folder, for every "
-        "grade of this build to read (the build does this)");
-    renders_command->add_option("folder", renders_folder, "Where they go")->required();
-
     std::string sweep_probe;
     std::string sweep_prefix = "stage8.statistics.";
     std::uint64_t sweep_first = 1;
@@ -312,13 +311,6 @@ int main(int argc, char** argv) {
                                                    sweep_first, sweep_count))
                            .c_str(),
                        stdout);
-            return 0;
-        }
-        if (renders_command->parsed()) {
-            const std::size_t made =
-                keep_reference_renders(this_build_toolchain().source, renders_folder);
-            std::printf("rendered %zu of the noisy render checks' views into %s\n", made,
-                        renders_folder.c_str());
             return 0;
         }
         if (public_cases_command->parsed()) {

@@ -101,7 +101,8 @@ TEST_CASE("probe call: a structure answers each ray with its hit, or with whethe
 }
 
 TEST_CASE("probe call: an optional field is left out where it holds nothing, and read as absent") {
-    probe::RenderQuestion question{"scenes/a.test", "depth", 64, std::nullopt, 0.5, std::nullopt};
+    probe::RenderQuestion question{"scenes/a.test", "depth",     64, std::nullopt, 0.5,
+                                   std::nullopt,    std::nullopt};
     const grade::ProbeQuery query = probe::query(probe::render_call, question);
     CHECK(query.args == Json{{"scene", "scenes/a.test"},
                              {"view", "depth"},
@@ -113,6 +114,10 @@ TEST_CASE("probe call: an optional field is left out where it holds nothing, and
     CHECK_FALSE(read.camera_t_max.has_value());
     question.seed = 7;
     CHECK(probe::query(probe::render_call, question).args.at("seed") == Json(std::uint64_t(7)));
+    question.lookfrom = Vec3(1.5, -2.0, 0.25);
+    const probe::RenderQuestion moved = probe::JsonCodec<probe::RenderQuestion>::read(
+        probe::query(probe::render_call, question).args);
+    CHECK(moved.lookfrom == Vec3(1.5, -2.0, 0.25));
 }
 
 TEST_CASE("probe call: a question of the wrong shape is refused, not read another way") {

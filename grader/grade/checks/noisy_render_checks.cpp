@@ -18,13 +18,11 @@
 #include "app/probe/render_calls.h"
 #include "app/protocol/image_json.h"
 #include "base/image/image_io.h"
-#include "base/scene/scene_files.h"
 #include "base/scene/scene_loader.h"
 #include "grader/grade/checks/judging.h"
-#include "grader/grade/checks/made_once.h"
+#include "grader/grade/checks/moved_eye.h"
 #include "grader/grade/checks/stage_checks.h"
 #include "grader/grade/checks/statistics_seed.h"
-#include "grader/grade/kept_renders.h"
 #include "renderer/tile_renderer.h"
 
 namespace raystep::grade {
@@ -34,8 +32,8 @@ namespace {
 namespace fs = std::filesystem;
 
 // The submission's renders and the reference's. Eight give each tile's mean over renders a
-// standard error of a third of one render's spread; the reference's sixteen, rendered once per
-// run, make its own error the smaller part of the difference's.
+// standard error of a third of one render's spread; the reference's sixteen make its own error the
+// smaller part of the difference's.
 constexpr int kStudentRenders = 8;
 constexpr int kReferenceRenders = 16;
 // The reference's seeds: far above any student's, (statistics seed << 8) + k.
@@ -55,7 +53,7 @@ constexpr double kDeviationFloor = 1e-4;
 // of them or more. Measured: docs/measurements/stage8-checks.md.
 constexpr double kTilesApartPassed = 0.01;
 
-Scene seeded_scaled_scene(const fs::path& path, std::uint64_t seed) {
+Scene seeded_scaled_scene(const fs::path& path, std::uint64_t seed, const Vec3& eye) {
     Scene scene = load_scene(path);
     if (scene.width > kRenderCheckWidth) {
         const double scale = static_cast<double>(kRenderCheckWidth) / scene.width;
@@ -63,63 +61,23 @@ Scene seeded_scaled_scene(const fs::path& path, std::uint64_t seed) {
         scene.height = std::max(1, static_cast<int>(std::lround(scene.height * scale)));
     }
     scene.seed = seed;
+    scene.camera.lookfrom = eye;
     return scene;
 }
 
-// What the reference's renders of a view depend on, as kept_renders.h keys them; empty where the
-// scene's files or the grader's program cannot be read, and then nothing is kept.
-std::string reference_renders_key(const fs::path& path, View view) {
-    const std::string scene = scene_digest(load_scene(path));
-    const std::string grader = grader_identity();
-    if (scene.empty() || grader.empty()) return "";
-    return "reference renders\nscene " + scene + "\nview " + std::string(view_name(view)) +
-           "\nwidth " + std::to_string(kRenderCheckWidth) + "\nrenders " +
-           std::to_string(kReferenceRenders) + " from seed " + std::to_string(kReferenceSeeds) +
-           "\ngrader " + grader + "\n";
-}
-
-// The reference's kReferenceRenders renders of a view, from kReferenceSeeds on, one thread each:
-// a grade makes the noisy checks' views side by side.
-std::vector<Image> render_reference(const fs::path& path, View view) {
+// The reference's kReferenceRenders renders of a view from `eye`, from kReferenceSeeds on, one
+// thread each: a grade makes the noisy checks' views side by side.
+std::vector<Image> reference_renders(const fs::path& path, View view, const Vec3& eye) {
     std::vector<Image> renders;
     for (int k = 0; k < kReferenceRenders; ++k) {
         const Scene scene =
-            seeded_scaled_scene(path, kReferenceSeeds + static_cast<std::uint64_t>(k));
+            seeded_scaled_scene(path, kReferenceSeeds + static_cast<std::uint64_t>(k), eye);
         RenderOptions options;
         options.view = view;
         options.threads = 1;
         renders.push_back(render_image(prepare_render_scene(scene), options));
     }
     return renders;
-}
-
-// The reference's renders of a view: from the grade's cache (--cache) where an earlier grade kept
-// them under `key`, or from those the build made (context.built_renders), or made here, and kept
-// in the cache for the next grade.
-std::vector<Image> make_reference_renders(const GradingContext& context, const fs::path& path,
-                                          View view, const std::string& key) {
-    const fs::path kept =
-        context.cache.empty() || key.empty() ? fs::path() : context.cache / "renders";
-    for (const fs::path& folder : {kept, context.built_renders}) {
-        if (folder.empty() || key.empty()) continue;
-        if (std::optional<std::vector<Image>> found = kept_renders(folder, key)) return *found;
-    }
-    std::vector<Image> renders = render_reference(path, view);
-    if (!kept.empty()) keep_renders(kept, key, renders);
-    return renders;
-}
-
-// The reference's renders of a view: they depend on no statistical seed, so each are made once
-// per run, by the first check that asks, and found by what they depend on rather than by the
-// scene's path, which is each grade's own copy (a batch grades many). Two checks of different
-// scenes make theirs side by side.
-const std::vector<Image>& reference_renders(const GradingContext& context, const fs::path& path,
-                                            View view) {
-    static MadeOnce<std::vector<Image>> made;
-    const std::string key = reference_renders_key(path, view);
-    const std::string found_by =
-        key.empty() ? "path " + path.string() + "\nview " + std::string(view_name(view)) : key;
-    return made.get(found_by, [&] { return make_reference_renders(context, path, view, key); });
 }
 
 struct NoisyRenderCheck {
@@ -137,25 +95,31 @@ CheckMeasure measure_noisy_render(const GradingContext& context, const BuiltProb
                                   const NoisyRenderCheck& check) {
     const fs::path path = context.source / "scenes" / check.scene;
     const std::string id = check.id();
+    const Vec3 eye = moved_eye(load_scene(path).camera, context.eye_seed, id);
     std::vector<std::optional<Image>> student(kStudentRenders);
     std::vector<ProbeCase> cases;
     for (int k = 0; k < kStudentRenders; ++k) {
         const std::uint64_t seed = (statistics_seed() << 8) + static_cast<std::uint64_t>(k);
-        const probe::RenderQuestion question{
-            path.string(), std::string(view_name(check.view)), kRenderCheckWidth, seed, {}, {}};
-        cases.push_back({check.scene + ", " + std::string(view_name(check.view)) + " view, seed " +
-                             std::to_string(seed),
-                         probe::query(probe::render_call, question),
-                         [&student, k](const ProbeAnswer& answer) {
-                             if (answer.kind != ProbeAnswer::Kind::result)
-                                 return wrong("an image", "");
-                             student[static_cast<std::size_t>(k)] = probe::image_from(
-                                 answer.value, static_cast<std::size_t>(kRenderCheckWidth) *
-                                                   kRenderCheckWidth * 4);
-                             return right();
-                         },
-                         std::string(kStudentRaystep) + " render scenes/" + check.scene +
-                             " --view " + std::string(view_name(check.view))});
+        const probe::RenderQuestion question{path.string(),
+                                             std::string(view_name(check.view)),
+                                             kRenderCheckWidth,
+                                             seed,
+                                             {},
+                                             {},
+                                             eye};
+        cases.push_back(
+            {check.scene + ", " + std::string(view_name(check.view)) + " view, " +
+                 moved_eye_text(eye) + ", seed " + std::to_string(seed),
+             probe::query(probe::render_call, question),
+             [&student, k](const ProbeAnswer& answer) {
+                 if (answer.kind != ProbeAnswer::Kind::result) return wrong("an image", "");
+                 student[static_cast<std::size_t>(k)] =
+                     probe::image_from(answer.value, static_cast<std::size_t>(kRenderCheckWidth) *
+                                                         kRenderCheckWidth * 4);
+                 return right();
+             },
+             std::string(kStudentRaystep) + " render scenes/" + check.scene + " --view " +
+                 std::string(view_name(check.view)) + lookfrom_arguments(eye)});
     }
     ProbeRunLimits limits;
     limits.readable = {context.source / "scenes"};
@@ -169,7 +133,7 @@ CheckMeasure measure_noisy_render(const GradingContext& context, const BuiltProb
         renders.push_back(*image);
     }
 
-    const std::vector<Image>& reference = reference_renders(context, path, check.view);
+    const std::vector<Image> reference = reference_renders(path, check.view, eye);
     NoisyComparison comparison;
     try {
         comparison = compare_noisy_renders(renders, reference, kTile, kTileBound, kDeviationFloor);
@@ -204,7 +168,8 @@ CheckMeasure measure_noisy_render(const GradingContext& context, const BuiltProb
             {"the " + std::to_string(kTile) + " x " + std::to_string(kTile) + " tile at pixel (" +
                  std::to_string(comparison.worst_i) + ", " + std::to_string(comparison.worst_j) +
                  ") of " + check.scene + " at " + std::to_string(kRenderCheckWidth) +
-                 " pixels wide, its mean over " + std::to_string(kStudentRenders) + " seeds",
+                 " pixels wide, " + moved_eye_text(eye) + ", its mean over " +
+                 std::to_string(kStudentRenders) + " seeds",
              full_text(comparison.worst_reference),
              full_text(comparison.worst_student) + ", " + full_text(comparison.worst_z) +
                  " standard errors away",
@@ -225,33 +190,16 @@ std::vector<NoisyRenderCheck> noisy_render_check_list() {
 
 }  // namespace
 
-std::size_t keep_reference_renders(const fs::path& source, const fs::path& folder) {
-    std::size_t made = 0;
-    for (const NoisyRenderCheck& check : noisy_render_check_list()) {
-        const fs::path path = source / "scenes" / check.scene;
-        const std::string key = reference_renders_key(path, check.view);
-        if (key.empty()) {
-            throw std::runtime_error("cannot read " + path.string() +
-                                     " or this grader's program, which its renders are kept by");
-        }
-        if (kept_renders(folder, key)) continue;
-        keep_renders(folder, key, render_reference(path, check.view));
-        if (!kept_renders(folder, key))
-            throw std::runtime_error("cannot write to " + folder.string());
-        ++made;
-    }
-    return made;
-}
-
 std::vector<CheckDefinition> noisy_render_checks() {
     std::vector<CheckDefinition> checks;
     for (const NoisyRenderCheck& check : noisy_render_check_list()) {
         checks.push_back({check.id(), check.stage, "render",
                           "the " + std::string(view_name(check.view)) + " view of scenes/" +
-                              check.scene + " at " + std::to_string(kStudentRenders) +
+                              check.scene + " from an eye moved for each grade, at " +
+                              std::to_string(kStudentRenders) +
                               " seeds, tile by tile against the reference's mean",
                           [check](const GradingContext& context, const BuiltProbe& probe) {
-                              return measure_noisy_render(context, probe, check);
+                              return measure_noisy_render(with_eye_seed(context), probe, check);
                           }});
     }
     return checks;

@@ -1,6 +1,7 @@
 // Render checks: a scene's view as the submission renders it, diffed with the same view from the
-// reference, rendered here in the grader (and, for a student release, when the release is written:
-// render_public_checks). Each stage is graded on the view that shows its work
+// reference, rendered here in the grader from the same eye, which each grade moves (moved_eye.h):
+// a release holds the reference's images from the scene's own eye (render_public_checks), and
+// the grader never asks for one of those. Each stage is graded on the view that shows its work
 // (ARCHITECTURE.md, "Checks per stage"), with every other stage from the reference; the pipeline
 // checks render with every stage from the submission.
 
@@ -14,6 +15,7 @@
 #include "base/image/image_io.h"
 #include "base/scene/scene_loader.h"
 #include "grader/grade/checks/judging.h"
+#include "grader/grade/checks/moved_eye.h"
 #include "grader/grade/checks/stage_checks.h"
 #include "renderer/tile_renderer.h"
 
@@ -41,8 +43,11 @@ struct CameraClip {
     std::string name;  ///< added to the check's id; empty for no clip
 };
 
-Image reference_render(const fs::path& path, View view, const CameraClip& clip) {
-    const Scene scene = scaled_scene(path);
+// The reference's render of the view, from `eye` where one is given.
+Image reference_render(const fs::path& path, View view, const CameraClip& clip,
+                       const std::optional<Vec3>& eye) {
+    Scene scene = scaled_scene(path);
+    if (eye) scene.camera.lookfrom = *eye;
     RenderOptions options;
     options.view = view;
     options.threads = 1;
@@ -52,30 +57,33 @@ Image reference_render(const fs::path& path, View view, const CameraClip& clip) 
     return render_image(render_scene, options);
 }
 
-// The student's own render of the view, beside the reference image the release holds.
-std::string render_command(const std::string& scene, View view) {
+// The student's own render of the view, from `eye` where one is given.
+std::string render_command(const std::string& scene, View view, const std::optional<Vec3>& eye) {
     return std::string(kStudentRaystep) + " render scenes/" + scene + " --view " +
-           std::string(view_name(view));
+           std::string(view_name(view)) + (eye ? lookfrom_arguments(*eye) : "");
 }
 
 // The render's worst pixel as a counterexample (worst_render_place, app/grade/render_judge.h,
 // which a release's `raystep grade` reports the same way): the colours, and the `raystep trace` of
-// the same place in the scene at its own size (the grader renders at most kRenderCheckWidth wide),
-// which shows a student every step of their own renderer's computation there.
+// the same place in the scene at its own size (the grader renders at most kRenderCheckWidth wide)
+// and from the same eye, which shows a student every step of their own renderer's computation
+// there.
 Counterexample pixel_counterexample(const GradingContext& context, const std::string& id,
-                                    const std::string& scene_name, View view,
+                                    const std::string& scene_name, View view, const Vec3& eye,
                                     const Image& reference, const Image& student) {
     const Scene scene = load_scene(context.source / "scenes" / scene_name);
     const RenderPlace place = worst_render_place(scene_name, view, scene.width, scene.height,
                                                  reference, student, kStudentRaystep);
-    return {place.input, place.expected, place.got,
-            context.reproduce + " --check " + id + " --case 0", place.trace};
+    return {place.input + ", " + moved_eye_text(eye), place.expected, place.got,
+            context.reproduce + " --check " + id + " --case 0",
+            place.trace + lookfrom_arguments(eye)};
 }
 
 // The probe's query for a render of the scene file at `scene_path`.
-ProbeQuery render_query(const std::string& scene_path, View view, const CameraClip& clip) {
+ProbeQuery render_query(const std::string& scene_path, View view, const CameraClip& clip,
+                        const std::optional<Vec3>& eye) {
     probe::RenderQuestion question{
-        scene_path, std::string(view_name(view)), kRenderCheckWidth, {}, {}, {}};
+        scene_path, std::string(view_name(view)), kRenderCheckWidth, {}, {}, {}, eye};
     if (!clip.name.empty()) {
         question.camera_t_min = clip.t_min;
         question.camera_t_max = clip.t_max;
@@ -83,12 +91,14 @@ ProbeQuery render_query(const std::string& scene_path, View view, const CameraCl
     return probe::query(probe::render_call, question);
 }
 
-std::string render_input(const std::string& scene, View view, const CameraClip& clip) {
+std::string render_input(const std::string& scene, View view, const CameraClip& clip,
+                         const std::optional<Vec3>& eye) {
     std::string input = scene + ", " + std::string(view_name(view)) + " view";
     if (!clip.name.empty()) {
         input +=
             ", camera rays over [" + full_text(clip.t_min) + ", " + full_text(clip.t_max) + "]";
     }
+    if (eye) input += ", " + moved_eye_text(*eye);
     return input;
 }
 
@@ -96,24 +106,25 @@ CheckMeasure measure_render(const GradingContext& context, const BuiltProbe& pro
                             const std::string& id, const std::string& scene, View view,
                             const CameraClip& clip) {
     const fs::path path = context.source / "scenes" / scene;
-    const std::string input = render_input(scene, view, clip);
+    const Vec3 eye = moved_eye(load_scene(path).camera, context.eye_seed, id);
+    const std::string input = render_input(scene, view, clip, eye);
     // The judge keeps the image; the diff comes once the run is over.
     std::optional<Image> student;
     ProbeCase render_case{
-        input, render_query(path.string(), view, clip),
+        input, render_query(path.string(), view, clip, eye),
         [&student](const ProbeAnswer& answer) {
             if (answer.kind != ProbeAnswer::Kind::result) return wrong("an image", "");
             student = probe::image_from(
                 answer.value, static_cast<std::size_t>(kRenderCheckWidth) * kRenderCheckWidth * 4);
             return right();
         },
-        render_command(scene, view)};
+        render_command(scene, view, eye)};
     ProbeRunLimits limits;
     limits.readable = {context.source / "scenes"};
     CheckMeasure measure = run_cases(context, id, probe, {render_case}, limits);
     if (!student) return measure;
 
-    const Image reference = reference_render(path, view, clip);
+    const Image reference = reference_render(path, view, clip, eye);
     // The rule `raystep compare` gives students (app/compare/render_rule.h).
     const RenderVerdict verdict = judge_render(reference, *student);
     const fs::path folder = context.report_folder / "renders" / id;
@@ -129,7 +140,7 @@ CheckMeasure measure_render(const GradingContext& context, const BuiltProbe& pro
     if (measure.outcome == Outcome::failed) {
         measure.counterexamples = {
             verdict.diff.same_size
-                ? pixel_counterexample(context, id, scene, view, reference, *student)
+                ? pixel_counterexample(context, id, scene, view, eye, reference, *student)
                 : Counterexample{render_case.input,
                                  std::to_string(reference.width()) + " x " +
                                      std::to_string(reference.height()) + " pixels",
@@ -157,8 +168,10 @@ struct RenderCheck {
                ".render." + stem + "." + std::string(view_name(view));
     }
 
-    std::string name() const {
+    /// The grader's check moves the eye; a release's, from the scene's own, does not.
+    std::string name(bool eye_moved) const {
         std::string text = "the " + std::string(view_name(view)) + " view of scenes/" + scene;
+        if (eye_moved) text += " from an eye moved for each grade";
         if (!clip.name.empty()) text += ", camera rays cut to [t_min, t_max]";
         if (stage == 0) text += ", every stage from the submission";
         return text;
@@ -201,10 +214,10 @@ std::vector<RenderCheck> render_check_list() {
 std::vector<CheckDefinition> render_checks() {
     std::vector<CheckDefinition> checks;
     for (const RenderCheck& check : render_check_list()) {
-        checks.push_back({check.id(), check.stage, "render", check.name(),
+        checks.push_back({check.id(), check.stage, "render", check.name(true),
                           [check](const GradingContext& context, const BuiltProbe& probe) {
-                              return measure_render(context, probe, check.id(), check.scene,
-                                                    check.view, check.clip);
+                              return measure_render(with_eye_seed(context), probe, check.id(),
+                                                    check.scene, check.view, check.clip);
                           }});
     }
     return checks;
@@ -215,15 +228,15 @@ std::vector<PublicCheck> render_public_checks(const fs::path& source) {
     for (const RenderCheck& check : render_check_list()) {
         const fs::path path = source / "scenes" / check.scene;
         const Scene scene = load_scene(path);
-        ProbeQuery query = render_query("scenes/" + check.scene, check.view, check.clip);
+        ProbeQuery query = render_query("scenes/" + check.scene, check.view, check.clip, {});
         checks.push_back({check.id(),
                           check.stage,
                           "render",
-                          check.name(),
-                          {{render_input(check.scene, check.view, check.clip), std::move(query),
-                            render_judge(reference_render(path, check.view, check.clip),
+                          check.name(false),
+                          {{render_input(check.scene, check.view, check.clip, {}), std::move(query),
+                            render_judge(reference_render(path, check.view, check.clip, {}),
                                          check.scene, check.view, scene.width, scene.height),
-                            render_command(check.scene, check.view)}}});
+                            render_command(check.scene, check.view, {})}}});
     }
     return checks;
 }

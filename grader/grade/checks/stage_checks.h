@@ -29,13 +29,6 @@ std::vector<CheckDefinition> stage8_statistical_checks();
 /// The render checks of sampled scenes, each view rendered at several seeds and compared tile by
 /// tile with the reference's mean (noisy_render_checks.cpp).
 std::vector<CheckDefinition> noisy_render_checks();
-/// The reference's renders that those checks compare with, made from `source`'s scenes and kept in
-/// `folder` (kept_renders.h) under the keys the checks look them up by: the build makes them once
-/// (`raystep-grade reference-renders`), and every grade then reads them instead of rendering
-/// them again (GradingContext::built_renders). Returns how many views it rendered (none where
-/// `folder` holds them already); throws where a scene or the folder cannot be used.
-std::size_t keep_reference_renders(const std::filesystem::path& source,
-                                   const std::filesystem::path& folder);
 /// Stage 9's checks, "stage9.unit", "stage9.hidden" and "stage9.oracle", then three contract
 /// edges of their own, "stage9.hidden.latest_entry", "shading_normal" and "cosine_above_one"
 /// (stage9_checks.cpp).

@@ -21,9 +21,9 @@ constexpr int kTile = 8;
 constexpr double kBound = 4.0;
 constexpr double kFloor = 1e-4;
 
-// `count` renders from seed `seed`: each pixel 0.5 plus uniform noise of width 0.2, plus `bias`
+// `count` renders from seed `seed`: each pixel 0.5 plus uniform noise of width `noise`, plus `bias`
 // where x < kWidth / 2.
-std::vector<Image> noisy_renders(std::uint64_t seed, int count, double bias) {
+std::vector<Image> noisy_renders(std::uint64_t seed, int count, double bias, double noise = 0.2) {
     std::vector<Image> renders;
     for (int k = 0; k < count; ++k) {
         PortableRandom random(seed, static_cast<std::uint64_t>(k));
@@ -32,8 +32,8 @@ std::vector<Image> noisy_renders(std::uint64_t seed, int count, double bias) {
             for (int i = 0; i < kWidth; ++i) {
                 const double shift = i < kWidth / 2 ? bias : 0.0;
                 image.set(i, j,
-                          Color(0.5 + shift + 0.2 * (random.unit() - 0.5),
-                                0.3 + shift + 0.2 * (random.unit() - 0.5), 0.1 + shift));
+                          Color(0.5 + shift + noise * (random.unit() - 0.5),
+                                0.3 + shift + noise * (random.unit() - 0.5), 0.1 + shift));
             }
         }
         renders.push_back(image);
@@ -69,6 +69,24 @@ TEST_CASE("compare_noisy_renders: a bias of three standard errors per pixel show
     CHECK(c.worst_z > kBound);
     CHECK(c.worst_student.z == Approx(0.13));
     CHECK(c.worst_reference.z == Approx(0.1));
+}
+
+TEST_CASE("compare_noisy_renders: noise added to a biased render does not widen its bound",
+          "[grader]") {
+    // Ten times the reference's noise would make the bias of 0.03 one standard error: every tile
+    // of the image is apart for spreading beyond kSpreadRatioBound times the reference's.
+    const NoisyComparison c = compare_noisy_renders(
+        noisy_renders(5, 8, 0.03, 2.0), noisy_renders(6, 16, 0.0), kTile, kBound, kFloor);
+    CHECK(c.tiles_apart == 48);
+    // Half as much noise again as the reference's, unbiased (a sampler a little worse than the
+    // reference's): over 20 comparisons, fewer tiles apart than the 1% a render check allows.
+    int apart = 0;
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+        apart += compare_noisy_renders(noisy_renders(seed, 8, 0.0, 0.3),
+                                       noisy_renders(1000 + seed, 16, 0.0), kTile, kBound, kFloor)
+                     .tiles_apart;
+    }
+    CHECK(apart < 0.01 * 20 * 48);
 }
 
 TEST_CASE("compare_noisy_renders: noise-free tiles agree within the floor, a NaN is apart",

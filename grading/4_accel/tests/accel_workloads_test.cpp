@@ -169,6 +169,6 @@ TEST_CASE("a timed walk's digest depends on its seed, and each grade draws a see
     // Sixteen grades' seeds, no two alike.
     std::set<std::uint64_t> seeds;
     for (int k = 0; k < 16; ++k)
-        seeds.insert(grade::fresh_timed_walk_seed());
+        seeds.insert(grade::fresh_grade_seed());
     CHECK(seeds.size() == 16);
 }
