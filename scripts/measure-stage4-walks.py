@@ -2,7 +2,7 @@
 """Measures how stage 4's timed walk separates right walks from wrong ones, run after run: grades
 the corpus's model and the stage-4 entries whose walk the time decides, each on its structure's
 oracle check alone, `--runs` times, each in a grader of its own (the walk is measured once per
-grader), and prints each run's ratios: the walk through 192 walls against one wall, and against
+grader), and prints each run's ratios: the walk through 768 walls against one wall, and against
 the reference's (grading/4_accel/stage4_work.cpp).
 
     scripts/measure-stage4-walks.py [--runs 10] [--grader build/release/bin/raystep-grade]
@@ -26,6 +26,7 @@ ENTRIES = [
     ("alternatives/4-bvh-8-bins-leaves-of-2.diff", "bvh_sah", True),
     ("alternatives/4-grid-dda-adds-t-delta.diff", "grid", True),
     ("mutants/4-bvh-never-lowers-search-limit.diff", "bvh_sah", False),
+    ("mutants/4-bvh-never-lowers-search-limit-slows-small-scenes.diff", "bvh_sah", False),
     ("mutants/4-bvh-left-child-first.diff", "bvh_sah", False),
     ("mutants/4-grid-walks-to-the-end.diff", "grid", False),
     ("mutants/4-bvh-brute-force-remembering-answers.diff", "bvh_sah", False),

@@ -44,7 +44,7 @@ probe::Jitter timed_walk_jitter(const GradingContext& context);
 /// the structure handed back as data (Bvh::nodes, UniformGrid::cells), checked and walked by the
 /// grader, costs at most four times the reference's tests and nodes per ray, or a 16th of brute
 /// force's; and its own walk, in CPU time on rays new every pass, takes at most ten times as long
-/// through 192 walls as through one, and forty times the reference's (stage4_work.cpp says why
+/// through 768 walls as through one, and forty times the reference's (stage4_work.cpp says why
 /// each).
 /// Measured once per probe and structure; failed with the reason otherwise, or not implemented
 /// when nodes() or cells() is a stub.

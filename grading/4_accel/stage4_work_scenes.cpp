@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <glm/geometric.hpp>
+
 #include "base/math/portable_random.h"
 
 namespace raystep::grade {
@@ -72,7 +74,7 @@ WorkScene speed_scene(int rays) {
 }
 
 WorkScene walls_scene(int layers, Side side) {
-    constexpr int kSide = 4;
+    constexpr int kSide = 2;
     constexpr int kRays = 1000;
     WorkScene scene;
     scene.name = "the walls scene (" + std::to_string(layers) + (layers == 1 ? " wall" : " walls") +
@@ -83,7 +85,7 @@ WorkScene walls_scene(int layers, Side side) {
                  ", seed " + std::to_string(kTraversalSeed) + ")";
     const double step = 1.0 / kSide;
     for (int layer = 0; layer < layers; ++layer) {
-        const double z = (layer + 0.5) / layers;
+        const double z = kWallsHeight * (layer + 0.5) / layers;
         for (int i = 0; i < kSide; ++i) {
             for (int j = 0; j < kSide; ++j) {
                 const Vec3 a(i * step, j * step, z), b((i + 1) * step, j * step, z);
@@ -93,17 +95,21 @@ WorkScene walls_scene(int layers, Side side) {
             }
         }
     }
-    // Two specks at opposite corners, so that every number of walls fills the same cube
-    for (const Vec3 corner : {Vec3(0.0), Vec3(1.0)})
+    // Two specks at opposite corners, so that every number of walls fills the same box
+    for (const Vec3 corner : {Vec3(0.0), Vec3(1.0, 1.0, kWallsHeight)})
         scene.primitives.triangles.push_back(
             {corner, corner + Vec3(1e-3, 0, 0), corner + Vec3(0, 1e-3, 0)});
+    // Each ray enters through the top or the bottom and leaves through the other: from a point
+    // 1 beyond one end to a point 1 beyond the other, both within 0.4 of the column's axis, a
+    // unit direction, so that it crosses every wall.
     PortableRandom random(kTraversalSeed);
     for (int k = 0; k < kRays; ++k) {
-        Vec3 from = random.unit_vector();
-        const bool up = side == Side::above || (side == Side::both && k % 2 == 0);
-        from.z = up ? std::abs(from.z) : -std::abs(from.z);
-        const Vec3 origin = Vec3(0.5) + 2.0 * from;
-        scene.rays.push_back({origin, Vec3(0.5) + random.point(0.4) - origin});
+        const bool down = side == Side::above || (side == Side::both && k % 2 == 0);
+        const double from_z = down ? kWallsHeight + 1.0 : -1.0;
+        const double to_z = down ? -1.0 : kWallsHeight + 1.0;
+        const Vec3 origin(0.5 + random.uniform(-0.4, 0.4), 0.5 + random.uniform(-0.4, 0.4), from_z);
+        const Vec3 to(0.5 + random.uniform(-0.4, 0.4), 0.5 + random.uniform(-0.4, 0.4), to_z);
+        scene.rays.push_back({origin, glm::normalize(to - origin)});
     }
     return scene;
 }

@@ -33,14 +33,19 @@ enum class Side { above, below, both };
 /// drawn for each grade (GradingContext::timed_walk_seed).
 inline constexpr std::uint64_t kTraversalSeed = 0x7A1C;
 
-/// `layers` walls across the unit cube, each a 4 x 4 mesh of squares (two triangles each)
-/// that no ray crosses without a hit, spread evenly in z (one lies at z = 0.5), and a speck at two
-/// opposite corners so that every number of walls fills the same cube; 1,000 rays from a sphere
-/// of radius 2 around it, on `side`, towards its middle (few, since every timed run makes them and
-/// its structure before its first pass; the passes make the time). A walk that stops at the nearest
-/// hit visits a wall's worth of nodes or cells whatever the number of walls; one that goes on
-/// visits every wall behind; one that visits a node's children in a fixed order, not the nearer
-/// first, takes the far walls first for rays from one side.
+/// The height of the column the walls scene's walls fill.
+inline constexpr double kWallsHeight = 4.0;
+
+/// `layers` walls across a column [0, 1]^2 x [0, kWallsHeight], each a 2 x 2 mesh of squares (two
+/// triangles each) that no ray crosses without a hit, spread evenly in z (one lies at its middle),
+/// and a speck at two opposite corners so that every number of walls fills the same box; 1,000
+/// rays from 1 beyond its top or its bottom, on `side`, through the other end, each crossing
+/// every wall (few, since every timed run makes them and its structure before its first pass;
+/// the passes make the time). A walk that stops at the nearest hit visits a wall's worth of nodes
+/// or cells whatever the number of walls; one that goes on visits every wall behind; one that
+/// visits a node's children in a fixed order, not the nearer first, takes the far walls first for
+/// rays from one side. The column keeps the walls as far apart as a cube of a quarter as many
+/// would, so that a grid's cell holds as few of them.
 WorkScene walls_scene(int layers, Side side);
 
 /// Small triangles and spheres in the cube [-1, 1]^3 and three planes through it: 300 triangles
@@ -55,8 +60,9 @@ PrimitiveList soup_primitives(PortableRandom& random);
 WorkScene speed_scene(int rays);
 
 /// A scene's shadow rays: its rays, each cut short before the scene (every origin lies some 2 from
-/// the unit cube's centre and every direction about as long, so t 0.25 ends well outside it). A
-/// walk answers them from its first box; brute force tests every primitive.
+/// the unit cube's centre and every direction about as long, or, in the walls scene, 1 beyond the
+/// column's end along a unit direction, so t 0.25 ends well outside it). A walk answers them from
+/// its first box; brute force tests every primitive.
 std::vector<Ray> shadow_rays(const WorkScene& scene);
 
 }  // namespace raystep::grade
