@@ -37,6 +37,19 @@ std::string first_lines(const std::string& text) {
     return kept;
 }
 
+// The compiler's messages with the work folder's paths made the repository's: a student reads
+// "stages/1_vectors/vectors.cpp:85:12: error: ...", as their own build would say it, not where
+// the grader happened to compile it.
+std::string with_repository_paths(std::string text, const fs::path& work) {
+    for (const fs::path& folder : {work / "submission", work / "include", work}) {
+        const std::string prefix = folder.string() + "/";
+        for (std::size_t at = text.find(prefix); at != std::string::npos;
+             at = text.find(prefix, at))
+            text.erase(at, prefix.size());
+    }
+    return text;
+}
+
 // The headers a submission compiles against: the stages' contracts and what they build on (base/),
 // never the solutions, the studies or the grader.
 void copy_headers(const fs::path& source, const fs::path& include) {
@@ -238,7 +251,7 @@ CompiledStage compile_stage(const SubmittedStage& stage, const ProbeToolchain& t
                 passed_file_budget(run, bytes_in(objects), budget.compile_bytes_per_stage)
                     ? "the compiler's output for " + file.filename().string() + " passed the " +
                           mebibytes(budget.compile_bytes_per_stage) + " a stage's objects may take"
-                    : first_lines(run.errors + run.output);
+                    : first_lines(with_repository_paths(run.errors + run.output, work));
             if (compiled.failure.empty())
                 compiled.failure = "the compiler failed without a message";
             return compiled;

@@ -411,6 +411,10 @@ TEST_CASE(
     fs::copy(model_stage1, stage1 / "stages/1_vectors");
     pack(stage1, "stages", class_folder / "...zip", "zip");
     pack(stage1, "stages", class_folder / "tar-named.zip", "gnutar");
+    // Stage 1 with a line that does not compile at its end.
+    fs::copy(stage1, class_folder / "broken", fs::copy_options::recursive);
+    std::ofstream(class_folder / "broken/stages/1_vectors/vectors.cpp", std::ios::app)
+        << "int broken(\n";
     std::ofstream(class_folder / "essay.zip") << "My ray tracer is in my other folder.\n";
     // A working copy with a build product of 20 MiB beside the sources.
     fs::create_directories(stage1 / "build");
@@ -432,7 +436,8 @@ TEST_CASE(
 
     const std::map<std::string, std::string> expected = {
         {"model", "model.zip"}, {"submission", "...zip"}, {"tar-named", "tar-named.zip"},
-        {"essay", "essay.zip"}, {"empty", "empty"},       {"with-build", "with-build.zip"}};
+        {"essay", "essay.zip"}, {"empty", "empty"},       {"with-build", "with-build.zip"},
+        {"broken", "broken"}};
     std::map<std::string, GradeReport> reports;
     for (const auto& [name, entry] : expected) {
         INFO(name << " from " << entry);
@@ -451,6 +456,15 @@ TEST_CASE(
     CHECK(reports["essay"].intake_problem.find("nor an archive") != std::string::npos);
     CHECK_FALSE(reports["empty"].intake_problem.empty());
     CHECK(reports["essay"].score() == 0.0);
+    // The compiler's message names the file as the student's repository does, not the work
+    // folder it was compiled in.
+    for (const CheckResult& check : reports["broken"].checks) {
+        if (check.stage != 1) continue;
+        INFO(check.id << ": " << check.details);
+        CHECK(check.outcome == Outcome::did_not_compile);
+        CHECK(check.details.rfind("stages/1_vectors/vectors.cpp:", 0) == 0);
+        CHECK(check.details.find("work-") == std::string::npos);
+    }
 
     // Nothing but grades/ in the grader's folder, nothing changed among the submissions, and no
     // work folder left.
