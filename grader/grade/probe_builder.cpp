@@ -90,8 +90,18 @@ struct StagedToolchain {
     fs::path common;
     std::vector<std::string> objects;    ///< the probe's calls, the renderer, app/check
     std::vector<std::string> libraries;  ///< below the stages, in link order
+    /// Of those, what a stage's code may call: base/ (raystep_base, raystep_scene) and the system's
+    /// (ARCHITECTURE.md, "Layers"); not the protocol, the views or the case files.
+    std::vector<std::string> base_libraries;
     std::map<int, fs::path> stage_libraries;
 };
+
+// The libraries a stage's code may call, of those the probe links: base/'s and the system's.
+bool below_the_stages(const fs::path& library) {
+    const std::string name = library.filename().string();
+    return name == "libraystep_base.a" || name == "libraystep_scene.a" ||
+           name.rfind("libraystep_", 0) != 0;
+}
 
 StagedToolchain stage_toolchain(const ProbeToolchain& toolchain, const fs::path& link) {
     StagedToolchain staged;
@@ -110,6 +120,7 @@ StagedToolchain stage_toolchain(const ProbeToolchain& toolchain, const fs::path&
     for (const fs::path& library : toolchain.libraries) {
         staged.libraries.push_back(is_within(library, "/usr") ? library.string()
                                                               : copy_common(library));
+        if (below_the_stages(library)) staged.base_libraries.push_back(staged.libraries.back());
     }
     for (const auto& [number, library] : toolchain.stage_libraries) {
         const fs::path folder = link / ("stage" + std::to_string(number));
@@ -279,6 +290,53 @@ void seal(const fs::path& program) {
     }
 }
 
+// A stage builds on the stages below it and base/, never on a later stage or on what runs the
+// stages (ARCHITECTURE.md, "Layers"). A probe links every other stage's reference and the renderer,
+// so stage 7's file could call stage 9's reference, which does stage 7's work when nothing
+// transmits, and earn stage 7's points with it. So a stage's objects are linked once more, alone
+// with the references of the stages below and base/: a call to anything else is an undefined
+// reference there, which the linker names with the file that makes it. Empty where there is none,
+// or where the link fails for another reason, which the probe's own link then reports.
+std::string layer_failure(const CompiledStage& stage, const StagedToolchain& staged,
+                          const ProbeToolchain& toolchain, const fs::path& work) {
+    if (stage.objects.empty()) return "";
+    SandboxPolicy policy;
+    policy.read_only = {staged.common, stage.objects.front().parent_path()};
+    // No start files: nothing here calls main, and nothing is run.
+    std::vector<std::string> argv = {toolchain.compiler.string(), "-nostartfiles", "-o", ""};
+    for (const fs::path& object : stage.objects)
+        argv.push_back(object.string());
+    for (auto it = staged.stage_libraries.rbegin(); it != staged.stage_libraries.rend(); ++it) {
+        if (it->first >= stage.number) continue;
+        argv.push_back(it->second.string());
+        policy.read_only.push_back(it->second.parent_path());
+    }
+    argv.insert(argv.end(), staged.base_libraries.begin(), staged.base_libraries.end());
+    argv.insert(argv.end(), toolchain.link_flags.begin(), toolchain.link_flags.end());
+    const fs::path folder = staged.common.parent_path() / "layers" / std::to_string(stage.number);
+    fs::create_directories(folder);
+    argv[3] = (folder / "stage").string();
+    policy.writable = folder;
+    policy.working_directory = folder;
+    policy.limits.cpu_seconds = 60;
+    policy.limits.wall = std::chrono::seconds(120);
+    policy.limits.file_size_bytes = std::uintmax_t{256} << 20;
+    policy.limits.output_bytes = 64u << 10;
+    const SandboxRun run = run_sandboxed(argv, "", policy);
+    const std::string output = run.errors + run.output;
+    if (output.find("undefined reference") == std::string::npos) return "";
+    std::string calls;
+    std::istringstream lines(with_repository_paths(output, work));
+    for (std::string line; std::getline(lines, line);) {
+        if (line.find("undefined reference") != std::string::npos) calls += line + "\n";
+    }
+    return "stage " + std::to_string(stage.number) +
+           " calls what is neither a stage below it nor base/, which a stage builds on "
+           "(ARCHITECTURE.md, \"Layers\"): a later stage's reference, or what runs the stages, "
+           "would do its work\n" +
+           first_lines(calls);
+}
+
 BuiltProbe link_probe(const std::vector<const CompiledStage*>& submitted,
                       const StagedToolchain& staged, const ProbeToolchain& toolchain,
                       const fs::path& program, const BuildBudget& budget) {
@@ -368,10 +426,13 @@ ProbeSet build_probes(const Submission& submission, const ProbeToolchain& toolch
         if (needed.pipeline || needed.stages.count(stage.manifest.number) > 0)
             to_compile.push_back(&stage);
     }
+    const StagedToolchain staged = stage_toolchain(toolchain, work / "link");
     std::vector<CompiledStage> compiled(to_compile.size());
     run_at_a_time(compiled.size(), jobs, [&](std::size_t s) {
         compiled[s] = compile_stage(*to_compile[s], toolchain, include, precompiled, work,
                                     cache ? &*cache : nullptr, budget);
+        if (compiled[s].failure.empty())
+            compiled[s].failure = layer_failure(compiled[s], staged, toolchain, work);
     });
 
     // Link, with the sandbox's user shut out of work/probes where no bubblewrap hides it.
@@ -380,7 +441,6 @@ ProbeSet build_probes(const Submission& submission, const ProbeToolchain& toolch
     fs::permissions(probes, bubblewrap_available() ? fs::perms::owner_all | fs::perms::group_exec |
                                                          fs::perms::others_exec
                                                    : fs::perms::owner_all);
-    const StagedToolchain staged = stage_toolchain(toolchain, work / "link");
     ProbeSet set;
     // Each probe's link: the stages it takes from the submission, where it goes, where its result
     // goes (set.stages is filled first, so that the pointers into it hold).
