@@ -17,6 +17,7 @@
 #include "grader/grade/checks/judging.h"
 #include "grader/grade/checks/moved_eye.h"
 #include "grader/grade/checks/stage_checks.h"
+#include "grading/4_accel/stage4_cases.h"
 #include "renderer/tile_renderer.h"
 
 namespace raystep::grade {
@@ -102,7 +103,20 @@ std::string render_input(const std::string& scene, View view, const CameraClip& 
     return input;
 }
 
-CheckMeasure measure_render(const GradingContext& context, const BuiltProbe& probe,
+// Stage 4's renders go through the submission's SAH BVH, and a right image earns its points only
+// from a BVH that does a structure's work, as the closest-hit checks do (measure_work, measured
+// once per probe and shared with them): brute force behind a single leaf renders right too.
+CheckMeasure with_bvh_work(const GradingContext& context, const BuiltProbe& probe,
+                           const std::string& id, CheckMeasure measure) {
+    const CheckMeasure work = measure_work(context, probe, {id, "bvh", "sah"});
+    if (work.outcome == Outcome::passed) return measure;
+    measure.outcome = Outcome::failed;
+    measure.fraction = 0.0;
+    measure.summary += "; but the BVH that rendered it: " + work.summary;
+    return measure;
+}
+
+CheckMeasure measure_render(const GradingContext& context, const BuiltProbe& probe, int stage,
                             const std::string& id, const std::string& scene, View view,
                             const CameraClip& clip) {
     const fs::path path = context.source / "scenes" / scene;
@@ -150,6 +164,8 @@ CheckMeasure measure_render(const GradingContext& context, const BuiltProbe& pro
                                  render_case.student_reproduce}};
     }
     measure.summary = render_summary(verdict);
+    if (stage == 4 && measure.outcome == Outcome::passed)
+        return with_bvh_work(context, probe, id, measure);
     return measure;
 }
 
@@ -216,8 +232,9 @@ std::vector<CheckDefinition> render_checks() {
     for (const RenderCheck& check : render_check_list()) {
         checks.push_back({check.id(), check.stage, "render", check.name(true),
                           [check](const GradingContext& context, const BuiltProbe& probe) {
-                              return measure_render(with_eye_seed(context), probe, check.id(),
-                                                    check.scene, check.view, check.clip);
+                              return measure_render(with_eye_seed(context), probe, check.stage,
+                                                    check.id(), check.scene, check.view,
+                                                    check.clip);
                           }});
     }
     return checks;
