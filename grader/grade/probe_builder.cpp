@@ -331,9 +331,10 @@ std::string layer_failure(const CompiledStage& stage, const StagedToolchain& sta
         if (line.find("undefined reference") != std::string::npos) calls += line + "\n";
     }
     return "stage " + std::to_string(stage.number) +
-           " calls what is neither a stage below it nor base/, which a stage builds on "
-           "(ARCHITECTURE.md, \"Layers\"): a later stage's reference, or what runs the stages, "
-           "would do its work\n" +
+           " calls what neither base/ nor the stages below it define (a stage builds only on "
+           "those, ARCHITECTURE.md, \"Layers\", and the grader links their reference), so "
+           "neither a later stage's function nor a helper in another stage's file is there to "
+           "call:\n" +
            first_lines(calls);
 }
 
