@@ -1,9 +1,11 @@
 #include "grader/grade/probe_builder.h"
 
+#include <cxxabi.h>
 #include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
 #include <exception>
 #include <map>
 #include <mutex>
@@ -297,6 +299,53 @@ void seal(const fs::path& program) {
 // with the references of the stages below and base/: a call to anything else is an undefined
 // reference there, which the linker names with the file that makes it. Empty where there is none,
 // or where the link fails for another reason, which the probe's own link then reports.
+// binutils' nm, beside the compiler the toolchain names (its real path, past the links).
+fs::path nm_program(const ProbeToolchain& toolchain) {
+    const fs::path nm = fs::canonical(toolchain.compiler).parent_path() / "nm";
+    if (!fs::is_regular_file(nm)) {
+        throw std::runtime_error("no nm beside " + toolchain.compiler.string() +
+                                 ": the grader needs binutils' nm to read a stage's objects");
+    }
+    return nm;
+}
+
+// The symbols `objects` refer to weakly and do not define: a weak reference that nothing defines
+// links as a null address, so the layer link below would pass one to a later stage's function,
+// which the probe's own link then binds to the reference. Read by nm in the sandbox: the objects
+// are the submission's.
+std::vector<std::string> weak_references(const std::vector<fs::path>& objects,
+                                         const ProbeToolchain& toolchain) {
+    std::vector<std::string> argv = {nm_program(toolchain).string(), "-P", "--undefined-only"};
+    for (const fs::path& object : objects)
+        argv.push_back(object.string());
+    SandboxPolicy policy;
+    policy.read_only = {objects.front().parent_path()};
+    policy.working_directory = objects.front().parent_path();
+    policy.limits.cpu_seconds = 20;
+    policy.limits.wall = std::chrono::seconds(40);
+    policy.limits.output_bytes = 4u << 20;
+    const SandboxRun run = run_sandboxed(argv, "", policy);
+    std::vector<std::string> weak;
+    std::istringstream lines(run.output);
+    // POSIX format: "name type", type w or v for a weak reference
+    for (std::string line; std::getline(lines, line);) {
+        std::istringstream words(line);
+        std::string name;
+        std::string type;
+        if (words >> name >> type && (type == "w" || type == "v")) weak.push_back(name);
+    }
+    return weak;
+}
+
+// A symbol's name as C++ writes it, or as it is where it is no C++ name.
+std::string demangled(const std::string& name) {
+    int status = 0;
+    char* text = abi::__cxa_demangle(name.c_str(), nullptr, nullptr, &status);
+    const std::string readable = status == 0 && text ? text : name;
+    std::free(text);
+    return readable;
+}
+
 std::string layer_failure(const CompiledStage& stage, const StagedToolchain& staged,
                           const ProbeToolchain& toolchain, const fs::path& work) {
     if (stage.objects.empty()) return "";
@@ -313,6 +362,9 @@ std::string layer_failure(const CompiledStage& stage, const StagedToolchain& sta
     }
     argv.insert(argv.end(), staged.base_libraries.begin(), staged.base_libraries.end());
     argv.insert(argv.end(), toolchain.link_flags.begin(), toolchain.link_flags.end());
+    // A weak reference must be defined here too, as a call is
+    for (const std::string& name : weak_references(stage.objects, toolchain))
+        argv.push_back("-Wl,--require-defined=" + name);
     const fs::path folder = staged.common.parent_path() / "layers" / std::to_string(stage.number);
     fs::create_directories(folder);
     argv[3] = (folder / "stage").string();
@@ -324,12 +376,19 @@ std::string layer_failure(const CompiledStage& stage, const StagedToolchain& sta
     policy.limits.output_bytes = 64u << 10;
     const SandboxRun run = run_sandboxed(argv, "", policy);
     const std::string output = run.errors + run.output;
-    if (output.find("undefined reference") == std::string::npos) return "";
     std::string calls;
     std::istringstream lines(with_repository_paths(output, work));
     for (std::string line; std::getline(lines, line);) {
         if (line.find("undefined reference") != std::string::npos) calls += line + "\n";
+        // "required symbol `_ZN...' not defined", for a weak reference
+        const std::size_t open = line.find("required symbol `");
+        const std::size_t close = line.find("' not defined");
+        if (open != std::string::npos && close != std::string::npos && close > open) {
+            const std::size_t from = open + std::string("required symbol `").size();
+            calls += "a weak reference to `" + demangled(line.substr(from, close - from)) + "'\n";
+        }
     }
+    if (calls.empty()) return "";
     return "stage " + std::to_string(stage.number) +
            " calls what neither base/ nor the stages below it define (a stage builds only on "
            "those, ARCHITECTURE.md, \"Layers\", and the grader links their reference), so "
