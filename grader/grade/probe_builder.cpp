@@ -378,14 +378,22 @@ std::string layer_failure(const CompiledStage& stage, const StagedToolchain& sta
     const std::string output = run.errors + run.output;
     std::string calls;
     std::istringstream lines(with_repository_paths(output, work));
+    // Only raystep's own functions count: without start files, what they define (__dso_handle,
+    // which a static object's destructor needs) is missing too, and the system's functions are
+    // no stage's work
     for (std::string line; std::getline(lines, line);) {
-        if (line.find("undefined reference") != std::string::npos) calls += line + "\n";
+        if (line.find("undefined reference") != std::string::npos &&
+            line.find("raystep::") != std::string::npos) {
+            calls += line + "\n";
+        }
         // "required symbol `_ZN...' not defined", for a weak reference
         const std::size_t open = line.find("required symbol `");
         const std::size_t close = line.find("' not defined");
         if (open != std::string::npos && close != std::string::npos && close > open) {
             const std::size_t from = open + std::string("required symbol `").size();
-            calls += "a weak reference to `" + demangled(line.substr(from, close - from)) + "'\n";
+            const std::string name = demangled(line.substr(from, close - from));
+            if (name.find("raystep::") != std::string::npos)
+                calls += "a weak reference to `" + name + "'\n";
         }
     }
     if (calls.empty()) return "";
