@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -10,6 +11,7 @@
 #include <system_error>
 #include <thread>
 
+#include "grader/grade/check_definition.h"
 #include "grader/grade/merge_shards.h"
 #include "grader/grade/report_folders.h"
 #include "grader/grade/report_json.h"
@@ -116,6 +118,11 @@ BatchTally grade_class(const BatchOptions& options, const Rubric& rubric,
     // renders are made once. In OUT, where no student's folder can be called so
     // (submission_name), and removed when the batch ends.
     const fs::path cache = options.output / ".cache";
+    // One eye for the class's render checks (checks/moved_eye.h), drawn as the batch starts: no
+    // submission can know it beforehand, nor tell another while the batch runs, since each is
+    // sandboxed; and the reference's noisy renders from it are made once for the class. A batch
+    // resumed later draws another.
+    const std::uint64_t eye_seed = options.eye_seed.value_or(fresh_grade_seed());
     std::mutex mutex;  // the tally's stderr lines and the progress line
     std::size_t done = 0;
     const auto progress = [&](const char* pass, std::size_t total, const std::string& name) {
@@ -135,6 +142,7 @@ BatchTally grade_class(const BatchOptions& options, const Rubric& rubric,
         one.only_speed = speed;
         one.reference_probe = options.reference_probe;
         one.cache = cache;
+        one.eye_seed = eye_seed;
         one.reproduce = "raystep-grade submission " + entry.submission.string();
         try {
             GradeReport report = grade_submission(one, rubric, toolchain);

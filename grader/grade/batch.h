@@ -1,6 +1,8 @@
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +18,8 @@ struct BatchOptions {
     bool progress = false;    ///< a progress line on stderr
     bool skip_speed = false;  ///< leave the speed checks out (--no-speed)
     Shard shard;              ///< grade only this slice of the class (--shard I/N)
+    /// The eyes of every submission's render checks (--eye-seed); unset: drawn for the batch.
+    std::optional<std::uint64_t> eye_seed;
     std::filesystem::path reference_probe;
 };
 

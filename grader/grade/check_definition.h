@@ -24,6 +24,11 @@ struct GradingContext {
     std::string reproduce;                  ///< "raystep-grade submission PATH", to which
                                             ///< " --check ID --case N" is appended
     std::optional<std::size_t> only_case;   ///< --case N: ask the probe that case alone
+    /// Where the reference's noisy renders are kept for other grades from the same eyes
+    /// (checks/kept_renders.h): cache/renders/eye-SEED when the eye seed was given (a batch's, or
+    /// --eye-seed) and a --cache too; empty otherwise, since no other grade would look from a
+    /// seed drawn for this one.
+    std::filesystem::path kept_renders;
     /// The seed of the timed runs' jitter (stage 4's walks and speed checks), drawn anew for
     /// every grade: the digest a timed run answers is then one no submission can know before it
     /// walks, so a run's time is the time of its walk, not of a digest written in beforehand.

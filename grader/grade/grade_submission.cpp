@@ -141,6 +141,10 @@ GradeReport grade_submission(const GradeOptions& options, const Rubric& rubric,
     context.eye_seed = options.eye_seed.value_or(fresh_grade_seed());
     context.reproduce = options.reproduce;
     context.only_case = options.only_case;
+    if (options.eye_seed && !options.cache.empty()) {
+        context.kept_renders =
+            options.cache / "renders" / ("eye-" + std::to_string(*options.eye_seed));
+    }
     context.timed_walk_seed = fresh_grade_seed();
 
     // Checks run `jobs` at a time: each talks to its own probe process. Speed checks run alone

@@ -18,7 +18,8 @@ struct GradeOptions {
     std::filesystem::path work_parent;
     bool keep_work = false;  ///< keep the work folder after grading (--keep-work), to look into
     /// What one grade keeps for the next (--cache): the objects it compiled in cache/objects
-    /// (object_cache.h); empty: none.
+    /// (object_cache.h), and with an eye_seed given, the reference's noisy renders from its eyes
+    /// in cache/renders/eye-SEED (checks/kept_renders.h); empty: none.
     std::filesystem::path cache;
     int jobs = 1;                   ///< compiles and checks run this many at a time
     std::string only_check;         ///< run just this check (--check), for reproducing

@@ -5,8 +5,7 @@
 # $AUTOGRADER/source.
 #
 # It installs only what grading needs (the packages already there are taken as they are), builds
-# only raystep-grade, the reference probe, the unpacker and the reference's renders of the noisy
-# render checks (which every grade would otherwise make again), and then closes the repository to
+# only raystep-grade, the reference probe and the unpacker, and then closes the repository to
 # every user but root: probes never run as root (grader/sandbox/sandbox_user.h), and where
 # Gradescope's container has no user namespaces, bubblewrap cannot hide the files, so their modes
 # must.

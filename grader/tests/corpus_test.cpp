@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -17,6 +18,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -25,6 +27,7 @@
 #include <nlohmann/json.hpp>
 #include "base/testing/catch.h"
 
+#include "grader/grade/check_definition.h"
 #include "grader/grade/report_folders.h"
 #include "grader/grade/report_json.h"
 #include "grader/grade/stage_manifests.h"
@@ -75,17 +78,44 @@ std::vector<fs::path> diffs_in(const std::string& folder) {
     return diffs;
 }
 
+// The eyes of every entry's render checks, drawn once when the test starts, as a batch draws one
+// for its class (grader/grade/batch.h): a new eye in every run, and the reference's noisy renders
+// from it made once for all the entries, in the shared cache's renders/eye-SEED
+// (GradingContext::kept_renders), which is removed when the test ends, as a batch removes its
+// cache: no later run looks from that eye.
+class CorpusEye {
+  public:
+    CorpusEye() : seed_(raystep::grade::fresh_grade_seed()) {}
+    ~CorpusEye() {
+        std::error_code ignored;
+        fs::remove_all(kWork / "cache" / "renders" / ("eye-" + std::to_string(seed_)), ignored);
+    }
+    CorpusEye(const CorpusEye&) = delete;
+    CorpusEye& operator=(const CorpusEye&) = delete;
+
+    std::uint64_t seed() const { return seed_; }
+
+  private:
+    std::uint64_t seed_;
+};
+
+std::uint64_t corpus_eye_seed() {
+    static const CorpusEye eye;
+    return eye.seed();
+}
+
 // Runs raystep-grade on `submission`; `arguments` narrow it (--stage N --no-speed). Every entry
-// shares one --cache, as a class's submissions do in a batch: a mutant compiles the one file it
-// changes, and the hostile entries meet the cache the others fill.
+// shares one --cache and one --eye-seed, as a class's submissions do in a batch: a mutant compiles
+// the one file it changes, and the hostile entries meet the cache the others fill.
 void grade(Graded& entry, const fs::path& submission, const std::string& arguments) {
     fs::remove_all(entry.output);
     fs::create_directories(entry.output.parent_path());
     const auto start = std::chrono::steady_clock::now();
     const std::string command =
         shell_quoted(RAYSTEP_GRADE_PROGRAM) + " submission " + shell_quoted(submission) + " -o " +
-        shell_quoted(entry.output) + " --jobs 1 --cache " + shell_quoted(kWork / "cache") + " " +
-        arguments + " > " + shell_quoted(entry.output.string() + ".log") + " 2>&1";
+        shell_quoted(entry.output) + " --jobs 1 --cache " + shell_quoted(kWork / "cache") +
+        " --eye-seed " + std::to_string(corpus_eye_seed()) + " " + arguments + " > " +
+        shell_quoted(entry.output.string() + ".log") + " 2>&1";
     const int status = std::system(command.c_str());
     entry.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     try {

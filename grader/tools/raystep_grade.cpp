@@ -125,6 +125,7 @@ struct BatchArguments {
     bool no_speed = false;
     std::string shard = "1/1";
     std::vector<std::string> merge;
+    std::optional<std::uint64_t> eye_seed;
 };
 
 // batch --merge: the shards' folders put back together into one grades.csv.
@@ -149,6 +150,7 @@ int grade_many(const BatchArguments& arguments) {
     options.jobs = arguments.jobs;
     options.skip_speed = arguments.no_speed;
     options.shard = parse_shard(arguments.shard);
+    options.eye_seed = arguments.eye_seed;
     options.progress = isatty(fileno(stderr)) != 0;
     options.reference_probe = RAYSTEP_REFERENCE_PROBE;
     const auto start = std::chrono::steady_clock::now();
@@ -239,6 +241,9 @@ int main(int argc, char** argv) {
     batch->add_option("--rubric", many.rubric, "The rubric (default: grader/rubric/rubric.json)")
         ->check(CLI::ExistingFile);
     batch->add_flag("--no-speed", many.no_speed, "Leave out the speed checks");
+    batch->add_option("--eye-seed", many.eye_seed,
+                      "The seed of the eyes the render checks look from, the same for every "
+                      "submission (default: drawn anew for the batch)");
     batch
         ->add_option("--shard", many.shard,
                      "Grade only the I-th of N slices of the class, I/N (docs/instructor.md, "

@@ -6,6 +6,7 @@
 // half) leaves its tiles many standard errors away.
 
 #include <array>
+#include <cstdio>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
@@ -18,8 +19,10 @@
 #include "app/probe/render_calls.h"
 #include "app/protocol/image_json.h"
 #include "base/image/image_io.h"
+#include "base/scene/scene_files.h"
 #include "base/scene/scene_loader.h"
 #include "grader/grade/checks/judging.h"
+#include "grader/grade/checks/kept_renders.h"
 #include "grader/grade/checks/moved_eye.h"
 #include "grader/grade/checks/stage_checks.h"
 #include "grader/grade/checks/statistics_seed.h"
@@ -67,7 +70,7 @@ Scene seeded_scaled_scene(const fs::path& path, std::uint64_t seed, const Vec3& 
 
 // The reference's kReferenceRenders renders of a view from `eye`, from kReferenceSeeds on, one
 // thread each: a grade makes the noisy checks' views side by side.
-std::vector<Image> reference_renders(const fs::path& path, View view, const Vec3& eye) {
+std::vector<Image> render_reference(const fs::path& path, View view, const Vec3& eye) {
     std::vector<Image> renders;
     for (int k = 0; k < kReferenceRenders; ++k) {
         const Scene scene =
@@ -77,6 +80,35 @@ std::vector<Image> reference_renders(const fs::path& path, View view, const Vec3
         options.threads = 1;
         renders.push_back(render_image(prepare_render_scene(scene), options));
     }
+    return renders;
+}
+
+// What the reference's renders of a view depend on, as kept_renders.h keys them; empty where the
+// scene's files or the grader's program cannot be read, and then nothing is kept. The eye in
+// hexadecimal floating point: exact, so that only the same eye finds the renders.
+std::string reference_renders_key(const fs::path& path, View view, const Vec3& eye) {
+    const std::string scene = scene_digest(load_scene(path));
+    const std::string grader = grader_identity();
+    if (scene.empty() || grader.empty()) return "";
+    char eye_text[96];
+    std::snprintf(eye_text, sizeof eye_text, "%a %a %a", eye.x, eye.y, eye.z);
+    return "reference renders\nscene " + scene + "\nview " + std::string(view_name(view)) +
+           "\nwidth " + std::to_string(kRenderCheckWidth) + "\neye " + eye_text + "\nrenders " +
+           std::to_string(kReferenceRenders) + " from seed " + std::to_string(kReferenceSeeds) +
+           "\ngrader " + grader + "\n";
+}
+
+// The reference's renders of a view from `eye`: from where an earlier grade from the same eyes
+// kept them (GradingContext::kept_renders), or made here and kept there for the next.
+std::vector<Image> reference_renders(const GradingContext& context, const fs::path& path, View view,
+                                     const Vec3& eye) {
+    const std::string key = reference_renders_key(path, view, eye);
+    const fs::path kept = key.empty() ? fs::path() : context.kept_renders;
+    if (!kept.empty()) {
+        if (std::optional<std::vector<Image>> found = kept_renders(kept, key)) return *found;
+    }
+    std::vector<Image> renders = render_reference(path, view, eye);
+    if (!kept.empty()) keep_renders(kept, key, renders);
     return renders;
 }
 
@@ -133,7 +165,7 @@ CheckMeasure measure_noisy_render(const GradingContext& context, const BuiltProb
         renders.push_back(*image);
     }
 
-    const std::vector<Image> reference = reference_renders(path, check.view, eye);
+    const std::vector<Image> reference = reference_renders(context, path, check.view, eye);
     NoisyComparison comparison;
     try {
         comparison = compare_noisy_renders(renders, reference, kTile, kTileBound, kDeviationFloor);
