@@ -3,7 +3,8 @@
 the corpus's model and the stage-4 entries whose walk the time decides, each on its structure's
 oracle check alone, `--runs` times, each in a grader of its own (the walk is measured once per
 grader), and prints each run's ratios: the walk through 768 walls against one wall, and against
-the reference's (grading/4_accel/stage4_work.cpp).
+the reference's (grading/4_accel/stage4_work.cpp); and the processor time its timed runs took in
+all, which kWalkBudgetSeconds bounds.
 
     scripts/measure-stage4-walks.py [--runs 10] [--grader build/release/bin/raystep-grade]
 
@@ -31,6 +32,7 @@ ENTRIES = [
     ("mutants/4-grid-walks-to-the-end.diff", "grid", False),
     ("mutants/4-bvh-brute-force-remembering-answers.diff", "bvh_sah", False),
     ("mutants/4-bvh-sorts-every-box-per-ray.diff", "bvh_sah", False),
+    ("mutants/4-bvh-brute-force-burns-processor-in-runs-of-no-passes.diff", "bvh_sah", False),
 ]
 
 
@@ -54,7 +56,8 @@ def grade(grader, entry, check, scratch):
     depth = next((v for k, v in metrics.items() if "walls against 1" in k), float("nan"))
     reference = next((v for k, v in metrics.items() if "against the reference's" in k),
                      float("nan"))
-    return depth, reference, measured["outcome"]
+    spent = next((v for k, v in metrics.items() if "CPU seconds in all" in k), float("nan"))
+    return depth, reference, spent, measured["outcome"]
 
 
 def main():
@@ -63,22 +66,24 @@ def main():
     parser.add_argument("--grader", default=str(ROOT / "build/release/bin/raystep-grade"))
     arguments = parser.parse_args()
     print("| entry | check | right | walls against 1, per run | against the reference | "
-          "outcomes |")
-    print("|---|---|---|---|---|---|")
+          "timed runs' CPU seconds | outcomes |")
+    print("|---|---|---|---|---|---|---|")
     for entry, check, right in ENTRIES:
-        depths, references, outcomes = [], [], []
+        depths, references, spents, outcomes = [], [], [], []
         for _ in range(arguments.runs):
             with tempfile.TemporaryDirectory() as scratch:
-                depth, reference, outcome = grade(arguments.grader, entry, check,
-                                                  pathlib.Path(scratch))
+                depth, reference, spent, outcome = grade(arguments.grader, entry, check,
+                                                         pathlib.Path(scratch))
             depths.append(depth)
             references.append(reference)
+            spents.append(spent)
             outcomes.append(outcome)
         name = pathlib.Path(entry).stem
         passed = sum(outcome == "passed" for outcome in outcomes)
         print(f"| {name} | {check} | {'yes' if right else 'no'} | "
               f"{min(depths):.2f} to {max(depths):.2f} | "
               f"{min(references):.2f} to {max(references):.2f} | "
+              f"{min(spents):.1f} to {max(spents):.1f} | "
               f"{passed} of {len(outcomes)} passed |")
 
 

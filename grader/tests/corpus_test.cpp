@@ -205,6 +205,18 @@ std::optional<double> promised_loss(const fs::path& diff) {
     return std::nullopt;
 }
 
+// What a mutant's header promises a check of its stage says, from a comment line such as
+// "# Says: its timed runs took more than" above the diff: where the grade's reason for failing it
+// is the point (a defence the mutant attacks). nullopt where the header promises none.
+std::optional<std::string> promised_saying(const fs::path& diff) {
+    std::ifstream file(diff);
+    const std::string marker = "# Says: ";
+    for (std::string line; std::getline(file, line) && line.rfind("#", 0) == 0;) {
+        if (line.rfind(marker, 0) == 0) return line.substr(marker.size());
+    }
+    return std::nullopt;
+}
+
 // The files under `folder`, by path relative to it, in order.
 std::vector<std::string> files_under(const fs::path& folder) {
     std::vector<std::string> files;
@@ -339,6 +351,14 @@ TEST_CASE("every mutant loses points in its own stage", "[corpus]") {
         if (const std::optional<double> share = promised_loss(entry.diff)) {
             INFO("its header promises it loses at least " << 100.0 * *share << "% of its stage");
             CHECK(max - score >= *share * max - 1e-9);
+        }
+        if (const std::optional<std::string> saying = promised_saying(entry.diff)) {
+            INFO("its header promises a check of its stage says \"" << *saying << "\"");
+            CHECK(std::any_of(entry.report->checks.begin(), entry.report->checks.end(),
+                              [&](const CheckResult& check) {
+                                  return check.stage == entry.stage &&
+                                         check.summary.find(*saying) != std::string::npos;
+                              }));
         }
         stages.push_back(entry.stage);
     }

@@ -78,6 +78,19 @@ constexpr int kTimings = 2;
 // The shortest walk of the reference's that its time per pass is taken from (timed in the grader,
 // in nanoseconds of the thread's CPU time).
 constexpr double kReferenceSeconds = 0.02;
+// The processor time one structure's timed runs may take in all. A right walk's some fifty runs
+// take about 2 s of it (each at most kTimedSeconds of passes and a start), a loaded machine's up
+// to five times that; a program that spends its time elsewhere, burning the processor in its runs
+// of no passes (which the calibration answers with a hundred times the passes), would otherwise
+// hold its grade, and a class's batch, for minutes. docs/measurements/stage4-work.md has the runs.
+constexpr double kWalkBudgetSeconds = 20.0;
+
+// What is left of kWalkBudgetSeconds for one structure's timed runs, and what the last run of no
+// passes (the query read, the scene and the structure built) took.
+struct WalkBudget {
+    double seconds = kWalkBudgetSeconds;
+    double start = 0.0;
+};
 
 CheckMeasure failed(std::string summary) {
     CheckMeasure measure;
@@ -262,14 +275,18 @@ class ReferenceWalk {
 // crash, a timeout), with the answer kept in `answer`. The query is made once; each run sets its
 // pass count.
 std::optional<double> cpu_seconds(const BuiltProbe& probe, std::vector<ProbeQuery>& walk,
-                                  int passes, ProbeAnswer& answer) {
+                                  int passes, WalkBudget& budget, ProbeAnswer& answer) {
+    if (budget.seconds <= 0.0) return std::nullopt;
     walk.front().args["repeat"] = passes;
     ProbeRunLimits limits;
-    limits.cpu_seconds = 30;
+    // The sandbox counts whole seconds of processor, at least one.
+    limits.cpu_seconds = std::max(1.0, std::min(30.0, std::ceil(budget.seconds)));
     limits.wall = std::chrono::seconds(60);
     const ProbeSession session = ask_probe(*probe.program, walk, limits);
+    budget.seconds -= session.run.cpu_seconds;
+    if (passes == 0) budget.start = session.run.cpu_seconds;
     answer = session.answers[0];
-    if (answer.kind != ProbeAnswer::Kind::result) return std::nullopt;
+    if (answer.kind != ProbeAnswer::Kind::result || budget.seconds <= 0.0) return std::nullopt;
     return session.run.cpu_seconds;
 }
 
@@ -277,11 +294,11 @@ std::optional<double> cpu_seconds(const BuiltProbe& probe, std::vector<ProbeQuer
 // more, eightfold each time, until a run spends a tenth of that beyond the run with no passes;
 // nullopt, with the answer, when a run gave no result.
 std::optional<int> calibrated_passes(const BuiltProbe& probe, std::vector<ProbeQuery>& walk,
-                                     ProbeAnswer& answer) {
-    const std::optional<double> start = cpu_seconds(probe, walk, 0, answer);
+                                     WalkBudget& budget, ProbeAnswer& answer) {
+    const std::optional<double> start = cpu_seconds(probe, walk, 0, budget, answer);
     if (!start) return std::nullopt;
     for (int passes = kCalibrationPasses;; passes = std::min(8 * passes, kMostPasses)) {
-        const std::optional<double> run = cpu_seconds(probe, walk, passes, answer);
+        const std::optional<double> run = cpu_seconds(probe, walk, passes, budget, answer);
         if (!run) return std::nullopt;
         const double spent = *run - *start;
         if (spent >= 0.1 * kTimedSeconds || passes >= kMostPasses) {
@@ -306,8 +323,21 @@ CheckMeasure measure_traversal_time(const BuiltProbe& probe, const std::string& 
         {above, call, jitter}, {below, call, jitter}, {wall, call, jitter}};
     std::vector<ProbeQuery> walks[3];
     int passes[3];
+    WalkBudget budget;
     ProbeAnswer answer;
     const auto unanswered = [&](const WorkScene& scene) {
+        if (budget.seconds <= 0.0) {
+            char text[300];
+            std::snprintf(text, sizeof text,
+                          "its timed runs took more than the %.0f s of processor they are given "
+                          "in all, before the rays of %s were timed (its last run of no passes, "
+                          "which builds the structure, %.2f s)",
+                          kWalkBudgetSeconds, scene.name.c_str(), budget.start);
+            return failed(std::string(text) +
+                          ": a right walk's take a few seconds; a walk that tests every "
+                          "primitive, or a program that spends its time outside the walk, can "
+                          "take that long");
+        }
         if (answer.kind == ProbeAnswer::Kind::not_implemented) {
             CheckMeasure stub;
             stub.outcome = Outcome::not_implemented;
@@ -321,7 +351,7 @@ CheckMeasure measure_traversal_time(const BuiltProbe& probe, const std::string& 
     };
     for (int k = 0; k < 3; ++k) {
         walks[k] = {walk_query(walls[k], call, jitter)};
-        const std::optional<int> calibrated = calibrated_passes(probe, walks[k], answer);
+        const std::optional<int> calibrated = calibrated_passes(probe, walks[k], budget, answer);
         if (!calibrated) return unanswered(*scenes[k]);
         passes[k] = *calibrated;
     }
@@ -342,7 +372,7 @@ CheckMeasure measure_traversal_time(const BuiltProbe& probe, const std::string& 
             for (int k = 0; k < 3; ++k) {
                 for (const int asked : {0, passes[k]}) {
                     const std::optional<double> seconds =
-                        cpu_seconds(probe, walks[k], asked, answer);
+                        cpu_seconds(probe, walks[k], asked, budget, answer);
                     if (!seconds) return unanswered(*scenes[k]);
                     const std::uint64_t digest = asked == 0 ? probe::kEmptyDigest : expected[k];
                     if (answer.value != Json(digest)) {
@@ -399,7 +429,8 @@ CheckMeasure measure_traversal_time(const BuiltProbe& probe, const std::string& 
     CheckMeasure measure;
     measure.metrics = {{"walk CPU time, " + std::to_string(kWalls) + " walls against 1", depth},
                        {"walk CPU time, from above against from below", per_pass[0] / per_pass[1]},
-                       {"walk CPU time against the reference's, in the grader", against_reference}};
+                       {"walk CPU time against the reference's, in the grader", against_reference},
+                       {"timed runs' CPU seconds in all", kWalkBudgetSeconds - budget.seconds}};
     char text[300];
     std::snprintf(text, sizeof text,
                   "its own walk (%zu rays a pass, new every pass, CPU time per pass) took %.2f "
