@@ -1,9 +1,8 @@
 #include "app/cli/eye_option.h"
 
-#include <cmath>
-#include <cstdlib>
 #include <stdexcept>
-#include <string>
+
+#include "app/cli/finite_number_check.h"
 
 namespace raystep {
 
@@ -13,14 +12,7 @@ void add_eye_option(CLI::App& command, std::vector<double>& lookfrom) {
                     "Render from this eye instead of the scene's: three numbers, the rest of the "
                     "camera kept")
         ->expected(3)
-        ->check(CLI::Validator(
-            [](std::string& text) {
-                char* end = nullptr;
-                const double value = std::strtod(text.c_str(), &end);
-                if (!text.empty() && *end == '\0' && std::isfinite(value)) return std::string();
-                return "the eye's coordinates are numbers, not '" + text + "'";
-            },
-            "X Y Z"));
+        ->check(finite_number_check("X Y Z", "the eye's coordinates are numbers"));
 }
 
 void apply_eye(const std::vector<double>& lookfrom, Scene& scene) {

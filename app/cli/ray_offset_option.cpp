@@ -1,8 +1,9 @@
 #include "app/cli/ray_offset_option.h"
 
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
+#include <string>
+
+#include "app/cli/finite_number_check.h"
 
 namespace raystep {
 
@@ -27,15 +28,8 @@ void add_ray_offset_options(CLI::App& command, RayOffsetArguments& arguments) {
     command
         .add_option("--epsilon", arguments.epsilon,
                     "The offset distance of along-ray and along-normal")
-        ->check(CLI::Validator(
-            [](std::string& text) {
-                char* end = nullptr;
-                const double value = std::strtod(text.c_str(), &end);
-                if (!text.empty() && *end == '\0' && std::isfinite(value) && value > 0.0)
-                    return std::string();
-                return "the offset distance must be a number above 0, not '" + text + "'";
-            },
-            "EPSILON"));
+        ->check(finite_number_check("EPSILON", "the offset distance must be a number above 0",
+                                    [](double value) { return value > 0.0; }));
     // The two options make sense only together: checked once both are read, as a command-line
     // error (exit code 2), before any scene is loaded.
     command.parse_complete_callback([&arguments] {

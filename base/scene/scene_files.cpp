@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <fstream>
 
+#include "base/math/fnv1a.h"
+
 namespace raystep {
 
 std::vector<std::filesystem::path> scene_files(const Scene& scene) {
@@ -16,10 +18,9 @@ std::vector<std::filesystem::path> scene_files(const Scene& scene) {
 }
 
 std::string scene_digest(const Scene& scene) {
-    // FNV-1a: Fowler, Noll and Vo's hash, 64-bit offset basis and prime. Not a defence against
-    // a forged file, which a student gains nothing by making: a check that the bytes are the
-    // ones the reference rendered.
-    std::uint64_t hash = 0xcbf29ce484222325u;
+    // FNV-1a (base/math/fnv1a.h). Not a defence against a forged file, which a student gains
+    // nothing by making: a check that the bytes are the ones the reference rendered.
+    std::uint64_t hash = kFnv1aBasis;
     for (const std::filesystem::path& file : scene_files(scene)) {
         std::ifstream in(file, std::ios::binary);
         if (!in) return "";
@@ -27,13 +28,11 @@ std::string scene_digest(const Scene& scene) {
         while (in.read(block, sizeof block) || in.gcount() > 0) {
             for (std::streamsize k = 0; k < in.gcount(); ++k) {
                 if (block[k] == '\r') continue;
-                hash ^= static_cast<unsigned char>(block[k]);
-                hash *= 0x100000001b3u;
+                hash = fnv1a_fold(hash, static_cast<unsigned char>(block[k]));
             }
         }
         // The boundary between files counts: "ab" + "c" is not "a" + "bc".
-        hash ^= 0xffu;
-        hash *= 0x100000001b3u;
+        hash = fnv1a_fold(hash, 0xffu);
     }
     char text[17];
     std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));

@@ -5,6 +5,7 @@
 #include <optional>
 #include <vector>
 
+#include "base/math/fnv1a.h"
 #include "base/math/portable_random.h"
 #include "stages/3_intersect/intersect.h"
 
@@ -36,14 +37,13 @@ inline void move_rays(const std::vector<Ray>& base, const Jitter& jitter, int pa
     }
 }
 
-/// Folds one word into a digest: FNV-1a over 64-bit words, whose every bit of input changes the
-/// result.
+/// Folds one word into a digest (FNV-1a over 64-bit words, base/math/fnv1a.h).
 inline std::uint64_t fold(std::uint64_t digest, std::uint64_t word) {
-    return (digest ^ word) * 0x100000001b3ull;
+    return fnv1a_fold(digest, word);
 }
 
 /// The digest of no answer.
-inline constexpr std::uint64_t kEmptyDigest = 0xcbf29ce484222325ull;
+inline constexpr std::uint64_t kEmptyDigest = kFnv1aBasis;
 
 /// Folds a closest hit: its primitive and the bits of its t, or a miss.
 inline std::uint64_t fold_hit(std::uint64_t digest, const std::optional<PrimitiveHit>& hit) {

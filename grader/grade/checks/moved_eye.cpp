@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include "app/grade/value_text.h"
+#include "base/math/fnv1a.h"
 #include "base/math/portable_random.h"
 
 namespace raystep::grade {
@@ -28,13 +29,8 @@ double signed_angle(PortableRandom& random, double low, double high) {
 }  // namespace
 
 Vec3 moved_eye(const CameraSpec& camera, std::uint64_t grade_seed, const std::string& check_id) {
-    // The check's id as the generator's index, by 64-bit FNV-1a.
-    std::uint64_t index = 0xcbf29ce484222325u;
-    for (const char c : check_id) {
-        index ^= static_cast<unsigned char>(c);
-        index *= 0x100000001b3u;
-    }
-    PortableRandom random(grade_seed, index);
+    // The check's id as the generator's index.
+    PortableRandom random(grade_seed, fnv1a(check_id));
     const double turn = signed_angle(random, kEyeTurnMinDegrees, kEyeTurnMaxDegrees);
     const double tilt = signed_angle(random, kEyeTiltMinDegrees, kEyeTiltMaxDegrees);
     const Vec3 up = glm::normalize(camera.up);
