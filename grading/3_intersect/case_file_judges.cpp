@@ -19,6 +19,7 @@ struct MethodRun {
     std::size_t cases = 0;
     std::size_t passed = 0;
     std::size_t leaks = 0;
+    KindTally kinds;
     std::string stub;
     std::vector<Counterexample> first_failure;
 };
@@ -27,8 +28,15 @@ MethodRun run_over(const Stage3Method& method, const std::vector<CaseFamily>& fa
     MethodRun run;
     for (const CaseFamily& family : families) {
         std::vector<CaseAnswer> answers;
-        for (const RayCase& c : family.cases)
+        for (const RayCase& c : family.cases) {
             answers.push_back(run_method(method, c));
+            const CaseKind kind = case_kind(method, c);
+            if (kind == CaseKind::either) continue;
+            std::string detail;
+            const raystep::Verdict verdict = score_case(method, c, answers.back(), detail);
+            run.kinds.count(kind,
+                            verdict == raystep::Verdict::pass || verdict == raystep::Verdict::leak);
+        }
         // Every counterexample kept, so that the first that is not a leak is among them.
         const MethodScore score = score_family(method, family, answers, family.cases.size());
         if (score.not_implemented) {
@@ -53,6 +61,39 @@ MethodRun run_over(const Stage3Method& method, const std::vector<CaseFamily>& fa
 }
 
 }  // namespace
+
+CaseKind case_kind(const Stage3Method& method, const RayCase& ray_case) {
+    bool tested = false;
+    bool hit = false;
+    for (const CasePrimitive& primitive : ray_case.primitives) {
+        if (!applies_to(method, primitive.shape)) continue;
+        if (primitive.expected.near_boundary) return CaseKind::either;
+        tested = true;
+        hit = hit || primitive.expected.hit;
+    }
+    if (!tested) return CaseKind::either;
+    return hit ? CaseKind::hit : CaseKind::miss;
+}
+
+void KindTally::count(CaseKind kind, bool right) {
+    if (kind == CaseKind::either) return;
+    (kind == CaseKind::hit ? hits : misses) += 1;
+    if (right) (kind == CaseKind::hit ? hits_right : misses_right) += 1;
+}
+
+bool KindTally::both_kinds_kept() const {
+    const auto kept = [](std::size_t right, std::size_t asked) {
+        return asked == 0 ||
+               static_cast<double>(right) >= kLeastShareOfEachKind * static_cast<double>(asked);
+    };
+    return kept(hits_right, hits) && kept(misses_right, misses);
+}
+
+std::string KindTally::shortfall() const {
+    return "earns nothing: " + std::to_string(hits_right) + " of the " + std::to_string(hits) +
+           " cases that must hit right, " + std::to_string(misses_right) + " of the " +
+           std::to_string(misses) + " that must miss, where at least half of each must be";
+}
 
 std::vector<CaseFamily> stage3_public_families(const std::filesystem::path& root) {
     std::vector<CaseFamily> families;
@@ -96,12 +137,13 @@ std::vector<CheckResult> run_stage3_case_checks(const std::vector<CaseFamily>& f
         const std::size_t reference_right = reference.at(method.name);
         const MethodRun run = run_over(method, families);
         const bool stub = !run.stub.empty();
-        const Outcome measured = stub                            ? Outcome::not_implemented
-                                 : run.passed >= reference_right ? Outcome::passed
-                                                                 : Outcome::failed;
+        const bool kept = run.kinds.both_kinds_kept();
+        const Outcome measured = stub                                    ? Outcome::not_implemented
+                                 : kept && run.passed >= reference_right ? Outcome::passed
+                                                                         : Outcome::failed;
         CheckResult result = scored_check(
             id, 3, "oracle", method.name + " on the public case files", rubric.entry(id), measured,
-            stage3_cases_fraction(run.passed, reference_right));
+            kept ? stage3_cases_fraction(run.passed, reference_right) : 0.0);
         if (stub) {
             result.summary = run.stub;
         } else {
@@ -113,6 +155,7 @@ std::vector<CheckResult> run_stage3_case_checks(const std::vector<CaseFamily>& f
                                   " of them leaks at shared edges, which the contract allows "
                                   "(docs/stage3.md)";
             }
+            if (!kept) result.summary += "; " + run.kinds.shortfall();
             result.counterexamples = run.first_failure;
         }
         result.metrics["cases"] = static_cast<double>(run.cases);

@@ -1,11 +1,13 @@
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "app/check/ray_case.h"
+#include "app/check/stage3_methods.h"
 #include "app/grade/rubric.h"
 #include "app/report/grade_report.h"
 
@@ -34,6 +36,35 @@ std::vector<CaseFamily> stage3_public_families(const std::filesystem::path& root
 /// intersect_triangle, which may be any of the three methods, the lowest count of the four. A
 /// stub's function is left out.
 std::map<std::string, std::size_t> stage3_cases_right(const std::vector<CaseFamily>& families);
+
+/// What a case asks of a function: a hit (a primitive it tests is hit, away from every decision
+/// boundary), a miss (every one it tests missed, away from them), or either (near a boundary,
+/// where a right test may answer both ways, or no primitive it tests).
+enum class CaseKind { hit, miss, either };
+
+CaseKind case_kind(const Stage3Method& method, const RayCase& ray_case);
+
+/// A function's case check earns nothing unless it gets at least this share right of the cases
+/// that must hit and of those that must miss. Most cases are misses or near a boundary, where
+/// either answer passes (86% of a triangle test's among the grader's families), so a constant
+/// answer, a stub that returns nothing, would otherwise earn most of its share. Not the lesser of
+/// the two shares itself: a right projection test misses a few of the hard families' hits by
+/// rounding (5 of 55 in the model), which the rubric forgives on the share of all cases.
+inline constexpr double kLeastShareOfEachKind = 0.5;
+
+/// A function's answers counted by what each case asks.
+struct KindTally {
+    std::size_t hits = 0;
+    std::size_t hits_right = 0;
+    std::size_t misses = 0;
+    std::size_t misses_right = 0;
+
+    void count(CaseKind kind, bool right);
+    /// At least kLeastShareOfEachKind of each kind right, or a kind not asked.
+    bool both_kinds_kept() const;
+    /// "earns nothing: 0 of the 55 cases that must hit right, ...", for a summary.
+    std::string shortfall() const;
+};
 
 /// What the rubric scores of a function that got `right` cases right where the reference got
 /// `reference_right`: their ratio, at most 1 (a function may beat the reference on a

@@ -20,6 +20,7 @@
 #include "grader/grade/checks/stage_checks.h"
 #include "grading/3_intersect/case_file_judges.h"
 #include "grading/3_intersect/decide_cases.h"
+#include "grading/3_intersect/hit_miss_share.h"
 #include "grading/3_intersect/intersect_calls.h"
 #include "grading/3_intersect/stage3_contract_cases.h"
 #include "grading/3_intersect/stage3_families.h"
@@ -116,13 +117,24 @@ std::vector<ProbeCase> method_cases(const std::vector<Stage3Method>& methods,
 
 namespace {
 
-// Each method on each case of each family that has a primitive it tests, leaks counted and
-// reported, not failed.
+// Each method on each case of each family that has a primitive it tests, each case counted in
+// `share` by what it asks, leaks counted and reported, not failed.
 CheckMeasure measure_methods(const GradingContext& context, const BuiltProbe& probe,
                              const std::vector<Stage3Method>& methods,
-                             const std::vector<CaseFamily>& families, const std::string& id) {
+                             const std::vector<CaseFamily>& families, const std::string& id,
+                             HitMissShare& share) {
     std::size_t leaks = 0;
-    CheckMeasure measure = run_cases(context, id, probe, method_cases(methods, families, leaks));
+    std::vector<ProbeCase> cases;
+    for (const Stage3Method& method : methods) {
+        for (const CaseFamily& family : families) {
+            for (const RayCase& ray_case : family.cases) {
+                if (!applies(method, ray_case)) continue;
+                cases.push_back(share.counted(method_case(method, family, ray_case, leaks),
+                                              case_kind(method, ray_case)));
+            }
+        }
+    }
+    CheckMeasure measure = run_cases(context, id, probe, cases);
     if (leaks > 0) {
         measure.metrics["leaks (not failed)"] = static_cast<double>(leaks);
         if (measure.outcome == Outcome::passed || measure.outcome == Outcome::failed) {
@@ -132,13 +144,27 @@ CheckMeasure measure_methods(const GradingContext& context, const BuiltProbe& pr
     return measure;
 }
 
+// Methods on the grader's hard-case families: the share of the cases right, but nothing for a
+// function that answers fewer than half the cases of either kind right (hit_miss_share.h).
+CheckMeasure measure_both_kinds(const GradingContext& context, const BuiltProbe& probe,
+                                const std::vector<Stage3Method>& methods,
+                                const std::vector<CaseFamily>& families, const std::string& id) {
+    HitMissShare share;
+    CheckMeasure measure = measure_methods(context, probe, methods, families, id, share);
+    // One case asked again (--case N) is a reproduction, not a score
+    if (!context.only_case) share.score(measure);
+    return measure;
+}
+
 // The method on the public case files, scored as `raystep grade` scores it: the count right over
-// the reference's count on the same files (stage3_cases_fraction), the reference run here.
+// the reference's count on the same files (stage3_cases_fraction), the reference run here, and
+// nothing for a function that answers fewer than half the cases of either kind right.
 CheckMeasure measure_public_cases(const GradingContext& context, const BuiltProbe& probe,
                                   const Stage3Method& method, const std::string& id) {
     // The grader's own tree's files, never the submission's copy.
     const std::vector<CaseFamily> families = stage3_public_families(context.grader_source);
-    CheckMeasure measure = measure_methods(context, probe, {method}, families, id);
+    HitMissShare share;
+    CheckMeasure measure = measure_methods(context, probe, {method}, families, id, share);
     // One case asked again (--case N) is a reproduction, not a score against the whole count.
     if (context.only_case || measure.grader_error || measure.outcome == Outcome::not_implemented ||
         measure.outcome == Outcome::did_not_compile) {
@@ -151,6 +177,7 @@ CheckMeasure measure_public_cases(const GradingContext& context, const BuiltProb
         measure.outcome = Outcome::passed;
     }
     measure.summary += "; the reference gets " + std::to_string(reference_right) + " right";
+    share.score(measure);
     return measure;
 }
 
@@ -163,7 +190,7 @@ std::vector<CheckDefinition> stage3_checks() {
         checks.push_back(
             {id, 3, "oracle", method.name + " on every hard-case family, against the exact oracle",
              [method, id](const GradingContext& context, const BuiltProbe& probe) {
-                 return measure_methods(context, probe, {method}, decided_families(), id);
+                 return measure_both_kinds(context, probe, {method}, decided_families(), id);
              }});
     }
     for (const Stage3Method& method : stage3_methods()) {
@@ -178,8 +205,8 @@ std::vector<CheckDefinition> stage3_checks() {
          "every function on the contract: t ranges, edges, two sides, nearly parallel rays, the "
          "domain",
          [](const GradingContext& context, const BuiltProbe& probe) {
-             return measure_methods(context, probe, stage3_methods(), decided_contract(),
-                                    "stage3.hidden");
+             return measure_both_kinds(context, probe, stage3_methods(), decided_contract(),
+                                       "stage3.hidden");
          }});
     for (CheckDefinition& check : stage3_contract_checks())
         checks.push_back(std::move(check));

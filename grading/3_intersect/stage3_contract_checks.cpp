@@ -18,6 +18,7 @@
 #include "grader/grade/checks/statistics_seed.h"
 #include "grading/3_intersect/decide_cases.h"
 #include "grading/3_intersect/function_share.h"
+#include "grading/3_intersect/hit_miss_share.h"
 #include "grading/3_intersect/stage3_contract_cases.h"
 #include "grading/3_intersect/stage3_contract_edges.h"
 
@@ -50,24 +51,26 @@ struct ContractEdge {
     /// The functions whose sentence it is: a check asks no other (the sphere test on a tie's
     /// sphere would check its t, not the tie)
     bool (*asks)(const Stage3Method&);
+    /// The sentence asks only for misses: a function that never hits would keep it
+    bool misses_only;
 };
 
 const ContractEdge kEdges[] = {
     {"stage3.contract.range_ends",
      "hits at t_min and at t_max are in the range and hits a step beyond them are not, in every "
      "function",
-     range_end_family, true, every_function},
+     range_end_family, true, every_function, false},
     {"stage3.contract.ties",
      "closest_hit gives a tie to the primitive listed first: spheres, triangles, planes",
-     tie_family, true, closest_hit_alone},
+     tie_family, true, closest_hit_alone, false},
     {"stage3.contract.ray_in_plane",
      "a ray lying in a plane, or in a triangle's plane, misses it, in every plane and triangle "
      "test and closest_hit",
-     in_plane_family, true, all_but_spheres},
+     in_plane_family, true, all_but_spheres, true},
     {"stage3.contract.degenerate",
      "collinear triangles, repeated vertices, zero directions, radii and normals: a miss, never "
      "a NaN or a throw",
-     degenerate_family, false, every_function},
+     degenerate_family, false, every_function, true},
 };
 
 CheckMeasure measure_edge(const ContractEdge& edge, const GradingContext& context,
@@ -75,6 +78,16 @@ CheckMeasure measure_edge(const ContractEdge& edge, const GradingContext& contex
     CaseFamily family = edge.family(statistics_seed(), kDrawnCases);
     decide_cases(family);
     if (edge.exact) tighten_exact_family(family);
+
+    // A sentence of misses is kept only by a function that also hits where it must: each function
+    // the check asks answers the range ends' hits too (exact, so no rounding excuses a miss), and
+    // one that never hits, a stub that returns nothing, keeps no sentence.
+    CaseFamily must_hit;
+    if (edge.misses_only) {
+        must_hit = range_end_family(statistics_seed(), kDrawnCases);
+        decide_cases(must_hit);
+        tighten_exact_family(must_hit);
+    }
 
     // Every function the family reaches, each case counted against the function it asks
     FunctionShare share;
@@ -84,6 +97,11 @@ CheckMeasure measure_edge(const ContractEdge& edge, const GradingContext& contex
         if (!edge.asks(method)) continue;
         for (ProbeCase& probe_case : method_cases({method}, {family}, leaks))
             cases.push_back(share.counted(std::move(probe_case), method.name));
+        for (const RayCase& ray_case : must_hit.cases) {
+            if (case_kind(method, ray_case) != CaseKind::hit) continue;
+            cases.push_back(
+                share.counted(method_case(method, must_hit, ray_case, leaks), method.name));
+        }
     }
     CheckMeasure measure = run_cases(context, edge.id, probe, cases);
     share.score(measure);
