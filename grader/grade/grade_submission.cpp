@@ -158,6 +158,15 @@ GradeReport grade_submission(const GradeOptions& options, const Rubric& rubric,
         const CheckDefinition& check = checks[k];
         const BuiltProbe& probe = check.stage == 0 ? probes.pipeline : probes.stage(check.stage);
         const auto started = std::chrono::steady_clock::now();
+        if (started - start > options.checks_time_limit) {
+            CheckMeasure late;
+            late.outcome = Outcome::timed_out;
+            late.summary = "not run: the grade's checks had taken the " +
+                           std::to_string(options.checks_time_limit.count()) +
+                           " s they are given, waiting on the submission's time limits";
+            results[k] = score_check(check, late, rubric);
+            return;
+        }
         try {
             results[k] = score_check(check, check.measure(context, probe), rubric);
         } catch (...) {

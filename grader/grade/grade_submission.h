@@ -1,5 +1,6 @@
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -10,6 +11,9 @@
 #include "grader/grade/probe_toolchain.h"
 
 namespace raystep::grade {
+
+/// GradeOptions::checks_time_limit unless given.
+inline constexpr int kChecksTimeLimit = 360;
 
 struct GradeOptions {
     std::filesystem::path submission;  ///< a folder or an archive of any kind, or anything at all
@@ -31,6 +35,13 @@ struct GradeOptions {
     std::optional<std::uint64_t> eye_seed;
     std::filesystem::path reference_probe;
     std::string reproduce;  ///< how a reproduce command starts: "raystep-grade submission PATH"
+    /// The wall-clock time a grade's checks may take (--checks-time-limit): a check that would
+    /// start after it ends as timed out, with no points. A submission that sleeps waits out every
+    /// check's own limit (20 s for most, 120 s for a render of sampled views) at no processor
+    /// time, some 6 minutes a stage; so its grade ends within this and one check's limit, inside
+    /// Gradescope's 10 minutes, and a batch's slot is not held for an hour. The model's whole
+    /// grade takes 15 to 40 s (docs/measurements/grading-time.md).
+    std::chrono::seconds checks_time_limit{kChecksTimeLimit};
 };
 
 /// Grades one submission: takes its manifest files (submission.h) into a fresh work folder

@@ -338,6 +338,29 @@ TEST_CASE(
     require_honest_zero(stubs);
 }
 
+TEST_CASE(
+    "a submission that sleeps in every call ends when the grade's checks run out of time, each "
+    "check not started by then timed out with no points",
+    "[corpus]") {
+    Graded entry;
+    entry.output = kWork / "checks-time-limit/report";
+    const fs::path submission = mutated_submission(kCorpus / "hostile/1-sleep-forever.diff",
+                                                   kWork / "checks-time-limit/submission");
+    grade(entry, submission, "--stage 1 --no-speed --checks-time-limit 5");
+    INFO(describe(entry));
+    REQUIRE(entry.report);
+    // The first check waits out its own 20 s past the grade's 5; the others do not start.
+    CHECK(entry.seconds < 60.0);
+    std::size_t not_run = 0;
+    for (const CheckResult& check : entry.report->checks) {
+        INFO(check.id << ": " << check.summary);
+        CHECK(check.outcome == Outcome::timed_out);
+        CHECK(check.score == 0.0);
+        if (check.summary.rfind("not run: the grade's checks had taken the 5 s", 0) == 0) ++not_run;
+    }
+    CHECK(not_run + 1 == entry.report->checks.size());
+}
+
 TEST_CASE("every mutant loses points in its own stage", "[corpus]") {
     const std::vector<Graded> graded = grade_corpus("mutants");
     REQUIRE(graded.size() >= 30);

@@ -64,6 +64,7 @@ struct SubmissionArguments {
     std::string cache;
     std::uint64_t seed = kDefaultStatisticsSeed;
     std::optional<std::uint64_t> eye_seed;
+    int checks_time_limit = kChecksTimeLimit;
 };
 
 int grade_one(const SubmissionArguments& arguments) {
@@ -84,6 +85,7 @@ int grade_one(const SubmissionArguments& arguments) {
     if (arguments.case_index >= 0)
         options.only_case = static_cast<std::size_t>(arguments.case_index);
     options.eye_seed = arguments.eye_seed;
+    options.checks_time_limit = std::chrono::seconds(arguments.checks_time_limit);
     options.reference_probe = RAYSTEP_REFERENCE_PROBE;
     options.reproduce = "raystep-grade submission " + arguments.path;
     // The statistical checks' seed is part of how a case is reproduced: a command for one of
@@ -221,6 +223,12 @@ int main(int argc, char** argv) {
     submission->add_option("--eye-seed", one.eye_seed,
                            "The seed of the eyes the render checks look from, as a reproduce line "
                            "names it (default: drawn anew for each grade)");
+    submission
+        ->add_option("--checks-time-limit", one.checks_time_limit,
+                     "Seconds of wall-clock time the checks may take; a check that would start "
+                     "later ends as timed out (default: " +
+                         std::to_string(kChecksTimeLimit) + ")")
+        ->check(CLI::Range(1, 86400));
     submission->add_flag("--keep-work", one.keep_work,
                          "Keep the build (the submission's files, objects, probes) to look into");
     submission->add_option("--cache", one.cache,
