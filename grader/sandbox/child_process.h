@@ -18,8 +18,9 @@ struct Identity {
     gid_t gid = 0;
 };
 
-/// What the child runs and under which limits: all decided before fork, so that the child only
-/// makes async-signal-safe calls (the grader may have other threads, and a fork copies only ours).
+/// What the child runs and under which limits: all decided before it starts, so that the child
+/// only makes async-signal-safe calls (it shares the memory of the grader, whose other threads
+/// may hold its locks).
 struct ChildSpec {
     std::string executable;                ///< an absolute path, executed as it is
     std::vector<std::string> argv;         ///< argv[0] included
