@@ -120,7 +120,8 @@ def check_every_page_sees_the_view_and_controls_of_the_one_render():
 
 
 def check_requests_at_once_from_many_pages_neither_crash_nor_stall_it():
-    # Renders started over renders, scene switches and traces, from eight clients at once.
+    # Renders started over renders, scene switches and traces, from eight clients at once, each
+    # asking every path twice, each from a different first path.
     import threading
     with Served([SCENE]) as view:
         paths = ["/api/render?view=full", "/api/render?view=depth&spp=4",
@@ -130,7 +131,7 @@ def check_requests_at_once_from_many_pages_neither_crash_nor_stall_it():
         failures = []
 
         def client(first):
-            for k in range(30):
+            for k in range(2 * len(paths)):
                 status, _, body = view.request(paths[(first + k) % len(paths)])
                 if status not in (200, 400):
                     failures.append((status, body[:200]))
