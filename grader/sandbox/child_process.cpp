@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
@@ -104,8 +105,17 @@ std::vector<char*> c_strings(std::vector<std::string>& strings) {
     return pointers;
 }
 
+// The functions the child runs, uninstrumented by AddressSanitizer: it would call its no-return
+// hook before each [[noreturn]] call, which reads the bounds of the stack of the grader's thread,
+// whose memory the child shares, while the child runs on a stack of its own (start_child).
+#if defined(__SANITIZE_ADDRESS__)
+#define RAYSTEP_CHILD_SIDE __attribute__((no_sanitize_address))
+#else
+#define RAYSTEP_CHILD_SIDE
+#endif
+
 // In the child: tell the parent which step failed, and stop. Only async-signal-safe calls.
-[[noreturn]] void report_failure(int report_fd, Step step) {
+[[noreturn]] RAYSTEP_CHILD_SIDE void report_failure(int report_fd, Step step) {
     const ChildFailure failure{step, errno};
     // A write that fails means the parent is gone, and there is no one left to tell.
     [[maybe_unused]] const ssize_t told = write(report_fd, &failure, sizeof failure);
@@ -143,11 +153,12 @@ constexpr int kFirstFreeDescriptor = kAnswerDescriptor + 4;
 // The child, from its start to exec. Only async-signal-safe calls that write nothing of the
 // grader's memory, which it shares (start_child): another thread of the grader may hold a lock
 // (malloc's, say), and the grader's objects must be as they were when the child is gone.
-[[noreturn]] void become_program(const ChildSpec& spec, char* const* argv, char* const* envp,
-                                 const ChildEnds& ends, long open_max) {
+[[noreturn]] RAYSTEP_CHILD_SIDE void become_program(const ChildSpec& spec, char* const* argv,
+                                                    char* const* envp, const ChildEnds& ends,
+                                                    long open_max) {
     // Default signal handling: a handler of the grader must not run in the child before the exec,
     // and an ignored signal stays ignored across it (a grader ignoring SIGPIPE would hand that
-    // on). The parent blocked every signal across the fork; unblock them at the exec.
+    // on). The parent blocked every signal across the start; unblock them at the exec.
     for (int sig = 1; sig < NSIG; ++sig) {
         struct sigaction action {};
         if (sigaction(sig, nullptr, &action) != 0 || action.sa_handler == SIG_DFL) continue;
@@ -212,11 +223,15 @@ constexpr int kFirstFreeDescriptor = kAnswerDescriptor + 4;
     // The identity, groups first (setgid and setgroups need the privilege setuid gives up). By
     // the kernel's calls, not libc's: in a threaded program libc's setuid changes every thread's
     // identity, signalling the threads it knows of, which here are the grader's (see start_child).
+    // Then not dumpable: the switch makes the memory the child shares with the grader as dumpable
+    // as fs.suid_dumpable says, and a process of the sandbox's user must never trace the child
+    // and through it write the grader's memory before the exec gives the child its own.
     if (spec.identity) {
         if (syscall(SYS_setgroups, 0, nullptr) != 0 ||
             syscall(SYS_setgid, spec.identity->gid) != 0 ||
             syscall(SYS_setuid, spec.identity->uid) != 0 || getuid() != spec.identity->uid ||
-            geteuid() != spec.identity->uid) {
+            geteuid() != spec.identity->uid || getgid() != spec.identity->gid ||
+            getegid() != spec.identity->gid || prctl(PR_SET_DUMPABLE, 0, 0, 0, 0) != 0) {
             report_failure(report_fd, Step::identity);
         }
     }
@@ -250,13 +265,13 @@ struct ChildStart {
     long open_max;
 };
 
-int start_program(void* start) {
+RAYSTEP_CHILD_SIDE int start_program(void* start) {
     const auto* s = static_cast<const ChildStart*>(start);
     become_program(*s->spec, s->argv, s->envp, *s->ends, s->open_max);
 }
 
 // The child's own stack while it shares the grader's memory: become_program's frames need a few
-// kilobytes.
+// kilobytes. Left uninitialised: only the pages the child touches are ever faulted in.
 constexpr std::size_t kChildStackBytes = 256 << 10;
 
 void reap(pid_t pid) {
@@ -267,7 +282,7 @@ void reap(pid_t pid) {
 }  // namespace
 
 ChildProcess start_child(const ChildSpec& spec) {
-    // Everything the child needs, made before the fork.
+    // Everything the child needs, made before it starts.
     std::vector<std::string> argv_strings = spec.argv;
     std::vector<std::string> env_strings = spec.environment;
     const std::vector<char*> argv = c_strings(argv_strings);
@@ -305,14 +320,14 @@ ChildProcess start_child(const ChildSpec& spec) {
     // signal handlers, limits and identity are its own. Every signal is blocked across the
     // start, so that none reaches a handler of the grader's in the child before it has reset
     // them all.
-    std::vector<char> stack(kChildStackBytes);
+    const std::unique_ptr<char[]> stack(new char[kChildStackBytes]);
     ChildStart start{&spec, argv.data(), envp.data(), &ends, open_max};
     sigset_t all;
     sigset_t previous;
     sigfillset(&all);
     pthread_sigmask(SIG_SETMASK, &all, &previous);
-    const pid_t pid =
-        clone(start_program, stack.data() + stack.size(), CLONE_VM | CLONE_VFORK | SIGCHLD, &start);
+    const pid_t pid = clone(start_program, stack.get() + kChildStackBytes,
+                            CLONE_VM | CLONE_VFORK | SIGCHLD, &start);
     const int clone_error = errno;
     pthread_sigmask(SIG_SETMASK, &previous, nullptr);
     if (pid < 0) {

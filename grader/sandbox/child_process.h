@@ -67,10 +67,10 @@ struct ChildProcess {
     UniqueFd answers_read;  ///< empty unless the spec asked for an answer pipe
 };
 
-/// Forks; the child gets pipes for stdin, stdout and stderr (and the answer pipe, if asked) and no
-/// other descriptor of ours, default signal handling, a new session, the limits and the identity,
-/// then execs. Throws std::runtime_error naming the step that failed, and why, when the program
-/// could not be started; the child is reaped before.
+/// Starts the program; the child gets pipes for stdin, stdout and stderr (and the answer pipe, if
+/// asked) and no other descriptor of ours, default signal handling, a new session, the limits and
+/// the identity, then execs. Throws std::runtime_error naming the step that failed, and why, when
+/// the program could not be started; the child is reaped before.
 ChildProcess start_child(const ChildSpec& spec);
 
 }  // namespace raystep::grade
