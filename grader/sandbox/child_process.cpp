@@ -315,7 +315,7 @@ ChildProcess start_child(const ChildSpec& spec) {
     // The child shares the grader's memory until its exec, and this thread waits for it
     // (CLONE_VM | CLONE_VFORK, as posix_spawn starts a program). A fork would copy the grader's
     // page tables, and every page the grader wrote afterwards would fault to be copied: on a
-    // virtual machine that shadows page tables, that was a fifth of a grade's processor time
+    // virtual machine that shadows page tables, that was over a tenth of a grade's processor time
     // (docs/measurements/grading-time.md). Only the memory is shared: the child's descriptors,
     // signal handlers, limits and identity are its own. Every signal is blocked across the
     // start, so that none reaches a handler of the grader's in the child before it has reset
