@@ -151,8 +151,9 @@ static_assert(kInheritedDescriptor == kAnswerDescriptor + 3);
 constexpr int kFirstFreeDescriptor = kAnswerDescriptor + 4;
 
 // The child, from its start to exec. Only async-signal-safe calls that write nothing of the
-// grader's memory, which it shares (start_child): another thread of the grader may hold a lock
-// (malloc's, say), and the grader's objects must be as they were when the child is gone.
+// grader's memory, which it shares (start_child), but the errno of the thread that started it:
+// another thread of the grader may hold a lock (malloc's, say), and the grader's objects must be
+// as they were when the child is gone.
 [[noreturn]] RAYSTEP_CHILD_SIDE void become_program(const ChildSpec& spec, char* const* argv,
                                                     char* const* envp, const ChildEnds& ends,
                                                     long open_max) {
@@ -257,6 +258,7 @@ constexpr int kFirstFreeDescriptor = kAnswerDescriptor + 4;
     report_failure(report_fd, Step::exec);
 }
 
+// What become_program is given, passed through clone's one pointer.
 struct ChildStart {
     const ChildSpec* spec;
     char* const* argv;
