@@ -121,7 +121,7 @@ def check_every_page_sees_the_view_and_controls_of_the_one_render():
 
 def check_requests_at_once_from_many_pages_neither_crash_nor_stall_it():
     # Renders started over renders, scene switches and traces, from eight clients at once, each
-    # asking every path twice, each from a different first path.
+    # asking every path twice in turn, starting at its own place in the list.
     import threading
     with Served([SCENE]) as view:
         paths = ["/api/render?view=full", "/api/render?view=depth&spp=4",
