@@ -1,4 +1,4 @@
-// applies_to is declared with the methods (stage3_methods.h) but defined here, in raystep_cases:
+// applies_to is declared with the methods (stage3_methods.h) but defined here, in raystep_protocol:
 // scoring needs it, and the library that scores must not link any stage's code.
 
 #include <variant>

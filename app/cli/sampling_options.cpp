@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "base/scene/sample_pattern.h"
+
 namespace raystep {
 
 namespace {
@@ -9,13 +11,6 @@ namespace {
 // The loader's ceiling on `spp` (docs/scene-format.md), so that the option cannot ask for more
 // than a scene may.
 constexpr int kMostSamplesPerPixel = 1 << 16;
-
-bool is_square(int count) {
-    int side = 1;
-    while (side * side < count)
-        ++side;
-    return side * side == count;
-}
 
 }  // namespace
 
@@ -49,7 +44,8 @@ void apply_sampling(const SamplingArguments& arguments, Scene& scene) {
         scene.pixel_sampling = *pattern;
     }
     if (arguments.seed) scene.seed = *arguments.seed;
-    if (scene.pixel_sampling != SamplePattern::random && !is_square(scene.samples_per_pixel)) {
+    if (scene.pixel_sampling != SamplePattern::random &&
+        !fills_square_grid(scene.samples_per_pixel)) {
         throw std::invalid_argument(std::to_string(scene.samples_per_pixel) +
                                     " samples per pixel cannot be placed " +
                                     std::string(sample_pattern_name(scene.pixel_sampling)) +

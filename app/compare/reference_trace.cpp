@@ -215,8 +215,9 @@ class Decoder {
     std::size_t width_;
 };
 
-PixelRecord decode(const float* values, PipelineReach reach, std::size_t lights, bool full_is_local,
-                   const std::string& file, std::size_t pixel, int width) {
+PixelRecord decode_pixel_record(const float* values, PipelineReach reach, std::size_t lights,
+                                bool full_is_local, const std::string& file, std::size_t pixel,
+                                int width) {
     Decoder in(values, file, pixel, width);
     PixelRecord record;
     Ray ray;
@@ -395,8 +396,8 @@ ReferenceTrace read_reference_trace(const fs::path& path) {
     for (std::size_t p = 0; p < size; ++p) {
         for (std::size_t c = 0; c < channels.size(); ++c)
             ordered[c] = values[p * stride + static_cast<std::size_t>(position[c])];
-        trace.pixels.push_back(
-            decode(ordered.data(), reach, trace.lights, full_is_local, file, p, width));
+        trace.pixels.push_back(decode_pixel_record(ordered.data(), reach, trace.lights,
+                                                   full_is_local, file, p, width));
     }
     return trace;
 }

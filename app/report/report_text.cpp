@@ -18,7 +18,7 @@ bool is_continuation(unsigned char byte) {
 // The code point of the valid UTF-8 sequence at text[at], and its length; length 0 when the bytes
 // there are not one (a stray continuation byte, a truncated sequence, an overlong form, a
 // surrogate, or a value past U+10FFFF). RFC 3629, section 4.
-std::pair<std::uint32_t, std::size_t> decode(std::string_view text, std::size_t at) {
+std::pair<std::uint32_t, std::size_t> decode_utf8(std::string_view text, std::size_t at) {
     const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[at + k]); };
     const unsigned char lead = byte(0);
     if (lead < 0x80) return {lead, 1};
@@ -67,7 +67,7 @@ bool acts_on_reader(std::uint32_t code) {
 std::size_t append_displayable(std::string_view text, std::size_t max_bytes, std::string& shown) {
     std::size_t at = 0;
     while (at < text.size()) {
-        const auto [code, length] = decode(text, at);
+        const auto [code, length] = decode_utf8(text, at);
         std::string_view piece;
         std::size_t consumed = length;
         if (length == 0) {

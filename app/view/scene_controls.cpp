@@ -43,11 +43,6 @@ int count_of(const std::string& name, const std::string& text, int largest) {
     return static_cast<int>(value);
 }
 
-bool is_square(int count) {
-    const int root = static_cast<int>(std::lround(std::sqrt(count)));
-    return root * root == count;
-}
-
 std::string number_text(double value) {
     char text[32];
     std::snprintf(text, sizeof text, "%.6g", value);
@@ -145,7 +140,8 @@ void apply_scene_controls(const std::map<std::string, std::string>& values, Scen
         }
         scene.pixel_sampling = *parsed;
     }
-    if (scene.pixel_sampling != SamplePattern::random && !is_square(scene.samples_per_pixel)) {
+    if (scene.pixel_sampling != SamplePattern::random &&
+        !fills_square_grid(scene.samples_per_pixel)) {
         throw std::invalid_argument("control spp: " + std::to_string(scene.samples_per_pixel) +
                                     " samples cannot be placed " +
                                     std::string(sample_pattern_name(scene.pixel_sampling)) +
@@ -168,7 +164,7 @@ void apply_scene_controls(const std::map<std::string, std::string>& values, Scen
         }
         scene.light_stratify = *stratify == "on";
     }
-    if (scene.light_stratify && !is_square(scene.light_samples)) {
+    if (scene.light_stratify && !fills_square_grid(scene.light_samples)) {
         throw std::invalid_argument(
             "control lightsamples: stratified light samples need n x n "
             "strata (4, 9, 16, ...), not " +

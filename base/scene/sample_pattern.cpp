@@ -1,5 +1,7 @@
 #include "base/scene/sample_pattern.h"
 
+#include <cmath>
+
 namespace raystep {
 
 std::string_view sample_pattern_name(SamplePattern pattern) {
@@ -20,6 +22,13 @@ std::optional<SamplePattern> parse_sample_pattern(std::string_view name) {
         if (name == sample_pattern_name(pattern)) return pattern;
     }
     return std::nullopt;
+}
+
+bool fills_square_grid(int count) {
+    // The square root of an int is within half of its rounding: exact for every count a scene
+    // can hold (far below 2^52).
+    const int side = static_cast<int>(std::lround(std::sqrt(static_cast<double>(count))));
+    return side * side == count;
 }
 
 }  // namespace raystep

@@ -19,4 +19,7 @@ std::string_view sample_pattern_name(SamplePattern pattern);
 /// The pattern with this name; nullopt when none has it.
 std::optional<SamplePattern> parse_sample_pattern(std::string_view name);
 
+/// Whether `count` samples fill an n x n grid of strata, as jittered and regular place them.
+bool fills_square_grid(int count);
+
 }  // namespace raystep

@@ -168,7 +168,6 @@ class SceneParser {
     void lightsamples();
     void lightstratify();
     void seed();
-    static bool is_square(int n);
     void check_sample_grids();
 
     // The CSE168 path tracer's settings that raystep does not render

@@ -1,9 +1,9 @@
 #include "base/scene/scene_parser.h"
 
 #include <array>
-#include <cmath>
 
 #include "base/errors/input_error.h"
+#include "base/scene/sample_pattern.h"
 #include "base/scene/text_fields.h"
 
 namespace raystep::scene_parsing {
@@ -49,17 +49,12 @@ void SceneParser::seed() {
     scene_.seed = parse_unsigned64(fields_[1], {name_, line_}, "the seed");
 }
 
-bool SceneParser::is_square(int n) {
-    const int root = static_cast<int>(std::lround(std::sqrt(static_cast<double>(n))));
-    return root * root == n;
-}
-
 // A non-square spp under the default pattern falls back to random sampling with a note,
 // because the CSE168 course, whose scenes must load as written, allows any spp; once a file
 // asks for jittered or regular sampling by name, it is an error.
 void SceneParser::check_sample_grids() {
     const int spp = scene_.samples_per_pixel;
-    if (!is_square(spp) && scene_.pixel_sampling != SamplePattern::random) {
+    if (!fills_square_grid(spp) && scene_.pixel_sampling != SamplePattern::random) {
         const std::uint32_t pattern_line = line_of("pixelsampling");
         if (pattern_line != 0) {
             throw InputError(
@@ -78,7 +73,7 @@ void SceneParser::check_sample_grids() {
                  "rather than jittered in n x n strata; give a square for jittered sampling, "
                  "or 'pixelsampling random' to choose random sampling"});
     }
-    if (scene_.light_stratify && !is_square(scene_.light_samples)) {
+    if (scene_.light_stratify && !fills_square_grid(scene_.light_samples)) {
         throw InputError(name_, static_cast<int>(line_of("lightsamples")),
                          "lightsamples " + std::to_string(scene_.light_samples) +
                              " is not a square, and 'lightstratify on' on line " +
