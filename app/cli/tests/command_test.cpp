@@ -75,15 +75,17 @@ TEST_CASE("raystep command: info on every bad scene reports its file:line and ex
     for (const fs::directory_entry& entry : fs::directory_iterator(kData / "bad_scenes")) {
         if (entry.path().extension() != ".test") continue;
         ++scenes;
+        INFO(entry.path().filename().string());
         std::string first;
         std::getline(std::ifstream(entry.path()), first);
+        const std::string prefix = "# expect: ";
+        REQUIRE(first.rfind(prefix, 0) == 0);
         const std::string line =
-            first.substr(std::string("# expect: ").size(),
-                         first.find(':', 10) - std::string("# expect: ").size());
+            first.substr(prefix.size(), first.find(':', prefix.size()) - prefix.size());
         const std::string where = "bad_scenes/" + entry.path().filename().string() + ":" +
                                   (line == "0" ? "" : line + ":") + " ";
         const CommandRun run = raystep_in(folder.path(), {"info", entry.path().string()});
-        INFO(entry.path().filename().string() << " printed:\n" << run.output());
+        INFO("it printed:\n" << run.output());
         CHECK(run.exit_code == 1);
         CHECK_THAT(run.output(), PrintsInOrder({regex_escaped(where)}));
     }
