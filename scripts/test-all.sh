@@ -50,7 +50,8 @@ sanitizer_run() {
     cmake --preset debug-asan -DRAYSTEP_WARNINGS_AS_ERRORS=ON -DCMAKE_UNITY_BUILD=ON \
         -DCMAKE_UNITY_BUILD_BATCH_SIZE=16 -DCMAKE_CXX_FLAGS_DEBUG=-g1 >/dev/null
     local sanitized=(raystep raystep-reference raystep_base_tests raystep_renderer_tests
-        raystep_app_tests raystep_command_tests raystep_sandbox_tests)
+        raystep_app_tests raystep_command_tests raystep_bench_command_tests
+        raystep_sandbox_tests)
     local stage
     for stage in 1 2 3 4 5 6 7 8 9; do
         sanitized+=("raystep_stage${stage}_tests")

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "app/cli/tests/command_run.h"
 #include "base/testing/catch.h"
+#include "base/testing/command_run.h"
 #include "base/testing/scratch_folder.h"
 
 using raystep::testing::CommandRun;

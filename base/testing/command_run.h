@@ -1,7 +1,8 @@
 #pragma once
 
 // A program run as a user runs it, from a shell in a folder: its exit code and what it printed,
-// for the tests of the `raystep` command. Instructor-side tests only (POSIX shell quoting).
+// for the tests of the commands (`raystep`, `raystep bench`) and of the scripts. Instructor-side
+// tests only: a POSIX shell quotes the words.
 
 #include <cstdlib>
 #include <filesystem>
