@@ -25,6 +25,7 @@ std::optional<SamplePattern> parse_sample_pattern(std::string_view name) {
 }
 
 bool fills_square_grid(int count) {
+    if (count < 1) return false;
     // The square root of an int is within half of its rounding: exact for every count a scene
     // can hold (far below 2^52).
     const int side = static_cast<int>(std::lround(std::sqrt(static_cast<double>(count))));

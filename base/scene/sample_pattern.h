@@ -19,7 +19,8 @@ std::string_view sample_pattern_name(SamplePattern pattern);
 /// The pattern with this name; nullopt when none has it.
 std::optional<SamplePattern> parse_sample_pattern(std::string_view name);
 
-/// Whether `count` samples fill an n x n grid of strata, as jittered and regular place them.
+/// Whether `count` samples fill an n x n grid of strata (n at least 1), as jittered and regular
+/// place them.
 bool fills_square_grid(int count);
 
 }  // namespace raystep

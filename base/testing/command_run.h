@@ -45,14 +45,17 @@ inline std::string file_text(const std::filesystem::path& path) {
     return text.str();
 }
 
-/// Runs `words` (the program first) in `folder`, with `environment` (NAME=value words) added; its
-/// two streams go to files of a scratch folder of their own, so that `folder` gains nothing else.
+/// Runs `words` (the program first) in `folder`, with `environment` (NAME=value settings) added;
+/// its two streams go to files of a scratch folder of their own, so that `folder` gains nothing
+/// else.
 inline CommandRun run_command(const std::vector<std::string>& words,
                               const std::filesystem::path& folder,
                               const std::vector<std::string>& environment = {}) {
     std::string command = "cd " + shell_word(folder.string()) + " &&";
-    for (const std::string& setting : environment)
-        command += " " + setting;
+    for (const std::string& setting : environment) {
+        const std::size_t equals = setting.find('=');
+        command += " " + setting.substr(0, equals + 1) + shell_word(setting.substr(equals + 1));
+    }
     for (const std::string& word : words)
         command += " " + shell_word(word);
     const ScratchFolder streams("streams");
@@ -72,22 +75,22 @@ inline CommandRun run_command(const std::vector<std::string>& words,
 }
 
 /// Matches an output holding each pattern (an ECMAScript regular expression, `.` within a line)
-/// after the one before it: {"a", "b"} as CMake's `a.*b`, across lines. `^` and `$` are the
-/// output's first and last character.
+/// after the one before it: {"a", "b"} as CMake's `a.*b`, across lines. `^` in the first pattern
+/// is the output's first character (in a later one it matches nothing), `$` its last.
 class PrintsInOrder : public MatcherBase<std::string> {
   public:
     explicit PrintsInOrder(std::vector<std::string> patterns) : patterns_(std::move(patterns)) {}
 
     bool match(const std::string& output) const override {
         auto from = output.cbegin();
+        auto flags = std::regex_constants::match_default;
         for (const std::string& pattern : patterns_) {
-            // After the first pattern, `^` must not match where the last one ended.
-            const auto flags = from == output.cbegin() ? std::regex_constants::match_default
-                                                       : std::regex_constants::match_prev_avail;
             std::smatch found;
             if (!std::regex_search(from, output.cend(), found, std::regex(pattern), flags))
                 return false;
             from = found[0].second;
+            // Where the last pattern ended is no start of the output.
+            flags = std::regex_constants::match_not_bol;
         }
         return true;
     }

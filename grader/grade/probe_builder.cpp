@@ -93,7 +93,7 @@ struct StagedToolchain {
     std::vector<std::string> objects;    ///< the probe's calls, the renderer, app/check
     std::vector<std::string> libraries;  ///< below the stages, in link order
     /// Of those, what a stage's code may call: base/ (raystep_base, raystep_scene) and the system's
-    /// (ARCHITECTURE.md, "Layers"); not the protocol, the views or the case files.
+    /// (ARCHITECTURE.md, "Layers"); not the protocol with its case files, nor the views.
     std::vector<std::string> base_libraries;
     std::map<int, fs::path> stage_libraries;
 };

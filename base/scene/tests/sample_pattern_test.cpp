@@ -11,6 +11,8 @@ TEST_CASE("fills_square_grid: n x n samples fill a grid, their neighbours do not
         if (side > 1) CHECK_FALSE(fills_square_grid(side * side - 1));
     }
     CHECK_FALSE(fills_square_grid(2));
+    CHECK_FALSE(fills_square_grid(0));
+    CHECK_FALSE(fills_square_grid(-4));
 }
 
 TEST_CASE("sample_pattern_name: each pattern's name reads back as the pattern", "[scene]") {
