@@ -106,4 +106,19 @@ class PrintsInOrder : public MatcherBase<std::string> {
     std::vector<std::string> patterns_;
 };
 
+/// A run judged as a user judges it: the exit code must be `exit_code`, and the output must print
+/// `patterns` in order; a failure shows the whole output.
+inline void check_run(const CommandRun& run, int exit_code, std::vector<std::string> patterns) {
+    INFO(run.output());
+    CHECK(run.exit_code == exit_code);
+    CHECK_THAT(run.output(), PrintsInOrder(std::move(patterns)));
+}
+
+/// `words` (the program first) run in a scratch folder of its own, judged by check_run.
+inline void check_command(const std::vector<std::string>& words, int exit_code,
+                          std::vector<std::string> patterns) {
+    const ScratchFolder folder("command");
+    check_run(run_command(words, folder.path()), exit_code, std::move(patterns));
+}
+
 }  // namespace raystep::testing

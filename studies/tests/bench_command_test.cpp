@@ -13,7 +13,6 @@
 #include "base/testing/scratch_folder.h"
 
 using raystep::testing::CommandRun;
-using raystep::testing::PrintsInOrder;
 using raystep::testing::ScratchFolder;
 
 namespace fs = std::filesystem;
@@ -22,26 +21,21 @@ namespace {
 
 const fs::path kData = RAYSTEP_TEST_DATA;
 
-// `program` with `arguments` in a scratch folder of its own: the exit code must be `exit_code`
-// and the output must print `patterns` in order.
-void check_command(const std::string& program, std::vector<std::string> arguments, int exit_code,
+// `program` with `arguments` in a scratch folder of its own, judged by check_run.
+void check_program(const std::string& program, std::vector<std::string> arguments, int exit_code,
                    std::vector<std::string> patterns) {
-    const ScratchFolder folder("bench");
     arguments.insert(arguments.begin(), program);
-    const CommandRun run = raystep::testing::run_command(arguments, folder.path());
-    INFO(run.output());
-    CHECK(run.exit_code == exit_code);
-    CHECK_THAT(run.output(), PrintsInOrder(std::move(patterns)));
+    raystep::testing::check_command(arguments, exit_code, std::move(patterns));
 }
 
 void check_raystep(std::vector<std::string> arguments, int exit_code,
                    std::vector<std::string> patterns) {
-    check_command(RAYSTEP_PROGRAM, std::move(arguments), exit_code, std::move(patterns));
+    check_program(RAYSTEP_PROGRAM, std::move(arguments), exit_code, std::move(patterns));
 }
 
 void check_reference(std::vector<std::string> arguments, int exit_code,
                      std::vector<std::string> patterns) {
-    check_command(RAYSTEP_REFERENCE_PROGRAM, std::move(arguments), exit_code, std::move(patterns));
+    check_program(RAYSTEP_REFERENCE_PROGRAM, std::move(arguments), exit_code, std::move(patterns));
 }
 
 }  // namespace
@@ -168,7 +162,5 @@ TEST_CASE("charts: draw-charts.py names a JSON file that is not a study's", "[cl
     const CommandRun run = raystep::testing::run_command(
         {RAYSTEP_CHART_PYTHON, RAYSTEP_SOURCE_DIR "/scripts/draw-charts.py", "not-a-study.json"},
         folder.path());
-    INFO(run.output());
-    CHECK(run.exit_code == 2);
-    CHECK_THAT(run.output(), PrintsInOrder({"not-a-study.json: not the JSON of a study"}));
+    raystep::testing::check_run(run, 2, {"not-a-study.json: not the JSON of a study"});
 }
