@@ -19,7 +19,7 @@ using namespace raystep::grade;
 namespace {
 
 // The reference's JSON with one family: Cramer at 20 Mrays/s.
-std::filesystem::path write_reference(const testing::ScratchFolder& folder,
+std::filesystem::path write_reference(const raystep::testing::ScratchFolder& folder,
                                       const std::string& family_name) {
     ParetoFamily family;
     family.name = family_name;
@@ -53,7 +53,7 @@ GradeReport report_with_measurement(Outcome outcome) {
 
 TEST_CASE("speed_error_chart_data: the submission is a point of its own at its speed ratio",
           "[report]") {
-    const testing::ScratchFolder scratch("speed-error-chart-test");
+    const raystep::testing::ScratchFolder scratch("speed-error-chart-test");
     const std::optional<nlohmann::json> data = speed_error_chart_data(
         report_with_measurement(Outcome::passed), write_reference(scratch, "shared-edges"));
     REQUIRE(data);
@@ -71,7 +71,7 @@ TEST_CASE("speed_error_chart_data: the submission is a point of its own at its s
 }
 
 TEST_CASE("speed_error_chart_data: none without a measurement or a reference", "[report]") {
-    const testing::ScratchFolder scratch("speed-error-chart-test");
+    const raystep::testing::ScratchFolder scratch("speed-error-chart-test");
     const std::filesystem::path reference = write_reference(scratch, "shared-edges");
     CHECK(!speed_error_chart_data(report_with_measurement(Outcome::not_implemented), reference));
     CHECK(!speed_error_chart_data(GradeReport{}, reference));
@@ -83,7 +83,7 @@ TEST_CASE("speed_error_chart_data: none without a measurement or a reference", "
 
 // scripts/draw-charts.py draws it where CMake found a Python with matplotlib; else no chart.
 TEST_CASE("draw_chart_svg: one inline <svg> element with the submission labelled", "[report]") {
-    const testing::ScratchFolder scratch("speed-error-chart-test");
+    const raystep::testing::ScratchFolder scratch("speed-error-chart-test");
     const std::optional<nlohmann::json> data = speed_error_chart_data(
         report_with_measurement(Outcome::passed), write_reference(scratch, "shared-edges"));
     REQUIRE(data);
