@@ -1,5 +1,5 @@
 // raystep_report_example: the example grade (report_example.h) for looking at the reports and for
-// the HTML report's browser test (html_screenshot_test.cmake).
+// the HTML report's browser test (html_screenshot_test.py).
 //
 //   raystep_report_example write FOLDER             every report of the example into FOLDER,
 //                                                   in FOLDER/student and FOLDER/instructor
