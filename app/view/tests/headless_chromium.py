@@ -8,6 +8,7 @@ import json
 import os
 import shutil
 import subprocess
+import sys
 import tempfile
 import time
 
@@ -20,12 +21,16 @@ FLAGS = ("--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-
          "--remote-debugging-pipe")
 
 
-def find_browser():
+def find_browser_or_skip():
+    """The Chromium on the PATH; without one, says so and exits 77, which ctest counts as
+    skipped (the tests' SKIP_RETURN_CODE)."""
     for name in BROWSERS:
         path = shutil.which(name)
         if path:
             return path
-    return None
+    print("skipped: no Chromium (chromium, chromium-browser or google-chrome) on the PATH; "
+          "Debian and Ubuntu: apt-get install chromium")
+    sys.exit(77)
 
 
 class Chromium:

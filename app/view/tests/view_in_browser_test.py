@@ -19,11 +19,10 @@ import subprocess
 import sys
 import time
 
-from headless_chromium import Chromium, find_browser
+from headless_chromium import Chromium, find_browser_or_skip
 from view_process import ViewProcess
 
 RAYSTEP, REFERENCE, SCENE, WORK, SCREENSHOT = sys.argv[1:6]
-SKIPPED = 77
 
 
 def run(*command, expect=0):
@@ -102,11 +101,7 @@ def wait_for_render(browser, generation_before=None):
 
 
 def main():
-    executable = find_browser()
-    if not executable:
-        print("skipped: no Chromium (chromium, chromium-browser or google-chrome) on the PATH; "
-              "Debian and Ubuntu: apt-get install chromium")
-        return SKIPPED
+    executable = find_browser_or_skip()
     os.makedirs(WORK, exist_ok=True)
     scene = student_scene()
     view = ViewProcess(RAYSTEP, [scene])

@@ -28,11 +28,10 @@ import os
 import sys
 import time
 
-from headless_chromium import Chromium, find_browser
+from headless_chromium import Chromium, find_browser_or_skip
 from view_process import ViewProcess
 
 RAYSTEP, SCENES, SCREENSHOTS = sys.argv[1:4]
-SKIPPED = 77
 
 # (window width, height, browser zoom): a lecture-hall projector at 720 and 1080 lines, each also
 # zoomed in, as a lecturer does for the back row.
@@ -188,11 +187,7 @@ def check(result, what, failures):
 
 
 def main():
-    executable = find_browser()
-    if not executable:
-        print("skipped: no Chromium (chromium, chromium-browser or google-chrome) on the PATH; "
-              "Debian and Ubuntu: apt-get install chromium")
-        return SKIPPED
+    executable = find_browser_or_skip()
     os.makedirs(SCREENSHOTS, exist_ok=True)
     view = ViewProcess(RAYSTEP, [os.path.join(SCENES, "stage2", "perspective-wide.test")])
     browser = Chromium(executable, 1280, 720)

@@ -18,18 +18,13 @@ import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..",
                                 "app", "view", "tests"))
-from headless_chromium import Chromium, find_browser  # noqa: E402
+from headless_chromium import Chromium, find_browser_or_skip  # noqa: E402
 
 EXAMPLE, SCRATCH = sys.argv[1:3]
-SKIPPED = 77
 
 
 def main():
-    browser = find_browser()
-    if not browser:
-        print("Chromium is not installed, and this test opens the HTML report in it. "
-              "Debian: apt-get install --no-install-recommends chromium")
-        return SKIPPED
+    browser = find_browser_or_skip()
     shutil.rmtree(SCRATCH, ignore_errors=True)
     report = os.path.join(SCRATCH, "report")
     subprocess.run([EXAMPLE, "write", report], check=True, timeout=120)
