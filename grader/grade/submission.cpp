@@ -124,8 +124,9 @@ std::string links_named(const std::vector<Entry>& entries) {
 }
 
 // The candidate for `file` of stage `folder`: stages/<folder>/<file> if present, else the
-// shallowest file of that name; only regular files within the budget count. Says in `note` what
-// was passed over.
+// shallowest file of that name; only regular files within the budget count. Of entries at the same
+// path, the last: unzip and tar write each over the one before, so it is the file a student sees
+// after unpacking what they handed in. Says in `note` what was passed over.
 const Entry* choose(const std::vector<Entry>& entries, const std::string& folder,
                     const std::string& file, const IntakeBudget& budget, std::string& note) {
     const Entry* best = nullptr;
@@ -154,7 +155,7 @@ const Entry* choose(const std::vector<Entry>& entries, const std::string& folder
                                   " a submission may unpack)");
             continue;
         }
-        if (!best || (in_stage(candidate) && !in_stage(*best)) ||
+        if (!best || candidate.path == best->path || (in_stage(candidate) && !in_stage(*best)) ||
             (in_stage(candidate) == in_stage(*best) && depth(candidate.path) < depth(best->path))) {
             best = &candidate;
         }
@@ -162,8 +163,13 @@ const Entry* choose(const std::vector<Entry>& entries, const std::string& folder
     for (const std::string& passed : passed_over)
         note += (note.empty() ? "" : "; ") + std::string("left out ") + passed;
     if (best && named > 1) {
+        const auto copies = std::count_if(entries.begin(), entries.end(),
+                                          [&](const Entry& e) { return e.path == best->path; });
         note += (note.empty() ? "" : "; ") + file + ": " + std::to_string(named) +
-                " entries of that name; took " + best->path;
+                " entries of that name; took " +
+                (copies > 1 ? "the last of the " + std::to_string(copies) + " at " + best->path +
+                                  ", the one unpacking leaves"
+                            : best->path);
     }
     return best;
 }

@@ -204,6 +204,26 @@ TEST_CASE(
     }
 }
 
+TEST_CASE("take_submission: of two entries at one path, the last is taken, as unpacking leaves it",
+          "[intake]") {
+    const TempFolder folder(0755);
+    for (const Format format : {Format::zip, Format::pax}) {
+        std::vector<ArchiveEntry> entries = complete_stages("");
+        entries.push_back({"stages/1_vectors/vectors.cpp", "// vectors, fixed", "", ""});
+        const fs::path archive = folder.path() / "twice";
+        fs::remove(archive);
+        write_archive(archive, format, entries);
+        const WorkFolder work(folder.path(), "work-", false);
+
+        const Submission submission = take_submission(archive, kManifests, work.path());
+        CHECK(taken(submission).at("1_vectors/vectors.cpp") == "// vectors, fixed");
+        CHECK(taken(submission).at("3_intersect/sphere.cpp") == "// sphere");
+        CHECK(notes(submission)
+                  .find("vectors.cpp: 2 entries of that name; took the last of the 2 "
+                        "at stages/1_vectors/vectors.cpp") != std::string::npos);
+    }
+}
+
 TEST_CASE("take_submission: what unpacks past the budget is left out, and the note says why",
           "[intake]") {
     const TempFolder folder(0755);
