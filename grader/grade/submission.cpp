@@ -123,23 +123,53 @@ std::string links_named(const std::vector<Entry>& entries) {
     return named;
 }
 
+// Where an entry lands when the archive is unpacked: its path with a backslash read as '/', and
+// empty and "." parts dropped ("./stages//1_vectors/vectors.cpp" ->
+// "stages/1_vectors/vectors.cpp").
+std::string unpacked_at(const std::string& path) {
+    std::string place;
+    std::string part;
+    for (std::size_t i = 0; i <= path.size(); ++i) {
+        if (i < path.size() && path[i] != '/' && path[i] != '\\') {
+            part += path[i];
+            continue;
+        }
+        if (!part.empty() && part != ".") place += (place.empty() ? "" : "/") + part;
+        part.clear();
+    }
+    return place;
+}
+
 // The candidate for `file` of stage `folder`: stages/<folder>/<file> if present, else the
-// shallowest file of that name; only regular files within the budget count. Of entries at the same
-// path, the last: unzip and tar write each over the one before, so it is the file a student sees
-// after unpacking what they handed in. Says in `note` what was passed over.
+// shallowest file of that name; only regular files within the budget count. Of entries that land
+// at the same place, only the last: unzip -o and tar write each over the one before, so it is the
+// file a student sees after unpacking what they handed in, and where it cannot be taken, no
+// earlier one is. Says in `note` what was passed over.
 const Entry* choose(const std::vector<Entry>& entries, const std::string& folder,
                     const std::string& file, const IntakeBudget& budget, std::string& note) {
-    const Entry* best = nullptr;
-    std::size_t named = 0;
+    std::vector<const Entry*> named;
+    for (const Entry& entry : entries) {
+        if (archive_entry_name(entry.path) == file) named.push_back(&entry);
+    }
     const auto in_stage = [&](const Entry& e) {
         const std::string parent =
             e.path.substr(0, e.path.size() - std::min(e.path.size(), file.size()));
         return archive_entry_name(parent) == folder;
     };
+    const Entry* best = nullptr;
+    std::size_t best_copies = 1;
     std::vector<std::string> passed_over;
-    for (const Entry& candidate : entries) {
-        if (archive_entry_name(candidate.path) != file) continue;
-        ++named;
+    for (std::size_t i = 0; i < named.size(); ++i) {
+        const Entry& candidate = *named[i];
+        const std::string place = unpacked_at(candidate.path);
+        std::size_t copies = 0;
+        bool replaced = false;
+        for (std::size_t j = 0; j < named.size(); ++j) {
+            if (unpacked_at(named[j]->path) != place) continue;
+            ++copies;
+            replaced = replaced || j > i;
+        }
+        if (replaced) continue;
         if (candidate.kind != "file") {
             passed_over.push_back(candidate.path + " (a " + candidate.kind + ", not a file)");
             continue;
@@ -155,21 +185,20 @@ const Entry* choose(const std::vector<Entry>& entries, const std::string& folder
                                   " a submission may unpack)");
             continue;
         }
-        if (!best || candidate.path == best->path || (in_stage(candidate) && !in_stage(*best)) ||
+        if (!best || (in_stage(candidate) && !in_stage(*best)) ||
             (in_stage(candidate) == in_stage(*best) && depth(candidate.path) < depth(best->path))) {
             best = &candidate;
+            best_copies = copies;
         }
     }
     for (const std::string& passed : passed_over)
         note += (note.empty() ? "" : "; ") + std::string("left out ") + passed;
-    if (best && named > 1) {
-        const auto copies = std::count_if(entries.begin(), entries.end(),
-                                          [&](const Entry& e) { return e.path == best->path; });
-        note += (note.empty() ? "" : "; ") + file + ": " + std::to_string(named) +
+    if (best && named.size() > 1) {
+        note += (note.empty() ? "" : "; ") + file + ": " + std::to_string(named.size()) +
                 " entries of that name; took " +
-                (copies > 1 ? "the last of the " + std::to_string(copies) + " at " + best->path +
-                                  ", the one unpacking leaves"
-                            : best->path);
+                (best_copies > 1 ? "the last of the " + std::to_string(best_copies) + " at " +
+                                       unpacked_at(best->path) + ", the one unpacking leaves"
+                                 : best->path);
     }
     return best;
 }

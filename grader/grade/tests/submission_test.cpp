@@ -204,12 +204,13 @@ TEST_CASE(
     }
 }
 
-TEST_CASE("take_submission: of two entries at one path, the last is taken, as unpacking leaves it",
+TEST_CASE("take_submission: of two entries at one place, the last is taken, as unpacking leaves it",
           "[intake]") {
     const TempFolder folder(0755);
     for (const Format format : {Format::zip, Format::pax}) {
+        // The second spelt as some tools write it: "./" first, a doubled slash.
         std::vector<ArchiveEntry> entries = complete_stages("");
-        entries.push_back({"stages/1_vectors/vectors.cpp", "// vectors, fixed", "", ""});
+        entries.push_back({"./stages//1_vectors/vectors.cpp", "// vectors, fixed", "", ""});
         const fs::path archive = folder.path() / "twice";
         fs::remove(archive);
         write_archive(archive, format, entries);
@@ -222,6 +223,21 @@ TEST_CASE("take_submission: of two entries at one path, the last is taken, as un
                   .find("vectors.cpp: 2 entries of that name; took the last of the 2 "
                         "at stages/1_vectors/vectors.cpp") != std::string::npos);
     }
+}
+
+TEST_CASE("take_submission: where the last entry at a place cannot be taken, no earlier one is",
+          "[intake]") {
+    const TempFolder folder(0755);
+    std::vector<ArchiveEntry> entries = complete_stages("");
+    entries.push_back({"stages/1_vectors/vectors.cpp", "", "", "/etc/passwd"});
+    const fs::path archive = folder.path() / "replaced-by-a-link.tar";
+    write_archive(archive, Format::pax, entries);
+    const WorkFolder work(folder.path(), "work-", false);
+
+    const Submission submission = take_submission(archive, kManifests, work.path());
+    CHECK(taken(submission).count("1_vectors/vectors.cpp") == 0);
+    CHECK(notes(submission).find("left out stages/1_vectors/vectors.cpp (a link, not a file)") !=
+          std::string::npos);
 }
 
 TEST_CASE("take_submission: what unpacks past the budget is left out, and the note says why",
