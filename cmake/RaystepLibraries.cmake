@@ -11,6 +11,8 @@ function(raystep_sources out)
         cmake_path(ABSOLUTE_PATH folder NORMALIZE)
         string(REGEX REPLACE "/$" "" folder "${folder}")
         file(GLOB found CONFIGURE_DEPENDS ${folder}/*.cpp)
+        # Not an editor's lock file or macOS's metadata beside a file (.#x.cpp, ._x.cpp).
+        list(FILTER found EXCLUDE REGEX "/\\.[^/]*$")
         list(APPEND sources ${found})
     endforeach()
     foreach(file IN LISTS arg_SOURCES)

@@ -30,10 +30,11 @@ def main():
             committed = file.read()
         made_by = committed.split(b"\n")[1].decode()
         if not made_by.startswith(MADE_BY):
-            print("%s:2: says not how raystep-oracle made it ('%s...')" % (path, MADE_BY))
+            print("%s:2: '%s' does not say how raystep-oracle made it ('%s...')"
+                  % (path, made_by, MADE_BY))
             return 1
         as_written = made_by[len(MADE_BY):]
-        arguments = shlex.split(as_written.replace("FOLDER", SCRATCH))
+        arguments = [SCRATCH if word == "FOLDER" else word for word in shlex.split(as_written)]
         if subprocess.run([ORACLE, "cases", *arguments, "--threads", "2"],
                           stdout=subprocess.DEVNULL).returncode != 0:
             print("raystep-oracle failed to remake %s" % name)

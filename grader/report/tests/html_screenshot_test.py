@@ -36,7 +36,9 @@ def main():
     try:
         chromium.navigate("file://" + os.path.join(os.path.abspath(report), "student",
                                                    "index.html"))
-        chromium.wait_until("document.readyState === 'complete' && "
+        # The report's own page, not the blank one before it, loaded with every image.
+        chromium.wait_until("location.protocol === 'file:' && document.readyState === 'complete' "
+                            "&& document.images.length > 0 && "
                             "Array.from(document.images).every(image => image.complete)")
         chromium.screenshot(screenshot)
     finally:
