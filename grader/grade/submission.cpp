@@ -1,6 +1,7 @@
 #include "grader/grade/submission.h"
 
 #include <algorithm>
+#include <map>
 #include <set>
 #include <sstream>
 #include <system_error>
@@ -159,17 +160,18 @@ const Entry* choose(const std::vector<Entry>& entries, const std::string& folder
     const Entry* best = nullptr;
     std::size_t best_copies = 1;
     std::vector<std::string> passed_over;
+    // Each place's last entry and how many land there: once each, since an archive may hold a
+    // hundred thousand entries of one name.
+    std::map<std::string, std::pair<std::size_t, std::size_t>> last_at;
+    for (std::size_t i = 0; i < named.size(); ++i) {
+        auto& [last, copies] = last_at[unpacked_at(named[i]->path)];
+        last = i;
+        ++copies;
+    }
     for (std::size_t i = 0; i < named.size(); ++i) {
         const Entry& candidate = *named[i];
-        const std::string place = unpacked_at(candidate.path);
-        std::size_t copies = 0;
-        bool replaced = false;
-        for (std::size_t j = 0; j < named.size(); ++j) {
-            if (unpacked_at(named[j]->path) != place) continue;
-            ++copies;
-            replaced = replaced || j > i;
-        }
-        if (replaced) continue;
+        const auto [last, copies] = last_at.at(unpacked_at(candidate.path));
+        if (last != i) continue;
         if (candidate.kind != "file") {
             passed_over.push_back(candidate.path + " (a " + candidate.kind + ", not a file)");
             continue;
