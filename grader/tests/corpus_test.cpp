@@ -14,7 +14,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <map>
 #include <optional>
 #include <string>
@@ -26,6 +25,7 @@
 
 #include <nlohmann/json.hpp>
 #include "base/testing/catch.h"
+#include "base/testing/command_run.h"
 
 #include "grader/grade/check_definition.h"
 #include "grader/grade/report_folders.h"
@@ -36,6 +36,8 @@ namespace fs = std::filesystem;
 using raystep::grade::CheckResult;
 using raystep::grade::GradeReport;
 using raystep::grade::Outcome;
+using raystep::testing::file_text;
+using raystep::testing::shell_word;
 
 namespace {
 
@@ -44,15 +46,6 @@ const fs::path kCorpus = kSource / "grader/tests/submissions";
 const fs::path kWork = RAYSTEP_CORPUS_WORK;
 // What the write-outside-sandbox submission tries to leave everywhere.
 const std::string kMark = "raystep-hostile-was-here";
-
-std::string shell_quoted(const fs::path& path) {
-    return "'" + path.string() + "'";
-}
-
-std::string read_text(const fs::path& path) {
-    std::ifstream file(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-}
 
 // One graded entry: its report (absent when raystep-grade wrote none), how long grading took.
 struct Graded {
@@ -112,15 +105,15 @@ void grade(Graded& entry, const fs::path& submission, const std::string& argumen
     fs::create_directories(entry.output.parent_path());
     const auto start = std::chrono::steady_clock::now();
     const std::string command =
-        shell_quoted(RAYSTEP_GRADE_PROGRAM) + " submission " + shell_quoted(submission) + " -o " +
-        shell_quoted(entry.output) + " --jobs 1 --cache " + shell_quoted(kWork / "cache") +
+        shell_word(RAYSTEP_GRADE_PROGRAM) + " submission " + shell_word(submission) + " -o " +
+        shell_word(entry.output) + " --jobs 1 --cache " + shell_word(kWork / "cache") +
         " --eye-seed " + std::to_string(corpus_eye_seed()) + " " + arguments + " > " +
-        shell_quoted(entry.output.string() + ".log") + " 2>&1";
+        shell_word(entry.output.string() + ".log") + " 2>&1";
     const int status = std::system(command.c_str());
     entry.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     try {
         entry.report = raystep::grade::report_from_json(
-            nlohmann::json::parse(read_text(raystep::grade::finished_report_file(entry.output))));
+            nlohmann::json::parse(file_text(raystep::grade::finished_report_file(entry.output))));
     } catch (const std::exception& error) {
         entry.problem = "raystep-grade exited with " + std::to_string(status) +
                         " and no readable report.json (" + error.what() + "); its output is in " +
@@ -139,8 +132,7 @@ fs::path mutated_submission(const fs::path& diff, const fs::path& folder) {
         fs::copy(kCorpus / "model/stages" / manifest.folder, folder / "stages" / manifest.folder,
                  fs::copy_options::recursive);
     }
-    const std::string apply =
-        "cd " + shell_quoted(folder) + " && git apply -p1 " + shell_quoted(diff);
+    const std::string apply = "cd " + shell_word(folder) + " && git apply -p1 " + shell_word(diff);
     if (std::system(apply.c_str()) != 0)
         throw std::runtime_error("git apply failed for " + diff.string());
     return folder;
@@ -287,7 +279,7 @@ void require_full_marks(const GradeReport& report, const fs::path& output) {
         if (check.max_score > 0) CHECK(check.outcome == Outcome::passed);
     }
     const nlohmann::json results = nlohmann::json::parse(
-        read_text(raystep::grade::instructor_folder(output) / "results.json"));
+        file_text(raystep::grade::instructor_folder(output) / "results.json"));
     for (const nlohmann::json& test : results.at("tests")) {
         INFO(test.value("name", ""));
         if (test.at("max_score").get<double>() > 0 &&
@@ -299,9 +291,9 @@ void require_full_marks(const GradeReport& report, const fs::path& output) {
 
 // `raystep-grade batch ARGUMENTS` run in `root`, its output in root/LOG: the exit code.
 int run_batch(const fs::path& root, const std::string& arguments, const std::string& log) {
-    const std::string command = "cd " + shell_quoted(root) + " && " +
-                                shell_quoted(RAYSTEP_GRADE_PROGRAM) + " batch " + arguments +
-                                " > " + log + " 2>&1";
+    const std::string command = "cd " + shell_word(root) + " && " +
+                                shell_word(RAYSTEP_GRADE_PROGRAM) + " batch " + arguments + " > " +
+                                log + " 2>&1";
     const int status = std::system(command.c_str());
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
@@ -333,7 +325,7 @@ TEST_CASE(
     stubs.output = kWork / "stubs-exec-sibling-probe/report";
     const fs::path submission =
         stub_submission(kWork / "stubs-exec-sibling-probe/submission",
-                        read_text(kCorpus / "hostile/stubs-exec-sibling-probe.cpp"));
+                        file_text(kCorpus / "hostile/stubs-exec-sibling-probe.cpp"));
     grade(stubs, submission, "");
     require_honest_zero(stubs);
 }
@@ -445,10 +437,10 @@ TEST_CASE(
             CHECK(fs::is_regular_file(file));
         }
         const nlohmann::json results =
-            nlohmann::json::parse(read_text(instructor / "results.json"));
+            nlohmann::json::parse(file_text(instructor / "results.json"));
         CHECK(results.at("score").get<double>() == Approx(entry.report->score()));
         const std::string everything =
-            read_text(instructor / "report.json") + read_text(instructor / "instructor.html");
+            file_text(instructor / "report.json") + file_text(instructor / "instructor.html");
         for (const std::string& secret : secrets) {
             INFO("the report holds \"" << secret << "\"");
             CHECK(everything.find(secret) == std::string::npos);
@@ -473,9 +465,9 @@ TEST_CASE(
     // tool would.
     const auto pack = [&](const fs::path& from, const std::string& what, const fs::path& archive,
                           const std::string& format) {
-        const std::string command = "cd " + shell_quoted(from) + " && " +
-                                    shell_quoted(CMAKE_COMMAND) + " -E tar cf " +
-                                    shell_quoted(archive) + " --format=" + format + " " + what;
+        const std::string command = "cd " + shell_word(from) + " && " + shell_word(CMAKE_COMMAND) +
+                                    " -E tar cf " + shell_word(archive) + " --format=" + format +
+                                    " " + what;
         REQUIRE(std::system(command.c_str()) == 0);
     };
     pack(kCorpus / "model", "stages", class_folder / "model.zip", "zip");
@@ -500,11 +492,11 @@ TEST_CASE(
     const fs::path home = root / "home";
     fs::create_directories(home);
     fs::permissions(home, fs::perms::owner_all);
-    const std::string command = "cd " + shell_quoted(home) + " && " +
-                                shell_quoted(RAYSTEP_GRADE_PROGRAM) +
+    const std::string command = "cd " + shell_word(home) + " && " +
+                                shell_word(RAYSTEP_GRADE_PROGRAM) +
                                 " batch ../submissions -o grades --jobs 2 > ../batch.log 2>&1";
     const int status = std::system(command.c_str());
-    INFO(read_text(root / "batch.log"));
+    INFO(file_text(root / "batch.log"));
     CHECK(status == 0);
 
     const std::map<std::string, std::string> expected = {
@@ -516,7 +508,7 @@ TEST_CASE(
         INFO(name << " from " << entry);
         const fs::path report = raystep::grade::finished_report_file(home / "grades" / name);
         REQUIRE(fs::is_regular_file(report));
-        reports[name] = raystep::grade::report_from_json(nlohmann::json::parse(read_text(report)));
+        reports[name] = raystep::grade::report_from_json(nlohmann::json::parse(file_text(report)));
     }
     // The model, every stage with speed, graded as a class is: full marks on every check.
     CHECK(reports["model"].intake_problem.empty());
@@ -550,7 +542,7 @@ TEST_CASE(
         INFO(entry.path());
         CHECK(entry.path().filename().string().rfind("work-", 0) != 0);
     }
-    const std::string csv = read_text(home / "grades/grades.csv");
+    const std::string csv = file_text(home / "grades/grades.csv");
     CHECK(std::count(csv.begin(), csv.end(), '\n') == 1 + static_cast<long>(expected.size()));
 }
 
@@ -575,11 +567,11 @@ TEST_CASE(
                     "shard" + i + ".log") == 0);
     }
     // Each shard graded two of the six, round robin: shard 1 the first and fourth by name.
-    const nlohmann::json first = nlohmann::json::parse(read_text(root / "shard1/shard.json"));
+    const nlohmann::json first = nlohmann::json::parse(file_text(root / "shard1/shard.json"));
     CHECK(first.at("students") == nlohmann::json({"ana", "dev"}));
 
     const int merged = run("--merge shard1 shard2 shard3 -o merged", "merged.log");
-    INFO(read_text(root / "merged.log"));
+    INFO(file_text(root / "merged.log"));
     CHECK(merged == 0);
     // The same rows as one batch's, but for the seconds each took.
     const std::vector<std::string> whole = rows_without_seconds(root / "whole/grades.csv");
@@ -587,12 +579,12 @@ TEST_CASE(
     CHECK(rows_without_seconds(root / "merged/grades.csv") == whole);
 
     CHECK(run("--merge shard1 shard3 -o partial", "partial.log") == 1);
-    CHECK_THAT(read_text(root / "partial.log"),
+    CHECK_THAT(file_text(root / "partial.log"),
                Catch::Matchers::Contains("shard 2/3 is missing: its students are not in"));
 
     REQUIRE(run("submissions -o shard2-speed --shard 2/3", "speed.log") == 0);
     CHECK(run("--merge shard1 shard2-speed shard3 -o mixed", "mixed.log") == 1);
-    CHECK_THAT(read_text(root / "mixed.log"),
+    CHECK_THAT(file_text(root / "mixed.log"),
                Catch::Matchers::Contains("was graded with other checks or points than ana"));
 }
 
@@ -617,15 +609,15 @@ TEST_CASE(
           rows_without_seconds(root / "one/grades.csv"));
     const auto report_order = [&](const std::string& folder) {
         const nlohmann::json report =
-            nlohmann::json::parse(read_text(root / folder / "ben" / "instructor" / "report.json"));
+            nlohmann::json::parse(file_text(root / folder / "ben" / "instructor" / "report.json"));
         std::vector<std::string> ids;
         for (const nlohmann::json& check : report.at("checks"))
             ids.push_back(check.at("id").get<std::string>());
         return ids;
     };
     // The grader's order: a submission graded on its own, every check in one pass.
-    const std::string single = "cd " + shell_quoted(root) + " && " +
-                               shell_quoted(RAYSTEP_GRADE_PROGRAM) +
+    const std::string single = "cd " + shell_word(root) + " && " +
+                               shell_word(RAYSTEP_GRADE_PROGRAM) +
                                " submission submissions/ben -o single/ben > single.log 2>&1";
     REQUIRE(std::system(single.c_str()) == 0);
     const std::vector<std::string> grader_order = report_order("single");
@@ -638,12 +630,12 @@ TEST_CASE(
     REQUIRE(run("submissions -o first-pass --no-speed", "first-pass.log") == 0);
     fs::copy(root / "first-pass", root / "resumed", fs::copy_options::recursive);
     REQUIRE(run("submissions -o resumed --jobs 2", "resumed.log") == 0);
-    CHECK_THAT(read_text(root / "resumed.log"),
+    CHECK_THAT(file_text(root / "resumed.log"),
                Catch::Matchers::Contains("graded 5 submissions, 0 already graded before"));
     CHECK(report_order("resumed") == grader_order);
     CHECK(rows_without_seconds(root / "resumed/grades.csv") ==
           rows_without_seconds(root / "one/grades.csv"));
     REQUIRE(run("submissions -o resumed --jobs 2", "again.log") == 0);
-    CHECK_THAT(read_text(root / "again.log"),
+    CHECK_THAT(file_text(root / "again.log"),
                Catch::Matchers::Contains("graded 0 submissions, 5 already graded before"));
 }
