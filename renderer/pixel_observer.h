@@ -6,6 +6,7 @@
 
 #include "base/math/types.h"
 #include "renderer/render_scene.h"
+#include "renderer/seen_quad_light.h"
 #include "stages/4_accel/traversal.h"
 #include "stages/6_shading/shading.h"
 
@@ -60,6 +61,10 @@ class PixelObserver {
     /// The eye ray's closest hit (empty on a miss), and what finding it cost.
     virtual void closest_hit(const Ray& /*ray*/, const std::optional<PrimitiveHit>& /*hit*/,
                              const TraversalStats& /*cost*/) {}
+
+    /// In the CSE168 dialect, a quad light that the eye ray meets before its closest hit: the
+    /// light's colour is the ray's, and nothing is shaded.
+    virtual void quad_light_seen(const SeenQuadLight& /*seen*/) {}
 
     /// A hit being shaded: its surface point, then its lights in scene order (point,
     /// directional, spot), then its quad lights, then its local colour.

@@ -8,6 +8,7 @@
 #include "renderer/heat_map.h"
 #include "renderer/ray_colour.h"
 #include "renderer/sample_streams.h"
+#include "renderer/seen_quad_light.h"
 #include "renderer/shade_hit.h"
 #include "stages/8_sampling/sampling.h"
 
@@ -31,6 +32,17 @@ Color camera_ray_colour(const RenderScene& render_scene, View view, const Ray& r
     TraversalStats cost;
     const std::optional<PrimitiveHit> closest = scene_closest_hit(render_scene, ray, &cost);
     observer.closest_hit(ray, closest, cost);
+
+    // The CSE168 dialect draws its quad lights in the views of the finished colour
+    // (seen_quad_light.h).
+    if (view == View::shaded || view == View::full) {
+        if (const std::optional<SeenQuadLight> seen =
+                seen_quad_light(*render_scene.scene, ray, closest)) {
+            observer.quad_light_seen(*seen);
+            if (view == View::full) observer.finished_colour(seen->colour);
+            return seen->colour;
+        }
+    }
 
     switch (view) {
         case View::depth:

@@ -187,8 +187,10 @@ RenderScene prepare_render_scene(const Scene& scene) {
     }
     render_scene.ray_offset = scene.ray_offset;
     render_scene.refraction = features.uses_refraction();
-    render_scene.bounces =
-        features.uses_reflection() || features.uses_refraction() ? scene.max_depth : 0;
+    // No limit (`maxdepth -1`) is for a path tracer's Russian roulette; these recursions have
+    // none, and follow the courses' default depth.
+    const int depth = scene.max_depth == kUnboundedDepth ? kDefaultDepth : scene.max_depth;
+    render_scene.bounces = features.uses_reflection() || features.uses_refraction() ? depth : 0;
     return render_scene;
 }
 

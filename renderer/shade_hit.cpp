@@ -4,7 +4,10 @@
 #include <vector>
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 
+#include "renderer/local_model.h"
+#include "renderer/polygon_irradiance.h"
 #include "renderer/spot_light.h"
 #include "renderer/surface_point.h"
 #include "stages/8_sampling/sampling.h"
@@ -23,8 +26,31 @@ LightStep light_step(const RenderScene& render_scene, const SurfacePoint& point,
     return {kind, line, light, blocked ? LightReach::blocked : LightReach::reaches, shadow};
 }
 
+// The CSE168 dialect's direct integrator at the point: stage 8's light samples, each shaded by the
+// course's Phong lobe (local_model.h) where its shadow ray reaches the light, as
+// quad_light_shading does with Blinn-Phong.
+Color sampled_phong_lobes(const RenderScene& render_scene, const Material& material,
+                          const SurfacePoint& point, const QuadLight& light, SamplePattern pattern,
+                          RandomStream& random, const OccludedFunction& occluded) {
+    const int count = render_scene.scene->light_samples;
+    Color sum(0.0);
+    for (const Vec2& u : samples(pattern, count, random)) {
+        const LightSample sample = sample_quad_light(light, point.position, u, count);
+        // Behind the surface, or from the light's dark side: nothing to add, no ray to trace.
+        if (!(glm::dot(point.shading_normal, sample.direction) > 0.0) ||
+            sample.intensity == Color(0.0)) {
+            continue;
+        }
+        if (occluded(shadow_ray(point, sample, render_scene.ray_offset))) continue;
+        sum += phong_lobe_term(material, point, sample);
+    }
+    return sum;
+}
+
 // Stage 8 at the point: each quad light's soft shadow, its samples placed by the scene's
-// `lightstratify` (jittered n x n strata, or independent random points).
+// `lightstratify` (jittered n x n strata, or independent random points). In the CSE168 dialect
+// the samples are shaded by the course's Phong lobe, and `integrator analyticdirect` integrates
+// each light exactly instead, unshadowed and diffuse only, as the course's integrator does.
 Color quad_lights_shading(const RenderScene& render_scene, const Material& material,
                           const SurfacePoint& point, RandomStream* light_random,
                           PixelObserver& observer) {
@@ -42,8 +68,17 @@ Color quad_lights_shading(const RenderScene& render_scene, const Material& mater
             return blocked;
         };
         observer.quad_light_starts(light);
-        const Color term = quad_light_shading(material, point, light, pattern, scene.light_samples,
-                                              *light_random, occluded, render_scene.ray_offset);
+        Color term;
+        if (scene.integrator == Integrator::analyticdirect) {
+            term = material.diffuse / glm::pi<double>() * light.radiance *
+                   quad_light_irradiance(light, point.position, point.shading_normal);
+        } else if (scene.dialect == SceneDialect::cse168) {
+            term = sampled_phong_lobes(render_scene, material, point, light, pattern, *light_random,
+                                       occluded);
+        } else {
+            term = quad_light_shading(material, point, light, pattern, scene.light_samples,
+                                      *light_random, occluded, render_scene.ray_offset);
+        }
         observer.quad_light_ends(light, term, shadow_rays);
         sum += term;
     }
@@ -78,7 +113,7 @@ ShadedHit shade_hit(const RenderScene& render_scene, const Ray& ray, const Primi
         consider(sample, LightKind::spot, light.line);
     }
 
-    Color local = local_shading(material, point, reaching);
+    Color local = local_colour(scene.dialect, material, point, reaching);
     local += quad_lights_shading(render_scene, material, point, light_random, observer);
     observer.local_colour(reaching, local);
     return {point, local, material.specular};

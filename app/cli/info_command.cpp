@@ -51,11 +51,23 @@ std::string sampling_row(const Scene& scene, const SceneFeatures& f) {
     return text + "; seed " + std::to_string(scene.seed);
 }
 
+// The bounces a mirror or a dielectric follows: maxdepth, or with no limit the default depth.
+std::string bounces_text(const Scene& scene) {
+    const int depth = scene.max_depth == kUnboundedDepth ? kDefaultDepth : scene.max_depth;
+    return "up to " + std::to_string(depth) + " bounces";
+}
+
 std::string refraction_row(const Scene& scene, const SceneFeatures& f) {
     if (!f.uses_refraction()) return "none";
     return counted(f.transmissive_objects, "dielectric object", "dielectric objects") +
-           ", Fresnel " + (scene.schlick_fresnel ? "by Schlick's approximation" : "exact") +
-           ", up to " + std::to_string(scene.max_depth) + " bounces";
+           ", Fresnel " + (scene.schlick_fresnel ? "by Schlick's approximation" : "exact") + ", " +
+           bounces_text(scene);
+}
+
+std::string dialect_row(const Scene& scene) {
+    if (scene.dialect == SceneDialect::cse167) return "CSE167, the ray tracer's";
+    return "CSE168, the path tracer's (its 'integrator'): no ambient unless written, specular a "
+           "glossy lobe with no mirror ray, quad lights drawn";
 }
 
 // The commands read with no effect or rendered otherwise, each with its line; the warnings that
@@ -90,9 +102,11 @@ int run_info(const InfoArguments& arguments) {
         std::fprintf(stderr, "%s\n", warning_text(scene, note).c_str());
 
     row("scene", scene.path + " (loaded in " + to_text(load_seconds) + " s)");
+    row("dialect", dialect_row(scene));
     row("image",
         std::to_string(scene.width) + " x " + std::to_string(scene.height) + ", maxdepth " +
-            std::to_string(scene.max_depth) +
+            (scene.max_depth == kUnboundedDepth ? "-1 (no limit)"
+                                                : std::to_string(scene.max_depth)) +
             (scene.output.empty() ? "" : ", output " + scene.output) +
             (scene.background == Color(0.0) ? "" : ", background " + to_text(scene.background)));
     std::string projection = camera.ortho ? "orthographic over [" + to_text(camera.ortho->left) +
@@ -124,7 +138,7 @@ int run_info(const InfoArguments& arguments) {
     if (f.uses_sampling()) row("sampling", sampling_row(scene, f));
     row("reflection", f.uses_reflection()
                           ? counted(f.reflective_objects, "mirror object", "mirror objects") +
-                                ", up to " + std::to_string(scene.max_depth) + " bounces"
+                                ", " + bounces_text(scene)
                           : "none");
     row("refraction", refraction_row(scene, f));
     if (!scene.notes.empty()) row("warnings", notes_row(scene));

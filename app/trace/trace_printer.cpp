@@ -7,6 +7,7 @@
 
 #include "base/math/to_text.h"
 #include "renderer/instance.h"
+#include "renderer/local_model.h"
 #include "renderer/solids.h"
 #include "renderer/surface_point.h"
 #include "stages/3_intersect/intersect.h"
@@ -148,16 +149,16 @@ std::string blocker(const RenderScene& render_scene, const Ray& shadow) {
            ") at t=" + to_text(hit->hit.t);
 }
 
-// The diffuse and specular parts of one light's term, each from blinn_phong with the other
-// colour zeroed: the trace shows which one a wrong pixel gets wrong.
-std::string light_terms(const Material& material, const SurfacePoint& point,
+// The diffuse and specular parts of one light's term, each from the dialect's light_term with the
+// other colour zeroed: the trace shows which one a wrong pixel gets wrong.
+std::string light_terms(SceneDialect dialect, const Material& material, const SurfacePoint& point,
                         const LightSample& light, const std::string& name) {
     Material diffuse_only = material;
     diffuse_only.specular = Color(0.0);
     Material specular_only = material;
     specular_only.diffuse = Color(0.0);
-    return "  " + name + " diffuse " + to_text(blinn_phong(diffuse_only, point, light)) +
-           " specular " + to_text(blinn_phong(specular_only, point, light));
+    return "  " + name + " diffuse " + to_text(light_term(dialect, diffuse_only, point, light)) +
+           " specular " + to_text(light_term(dialect, specular_only, point, light));
 }
 
 // -- Refraction --
@@ -291,12 +292,23 @@ void TracePrinter::light(const LightStep& step) {
     if (step.reach == LightReach::reaches) reaching_.push_back(name);
 }
 
+void TracePrinter::quad_light_seen(const SeenQuadLight& seen) {
+    add(light_name("quad", seen.light->line) + " seen at t " + to_text(seen.t) +
+        ", nearer than any surface (the CSE168 dialect draws quad lights): " +
+        (seen.colour == Color(0.0) ? "its back, black" : "its radiance " + to_text(seen.colour)));
+}
+
 void TracePrinter::spot_light_outside_cone(std::uint32_t line) {
     add(light_name("spot", line) + ": no light here, outside its cone");
 }
 
 void TracePrinter::quad_light_starts(const QuadLight& light) {
     const Scene& scene = *render_scene_.scene;
+    if (scene.integrator == Integrator::analyticdirect) {
+        add(light_name("quad", light.line) +
+            ": integrated exactly by Lambert's formula, unshadowed (integrator analyticdirect)");
+        return;
+    }
     add(light_name("quad", light.line) + ": " + std::to_string(scene.light_samples) + " samples, " +
         (scene.light_stratify ? "jittered" : "random"));
 }
@@ -315,7 +327,8 @@ void TracePrinter::local_colour(const std::vector<LightSample>& reaching, const 
     add("shading: ambient " + to_text(material_->ambient) + " emission " +
         to_text(material_->emission));
     for (std::size_t k = 0; k < reaching.size(); ++k)
-        add(light_terms(*material_, point_, reaching[k], reaching_[k]));
+        add(light_terms(render_scene_.scene->dialect, *material_, point_, reaching[k],
+                        reaching_[k]));
     add("local colour " + to_text(colour));
 }
 

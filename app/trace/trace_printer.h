@@ -32,6 +32,7 @@ class TracePrinter final : public PixelObserver {
     void hit_search_starts(const Ray& ray) override;
     void closest_hit(const Ray& ray, const std::optional<PrimitiveHit>& hit,
                      const TraversalStats& cost) override;
+    void quad_light_seen(const SeenQuadLight& seen) override;
     void surface(const SurfacePoint& point, const Material& material) override;
     void light(const LightStep& step) override;
     void spot_light_outside_cone(std::uint32_t line) override;

@@ -151,7 +151,8 @@ struct SpotLight {
 
 /// `quadLight ax ay az abx aby abz acx acy acz r g b` (the CSE168 command): the parallelogram
 /// a + s ab + t ac, s and t in [0, 1], emitting radiance `radiance` from its side that
-/// ac x ab points to. In world coordinates; it lights the scene but is not itself seen.
+/// ac x ab points to. In world coordinates. It lights the scene; in the CSE168 dialect it is also
+/// seen, as that course draws it.
 struct QuadLight {
     Vec3 corner;  ///< a
     Vec3 edge1;   ///< ab
@@ -189,12 +190,37 @@ struct CameraSpec {
     std::uint32_t line = 0;
 };
 
+/// Which course's meaning a scene's commands take (docs/scene-format.md, "Dialects"). The two
+/// courses write the same commands and read some of them differently: CSE167's ray tracer gives
+/// every material an ambient of 0.2 and traces `specular` as a mirror to `maxdepth`; the CSE168
+/// path tracer's direct and path-traced integrators have no ambient, take specular as a glossy
+/// lobe with no mirror ray, draw their quad lights, and read `maxdepth -1` as no limit.
+enum class SceneDialect {
+    cse167,  ///< the default
+    cse168,  ///< a scene whose `integrator` is direct, analyticdirect or pathtracer
+};
+
+/// `integrator`: how the CSE168 path tracer renders a scene. raytracer, the default, is CSE167's
+/// ray tracer; the others read the scene in the CSE168 dialect. raystep renders direct light for
+/// direct and pathtracer alike (no indirect light), and for analyticdirect integrates each
+/// quad light exactly, unshadowed, as that integrator does.
+enum class Integrator { raytracer, direct, analyticdirect, pathtracer };
+
+/// `maxdepth -1` in the CSE168 dialect: paths have no depth limit and end by Russian roulette.
+inline constexpr int kUnboundedDepth = -1;
+
+/// The bounces a ray tracer without Russian roulette follows where the scene sets no limit
+/// (`maxdepth -1`): the default depth of both courses.
+inline constexpr int kDefaultDepth = 5;
+
 struct Scene {
     std::string path;  ///< the scene file, as given
-    int width = 640;   ///< `size`
+    SceneDialect dialect = SceneDialect::cse167;
+    Integrator integrator = Integrator::raytracer;
+    int width = 640;  ///< `size`
     int height = 480;
-    int max_depth = 5;   ///< `maxdepth`: mirror bounces after the first hit
-    std::string output;  ///< `output`; empty when the file names none
+    int max_depth = kDefaultDepth;  ///< `maxdepth`: bounces after the first hit, or kUnboundedDepth
+    std::string output;             ///< `output`; empty when the file names none
     CameraSpec camera;
     RayOffset ray_offset;  ///< `rayoffset`
 

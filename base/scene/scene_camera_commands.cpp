@@ -28,6 +28,19 @@ void SceneParser::size() {
 
 void SceneParser::maxdepth() {
     once();
+    if (fields_[1] == "-1") {
+        if (!cse168()) {
+            fail(
+                "maxdepth -1 (no limit) is the CSE168 dialect's, read in a scene whose "
+                "'integrator' is direct, analyticdirect or pathtracer; give a depth of 0 or more");
+        }
+        scene_.max_depth = kUnboundedDepth;
+        note(
+            "'maxdepth -1' sets no limit, for a path tracer's Russian roulette: raystep traces "
+            "no paths, and its refraction (stage 9), which has no roulette, follows " +
+            std::to_string(kDefaultDepth) + " bounces");
+        return;
+    }
     const long depth = count(1, "the depth");
     if (depth > kMaxDepth) {
         fail("maxdepth " + std::to_string(depth) + " is above the limit of " +

@@ -17,9 +17,11 @@ void count_objects(const Scene& scene, const std::vector<Object>& objects, Scene
             transforms.insert(object.attributes.transform);
         }
         const Material& material = scene.materials[object.attributes.material];
-        // Mirrors and dielectrics need a secondary ray, which maxdepth 0 turns off.
+        // Mirrors and dielectrics need a secondary ray, which maxdepth 0 turns off; in the
+        // CSE168 dialect specular is a glossy lobe, not a mirror.
         if (scene.max_depth == 0) continue;
-        if (material.specular != Color(0.0)) ++features.reflective_objects;
+        if (material.specular != Color(0.0) && scene.dialect == SceneDialect::cse167)
+            ++features.reflective_objects;
         if (material.transmission != Color(0.0)) ++features.transmissive_objects;
     }
 }

@@ -36,6 +36,12 @@ ObjectAttributes SceneParser::attributes() {
         scene_.materials.push_back(material_);
         material_id_ = static_cast<std::uint32_t>(scene_.materials.size() - 1);
     }
+    if (cse168() && !ambient_written_ && !default_ambient_noted_) {
+        note(
+            "no 'ambient' is written above: in the CSE168 dialect its ambient is 0, where the "
+            "CSE167 default is 0.2");
+        default_ambient_noted_ = true;
+    }
     const std::uint32_t node = transform_stack_.back();
     const std::uint32_t transform = scene_.transforms[node].identity ? 0 : node;
     return {material_id_, transform, static_cast<std::uint32_t>(line_)};
@@ -74,7 +80,12 @@ void SceneParser::maxvertnorms() {
 
 void SceneParser::vertex() {
     if (max_vertices_ >= 0 && vertices_.size() == static_cast<std::size_t>(max_vertices_)) {
-        fail("more vertices than 'maxverts " + std::to_string(max_vertices_) + "' declared");
+        const std::string more =
+            "more vertices than 'maxverts " + std::to_string(max_vertices_) + "' declared";
+        // The CSE168 course's own scenes declare fewer than they give (its hw4 mis.test: 28 for
+        // 32), and its loader reads them all.
+        if (!cse168()) fail(more);
+        note(more + ": the CSE168 dialect reads maxverts as a declaration, and takes them all");
     }
     vertices_.push_back(vec3(1, "a coordinate"));
 }

@@ -73,6 +73,11 @@ void SceneParser::quad_light() {
             "(its largest component is " +
             to_text(normal_size) + ", outside 1e-150 to 1e150); scale it towards 1");
     }
+    if (cse168()) {
+        note(
+            "in the CSE168 dialect a quadLight is drawn: a camera ray that meets its emitting "
+            "side sees its radiance (a CSE167 scene is lit by it unseen)");
+    }
     scene_.quad_lights.push_back(light);
 }
 
@@ -102,6 +107,7 @@ void SceneParser::set_material(Color Material::*field) {
 
 void SceneParser::ambient() {
     set_material(&Material::ambient);
+    ambient_written_ = true;
 }
 
 void SceneParser::diffuse() {
@@ -110,6 +116,12 @@ void SceneParser::diffuse() {
 
 void SceneParser::specular() {
     set_material(&Material::specular);
+    if (cse168() && material_.specular != Color(0.0)) {
+        note(
+            "in the CSE168 dialect 'specular' is the course's Phong lobe, not a mirror: no "
+            "reflected ray is traced, where CSE167 traces one to maxdepth and shades with "
+            "Blinn-Phong");
+    }
 }
 
 void SceneParser::emission() {

@@ -51,9 +51,12 @@ inline double largest_magnitude(const Vec3& v) {
 /// Reads a scene file line by line into a Scene: parse_line for each line, then finish.
 class SceneParser {
   public:
-    SceneParser(std::string name, std::filesystem::path folder)
+    SceneParser(std::string name, std::filesystem::path folder, SceneDialect dialect)
         : name_(std::move(name)), folder_(std::move(folder)) {
         scene_.path = name_;
+        scene_.dialect = dialect;
+        // The CSE168 path tracer has no ambient term: none unless the scene writes one.
+        if (dialect == SceneDialect::cse168) material_.ambient = Color(0.0);
     }
 
     /// Reads one line (a command and its arguments) into the scene; throws InputError
@@ -96,6 +99,7 @@ class SceneParser {
     void once();
     std::uint32_t line_of(const std::string& command) const;
     void note(const std::string& text);
+    bool cse168() const { return scene_.dialect == SceneDialect::cse168; }
 
     // Image and camera
     void size();
@@ -190,6 +194,8 @@ class SceneParser {
 
     Material material_;
     std::uint32_t material_id_ = kUnregistered;
+    bool ambient_written_ = false;        // an `ambient` line was read: no default ambient since
+    bool default_ambient_noted_ = false;  // the CSE168 dialect's ambient 0 is noted once
     Attenuation attenuation_;
     std::vector<std::uint32_t> transform_stack_{0};       // tree nodes; the root is the identity
     std::vector<ScaleRange> scale_ranges_{ScaleRange{}};  // per node of scene_.transforms

@@ -2,26 +2,34 @@
 
 namespace raystep::scene_parsing {
 
-// The CSE168 path tracer's settings. raystep renders direct light and mirrors (and stage 9's
-// refraction), no indirect light: each of these is read and checked so that the course's
-// scenes load, and noted where it changes nothing or renders otherwise than in the course.
+// The CSE168 path tracer's settings. raystep renders direct light (and stage 9's refraction), no
+// indirect light: each of these is read and checked so that the course's scenes load, and noted
+// where it changes nothing or renders otherwise than in the course. `integrator` also sets the
+// dialect (SceneDialect), which scene_loader.cpp reads from the whole file before this runs.
 
 void SceneParser::integrator() {
     once();
-    switch (keyword(1, "raytracer|direct|analyticdirect|pathtracer")) {
-        case 2:
-            note(
-                "'integrator analyticdirect': raystep samples each quad light "
-                "('lightsamples') rather than integrating it exactly, so soft shadows are "
-                "noisy where the course's are not");
+    const std::string dialect =
+        "read in the CSE168 dialect: no ambient unless written, specular as a glossy lobe with "
+        "no mirror ray, quad lights drawn, maxverts a declaration, maxdepth -1 for no limit "
+        "(docs/scene-format.md, \"Dialects\")";
+    scene_.integrator =
+        static_cast<Integrator>(keyword(1, "raytracer|direct|analyticdirect|pathtracer"));
+    switch (scene_.integrator) {
+        case Integrator::direct:
+            note("'integrator direct': " + dialect);
             break;
-        case 3:
-            note(
-                "'integrator pathtracer': raystep renders direct light and mirror "
-                "reflection only, no indirect light, so the image is darker than a path "
-                "tracer's");
+        case Integrator::analyticdirect:
+            note("'integrator analyticdirect': " + dialect +
+                 "; each quad light is integrated exactly over its area, with no shadows and no "
+                 "specular, as the course's integrator does");
             break;
-        default:
+        case Integrator::pathtracer:
+            note("'integrator pathtracer': " + dialect +
+                 "; raystep renders direct light only, no indirect light, so the image is darker "
+                 "than a path tracer's");
+            break;
+        case Integrator::raytracer:
             break;
     }
 }
@@ -39,7 +47,7 @@ void SceneParser::russianroulette() {
     keyword(1, "on|off");
     note(
         "'russianroulette' has no effect: raystep traces no indirect paths to end at "
-        "random; maxdepth bounds its mirror bounces");
+        "random");
 }
 
 void SceneParser::importancesampling() {
@@ -51,10 +59,16 @@ void SceneParser::importancesampling() {
 }
 
 void SceneParser::brdf() {
-    keyword(1, "phong|ggx");
-    note(
-        "'brdf' has no effect: raystep shades every surface with the CSE167 local model "
-        "(docs/stage6.md)");
+    const bool phong = keyword(1, "phong|ggx") == 0;
+    if (!cse168()) {
+        note(
+            "'brdf' has no effect in the CSE167 dialect: every surface has the local model of "
+            "docs/stage6.md");
+    } else if (!phong) {
+        note(
+            "'brdf ggx': raystep has no GGX lobe, so these surfaces take the course's Phong "
+            "lobe");
+    }
 }
 
 void SceneParser::roughness() {

@@ -2,8 +2,11 @@
 
 #include <string>
 
+#include <glm/gtc/constants.hpp>
+
 #include "base/scene/scene_loader.h"
 #include "base/testing/catch.h"
+#include "renderer/polygon_irradiance.h"
 #include "renderer/render_pixel.h"
 #include "renderer/sample_streams.h"
 #include "renderer/tile_renderer.h"
@@ -125,6 +128,79 @@ TEST_CASE("render_pixel: a floor point under a quad light, no blocker, as stage 
     // A blocker between them, out of the eye ray's way: every light sample is occluded.
     const Color shadowed = pixel_of(scene_from(text + "sphere 0 1 0 0.3\n"), View::shaded, 0, 0);
     CHECK(shadowed == Color(0.0));
+}
+
+TEST_CASE("render_pixel: a diffuse floor under a quad light renders alike in both dialects",
+          "[app]") {
+    // The same light samples shaded by Blinn-Phong or by the Phong lobe: with no specular, the
+    // same diffuse term. With a specular, the lobes differ.
+    const std::string floor =
+        "size 8 8\ncamera 3 5 0 0 0 0 0 1 0 30\nambient 0 0 0\ndiffuse 0.5 0.5 0.5\nseed 3\n"
+        "lightsamples 4\nlightstratify on\nquadLight -2 2 -1 0 0 2 1 0 0 5 5 5\n"
+        "vertex -4 0 -4\nvertex 4 0 -4\nvertex 4 0 4\nvertex -4 0 4\ntri 0 3 2\ntri 0 2 1\n"
+        "sphere 0 0.5 0 0.3\n";
+    const Scene cse167 = scene_from(floor);
+    const Scene cse168 = scene_from(floor + "integrator direct\n");
+    for (int i = 0; i < 8; ++i) {
+        CAPTURE(i);
+        CHECK(pixel_of(cse168, View::full, i, 5) == pixel_of(cse167, View::full, i, 5));
+    }
+    const std::string shiny = "specular 0.5 0.5 0.5\nshininess 20\n";
+    const Scene shiny_cse167 = scene_from(shiny + floor);
+    const Scene shiny_cse168 = scene_from(shiny + floor + "integrator direct\n");
+    int differing = 0;
+    for (int i = 0; i < 8; ++i) {
+        if (pixel_of(shiny_cse168, View::full, i, 5) != pixel_of(shiny_cse167, View::full, i, 5))
+            ++differing;
+    }
+    CHECK(differing > 0);
+}
+
+TEST_CASE("render_pixel: integrator analyticdirect integrates a quad light exactly, unshadowed",
+          "[app]") {
+    // The floor point at the image's centre, under the light of the test above: Kd / pi L E, with
+    // no noise whatever the seed, and no shadow from a blocker.
+    const std::string text =
+        "size 1 1\ncamera 3 5 0 0 0 0 0 1 0 10\nambient 0 0 0\ndiffuse 0.5 0.5 0.5\n"
+        "integrator analyticdirect\nquadLight -0.1 2 -0.1 0 0 0.2 0.2 0 0 20 20 20\n"
+        "vertex -4 0 -4\nvertex 4 0 -4\nvertex 4 0 4\nvertex -4 0 4\ntri 0 3 2\ntri 0 2 1\n";
+    const Scene scene = scene_from(text);
+    const RenderScene render_scene = prepare_render_scene(scene);
+    const std::optional<PrimitiveHit> hit =
+        scene_closest_hit(render_scene, camera_ray(render_scene, 0, 0), nullptr);
+    REQUIRE(hit);
+    const Vec3 point = camera_ray(render_scene, 0, 0).at(hit->hit.t);
+    const double expected = 0.5 / glm::pi<double>() * 20.0 *
+                            quad_light_irradiance(scene.quad_lights[0], point, Vec3(0, 1, 0));
+    CHECK(expected == Approx(20.0 * 0.04 / (4.0 * glm::pi<double>()) * 0.5).epsilon(0.01));
+    const Color lit = pixel_of(scene, View::full, 0, 0);
+    CHECK(lit.r == Approx(expected).epsilon(1e-12));
+    Scene reseeded = scene;
+    reseeded.seed = 11;
+    CHECK(pixel_of(reseeded, View::full, 0, 0) == lit);
+    CHECK(pixel_of(scene_from(text + "sphere 0 1 0 0.3\n"), View::full, 0, 0) == lit);
+}
+
+TEST_CASE("render_pixel: the CSE168 dialect draws quad lights, bright in front and black behind",
+          "[app]") {
+    // The 4 x 4 orthographic view over a wall that glows 0.5, with two lights between: over
+    // column 0 one that faces the camera (ac x ab = +z), over column 3 one that faces the wall.
+    const std::string walls_and_lights =
+        "size 4 4\ncamera 0 0 5 0 0 0 0 1 0 45\northo -2 2 -2 2\nambient 0 0 0\n"
+        "emission 0.5 0.5 0.5\nvertex -9 -9 0\nvertex 9 -9 0\nvertex 9 9 0\nvertex -9 9 0\n"
+        "tri 0 1 2\ntri 0 2 3\nquadLight -2 -2 1  0 4 0  1 0 0  3 2 1\n"
+        "quadLight 1 -2 1  1 0 0  0 4 0  3 2 1\n";
+    const Scene cse168 = scene_from(walls_and_lights + "integrator direct\n");
+    for (const View view : {View::full, View::shaded}) {
+        CHECK(pixel_of(cse168, view, 0, 1) == Color(3, 2, 1));
+        CHECK(pixel_of(cse168, view, 3, 1) == Color(0.0));
+        CHECK(pixel_of(cse168, view, 1, 1) == Color(0.5));
+    }
+    // The views of one stage each still see the wall: the depth view its t of 5.
+    CHECK(pixel_of(cse168, View::depth, 0, 1) == Color(5.0));
+    const Scene cse167 = scene_from(walls_and_lights);
+    CHECK(pixel_of(cse167, View::full, 0, 1) == Color(0.5));
+    CHECK(pixel_of(cse167, View::full, 3, 1) == Color(0.5));
 }
 
 TEST_CASE("pixel_stream: no two (pixel, use) pairs of an image share a stream", "[app]") {

@@ -218,7 +218,8 @@ TEST_CASE("raystep command: an unknown ray offset rule exits 2 and lists the rul
 
 TEST_CASE("raystep command: info lists features and stages", "[cli]") {
     check_raystep({"info", kQuad.string()}, 0,
-                  {"primitives  2 primitives: 0 spheres, 2 triangles, 0 planes",
+                  {"dialect     CSE167, the ray tracer's",
+                   "primitives  2 primitives: 0 spheres, 2 triangles, 0 planes",
                    "stages      full image 1 2 3 6"});
 }
 
@@ -227,7 +228,7 @@ TEST_CASE(
     "not use",
     "[cli]") {
     check_raystep({"info", (kData / "good/cornell_quadlight.test").string()}, 0,
-                  {R"(area light \(quadLight\))",
+                  {"dialect     CSE168, the path tracer's", R"(area light \(quadLight\))",
                    "sampling    4 samples per pixel, jittered; 16 samples per area light, "
                    "stratified"});
 }
@@ -236,6 +237,24 @@ TEST_CASE("raystep command: info warns of a CSE168 setting raystep does not use,
           "[cli]") {
     check_raystep({"info", (kData / "good/cse168_path_tracer_settings.test").string()}, 0,
                   {"cse168_path_tracer_settings.test:4: warning: 'russianroulette' has no effect"});
+}
+
+TEST_CASE(
+    "raystep command: a CSE168 homework scene renders as written, warning where the "
+    "dialects differ",
+    "[cli]") {
+    const fs::path scene = kData / "good/cse168_homework_scene.test";
+    check_raystep({"info", scene.string()}, 0,
+                  {"dialect     CSE168", R"(maxdepth -1 \(no limit\))",
+                   "cse168_homework_scene.test:10: warning: 'maxdepth -1' sets no limit",
+                   "cse168_homework_scene.test:16: warning: more vertices than 'maxverts 3'",
+                   "cse168_homework_scene.test:19: warning: in the CSE168 dialect 'specular'",
+                   "cse168_homework_scene.test:21: warning: no 'ambient' is written above",
+                   "cse168_homework_scene.test:23: warning: 'brdf ggx'",
+                   "cse168_homework_scene.test:26: warning: in the CSE168 dialect a quadLight"});
+    const ScratchFolder folder("cse168");
+    check_raystep({"render", scene.string(), "-o", (folder.path() / "homework.png").string()}, 0,
+                  {"wrote ", "cse168_homework_scene.test:5: warning: 'integrator pathtracer'"});
 }
 
 TEST_CASE("raystep command: trace prints the camera ray and the closest hit", "[cli]") {

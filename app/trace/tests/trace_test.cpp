@@ -120,6 +120,20 @@ TEST_CASE("trace: a quad light shows each light sample's shadow ray and the ligh
     CHECK(has_line_starting(lines, "  quad light (line 5) term "));
 }
 
+TEST_CASE("trace: in the CSE168 dialect a quad light before the closest hit is seen, unshaded",
+          "[app]") {
+    // The light of the test above, now between the camera and the floor, emitting upwards.
+    const std::string scene =
+        "size 3 3\ncamera 0 5 0 0 0 0 0 0 -1 45\nintegrator direct\n"
+        "quadLight -0.5 2 -0.5 1 0 0 0 0 1 5 5 5\ndiffuse 1 1 1\nplane 0 0 0 0 1 0\n";
+    const std::vector<std::string> lines = trace(scene, View::full, 1, 1);
+    CHECK(has_line_starting(lines, "closest_hit: plane 0 at t=5"));
+    CHECK(has_line_starting(lines,
+                            "quad light (line 4) seen at t 3, nearer than any surface "
+                            "(the CSE168 dialect draws quad lights): its radiance (5, 5, 5)"));
+    CHECK(count_lines_starting(lines, "  light sample ") == 0);
+}
+
 TEST_CASE("trace: a ray into the prism of total-internal-reflection.test reflects totally",
           "[app]") {
     const Scene scene = load_scene(std::string(RAYSTEP_SOURCE_DIR) +

@@ -1,11 +1,14 @@
 #include "base/scene/scene_loader.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "base/errors/input_error.h"
+#include "base/scene/scene_features.h"
 #include "base/testing/catch.h"
 
 using namespace raystep;
@@ -381,7 +384,7 @@ TEST_CASE("parse_scene: CSE168 path tracer settings load, each noted once on its
         noted.push_back(note.command + "@" + std::to_string(note.line));
     CHECK(noted == std::vector<std::string>{"integrator@2", "nexteventestimation@3",
                                             "russianroulette@4", "importancesampling@5", "gamma@6",
-                                            "brdf@7", "roughness@8"});
+                                            "brdf@7", "roughness@8", "sphere@9"});
 }
 
 TEST_CASE("parse_scene: notes come in file order, the end-of-file spp note among them", "[base]") {
@@ -393,13 +396,84 @@ TEST_CASE("parse_scene: notes come in file order, the end-of-file spp note among
     CHECK(scene.notes[2].command == "russianroulette");
 }
 
-TEST_CASE("parse_scene: integrator raytracer and direct are what raystep renders: no note",
+TEST_CASE("parse_scene: integrator direct, analyticdirect and pathtracer read the CSE168 dialect",
           "[base]") {
-    CHECK(parse(kCamera + "integrator raytracer\n").notes.empty());
-    CHECK(parse(kCamera + "integrator direct\n").notes.empty());
+    const Scene plain = parse(kCamera + "sphere 0 0 0 1\n");
+    CHECK(plain.dialect == SceneDialect::cse167);
+    const Scene raytracer = parse(kCamera + "integrator raytracer\n");
+    CHECK(raytracer.dialect == SceneDialect::cse167);
+    CHECK(raytracer.notes.empty());
+    for (const std::string integrator : {"direct", "analyticdirect", "pathtracer"}) {
+        CAPTURE(integrator);
+        const Scene scene = parse(kCamera + "integrator " + integrator + "\n");
+        CHECK(scene.dialect == SceneDialect::cse168);
+        REQUIRE(scene.notes.size() == 1);
+        CHECK(scene.notes[0].line == 2);
+        CHECK_THAT(scene.notes[0].text, Catch::Matchers::Contains("read in the CSE168 dialect"));
+    }
     const Scene analytic = parse(kCamera + "integrator analyticdirect\n");
-    REQUIRE(analytic.notes.size() == 1);
-    CHECK_THAT(analytic.notes[0].text, Catch::Matchers::Contains("samples each quad light"));
+    CHECK_THAT(analytic.notes[0].text, Catch::Matchers::Contains("integrated exactly"));
+}
+
+TEST_CASE(
+    "parse_scene: the dialect is the whole file's, so a material above the integrator "
+    "has no ambient",
+    "[base]") {
+    // CSE167's default ambient is 0.2; the CSE168 path tracer has none unless it is written.
+    const std::string objects = "sphere 0 0 0 1\nambient 0.1 0.1 0.1\nsphere 2 0 0 1\n";
+    const Scene cse167 = parse(kCamera + objects);
+    CHECK(cse167.materials.front().ambient == Color(0.2));
+    const Scene cse168 = parse(kCamera + objects + "integrator direct\n");
+    REQUIRE(cse168.materials.size() == 2);
+    CHECK(cse168.materials[0].ambient == Color(0.0));
+    CHECK(cse168.materials[1].ambient == Color(0.1));
+    // The default is noted once, on the first object that takes it.
+    std::vector<std::uint32_t> ambient_notes;
+    for (const SceneNote& note : cse168.notes) {
+        if (note.text.find("no 'ambient'") != std::string::npos) ambient_notes.push_back(note.line);
+    }
+    CHECK(ambient_notes == std::vector<std::uint32_t>{2});
+    const Scene written = parse(kCamera + "integrator direct\nambient 0 0 0\n" + objects);
+    for (const SceneNote& note : written.notes)
+        CHECK(note.text.find("no 'ambient'") == std::string::npos);
+}
+
+TEST_CASE("parse_scene: in the CSE168 dialect more vertices than maxverts are a warning, and kept",
+          "[base]") {
+    // The course's own hw4 mis.test declares 28 vertices and gives 32.
+    const std::string vertices = "maxverts 2\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n";
+    CHECK_THROWS_WITH(parse(kCamera + vertices),
+                      "inline.test:5: more vertices than 'maxverts 2' declared");
+    const Scene scene = parse(kCamera + "integrator direct\n" + vertices + "tri 0 1 2\n");
+    CHECK(scene.triangles.size() == 1);
+    REQUIRE(scene.notes.size() >= 2);
+    const SceneNote& vertex = scene.notes[1];
+    CHECK(vertex.line == 6);
+    CHECK(vertex.command == "vertex");
+    CHECK_THAT(vertex.text, Catch::Matchers::Contains("reads maxverts as a declaration"));
+}
+
+TEST_CASE("parse_scene: maxdepth -1 is no limit in the CSE168 dialect, and an error in CSE167's",
+          "[base]") {
+    const Scene scene = parse(kCamera + "integrator pathtracer\nmaxdepth -1\n");
+    CHECK(scene.max_depth == kUnboundedDepth);
+    REQUIRE(scene.notes.size() == 2);
+    CHECK(scene.notes[1].command == "maxdepth");
+    CHECK_THAT(scene.notes[1].text, Catch::Matchers::Contains("sets no limit"));
+    CHECK_THROWS_WITH(parse(kCamera + "maxdepth -1\n"),
+                      Catch::Matchers::StartsWith("inline.test:2: maxdepth -1 (no limit) is the "
+                                                  "CSE168 dialect's"));
+}
+
+TEST_CASE("scene_features: in the CSE168 dialect specular is a lobe, not a mirror", "[base]") {
+    const std::string shiny = "specular 0.5 0.5 0.5\nsphere 0 0 0 1\n";
+    CHECK(scene_features(parse(kCamera + shiny)).reflective_objects == 1);
+    const Scene cse168 = parse(kCamera + "integrator direct\n" + shiny);
+    CHECK(scene_features(cse168).reflective_objects == 0);
+    bool specular_noted = false;
+    for (const SceneNote& note : cse168.notes)
+        specular_noted = specular_noted || (note.command == "specular" && note.line == 3);
+    CHECK(specular_noted);
 }
 
 TEST_CASE("load_scene: a CSE168 Cornell box lit by a quadLight loads as the course writes it",
@@ -411,5 +485,10 @@ TEST_CASE("load_scene: a CSE168 Cornell box lit by a quadLight loads as the cour
     CHECK(scene.light_samples == 16);
     CHECK(scene.light_stratify);
     CHECK(scene.triangles.size() == 10);
-    CHECK(scene.notes.empty());  // integrator direct is what raystep renders
+    CHECK(scene.dialect == SceneDialect::cse168);
+    // It writes its ambient, so the dialect's notes are the integrator's and the drawn light's.
+    std::vector<std::string> noted;
+    for (const SceneNote& note : scene.notes)
+        noted.push_back(note.command + "@" + std::to_string(note.line));
+    CHECK(noted == std::vector<std::string>{"integrator@9", "quadLight@29"});
 }

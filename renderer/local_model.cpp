@@ -1,0 +1,36 @@
+#include "renderer/local_model.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+namespace raystep {
+
+Color phong_lobe_term(const Material& material, const SurfacePoint& point,
+                      const LightSample& light) {
+    const Vec3& n = point.shading_normal;
+    const double cos_light = glm::dot(n, light.direction);
+    if (!(cos_light > 0.0)) return Color(0.0);
+    const Vec3 mirror = 2.0 * glm::dot(n, point.to_eye) * n - point.to_eye;
+    const double cos_lobe = std::max(glm::dot(mirror, light.direction), 0.0);
+    const double lobe = (material.shininess + 2.0) / 2.0 * std::pow(cos_lobe, material.shininess);
+    return light.intensity * cos_light * (material.diffuse + material.specular * lobe);
+}
+
+Color light_term(SceneDialect dialect, const Material& material, const SurfacePoint& point,
+                 const LightSample& light) {
+    return dialect == SceneDialect::cse168 ? phong_lobe_term(material, point, light)
+                                           : blinn_phong(material, point, light);
+}
+
+Color local_colour(SceneDialect dialect, const Material& material, const SurfacePoint& point,
+                   const std::vector<LightSample>& visible_lights) {
+    if (dialect == SceneDialect::cse167) return local_shading(material, point, visible_lights);
+    Color colour = material.ambient + material.emission;
+    for (const LightSample& light : visible_lights)
+        colour += phong_lobe_term(material, point, light);
+    return colour;
+}
+
+}  // namespace raystep
