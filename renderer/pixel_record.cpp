@@ -1,5 +1,7 @@
 #include "renderer/pixel_record.h"
 
+#include "renderer/local_model.h"
+
 namespace raystep {
 
 void PixelRecorder::camera_ray(const Ray& ray) {
@@ -25,7 +27,8 @@ void PixelRecorder::light(const LightStep& step) {
     if (record_.local || step.kind == LightKind::spot) return;
     const bool reaches = step.reach == LightReach::reaches;
     record_.lights.push_back(
-        {step.reach, reaches ? blinn_phong(*material_, *point_, step.sample) : Color(0.0)});
+        {step.reach,
+         reaches ? light_term(dialect_, *material_, *point_, step.sample) : Color(0.0)});
 }
 
 void PixelRecorder::local_colour(const std::vector<LightSample>& /*reaching*/,

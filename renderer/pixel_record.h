@@ -10,7 +10,8 @@
 namespace raystep {
 
 /// One point or directional light at the eye ray's hit: whether it reaches the point and, when
-/// it does, its blinn_phong term (diffuse and specular together; 0 otherwise).
+/// it does, its term in the scene's local model (local_model.h's light_term: stage 6's
+/// blinn_phong in the CSE167 dialect; diffuse and specular together; 0 otherwise).
 struct LightRecord {
     LightReach reach = LightReach::behind;
     Color term{0.0};
@@ -35,7 +36,7 @@ struct PixelRecord {
 /// reference's whatever order the samples come in.
 class PixelRecorder final : public PixelObserver {
   public:
-    explicit PixelRecorder(PixelRecord& record) : record_(record) {}
+    PixelRecorder(PixelRecord& record, SceneDialect dialect) : record_(record), dialect_(dialect) {}
 
     bool watches_centre_ray() const override { return true; }
     void camera_ray(const Ray& ray) override;
@@ -48,6 +49,7 @@ class PixelRecorder final : public PixelObserver {
 
   private:
     PixelRecord& record_;
+    SceneDialect dialect_;
     std::optional<SurfacePoint> point_;  ///< the eye ray's hit being shaded
     const Material* material_ = nullptr;
 };

@@ -166,7 +166,8 @@ Image render_image(const RenderScene& render_scene, const RenderOptions& options
         if (!records) return render_pixel(render_scene, view, i, j);
         PixelRecorder recorder(
             (*records)[static_cast<std::size_t>(j) * static_cast<std::size_t>(scene.width) +
-                       static_cast<std::size_t>(i)]);
+                       static_cast<std::size_t>(i)],
+            scene.dialect);
         return render_pixel(render_scene, view, i, j, recorder);
     };
     // A sampled render counts its camera samples. A pixel takes all its samples at once (stage

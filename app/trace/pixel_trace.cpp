@@ -114,7 +114,7 @@ PixelComparison compare_pixel_with_reference(const Scene& scene, View view, int 
     PixelRecord ours;
     try {
         const RenderScene render_scene = prepare_render_scene(scene);
-        PixelRecorder recorder(ours);
+        PixelRecorder recorder(ours, scene.dialect);
         render_pixel(render_scene, view, x, y, recorder);
     } catch (const std::exception& error) {
         result.stop = error.what();

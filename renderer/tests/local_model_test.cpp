@@ -1,11 +1,16 @@
 #include "renderer/local_model.h"
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 
+#include "base/scene/scene_loader.h"
 #include "base/testing/catch.h"
+#include "renderer/pixel_record.h"
+#include "renderer/render_pixel.h"
 
 using namespace raystep;
 
@@ -86,4 +91,24 @@ TEST_CASE("local_colour: CSE167's is stage 6's local_shading, CSE168's sums the 
     const Color cse168 = local_colour(SceneDialect::cse168, material, point, lights);
     CHECK(cse168.r == Approx(expected.r));
     CHECK(cse168.r > local_shading(material, point, lights).r);  // the lobe is brighter at R
+}
+
+TEST_CASE("PixelRecorder: a light's recorded term is the dialect's, the one the pixel sums",
+          "[app]") {
+    // One point light and nothing else to add, so the local colour is that light's term.
+    const std::string text =
+        "size 1 1\ncamera 0 3 3 0 0 0 0 1 0 20\nambient 0 0 0\ndiffuse 0.2 0.2 0.2\n"
+        "specular 0.5 0.5 0.5\nshininess 10\npoint -1 3 -3 1 1 1\nplane 0 0 0 0 1 0\n";
+    std::vector<Color> terms;
+    for (const std::string& dialect : {std::string(), std::string("integrator direct\n")}) {
+        const Scene scene = parse_scene(text + dialect, "record.test", ".");
+        PixelRecord record;
+        PixelRecorder recorder(record, scene.dialect);
+        render_pixel(prepare_render_scene(scene), View::shaded, 0, 0, recorder);
+        REQUIRE(record.lights.size() == 1);
+        REQUIRE(record.local);
+        CHECK(*record.local == record.lights[0].term);
+        terms.push_back(record.lights[0].term);
+    }
+    CHECK(terms[0] != terms[1]);
 }

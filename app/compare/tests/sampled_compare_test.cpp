@@ -40,7 +40,7 @@ NoisyComparison judge(const Image& render, const Image& mean, const Image& sprea
 
 PixelRecord record_of(const Scene& scene, int i, int j) {
     PixelRecord record;
-    PixelRecorder recorder(record);
+    PixelRecorder recorder(record, scene.dialect);
     render_pixel(prepare_render_scene(scene), View::full, i, j, recorder);
     return record;
 }
