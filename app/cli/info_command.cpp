@@ -44,7 +44,9 @@ std::string sampling_row(const Scene& scene, const SceneFeatures& f) {
                                "sample per pixel", "samples per pixel");
     if (scene.samples_per_pixel > 1)
         text += ", " + std::string(sample_pattern_name(scene.pixel_sampling));
-    if (f.quad_lights > 0) {
+    if (f.quad_lights > 0 && scene.integrator == Integrator::analyticdirect) {
+        text += "; area lights integrated exactly (integrator analyticdirect)";
+    } else if (f.quad_lights > 0) {
         text += "; " + counted(static_cast<std::size_t>(scene.light_samples), "sample", "samples") +
                 " per area light, " + (scene.light_stratify ? "stratified" : "random");
     }

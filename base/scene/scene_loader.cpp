@@ -1,6 +1,9 @@
 #include "base/scene/scene_loader.h"
 
 #include <functional>
+#include <optional>
+#include <utility>
+#include <vector>
 
 #include "base/scene/scene_parser.h"
 #include "base/scene/text_fields.h"
@@ -27,26 +30,33 @@ void for_each_line(std::string_view text, const std::function<void(const std::st
 }
 
 // The dialect is the whole file's, whichever line names the integrator: a material written above
-// `integrator direct` takes the CSE168 defaults too. A malformed `integrator` line is left to the
-// parser, which names what is wrong with it.
-SceneDialect dialect_of(std::string_view text) {
-    SceneDialect dialect = SceneDialect::cse167;
+// `integrator direct` takes the CSE168 defaults too. That line is read first, by a parser of its
+// own, so that a malformed one is reported as itself rather than through what the dialect it
+// failed to set makes of an earlier line (a `maxdepth -1` above `integrator pathtracing`).
+SceneDialect dialect_of(std::string_view text, const std::string& name,
+                        const std::filesystem::path& folder) {
+    int number = 0;
+    std::optional<std::pair<int, std::string>> integrator;
     std::vector<std::string_view> fields;
     for_each_line(text, [&](const std::string& line) {
+        ++number;
         split_fields(line, fields);
-        if (fields.size() == 2 && fields[0] == "integrator" &&
-            (fields[1] == "direct" || fields[1] == "analyticdirect" || fields[1] == "pathtracer")) {
-            dialect = SceneDialect::cse168;
+        if (!integrator && !fields.empty() && fields[0] == "integrator") {
+            integrator.emplace(number, line);
         }
     });
-    return dialect;
+    if (!integrator) return SceneDialect::cse167;
+    scene_parsing::SceneParser(name, folder, SceneDialect::cse167)
+        .parse_line_at(integrator->first, integrator->second);
+    split_fields(integrator->second, fields);
+    return fields[1] == "raytracer" ? SceneDialect::cse167 : SceneDialect::cse168;
 }
 
 }  // namespace
 
 Scene parse_scene(std::string_view text, const std::string& name,
                   const std::filesystem::path& folder) {
-    scene_parsing::SceneParser parser(name, folder, dialect_of(text));
+    scene_parsing::SceneParser parser(name, folder, dialect_of(text, name, folder));
     for_each_line(text, [&](const std::string& line) { parser.parse_line(line); });
     return parser.finish();
 }

@@ -36,6 +36,18 @@ Scene SceneParser::finish() {
     }
     scene_.camera.ortho = ortho_;
     check_sample_grids();
+    // analyticdirect integrates each quad light exactly: its samples, wherever they were set,
+    // change nothing.
+    if (scene_.integrator == Integrator::analyticdirect) {
+        for (const std::string command : {"lightsamples", "lightstratify"}) {
+            if (const std::uint32_t line = line_of(command)) {
+                scene_.notes.push_back({line, command,
+                                        "'" + command +
+                                            "' has no effect under 'integrator analyticdirect', "
+                                            "which integrates each quad light exactly"});
+            }
+        }
+    }
     std::stable_sort(scene_.notes.begin(), scene_.notes.end(),
                      [](const SceneNote& a, const SceneNote& b) { return a.line < b.line; });
     return std::move(scene_);

@@ -63,6 +63,13 @@ class SceneParser {
     /// `file:line: problem` for anything wrong with it.
     void parse_line(std::string_view text);
 
+    /// Reads line `number` of the file on its own, as parse_line would have read it there: for a
+    /// line read before the others (the `integrator` that sets the dialect, scene_loader.cpp).
+    void parse_line_at(int number, std::string_view text) {
+        line_ = number - 1;
+        parse_line(text);
+    }
+
     /// The scene, once the checks that need the whole file (a camera, the sample grids) pass.
     Scene finish();
 
@@ -113,6 +120,7 @@ class SceneParser {
     ObjectAttributes attributes();
     void sphere();
     void plane();
+    void broken_vertex_count(const std::string& problem);
     void maxverts();
     void maxvertnorms();
     void vertex();

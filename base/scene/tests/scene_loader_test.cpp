@@ -450,7 +450,43 @@ TEST_CASE("parse_scene: in the CSE168 dialect more vertices than maxverts are a 
     const SceneNote& vertex = scene.notes[1];
     CHECK(vertex.line == 6);
     CHECK(vertex.command == "vertex");
-    CHECK_THAT(vertex.text, Catch::Matchers::Contains("reads maxverts as a declaration"));
+    CHECK_THAT(vertex.text, Catch::Matchers::Contains("reads the count as a declaration"));
+    // The same for a count below the vertices already given, and for vertexnormals.
+    const std::string late = "vertex 0 0 0\nvertex 1 0 0\nmaxverts 1\n";
+    CHECK_THROWS_WITH(parse(kCamera + late),
+                      "inline.test:4: maxverts 1 is less than the 2 vertices already given");
+    CHECK(parse(kCamera + "integrator direct\n" + late).notes.back().command == "maxverts");
+    const std::string normals =
+        "maxvertnorms 1\nvertexnormal 0 0 0 0 0 1\nvertexnormal 1 0 0 0 0 1\n";
+    CHECK_THROWS_WITH(parse(kCamera + normals),
+                      "inline.test:4: more vertexnormals than 'maxvertnorms 1' declared");
+    CHECK(parse(kCamera + "integrator direct\n" + normals).notes.back().command == "vertexnormal");
+}
+
+TEST_CASE("parse_scene: a malformed integrator line is reported as itself, before the lines above",
+          "[base]") {
+    // The dialect it fails to set would make the maxdepth -1 above it an error of its own.
+    CHECK_THROWS_WITH(parse(kCamera + "maxdepth -1\nintegrator pathtracing\n"),
+                      "inline.test:3: 'integrator' takes raytracer, direct, analyticdirect or "
+                      "pathtracer, not 'pathtracing'");
+    CHECK_THROWS_WITH(parse(kCamera + "maxdepth -1\nintegrator direct 2\n"),
+                      Catch::Matchers::StartsWith("inline.test:3: 'integrator' takes 1 argument"));
+    // A second integrator is still the error of the second line.
+    CHECK_THROWS_WITH(parse(kCamera + "integrator direct\nintegrator raytracer\n"),
+                      "inline.test:3: 'integrator' was already given on line 2");
+}
+
+TEST_CASE("parse_scene: under analyticdirect the light samples are noted as having no effect",
+          "[base]") {
+    const Scene scene =
+        parse(kCamera + "lightsamples 16\nlightstratify on\nintegrator analyticdirect\n");
+    std::vector<std::string> noted;
+    for (const SceneNote& note : scene.notes)
+        noted.push_back(note.command + "@" + std::to_string(note.line));
+    CHECK(noted == std::vector<std::string>{"lightsamples@2", "lightstratify@3", "integrator@4"});
+    CHECK_THAT(scene.notes[0].text,
+               Catch::Matchers::Contains("integrates each quad light exactly"));
+    CHECK(parse(kCamera + "lightsamples 16\nintegrator direct\n").notes.size() == 1);
 }
 
 TEST_CASE("parse_scene: maxdepth -1 is no limit in the CSE168 dialect, and an error in CSE167's",
