@@ -116,7 +116,11 @@ ShadedHit shade_hit(const RenderScene& render_scene, const Ray& ray, const Primi
     Color local = local_colour(scene.dialect, material, point, reaching);
     local += quad_lights_shading(render_scene, material, point, light_random, observer);
     observer.local_colour(reaching, local);
-    return {point, local, material.specular};
+    // In the CSE168 dialect specular is a lobe, never a mirror, even where stage 9's recursion runs
+    // for something that transmits.
+    const Color reflectance =
+        scene.dialect == SceneDialect::cse168 ? Color(0.0) : material.specular;
+    return {point, local, reflectance};
 }
 
 }  // namespace raystep

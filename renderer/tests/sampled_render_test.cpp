@@ -181,6 +181,17 @@ TEST_CASE("render_pixel: integrator analyticdirect integrates a quad light exact
     CHECK(pixel_of(scene_from(text + "sphere 0 1 0 0.3\n"), View::full, 0, 0) == lit);
 }
 
+TEST_CASE("render_pixel: in the CSE168 dialect specular is no mirror, even beside glass", "[app]") {
+    // Looking straight down at a specular floor under a glowing ceiling; a glass sphere out of view
+    // turns stage 9's recursion on. CSE167 sees the ceiling in the floor, CSE168 the floor alone.
+    const std::string text =
+        "size 1 1\ncamera 0 5 0 0 0 0 0 0 -1 10\nambient 0 0 0\nspecular 0.8 0.8 0.8\n"
+        "plane 0 0 0 0 1 0\nspecular 0 0 0\nemission 1 1 1\nplane 0 10 0 0 1 0\n"
+        "emission 0 0 0\ntransmission 1 1 1\nior 1.5\nsphere 20 0 0 1\n";
+    CHECK(pixel_of(scene_from(text), View::full, 0, 0) == Color(0.8));
+    CHECK(pixel_of(scene_from(text + "integrator direct\n"), View::full, 0, 0) == Color(0.0));
+}
+
 TEST_CASE("render_pixel: the CSE168 dialect draws quad lights, bright in front and black behind",
           "[app]") {
     // The 4 x 4 orthographic view over a wall that glows 0.5, with two lights between: over
