@@ -6,6 +6,8 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 
+#include "base/errors/input_error.h"
+#include "base/math/to_text.h"
 #include "renderer/local_model.h"
 #include "renderer/polygon_irradiance.h"
 #include "renderer/spot_light.h"
@@ -24,6 +26,23 @@ LightStep light_step(const RenderScene& render_scene, const SurfacePoint& point,
     const Ray shadow = shadow_ray(point, light, render_scene.ray_offset);
     const bool blocked = scene_occluded(render_scene, shadow);
     return {kind, line, light, blocked ? LightReach::blocked : LightReach::reaches, shadow};
+}
+
+// A point or spot light sampled from the point. One exactly at the point has no direction from it
+// (stage 6's sample_light throws): the scene put a light on a surface that a ray sees, which is
+// reported on the light's line.
+template <class SampleLight>
+LightSample sampled_from(const Scene& scene, std::uint32_t line, const SurfacePoint& point,
+                         const SampleLight& sample_light) {
+    try {
+        return sample_light();
+    } catch (const std::domain_error& error) {
+        throw InputError(scene.path, static_cast<int>(line),
+                         "the light is at " + to_text(point.position) +
+                             ", a point of a surface that a ray sees, where it has no direction "
+                             "to light it by (" +
+                             error.what() + "); move it off the surface");
+    }
 }
 
 // The CSE168 dialect's direct integrator at the point: stage 8's light samples, each shaded by the
@@ -100,12 +119,16 @@ ShadedHit shade_hit(const RenderScene& render_scene, const Ray& ray, const Primi
         observer.light(step);
         if (step.reach == LightReach::reaches) reaching.push_back(sample);
     };
-    for (const PointLight& light : scene.point_lights)
-        consider(sample_light(light, point.position), LightKind::point, light.line);
+    for (const PointLight& light : scene.point_lights) {
+        const LightSample sample = sampled_from(
+            scene, light.line, point, [&] { return sample_light(light, point.position); });
+        consider(sample, LightKind::point, light.line);
+    }
     for (const DirectionalLight& light : scene.directional_lights)
         consider(sample_light(light), LightKind::directional, light.line);
     for (const SpotLight& light : scene.spot_lights) {
-        const LightSample sample = sample_spot_light(light, point.position);
+        const LightSample sample = sampled_from(
+            scene, light.line, point, [&] { return sample_spot_light(light, point.position); });
         if (sample.intensity == Color(0.0)) {
             observer.spot_light_outside_cone(light.line);
             continue;

@@ -174,6 +174,21 @@ TEST_CASE("raystep command: render says what the scene asks for that it does not
     check_run(run, 0, {"pathtracer-note.test:3: warning: 'integrator pathtracer'"});
 }
 
+// A light on a surface that a ray sees has no direction to shade by: the scene's error, on the
+// light's line.
+TEST_CASE("raystep command: a point light on a seen surface is an error on the light's line",
+          "[cli]") {
+    const ScratchFolder folder("render");
+    write_file(folder.path() / "light-on-floor.test",
+               "size 9 9\ncamera 0 3 0 0 0 0 0 0 -1 45\northo -2.25 2.25 -2.25 2.25\n"
+               "diffuse 0.5 0.5 0.5\nplane 0 0 0 0 1 0\npoint 0.5 0 -1 1 1 1\n");
+    const CommandRun run =
+        raystep_in(folder.path(), {"render", "light-on-floor.test", "-o", "floor.png"});
+    check_run(run, 1,
+              {R"(light-on-floor.test:6: the light is at \(0.5, 0, -1\), a point of a )"
+               "surface that a ray sees"});
+}
+
 TEST_CASE("raystep command: trace --compare refuses a moved eye and exits 2", "[cli]") {
     check_raystep({"trace", kQuad.string(), "1", "1", "--compare", "--lookfrom", "1", "0", "4"}, 2,
                   {"leave out --ray-offset and --lookfrom"});
