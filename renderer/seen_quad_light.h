@@ -10,8 +10,8 @@ namespace raystep {
 
 // In the CSE168 dialect a quad light is seen as well as lighting the scene, as that course draws
 // it (scene.h, SceneDialect). Only camera rays see it here: the lights are not in the BVH, where a
-// shadow ray aimed at a light sample would meet the light itself at its end, and neither lights
-// nor anything else cast shadows on one another's behalf. A CSE167 scene's lights stay unseen.
+// shadow ray aimed at a light sample would meet the light itself at its end, so a quad light casts
+// no shadow. A CSE167 scene's lights stay unseen.
 
 /// What a camera ray sees of a quad light: the radiance from its emitting side (the side
 /// ac x ab points to), black from behind, as a surface of no other colour would look.
