@@ -104,8 +104,8 @@ fi
 
 check_command "scripts/test.sh 1 runs stage 1's public tests, every one failing at a stub" 8 \
     "0% tests passed, [0-9]+ tests failed out of [0-9]+" "$release/scripts/test.sh" 1
-check_command "scripts/test.sh of a stage that does not exist exits 2" 2 "no stage '10'" \
-    "$release/scripts/test.sh" 10
+check_command "scripts/test.sh of a stage that does not exist exits 2" 2 "no stage '11'" \
+    "$release/scripts/test.sh" 11
 check_command "raystep render names the stub" 1 "^raystep: $stub_message" \
     "$bin/raystep" render "$scene" --view normal -o "$release/normal.png"
 check_command "raystep trace stops at the stub" 1 "^stopped: $stub_message" \
@@ -242,10 +242,18 @@ while IFS=$'\t' read -r name command points may_fail; do
             "implemented"
     fi
 done <<<"$workflow_steps"
-# Every stage and the whole pipeline (stage 0, the render checks of every stage together).
-if [ "$stages_graded" -ne "$(($(ls -d "$release"/stages/*/ | wc -l) + 1))" ]; then
-    echo "FAIL the workflow grades $stages_graded stages and the pipeline; the release has" \
-        "$(ls -d "$release"/stages/*/ | wc -l) stages and the pipeline"
+# Every stage the rubric has checks for and the whole pipeline (stage 0, the render checks of every
+# stage together). A stage with public tests and no checks yet (stage 10: docs/stage10.md, "What
+# the grader checks") is run by the workflow's public tests alone.
+rubric_stages=$(python3 - "$release/grading/rubric.json" <<'PYTHON'
+import json, pathlib, re, sys
+rubric = json.loads(re.sub(r"^\s*//.*$", "", pathlib.Path(sys.argv[1]).read_text(), flags=re.M))
+print(len({check.split(".")[0] for check in rubric["checks"]}))
+PYTHON
+)
+if [ "$stages_graded" -ne "$rubric_stages" ]; then
+    echo "FAIL the workflow grades $stages_graded stages and the pipeline; the rubric has checks" \
+        "for $((rubric_stages - 1)) stages and the pipeline"
     problems=$((problems + 1))
 fi
 

@@ -9,8 +9,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 for stage in "$@"; do
-    if ! [[ "$stage" =~ ^[1-9]$ ]] || ! ls -d "stages/${stage}_"* >/dev/null 2>&1; then
-        echo "scripts/test.sh: no stage '$stage'; the stages are: $(ls stages | grep -o '^[0-9]' | tr '\n' ' ')" >&2
+    if ! [[ "$stage" =~ ^[1-9][0-9]*$ ]] || ! ls -d "stages/${stage}_"* >/dev/null 2>&1; then
+        echo "scripts/test.sh: no stage '$stage'; the stages are: $(ls stages | grep -Eo '^[0-9]+' | sort -n | tr '\n' ' ')" >&2
         exit 2
     fi
 done
@@ -25,5 +25,5 @@ if ! build_output=$(cmake --build --preset student 2>&1); then
     echo "scripts/test.sh: the build failed (the compiler's words above)" >&2
     exit 1
 fi
-labels=$(IFS='|'; echo "${*:-[0-9]}")
+labels=$(IFS='|'; echo "${*:-[0-9]+}")
 ctest --preset student -L "^stage(${labels})$" --output-on-failure
