@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "renderer/heat_map.h"
+#include "renderer/path_traced.h"
 #include "renderer/ray_colour.h"
 #include "renderer/sample_streams.h"
 #include "renderer/seen_quad_light.h"
@@ -63,7 +64,9 @@ Color camera_ray_colour(const RenderScene& render_scene, View view, const Ray& r
             // Without bounces there is nothing to follow: the local colour, with no recursion
             // to set up (most scenes of stages 2 to 6 take this way on every pixel).
             Color colour = render_scene.scene->background;
-            if (render_scene.bounces > 0) {
+            if (render_scene.scene->integrator == Integrator::pathtracer) {
+                colour = path_traced_colour(render_scene, ray, *light_random);
+            } else if (render_scene.bounces > 0) {
                 colour = full_colour(render_scene, ray, closest, light_random, observer);
             } else if (closest) {
                 colour = shade_hit(render_scene, ray, *closest, light_random, observer).local;
@@ -113,9 +116,10 @@ Color render_pixel(const RenderScene& render_scene, View view, int i, int j,
         return sampled_pixel(render_scene, view, i, j, observer);
     }
     // One ray through the pixel's centre, stage 2's: a scene without samples needs nothing of
-    // stage 8, and the light samples of a quad light at spp 1 use sample 0's stream.
+    // stage 8, and the light samples of a quad light, or a path, at spp 1 use sample 0's stream.
     std::optional<RandomStream> lights;
-    if (!scene.quad_lights.empty() && averages_samples(view)) {
+    if ((!scene.quad_lights.empty() || scene.integrator == Integrator::pathtracer) &&
+        averages_samples(view)) {
         lights.emplace(light_random(scene, i, j, 0));
     }
     return camera_ray_colour(render_scene, view, camera_ray(render_scene, i, j),

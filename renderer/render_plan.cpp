@@ -24,6 +24,13 @@ std::vector<int> stages_for_view(const SceneFeatures& features, View view) {
     if (features.uses_transforms()) stages.push_back(5);
     if (view != View::shaded && view != View::full) return stages;
     stages.push_back(6);
+    // A path-traced full view: stage 10's paths (over stage 6's spawn_ray), stage 8 only for the
+    // pixel's samples; the paths neither mirror nor refract.
+    if (view == View::full && features.path_traced) {
+        if (features.samples_per_pixel > 1) stages.push_back(8);
+        stages.push_back(10);
+        return stages;
+    }
     // Stage 9 reflects with stage 7's reflected_ray, so a transmitting scene runs stage 7 too.
     if (view == View::full && (features.uses_reflection() || features.uses_refraction())) {
         stages.push_back(7);

@@ -35,7 +35,9 @@ bool uses_instance_bvh(const SceneFeatures& features);
 /// maxdepth allows a bounce; sampling (stage 8) in the shaded and full views of a scene with
 /// more than one sample per pixel or a quad light (the views that average samples,
 /// render_pixel.h); refraction (stage 9, and stage 7 whose reflected_ray it uses) in the full
-/// view of a scene where something transmits and maxdepth allows a bounce.
+/// view of a scene where something transmits and maxdepth allows a bounce. The full view of a
+/// path-traced scene (`integrator pathtracer`) runs stage 10 instead of 7 and 9, and stage 8
+/// only for more than one sample per pixel.
 std::vector<int> stages_for_view(const SceneFeatures& features, View view);
 
 }  // namespace raystep

@@ -44,7 +44,18 @@ std::string sampling_row(const Scene& scene, const SceneFeatures& f) {
                                "sample per pixel", "samples per pixel");
     if (scene.samples_per_pixel > 1)
         text += ", " + std::string(sample_pattern_name(scene.pixel_sampling));
-    if (f.quad_lights > 0 && scene.integrator == Integrator::analyticdirect) {
+    if (f.path_traced) {
+        const char* const sampling[] = {"uniform over the hemisphere", "cosine-weighted",
+                                        "by the BRDF"};
+        const char* const next_event[] = {"off", "on", "by MIS"};
+        text += "; paths (integrator pathtracer) of " +
+                (scene.max_depth == kUnboundedDepth
+                     ? std::string("any length")
+                     : "at most " + std::to_string(scene.max_depth) + " bounces") +
+                (scene.russian_roulette ? ", ended by Russian roulette" : "") +
+                ", directions drawn " + sampling[static_cast<int>(scene.importance_sampling)] +
+                ", next event estimation " + next_event[static_cast<int>(scene.next_event)];
+    } else if (f.quad_lights > 0 && scene.integrator == Integrator::analyticdirect) {
         text += "; area lights integrated exactly (integrator analyticdirect)";
     } else if (f.quad_lights > 0) {
         text += "; " + counted(static_cast<std::size_t>(scene.light_samples), "sample", "samples") +

@@ -19,6 +19,10 @@ namespace raystep {
 /// Surface properties of the CSE167 local model, I = A + E + sum of lights (D, S, shininess),
 /// with S also the mirror reflectance; a material with a transmission colour is the surface of a
 /// dielectric solid of index `index` (stage 9).
+/// `brdf`: the CSE168 course's two BRDFs (docs/stage10.md, "The BRDF"). Its path tracer shades
+/// by them; CSE167's ray tracer takes every surface as stage 6's local model.
+enum class BrdfModel { phong, ggx };
+
 struct Material {
     Color ambient{0.2, 0.2, 0.2};
     Color diffuse{0.0, 0.0, 0.0};
@@ -27,11 +31,14 @@ struct Material {
     double shininess = 0.0;
     Color transmission{0.0, 0.0, 0.0};  ///< `transmission`: Kt, black for an opaque surface
     double index = 1.0;                 ///< `ior`: index of refraction of the solid inside
+    BrdfModel brdf = BrdfModel::phong;  ///< `brdf`
+    double roughness = 0.0;             ///< `roughness`: GGX's alpha
 
     bool operator==(const Material& other) const {
         return ambient == other.ambient && diffuse == other.diffuse && specular == other.specular &&
                emission == other.emission && shininess == other.shininess &&
-               transmission == other.transmission && index == other.index;
+               transmission == other.transmission && index == other.index && brdf == other.brdf &&
+               roughness == other.roughness;
     }
 };
 
@@ -201,10 +208,20 @@ enum class SceneDialect {
 };
 
 /// `integrator`: how the CSE168 path tracer renders a scene. raytracer, the default, is CSE167's
-/// ray tracer; the others read the scene in the CSE168 dialect. raystep renders direct light for
-/// direct and pathtracer alike (no indirect light), and for analyticdirect integrates each
-/// quad light exactly, unshadowed, as that integrator does.
+/// ray tracer; the others read the scene in the CSE168 dialect: direct samples the lights, as
+/// stage 8 does; analyticdirect integrates each quad light exactly, unshadowed, as that
+/// integrator does; pathtracer renders by stage 10's paths (renderer/path_traced.h).
 enum class Integrator { raytracer, direct, analyticdirect, pathtracer };
+
+/// `importancesampling`: how the path tracer draws a path's next direction (docs/stage10.md).
+enum class DirectionSampling { hemisphere, cosine, brdf };
+
+/// `nexteventestimation`: how the path tracer reaches the lights.
+enum class NextEvent {
+    off,  ///< only by hitting them
+    on,   ///< only by sampling them (one sample per light at each hit)
+    mis,  ///< both, each weighted by the power heuristic against the other
+};
 
 /// `maxdepth -1` in the CSE168 dialect: paths have no depth limit and end by Russian roulette.
 inline constexpr int kUnboundedDepth = -1;
@@ -247,6 +264,10 @@ struct Scene {
     bool light_stratify = false;                             ///< `lightstratify on`
     std::uint64_t seed = 0;                                  ///< `seed`: the render's random seed
     bool schlick_fresnel = false;  ///< `fresnel schlick`; exact by default
+    /// The path tracer's (`integrator pathtracer`) settings, with the CSE168 course's defaults.
+    DirectionSampling importance_sampling = DirectionSampling::hemisphere;
+    NextEvent next_event = NextEvent::off;
+    bool russian_roulette = false;  ///< `russianroulette on`
 
     std::vector<SceneNote> notes;  ///< in file order, one per command name at most
 };

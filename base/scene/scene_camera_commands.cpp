@@ -35,10 +35,14 @@ void SceneParser::maxdepth() {
                 "'integrator' is direct, analyticdirect or pathtracer; give a depth of 0 or more");
         }
         scene_.max_depth = kUnboundedDepth;
-        note(
-            "'maxdepth -1' sets no limit, for a path tracer's Russian roulette: raystep traces "
-            "no paths, and its refraction (stage 9), which has no roulette, follows " +
-            std::to_string(kDefaultDepth) + " bounces");
+        // The path tracer ends such paths by Russian roulette (finish() checks that it is on).
+        if (!path_traced()) {
+            note(
+                "'maxdepth -1' sets no limit, for the path tracer's Russian roulette: this "
+                "integrator traces no paths, and its refraction (stage 9), which has no "
+                "roulette, follows " +
+                std::to_string(kDefaultDepth) + " bounces");
+        }
         return;
     }
     const long depth = count(1, "the depth");

@@ -41,6 +41,7 @@ SceneFeatures scene_features(const Scene& scene) {
     features.spot_lights = scene.spot_lights.size();
     features.quad_lights = scene.quad_lights.size();
     features.samples_per_pixel = scene.samples_per_pixel;
+    features.path_traced = scene.integrator == Integrator::pathtracer;
     std::unordered_set<std::uint32_t> transforms;
     count_objects(scene, scene.spheres, features, transforms);
     count_objects(scene, scene.triangles, features, transforms);

@@ -33,6 +33,7 @@ struct SceneFeatures {
     int samples_per_pixel = 1;             ///< `spp`; above 1, antialiasing by stage 8
     std::size_t reflective_objects = 0;    ///< specular > 0 with maxdepth > 0, CSE167: mirrors
     std::size_t transmissive_objects = 0;  ///< transmission > 0 with maxdepth > 0: stage 9
+    bool path_traced = false;              ///< `integrator pathtracer`: stage 10's paths
 
     std::size_t primitives() const { return spheres + triangles + planes; }
     bool uses_transforms() const { return transformed_objects > 0; }

@@ -32,6 +32,11 @@ bool is_identity(const TransformOp& op) {
 // Geometry
 
 ObjectAttributes SceneParser::attributes() {
+    if (path_traced() && material_.brdf == BrdfModel::ggx && !(material_.roughness > 0.0)) {
+        fail(
+            "this object's material is 'brdf ggx' with roughness 0: the path tracer's GGX needs "
+            "a roughness above 0 (a perfect mirror has no density to sample)");
+    }
     if (material_id_ == kUnregistered) {
         scene_.materials.push_back(material_);
         material_id_ = static_cast<std::uint32_t>(scene_.materials.size() - 1);

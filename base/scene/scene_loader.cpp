@@ -29,12 +29,13 @@ void for_each_line(std::string_view text, const std::function<void(const std::st
     }
 }
 
-// The dialect is the whole file's, whichever line names the integrator: a material written above
-// `integrator direct` takes the CSE168 defaults too. That line is read first, by a parser of its
-// own, so that a malformed one is reported as itself rather than through what the dialect it
-// failed to set makes of an earlier line (a `maxdepth -1` above `integrator pathtracing`).
-SceneDialect dialect_of(std::string_view text, const std::string& name,
-                        const std::filesystem::path& folder) {
+// The integrator, and with it the dialect, is the whole file's, whichever line names it: a
+// material written above `integrator direct` takes the CSE168 defaults too. That line is read
+// first, by a parser of its own, so that a malformed one is reported as itself rather than
+// through what the dialect it failed to set makes of an earlier line (a `maxdepth -1` above
+// `integrator pathtracing`).
+Integrator integrator_of(std::string_view text, const std::string& name,
+                         const std::filesystem::path& folder) {
     int number = 0;
     std::optional<std::pair<int, std::string>> integrator;
     std::vector<std::string_view> fields;
@@ -45,18 +46,17 @@ SceneDialect dialect_of(std::string_view text, const std::string& name,
             integrator.emplace(number, line);
         }
     });
-    if (!integrator) return SceneDialect::cse167;
-    scene_parsing::SceneParser(name, folder, SceneDialect::cse167)
-        .parse_line_at(integrator->first, integrator->second);
-    split_fields(integrator->second, fields);
-    return fields[1] == "raytracer" ? SceneDialect::cse167 : SceneDialect::cse168;
+    if (!integrator) return Integrator::raytracer;
+    scene_parsing::SceneParser scratch(name, folder, Integrator::raytracer);
+    scratch.parse_line_at(integrator->first, integrator->second);
+    return scratch.scene_integrator();
 }
 
 }  // namespace
 
 Scene parse_scene(std::string_view text, const std::string& name,
                   const std::filesystem::path& folder) {
-    scene_parsing::SceneParser parser(name, folder, dialect_of(text, name, folder));
+    scene_parsing::SceneParser parser(name, folder, integrator_of(text, name, folder));
     for_each_line(text, [&](const std::string& line) { parser.parse_line(line); });
     return parser.finish();
 }

@@ -36,6 +36,11 @@ Scene SceneParser::finish() {
     }
     scene_.camera.ortho = ortho_;
     check_sample_grids();
+    if (path_traced() && scene_.max_depth == kUnboundedDepth && !scene_.russian_roulette) {
+        throw InputError(name_, static_cast<int>(line_of("maxdepth")),
+                         "maxdepth -1 (no limit) under 'integrator pathtracer' needs "
+                         "'russianroulette on': without it a path in a closed room never ends");
+    }
     // analyticdirect integrates each quad light exactly: its samples, wherever they were set,
     // change nothing.
     if (scene_.integrator == Integrator::analyticdirect) {

@@ -51,17 +51,25 @@ inline double largest_magnitude(const Vec3& v) {
 /// Reads a scene file line by line into a Scene: parse_line for each line, then finish.
 class SceneParser {
   public:
-    SceneParser(std::string name, std::filesystem::path folder, SceneDialect dialect)
+    /// `integrator` is the scene's, read before the other lines (scene_loader.cpp): it sets the
+    /// dialect, and the notes of the path tracer's settings depend on it wherever it stands.
+    SceneParser(std::string name, std::filesystem::path folder, Integrator integrator)
         : name_(std::move(name)), folder_(std::move(folder)) {
         scene_.path = name_;
-        scene_.dialect = dialect;
+        scene_.integrator = integrator;
+        scene_.dialect =
+            integrator == Integrator::raytracer ? SceneDialect::cse167 : SceneDialect::cse168;
         // The CSE168 path tracer has no ambient term: none unless the scene writes one.
-        if (dialect == SceneDialect::cse168) material_.ambient = Color(0.0);
+        if (cse168()) material_.ambient = Color(0.0);
     }
 
     /// Reads one line (a command and its arguments) into the scene; throws InputError
     /// `file:line: problem` for anything wrong with it.
     void parse_line(std::string_view text);
+
+    /// The scene's integrator: the one the constructor was given, or that an `integrator` line
+    /// read since has set.
+    Integrator scene_integrator() const { return scene_.integrator; }
 
     /// Reads line `number` of the file on its own, as parse_line would have read it there: for a
     /// line read before the others (the `integrator` that sets the dialect, scene_loader.cpp).
@@ -107,6 +115,8 @@ class SceneParser {
     std::uint32_t line_of(const std::string& command) const;
     void note(const std::string& text);
     bool cse168() const { return scene_.dialect == SceneDialect::cse168; }
+    /// `integrator pathtracer`, which reads the path tracer's settings.
+    bool path_traced() const;
 
     // Image and camera
     void size();

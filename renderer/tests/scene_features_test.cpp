@@ -121,3 +121,17 @@ TEST_CASE("scene_features: refraction needs a transmissive material and maxdepth
                     .uses_refraction());
     CHECK_FALSE(scene_features(parse("ior 1.5\nsphere 0 0 0 1\n")).uses_refraction());
 }
+
+TEST_CASE("stages_for_view: a path-traced full view runs stage 10, and stage 8 only for its spp",
+          "[app]") {
+    const std::string paths =
+        "integrator pathtracer\ntransmission 1 1 1\nquadLight 0 5 0 0 0 1 1 0 0 1 1 1\n"
+        "sphere 0 0 0 1\n";
+    CHECK(stages_for_view(scene_features(parse(paths)), View::full) ==
+          std::vector<int>{1, 2, 3, 6, 10});
+    CHECK(stages_for_view(scene_features(parse("spp 4\n" + paths)), View::full) ==
+          std::vector<int>{1, 2, 3, 6, 8, 10});
+    // The shaded view is the direct integrator's, as in the other CSE168 integrators.
+    CHECK(stages_for_view(scene_features(parse(paths)), View::shaded) ==
+          std::vector<int>{1, 2, 3, 6, 8});
+}

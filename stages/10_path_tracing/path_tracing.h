@@ -76,10 +76,8 @@ double ggx_half_vector_pdf(const Vec3& half_vector, double roughness);
 
 // --- The BRDF (brdf.cpp) ----------------------------------------------------------------------
 
-/// The CSE168 course's two BRDFs, as a scene's `brdf`, `diffuse`, `specular`, `shininess` and
-/// `roughness` set them.
-enum class BrdfModel { phong, ggx };
-
+/// The BRDF of a surface, as a scene's `brdf` (base/scene/scene.h's BrdfModel), `diffuse`,
+/// `specular`, `shininess` and `roughness` set it.
 struct SurfaceBrdf {
     BrdfModel model = BrdfModel::phong;
     Color diffuse{0.0};    ///< Kd
@@ -179,15 +177,9 @@ struct PathScene {
     RayOffset offset;  ///< how rays leave a surface (stage 6's spawn_ray)
 };
 
-/// How a path draws its next direction: the scene's `importancesampling`.
-enum class DirectionSampling { hemisphere, cosine, brdf };
-
-/// How a path reaches the lights: the scene's `nexteventestimation`.
-enum class NextEvent {
-    off,  ///< only by hitting them
-    on,   ///< only by sampling them (one sample per light at each hit)
-    mis,  ///< both, each weighted by the power heuristic against the other
-};
+// How a path draws its next direction and reaches the lights are the scene's
+// `importancesampling` and `nexteventestimation`: DirectionSampling and NextEvent in
+// base/scene/scene.h.
 
 struct PathSettings {
     int max_depth = 5;  ///< the most bounces: hits whose reflected light the path counts; -1: no

@@ -251,7 +251,8 @@ TEST_CASE(
 TEST_CASE("raystep command: info warns of a CSE168 setting raystep does not use, naming its line",
           "[cli]") {
     check_raystep({"info", (kData / "good/cse168_path_tracer_settings.test").string()}, 0,
-                  {"cse168_path_tracer_settings.test:4: warning: 'russianroulette' has no effect"});
+                  {"cse168_path_tracer_settings.test:5: warning: 'russianroulette' has no effect "
+                   "outside 'integrator pathtracer'"});
 }
 
 TEST_CASE(
@@ -261,11 +262,11 @@ TEST_CASE(
     const fs::path scene = kData / "good/cse168_homework_scene.test";
     check_raystep({"info", scene.string()}, 0,
                   {"dialect     CSE168", R"(maxdepth -1 \(no limit\))",
-                   "cse168_homework_scene.test:10: warning: 'maxdepth -1' sets no limit",
+                   "paths \\(integrator pathtracer\\) of any length, ended by Russian roulette, "
+                   "directions drawn cosine-weighted, next event estimation on",
                    "cse168_homework_scene.test:16: warning: more vertices than 'maxverts 3'",
                    "cse168_homework_scene.test:19: warning: in the CSE168 dialect 'specular'",
                    "cse168_homework_scene.test:21: warning: no 'ambient' is written above",
-                   "cse168_homework_scene.test:23: warning: 'brdf ggx'",
                    "cse168_homework_scene.test:26: warning: in the CSE168 dialect a quadLight"});
     const ScratchFolder folder("cse168");
     check_raystep({"render", scene.string(), "-o", (folder.path() / "homework.png").string()}, 0,

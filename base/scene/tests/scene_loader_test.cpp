@@ -371,12 +371,37 @@ TEST_CASE("parse_scene: a non-square spp under the default pattern is sampled at
     CHECK(warning_text(scene, scene.notes[0]).rfind("inline.test:2: warning: spp 8", 0) == 0);
 }
 
-TEST_CASE("parse_scene: CSE168 path tracer settings load, each noted once on its first line",
+TEST_CASE("parse_scene: integrator pathtracer reads its settings and each material's BRDF",
           "[base]") {
     const Scene scene = parse(kCamera +
                               "integrator pathtracer\nnexteventestimation mis\n"
                               "russianroulette on\nimportancesampling cosine\ngamma 2.2\n"
                               "brdf ggx\nroughness 0.25\nsphere 0 0 0 1\nbrdf phong\n"
+                              "roughness 0\nsphere 1 0 0 1\n");
+    CHECK(scene.next_event == NextEvent::mis);
+    CHECK(scene.russian_roulette);
+    CHECK(scene.importance_sampling == DirectionSampling::cosine);
+    REQUIRE(scene.spheres.size() == 2);
+    const Material& first = scene.materials[scene.spheres[0].attributes.material];
+    const Material& second = scene.materials[scene.spheres[1].attributes.material];
+    CHECK(first.brdf == BrdfModel::ggx);
+    CHECK(first.roughness == 0.25);
+    CHECK(second.brdf == BrdfModel::phong);
+    CHECK(second.roughness == 0.0);
+    // Only what the path tracer does not use is noted: gamma, and the ambient the CSE168
+    // dialect leaves at 0.
+    std::vector<std::string> noted;
+    for (const SceneNote& note : scene.notes)
+        noted.push_back(note.command + "@" + std::to_string(note.line));
+    CHECK(noted == std::vector<std::string>{"integrator@2", "gamma@6", "sphere@9"});
+}
+
+TEST_CASE("parse_scene: the path tracer's settings under another integrator are each noted once",
+          "[base]") {
+    const Scene scene = parse(kCamera +
+                              "integrator direct\nnexteventestimation mis\n"
+                              "russianroulette on\nimportancesampling cosine\ngamma 2.2\n"
+                              "brdf ggx\nroughness 0.25\nsphere 0 0 0 1\nbrdf ggx\n"
                               "roughness 0\nsphere 1 0 0 1\n");
     CHECK(scene.spheres.size() == 2);
     std::vector<std::string> noted;
@@ -491,11 +516,18 @@ TEST_CASE("parse_scene: under analyticdirect the light samples are noted as havi
 
 TEST_CASE("parse_scene: maxdepth -1 is no limit in the CSE168 dialect, and an error in CSE167's",
           "[base]") {
-    const Scene scene = parse(kCamera + "integrator pathtracer\nmaxdepth -1\n");
+    // The direct integrator traces no paths: the limit is noted as having no use.
+    const Scene scene = parse(kCamera + "integrator direct\nmaxdepth -1\n");
     CHECK(scene.max_depth == kUnboundedDepth);
     REQUIRE(scene.notes.size() == 2);
     CHECK(scene.notes[1].command == "maxdepth");
     CHECK_THAT(scene.notes[1].text, Catch::Matchers::Contains("sets no limit"));
+    // The path tracer ends its paths by Russian roulette, which must be on.
+    const Scene paths = parse(kCamera + "integrator pathtracer\nmaxdepth -1\nrussianroulette on\n");
+    CHECK(paths.max_depth == kUnboundedDepth);
+    CHECK(paths.notes.size() == 1);
+    CHECK_THROWS_WITH(parse(kCamera + "integrator pathtracer\nmaxdepth -1\n"),
+                      Catch::Matchers::StartsWith("inline.test:3: maxdepth -1 (no limit) under"));
     CHECK_THROWS_WITH(parse(kCamera + "maxdepth -1\n"),
                       Catch::Matchers::StartsWith("inline.test:2: maxdepth -1 (no limit) is the "
                                                   "CSE168 dialect's"));

@@ -1,0 +1,62 @@
+#include "renderer/path_traced.h"
+
+#include <glm/geometric.hpp>
+
+#include "renderer/seen_quad_light.h"
+#include "renderer/surface_point.h"
+#include "stages/10_path_tracing/path_tracing.h"
+
+namespace raystep {
+
+namespace {
+
+SurfaceBrdf surface_brdf(const Material& material) {
+    return {material.brdf, material.diffuse, material.specular, material.shininess,
+            material.roughness};
+}
+
+PathSettings path_settings(const Scene& scene) {
+    PathSettings settings;
+    settings.max_depth = scene.max_depth;  // kUnboundedDepth is path_radiance's -1
+    settings.russian_roulette = scene.russian_roulette;
+    settings.sampling = scene.importance_sampling;
+    settings.next_event = scene.next_event;
+    return settings;
+}
+
+// A quad light where a ray meets it: a surface facing the ray that reflects nothing.
+PathHit light_hit(const Scene& scene, const Ray& ray, const SeenQuadLight& seen) {
+    Vec3 normal = glm::normalize(glm::cross(seen.light->edge1, seen.light->edge2));
+    if (glm::dot(normal, ray.direction) > 0.0) normal = -normal;
+    PathHit hit;
+    hit.point = {ray.origin + seen.t * ray.direction, Vec3(0.0), normal, normal,
+                 -glm::normalize(ray.direction)};
+    hit.emission = seen.colour;
+    hit.light = static_cast<std::size_t>(seen.light - scene.quad_lights.data());
+    return hit;
+}
+
+}  // namespace
+
+Color path_traced_colour(const RenderScene& render_scene, const Ray& ray, RandomStream& random) {
+    const Scene& scene = *render_scene.scene;
+    PathScene path;
+    path.lights = scene.quad_lights;
+    path.offset = render_scene.ray_offset;
+    path.occluded = [&](const Ray& shadow) { return scene_occluded(render_scene, shadow); };
+    path.intersect = [&](const Ray& next) -> std::optional<PathHit> {
+        const std::optional<PrimitiveHit> hit = scene_closest_hit(render_scene, next, nullptr);
+        if (const std::optional<SeenQuadLight> seen = seen_quad_light(scene, next, hit))
+            return light_hit(scene, next, *seen);
+        if (!hit) return std::nullopt;
+        const Material& material = material_of(render_scene, *hit);
+        PathHit surface;
+        surface.point = surface_point(render_scene, next, *hit);
+        surface.brdf = surface_brdf(material);
+        surface.emission = material.emission;
+        return surface;
+    };
+    return path_radiance(ray, path, path_settings(scene), random);
+}
+
+}  // namespace raystep

@@ -1,0 +1,20 @@
+#pragma once
+
+#include "base/math/random_stream.h"
+#include "renderer/render_scene.h"
+
+namespace raystep {
+
+// `integrator pathtracer` (the CSE168 course's path tracer): what a camera ray sees is one path
+// of stage 10's path_radiance (docs/stage10.md) over the scene. Its surfaces are the scene's
+// primitives, each with its material's BRDF (`brdf`, `diffuse`, `specular`, `shininess`,
+// `roughness`) and emission, and its quad lights, seen as seen_quad_light.h sees them (radiance
+// from the emitting side, black behind) and sampled by next event estimation; shadow rays are
+// the scene's, which no quad light blocks. The scene's `maxdepth`, `russianroulette`,
+// `importancesampling` and `nexteventestimation` are the path's settings. A path that leaves the
+// scene sees black, as in the course: the `background` of a CSE167 scene is not an emitter.
+
+/// One path's estimate of the radiance back along `ray`, drawing from `random`.
+Color path_traced_colour(const RenderScene& render_scene, const Ray& ray, RandomStream& random);
+
+}  // namespace raystep
