@@ -17,7 +17,7 @@ SurfaceBrdf surface_brdf(const Material& material) {
 
 PathSettings path_settings(const Scene& scene) {
     PathSettings settings;
-    settings.max_depth = scene.max_depth;  // kUnboundedDepth is path_radiance's -1
+    settings.max_depth = scene.max_depth == kUnboundedDepth ? kLongestPath : scene.max_depth;
     settings.russian_roulette = scene.russian_roulette;
     settings.sampling = scene.importance_sampling;
     settings.next_event = scene.next_event;

@@ -11,7 +11,9 @@ namespace raystep {
 // `roughness`) and emission, and its quad lights, seen as seen_quad_light.h sees them (radiance
 // from the emitting side, black behind) and sampled by next event estimation; shadow rays are
 // the scene's, which no quad light blocks. The scene's `maxdepth`, `russianroulette`,
-// `importancesampling` and `nexteventestimation` are the path's settings. A path that leaves the
+// `importancesampling` and `nexteventestimation` are the path's settings (`maxdepth -1` ends by
+// Russian roulette, and after kLongestPath bounces where it cannot: base/scene/scene.h). A path
+// that leaves the
 // scene sees black, as in the course: the `background` of a CSE167 scene is not an emitter.
 
 /// One path's estimate of the radiance back along `ray`, drawing from `random`.

@@ -22,7 +22,9 @@ void count_objects(const Scene& scene, const std::vector<Object>& objects, Scene
         if (scene.max_depth == 0) continue;
         if (material.specular != Color(0.0) && scene.dialect == SceneDialect::cse167)
             ++features.reflective_objects;
-        if (material.transmission != Color(0.0)) ++features.transmissive_objects;
+        // The path tracer neither mirrors nor refracts.
+        if (material.transmission != Color(0.0) && scene.integrator != Integrator::pathtracer)
+            ++features.transmissive_objects;
     }
 }
 

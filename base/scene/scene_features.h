@@ -32,7 +32,8 @@ struct SceneFeatures {
     std::size_t quad_lights = 0;           ///< area lights: soft shadows, stage 8
     int samples_per_pixel = 1;             ///< `spp`; above 1, antialiasing by stage 8
     std::size_t reflective_objects = 0;    ///< specular > 0 with maxdepth > 0, CSE167: mirrors
-    std::size_t transmissive_objects = 0;  ///< transmission > 0 with maxdepth > 0: stage 9
+    std::size_t transmissive_objects = 0;  ///< transmission > 0 with maxdepth > 0, not path-traced:
+                                           ///< stage 9
     bool path_traced = false;              ///< `integrator pathtracer`: stage 10's paths
 
     std::size_t primitives() const { return spheres + triangles + planes; }

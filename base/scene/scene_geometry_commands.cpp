@@ -32,10 +32,12 @@ bool is_identity(const TransformOp& op) {
 // Geometry
 
 ObjectAttributes SceneParser::attributes() {
-    if (path_traced() && material_.brdf == BrdfModel::ggx && !(material_.roughness > 0.0)) {
-        fail(
-            "this object's material is 'brdf ggx' with roughness 0: the path tracer's GGX needs "
-            "a roughness above 0 (a perfect mirror has no density to sample)");
+    // GGX squares its roughness: below 1e-100 that underflows, and 0 is a perfect mirror, which
+    // has no density to sample.
+    if (path_traced() && material_.brdf == BrdfModel::ggx && !(material_.roughness >= 1e-100)) {
+        fail("this object's material is 'brdf ggx' with roughness " + to_text(material_.roughness) +
+             ": the path tracer's GGX needs a roughness of at least 1e-100 (0 is a perfect "
+             "mirror, which has no density to sample)");
     }
     if (material_id_ == kUnregistered) {
         scene_.materials.push_back(material_);

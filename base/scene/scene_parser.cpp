@@ -28,6 +28,7 @@ void SceneParser::parse_line(std::string_view text) {
              ", found " + std::to_string(given));
     }
     (this->*command.handle)();
+    first_uses_.try_emplace(std::string(command.name), static_cast<std::uint32_t>(line_));
 }
 
 Scene SceneParser::finish() {
@@ -36,11 +37,7 @@ Scene SceneParser::finish() {
     }
     scene_.camera.ortho = ortho_;
     check_sample_grids();
-    if (path_traced() && scene_.max_depth == kUnboundedDepth && !scene_.russian_roulette) {
-        throw InputError(name_, static_cast<int>(line_of("maxdepth")),
-                         "maxdepth -1 (no limit) under 'integrator pathtracer' needs "
-                         "'russianroulette on': without it a path in a closed room never ends");
-    }
+    if (path_traced()) check_path_tracer_scene();
     // analyticdirect integrates each quad light exactly: its samples, wherever they were set,
     // change nothing.
     if (scene_.integrator == Integrator::analyticdirect) {
@@ -56,6 +53,47 @@ Scene SceneParser::finish() {
     std::stable_sort(scene_.notes.begin(), scene_.notes.end(),
                      [](const SceneNote& a, const SceneNote& b) { return a.line < b.line; });
     return std::move(scene_);
+}
+
+// What the path tracer does not use is noted on its first line (the direct integrators' lights
+// and samples, CSE167's mirrors' media); a path that need not end is an error, or, where only a
+// material's albedo of 1 keeps it going, noted.
+void SceneParser::check_path_tracer_scene() {
+    if (scene_.max_depth == kUnboundedDepth && !scene_.russian_roulette) {
+        throw InputError(name_, static_cast<int>(line_of("maxdepth")),
+                         "maxdepth -1 (no limit) under 'integrator pathtracer' needs "
+                         "'russianroulette on': without it a path in a closed room never ends");
+    }
+    const std::pair<const char*, const char*> unused[] = {
+        {"point", "its paths are lit by quad lights and emitting surfaces only"},
+        {"directional", "its paths are lit by quad lights and emitting surfaces only"},
+        {"spot", "its paths are lit by quad lights and emitting surfaces only"},
+        {"background", "a path that leaves the scene sees black, as in the course"},
+        {"transmission", "its paths neither refract nor mirror"},
+        {"ior", "its paths neither refract nor mirror"},
+        {"lightsamples", "next event estimation takes one sample of each light at each hit"},
+        {"lightstratify", "next event estimation takes one sample of each light at each hit"},
+    };
+    for (const auto& [command, why] : unused) {
+        if (const auto used = first_uses_.find(command); used != first_uses_.end()) {
+            const std::uint32_t line = used->second;
+            scene_.notes.push_back({line, command,
+                                    "'" + std::string(command) +
+                                        "' has no effect under 'integrator pathtracer': " + why});
+        }
+    }
+    if (scene_.max_depth != kUnboundedDepth) return;
+    for (const Material& material : scene_.materials) {
+        const Color albedo = material.diffuse + material.specular;
+        if (std::max({albedo.x, albedo.y, albedo.z}) >= 1.0) {
+            scene_.notes.push_back(
+                {line_of("maxdepth"), "maxdepth",
+                 "a material reflects all the light it gets (Kd + Ks of 1 or more in a channel): "
+                 "Russian roulette cannot end its paths, which stop after " +
+                     std::to_string(kLongestPath) + " bounces"});
+            return;
+        }
+    }
 }
 
 const std::vector<SceneParser::Command>& SceneParser::commands() {

@@ -117,6 +117,8 @@ class SceneParser {
     bool cse168() const { return scene_.dialect == SceneDialect::cse168; }
     /// `integrator pathtracer`, which reads the path tracer's settings.
     bool path_traced() const;
+    /// finish()'s checks of a path-traced scene.
+    void check_path_tracer_scene();
 
     // Image and camera
     void size();
@@ -208,6 +210,7 @@ class SceneParser {
     Scene scene_;
 
     std::unordered_map<std::string, std::uint32_t> first_lines_;  // of once-only commands
+    std::unordered_map<std::string, std::uint32_t> first_uses_;   // of every command read
     std::optional<OrthoWindow> ortho_;
 
     Material material_;

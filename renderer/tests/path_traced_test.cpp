@@ -80,6 +80,16 @@ TEST_CASE("render_pixel: a path-traced point out of the light's sight is lit by 
     CHECK(path_traced_pixel(path_traced_scene(shadowed + "maxdepth 2\n"), 0, 0).r > 0.0);
 }
 
+TEST_CASE("render_pixel: a closed white room's paths end after kLongestPath bounces", "[app]") {
+    // Albedo 1: the throughput stays 1 and Russian roulette never ends a path. Every hit emits
+    // 0.01, so a path gathers 0.01 at each of its 1001 hits.
+    const Scene scene = path_traced_scene(
+        "size 1 1\ncamera 0 0 0 0 0 -1 0 1 0 60\nintegrator pathtracer\nmaxdepth -1\n"
+        "russianroulette on\nimportancesampling cosine\nambient 0 0 0\ndiffuse 1 1 1\n"
+        "emission 0.01 0.01 0.01\nsphere 0 0 0 10\n");
+    CHECK(path_traced_pixel(scene, 0, 0).r == Approx(0.01 * (kLongestPath + 1)).epsilon(1e-9));
+}
+
 TEST_CASE("render_image: a path-traced scene is the same for any thread count", "[app]") {
     const Scene scene = path_traced_scene(
         "size 12 8\ncamera 0 2 6 0 0.5 0 0 1 0 40\nintegrator pathtracer\nspp 4\nseed 5\n"

@@ -129,6 +129,7 @@ TEST_CASE("stages_for_view: a path-traced full view runs stage 10, and stage 8 o
         "sphere 0 0 0 1\n";
     CHECK(stages_for_view(scene_features(parse(paths)), View::full) ==
           std::vector<int>{1, 2, 3, 6, 10});
+    CHECK(scene_features(parse(paths)).transmissive_objects == 0);
     CHECK(stages_for_view(scene_features(parse("spp 4\n" + paths)), View::full) ==
           std::vector<int>{1, 2, 3, 6, 8, 10});
     // The shaded view is the direct integrator's, as in the other CSE168 integrators.

@@ -8,7 +8,7 @@ namespace raystep {
 Color evaluate_brdf(const SurfaceBrdf& brdf, const Vec3& normal, const Vec3& to_light,
                     const Vec3& to_eye) {
     // 0 unless n . wi > 0 and n . wo > 0. Then Kd / pi plus
-    //   phong: Ks (s + 2) / (2 pi) max(r . wi, 0)^s, r = reflect(-wo, n);
+    //   phong: Ks (s + 2) / (2 pi) (r . wi)^s where r . wi > 0, r = reflect(-wo, n);
     //   ggx:   F G D / (4 (n . wi)(n . wo)), h = normalize(wi + wo).
     RAYSTEP_TODO(10, "evaluate_brdf", "The BRDF");
 }

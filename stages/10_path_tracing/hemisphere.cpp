@@ -53,7 +53,8 @@ double phong_lobe_pdf(const Vec3& direction, double exponent) {
 }
 
 double ggx_distribution(const Vec3& half_vector, double roughness) {
-    // alpha^2 / (pi cos^4 (alpha^2 + tan^2)^2), 0 for h.z <= 0.
+    // alpha^2 / (pi cos^4 (alpha^2 + tan^2)^2), 0 for h.z <= 0: the denominator as
+    // (alpha^2 cos^2 + sin^2)^2, sin^2 = x^2 + y^2.
     RAYSTEP_TODO(10, "ggx_distribution", "Sampling a lobe");
 }
 

@@ -64,7 +64,9 @@ double phong_lobe_pdf(const Vec3& direction, double exponent);
 
 /// GGX's (Trowbridge-Reitz's) distribution of microfacet normals of roughness alpha > 0:
 ///
-///   D(h) = alpha^2 / (pi cos^4(theta_h) (alpha^2 + tan^2(theta_h))^2)   for h.z > 0, else 0.
+///   D(h) = alpha^2 / (pi cos^4(theta_h) (alpha^2 + tan^2(theta_h))^2)   for h.z > 0, else 0,
+///
+/// h a unit vector. Finite wherever h.z > 0, for every alpha whose square is a normal number.
 double ggx_distribution(const Vec3& half_vector, double roughness);
 
 /// A microfacet normal h with density D(h) cos(theta_h) over solid angle:
@@ -88,8 +90,8 @@ struct SurfaceBrdf {
 
 /// f(wi, wo) at a point of unit normal n, wi towards the light and wo towards the eye (both
 /// unit), zero unless both are above the surface (n . wi > 0 and n . wo > 0):
-/// - phong: Kd / pi + Ks (s + 2) / (2 pi) max(r . wi, 0)^s, r = reflect(-wo, n) the mirror
-///   direction;
+/// - phong: Kd / pi + Ks (s + 2) / (2 pi) (r . wi)^s where r . wi > 0 and 0 elsewhere, even
+///   for s = 0, as phong_lobe_pdf; r = reflect(-wo, n) the mirror direction;
 /// - ggx: Kd / pi + F G D / (4 (n . wi)(n . wo)), with h = normalize(wi + wo), D =
 ///   ggx_distribution(h in n's frame, alpha), Schlick's F = Ks + (1 - Ks)(1 - wi . h)^5 and
 ///   Smith's G = G1(wi) G1(wo), G1(w) = 2 / (1 + sqrt(1 + alpha^2 tan^2(theta_w))).

@@ -396,6 +396,33 @@ TEST_CASE("parse_scene: integrator pathtracer reads its settings and each materi
     CHECK(noted == std::vector<std::string>{"integrator@2", "gamma@6", "sphere@9"});
 }
 
+TEST_CASE("parse_scene: under integrator pathtracer what its paths do not use is noted", "[base]") {
+    const Scene scene =
+        parse(kCamera +
+              "integrator pathtracer\npoint 0 5 0 1 1 1\nbackground 1 1 1\nlightsamples 4\n"
+              "transmission 1 1 1\nior 1.5\nambient 0 0 0\nsphere 0 0 0 1\n");
+    std::vector<std::string> noted;
+    for (const SceneNote& note : scene.notes)
+        noted.push_back(note.command + "@" + std::to_string(note.line));
+    CHECK(noted == std::vector<std::string>{"integrator@2", "point@3", "background@4",
+                                            "lightsamples@5", "transmission@6", "ior@7"});
+    CHECK_THAT(scene.notes[1].text,
+               Catch::Matchers::Contains("lit by quad lights and emitting surfaces only"));
+}
+
+TEST_CASE("parse_scene: a path tracer's material of albedo 1 with no depth limit is noted",
+          "[base]") {
+    // Russian roulette cannot end a path whose weight stays 1: it stops after kLongestPath.
+    const std::string paths =
+        kCamera + "integrator pathtracer\nmaxdepth -1\nrussianroulette on\nambient 0 0 0\n";
+    const Scene white = parse(paths + "diffuse 0.6 1 0.6\nsphere 0 0 0 1\n");
+    REQUIRE(white.notes.size() == 2);
+    CHECK(white.notes[1].command == "maxdepth");
+    CHECK(white.notes[1].line == 3);
+    CHECK_THAT(white.notes[1].text, Catch::Matchers::Contains("stop after 1000 bounces"));
+    CHECK(parse(paths + "diffuse 0.6 0.9 0.6\nsphere 0 0 0 1\n").notes.size() == 1);
+}
+
 TEST_CASE("parse_scene: the path tracer's settings under another integrator are each noted once",
           "[base]") {
     const Scene scene = parse(kCamera +

@@ -116,3 +116,27 @@ TEST_CASE("evaluate_brdf: GGX with Ks 1 reflects no more than arrives, from any 
         }
     }
 }
+
+TEST_CASE("evaluate_brdf: the Phong lobe is 0 where r . wi <= 0, even at shininess 0",
+          "[stage10]") {
+    // pow(0, 0) is 1: a lobe of s = 0 must still end at its equator, where its sampler does.
+    const Vec3 wo{0.6, 0.0, 0.8};
+    const SurfaceBrdf flat = phong(Color(0.0), Color(0.5), 0.0);
+    // r = (-0.6, 0, 0.8); (0.8, 0, 0.6) is above the surface and at 90 degrees to r.
+    CHECK(evaluate_brdf(flat, kUp, {0.8, 0.0, 0.6}, wo) == Color(0.0));
+    CHECK(evaluate_brdf(flat, kUp, glm::normalize(Vec3(0.9, 0.0, 0.3)), wo) == Color(0.0));
+    CHECK_THAT(evaluate_brdf(flat, kUp, kUp, wo), IsNear(Color(0.5 * 2.0 / (2.0 * kPi)), 1e-15));
+}
+
+TEST_CASE("evaluate_brdf: a Phong lobe of shininess 1e17 stays finite at the mirror direction",
+          "[stage10]") {
+    // Rounding can put r . wi a hair above 1, and (1 + 1e-16)^(1e17) is e^10: clamp it to 1.
+    const Vec3 wo = glm::normalize(Vec3(0.3, -0.2, 0.9));
+    const Vec3 mirror = glm::reflect(-wo, kUp);
+    for (double s : {1e17, 1e50, 1e100}) {
+        CAPTURE(s);
+        const Color f = evaluate_brdf(phong(Color(0.0), Color(0.5), s), kUp, mirror, wo);
+        CHECK(std::isfinite(f.x));
+        CHECK(f.x <= 0.5 * (s + 2.0) / (2.0 * kPi) * (1.0 + 1e-12));
+    }
+}

@@ -184,6 +184,9 @@ TEST_CASE("ggx_distribution: 1 / (pi alpha^2) along the normal, 0 below, D cos i
     // it.
     CHECK(std::isfinite(ggx_distribution({1.0, 0.0, 1e-200}, 0.3)));
     CHECK(ggx_distribution({1.0, 0.0, 0.0}, 0.3) == 0.0);
+    // Along the normal at alpha = 1e-9, alpha^2 - 1 rounds to -1 and 1 - cos^2 to 0: D must still
+    // be 1 / (pi alpha^2), not infinite.
+    CHECK_THAT(ggx_distribution({0.0, 0.0, 1.0}, 1e-9), IsNear(1.0 / (kPi * 1e-18), 1e-12));
 }
 
 TEST_CASE("ggx_half_vector: its half vectors pass the chi-square test against D cos", "[stage10]") {

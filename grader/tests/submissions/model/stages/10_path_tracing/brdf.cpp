@@ -20,8 +20,11 @@ double smith_g1(double cos_theta, double roughness) {
 
 Color phong_lobe_value(const SurfaceBrdf& brdf, const Vec3& normal, const Vec3& to_light,
                        const Vec3& to_eye) {
+    // 0 where r . wi <= 0 whatever s, as phong_lobe_pdf is (pow(0, 0) is 1); r . wi clamped to
+    // 1, which rounding may pass: pow(1 + 1e-16, 1e17) is e^10.
     const Vec3 mirror = reflect(-to_eye, normal);
-    const double cos_alpha = std::max(dot(mirror, to_light), 0.0);
+    const double cos_alpha = std::min(dot(mirror, to_light), 1.0);
+    if (!(cos_alpha > 0.0)) return Color(0.0);
     return brdf.specular * (brdf.shininess + 2.0) / (2.0 * glm::pi<double>()) *
            std::pow(cos_alpha, brdf.shininess);
 }
@@ -31,10 +34,7 @@ Color ggx_lobe_value(const SurfaceBrdf& brdf, const Vec3& normal, const Vec3& to
     const double cos_i = dot(normal, to_light);
     const double cos_o = dot(normal, to_eye);
     const Vec3 half = normalize(to_light + to_eye);
-    const double cos_h = dot(normal, half);
-    // D depends on h only through its angle to n: h in n's frame is (sin, 0, cos).
-    const double d = ggx_distribution(
-        Vec3(std::sqrt(std::max(0.0, 1.0 - cos_h * cos_h)), 0.0, cos_h), brdf.roughness);
+    const double d = ggx_distribution(to_local(frame_around(normal), half), brdf.roughness);
     const double g = smith_g1(cos_i, brdf.roughness) * smith_g1(cos_o, brdf.roughness);
     const Color fresnel =
         brdf.specular + (Color(1.0) - brdf.specular) *

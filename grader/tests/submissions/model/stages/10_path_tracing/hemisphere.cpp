@@ -75,10 +75,12 @@ double phong_lobe_pdf(const Vec3& direction, double exponent) {
 double ggx_distribution(const Vec3& half_vector, double roughness) {
     const double cos_theta = half_vector.z;
     if (!(cos_theta > 0.0)) return 0.0;
-    // cos^4 (alpha^2 + tan^2)^2 = (cos^2 (alpha^2 - 1) + 1)^2: the same denominator without the
-    // division by cos^4, which overflows towards the horizon.
+    // cos^4 (alpha^2 + tan^2)^2 = (alpha^2 cos^2 + sin^2)^2, sin^2 = x^2 + y^2: no division by
+    // cos^4, which overflows towards the horizon, and no 1 - cos^2, which cancels to 0 along the
+    // normal when alpha^2 is below the rounding of 1 (D would be infinite there).
     const double alpha2 = roughness * roughness;
-    const double denominator = cos_theta * cos_theta * (alpha2 - 1.0) + 1.0;
+    const double sin2 = half_vector.x * half_vector.x + half_vector.y * half_vector.y;
+    const double denominator = alpha2 * cos_theta * cos_theta + sin2;
     return alpha2 / (glm::pi<double>() * denominator * denominator);
 }
 
