@@ -91,6 +91,14 @@ const std::vector<DemoEntry>& demo_list() {
          "ior=1.5",
          {},
          nullptr},
+        {"path-tracing",
+         "stage 10: the Cornell box by four estimators at equal samples, and MIS converging",
+         path_tracing_demo,
+         "stage10/cornell-box.test",
+         "full",
+         "spp=4",
+         {},
+         nullptr},
     };
     return kDemos;
 }

@@ -56,11 +56,11 @@ int pixels_costing_at_least(const Image& image, double cost, const LogHeatScale&
 
 }  // namespace
 
-TEST_CASE("demo_list: the ten lecture demos, in lecture order, each described", "[app]") {
+TEST_CASE("demo_list: the eleven lecture demos, in lecture order, each described", "[app]") {
     CHECK(demo_names() == std::vector<std::string>{"ray-directions", "barycentrics", "watertight",
                                                    "bvh-cost", "grid-cost", "normal-transform",
                                                    "shadow-acne", "aliasing", "soft-shadows",
-                                                   "refraction"});
+                                                   "refraction", "path-tracing"});
     for (const DemoEntry& demo : demo_list()) {
         CAPTURE(demo.name);
         CHECK(demo.description.substr(0, 6) == "stage ");
@@ -72,7 +72,7 @@ TEST_CASE("find_demo: an unknown name is refused with the list of demos", "[app]
     CHECK_THROWS_WITH(find_demo("teapot"),
                       "no demo 'teapot'; the demos are ray-directions, barycentrics, watertight, "
                       "bvh-cost, grid-cost, normal-transform, shadow-acne, aliasing, "
-                      "soft-shadows, refraction");
+                      "soft-shadows, refraction, path-tracing");
 }
 
 TEST_CASE("ray_directions_demo: perspective rays fan out, orthographic rays are one colour",

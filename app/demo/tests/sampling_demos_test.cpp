@@ -82,3 +82,33 @@ TEST_CASE("refraction_demo: each index renders the cube differently, captioned",
         }
     }
 }
+
+namespace {
+
+// The RMSE a path-tracing panel's caption ends with: "MIS, 16 spp, RMSE 0.077".
+double caption_rmse(const std::string& caption) {
+    const std::size_t at = caption.rfind("RMSE ");
+    REQUIRE(at != std::string::npos);
+    return std::stod(caption.substr(at + 5));
+}
+
+}  // namespace
+
+TEST_CASE("path_tracing_demo: light sampling beats hitting the light, and MIS converges", "[app]") {
+    const DemoFigure figure = path_tracing_demo(kTestDemoSize);
+    check_panels(figure, 8);
+    CHECK(figure.panels[0].caption.rfind("hemisphere, RMSE ", 0) == 0);
+    CHECK(figure.panels[3].caption.rfind("MIS, RMSE ", 0) == 0);
+    CHECK(figure.panels[7].caption.rfind("MIS, 64 spp, RMSE ", 0) == 0);
+    // At 16 paths a pixel: a light sample at each hit is far less noisy than waiting to hit the
+    // small light, and cosine-weighted directions no worse than uniform ones.
+    CHECK(caption_rmse(figure.panels[2].caption) < 0.5 * caption_rmse(figure.panels[1].caption));
+    CHECK(caption_rmse(figure.panels[3].caption) < 0.5 * caption_rmse(figure.panels[0].caption));
+    CHECK(caption_rmse(figure.panels[1].caption) <= caption_rmse(figure.panels[0].caption));
+    // Four times the paths, about half the error.
+    for (int k = 4; k < 7; ++k) {
+        CAPTURE(k);
+        CHECK(caption_rmse(figure.panels[k + 1].caption) <
+              0.7 * caption_rmse(figure.panels[k].caption));
+    }
+}
