@@ -8,60 +8,11 @@ namespace raystep::grade {
 
 namespace {
 
-// Relative accuracy at which the series and the continued fraction stop: far below any alpha a
-// check uses (1e-6 and up).
-constexpr double kGammaAccuracy = 1e-15;
-constexpr int kGammaTerms = 100000;
-
-// P(a, x) by its series, for x < a + 1.
-double lower_gamma_by_series(double a, double x) {
-    double term = 1.0 / a;
-    double sum = term;
-    for (int n = 1; n < kGammaTerms; ++n) {
-        term *= x / (a + n);
-        sum += term;
-        if (std::abs(term) < std::abs(sum) * kGammaAccuracy) break;
-    }
-    return sum * std::exp(-x + a * std::log(x) - std::lgamma(a));
-}
-
-// Q(a, x) by its continued fraction, for x >= a + 1 (modified Lentz).
-double upper_gamma_by_fraction(double a, double x) {
-    constexpr double tiny = 1e-300;
-    double b = x + 1.0 - a;
-    double c = 1.0 / tiny;
-    double d = 1.0 / b;
-    double h = d;
-    for (int n = 1; n < kGammaTerms; ++n) {
-        const double an = -n * (n - a);
-        b += 2.0;
-        d = an * d + b;
-        if (std::abs(d) < tiny) d = tiny;
-        c = b + an / c;
-        if (std::abs(c) < tiny) c = tiny;
-        d = 1.0 / d;
-        const double delta = d * c;
-        h *= delta;
-        if (std::abs(delta - 1.0) < kGammaAccuracy) break;
-    }
-    return std::exp(-x + a * std::log(x) - std::lgamma(a)) * h;
-}
-
 double normal_upper_tail(double z) {
     return 0.5 * std::erfc(z / std::sqrt(2.0));
 }
 
 }  // namespace
-
-double chi_square_p_value(double statistic, int degrees) {
-    if (degrees < 1) throw std::domain_error("chi_square_p_value: no degrees of freedom");
-    if (std::isnan(statistic)) return 0.0;
-    if (statistic <= 0.0) return 1.0;
-    if (std::isinf(statistic)) return 0.0;
-    const double a = 0.5 * degrees;
-    const double x = 0.5 * statistic;
-    return x < a + 1.0 ? 1.0 - lower_gamma_by_series(a, x) : upper_gamma_by_fraction(a, x);
-}
 
 double one_sided_normal_bound(double alpha) {
     if (!(alpha > 0.0 && alpha < 1.0)) {

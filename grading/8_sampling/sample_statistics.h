@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "base/math/chi_square.h"
 #include "base/math/types.h"
 
 namespace raystep::grade {
@@ -12,11 +13,7 @@ namespace raystep::grade {
 // takes the test's alpha; a check that runs m tests gives each alpha / m (Bonferroni), so that
 // its own false-fail rate is at most alpha.
 
-/// P(X >= statistic) for X chi-square with `degrees` degrees of freedom: the regularized upper
-/// incomplete gamma function Q(degrees / 2, statistic / 2), by its series below a + 1 and its
-/// continued fraction above (Press et al., Numerical Recipes, 3rd ed., 6.2). 1 for a statistic
-/// <= 0; 0 for NaN, so that a NaN fails.
-double chi_square_p_value(double statistic, int degrees);
+// The chi-square test's p-value is base/math/chi_square.h's chi_square_p_value.
 
 /// z with P(|Z| > z) = alpha for a standard normal Z: the bound of a two-sided z-test.
 /// alpha in (0, 1).

@@ -1,7 +1,7 @@
 // The statistics of the grader's random checks (grading/8_sampling/sample_statistics.h) against
 // published values, and against their own false-fail rates on uniform points drawn by
 // PortableRandom; and stage 8's expectations (grading/8_sampling/sampling_oracle.h) against closed
-// forms.
+// forms. The chi-square p-value they use has its tests in base/math/tests/chi_square_test.cpp.
 
 #include <cmath>
 #include <limits>
@@ -22,25 +22,6 @@ using raystep::testing::kNaN;
 constexpr double kPi = 3.14159265358979323846;
 
 }  // namespace
-
-TEST_CASE("chi_square_p_value: the tables' 5% points, and exp(-x/2) for two degrees", "[grader]") {
-    // Upper 5% points (Abramowitz and Stegun, table 26.8; scipy.stats.chi2.isf(0.05, k)).
-    CHECK(chi_square_p_value(3.841458820694124, 1) == Approx(0.05).epsilon(1e-9));
-    CHECK(chi_square_p_value(18.307038053275146, 10) == Approx(0.05).epsilon(1e-9));
-    CHECK(chi_square_p_value(123.22522145336181, 99) == Approx(0.05).epsilon(1e-9));
-    // Both sides of the switch between the series and the continued fraction at x = a + 1.
-    for (double x : {0.5, 1.9, 2.0, 2.1, 4.0, 30.0}) {
-        CAPTURE(x);
-        CHECK(chi_square_p_value(x, 2) == Approx(std::exp(-x / 2)).epsilon(1e-12));
-    }
-}
-
-TEST_CASE("chi_square_p_value: nothing is 1, infinity and NaN are 0 so that they fail",
-          "[grader]") {
-    CHECK(chi_square_p_value(0.0, 99) == 1.0);
-    CHECK(chi_square_p_value(std::numeric_limits<double>::infinity(), 99) == 0.0);
-    CHECK(chi_square_p_value(kNaN, 99) == 0.0);
-}
 
 TEST_CASE("normal bounds: the tables' 1.96 and 1.645, and far tails", "[grader]") {
     CHECK(two_sided_normal_bound(0.05) == Approx(1.959963984540054).epsilon(1e-12));

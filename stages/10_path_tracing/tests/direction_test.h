@@ -16,9 +16,9 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include "base/math/chi_square.h"
 #include "base/math/random_stream.h"
 #include "base/math/types.h"
-#include "base/testing/chi_square.h"
 
 namespace raystep::testing {
 
