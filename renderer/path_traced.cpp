@@ -38,16 +38,23 @@ PathHit light_hit(const Scene& scene, const Ray& ray, const SeenQuadLight& seen)
 
 }  // namespace
 
-Color path_traced_colour(const RenderScene& render_scene, const Ray& ray, RandomStream& random) {
+Color path_traced_colour(const RenderScene& render_scene, const Ray& ray, RandomStream& random,
+                         PixelObserver& observer) {
     const Scene& scene = *render_scene.scene;
     PathScene path;
     path.lights = scene.quad_lights;
     path.offset = render_scene.ray_offset;
-    path.occluded = [&](const Ray& shadow) { return scene_occluded(render_scene, shadow); };
+    path.occluded = [&](const Ray& shadow) {
+        const bool blocked = scene_occluded(render_scene, shadow);
+        observer.path_shadow_ray(shadow, blocked);
+        return blocked;
+    };
+    int rays = 0;
     path.intersect = [&](const Ray& next) -> std::optional<PathHit> {
         const std::optional<PrimitiveHit> hit = scene_closest_hit(render_scene, next, nullptr);
-        if (const std::optional<SeenQuadLight> seen = seen_quad_light(scene, next, hit))
-            return light_hit(scene, next, *seen);
+        const std::optional<SeenQuadLight> seen = seen_quad_light(scene, next, hit);
+        observer.path_ray(rays++, next, hit, seen ? &*seen : nullptr);
+        if (seen) return light_hit(scene, next, *seen);
         if (!hit) return std::nullopt;
         const Material& material = material_of(render_scene, *hit);
         PathHit surface;

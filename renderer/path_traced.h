@@ -1,6 +1,7 @@
 #pragma once
 
 #include "base/math/random_stream.h"
+#include "renderer/pixel_observer.h"
 #include "renderer/render_scene.h"
 
 namespace raystep {
@@ -16,7 +17,9 @@ namespace raystep {
 // that leaves the
 // scene sees black, as in the course: the `background` of a CSE167 scene is not an emitter.
 
-/// One path's estimate of the radiance back along `ray`, drawing from `random`.
-Color path_traced_colour(const RenderScene& render_scene, const Ray& ray, RandomStream& random);
+/// One path's estimate of the radiance back along `ray`, drawing from `random`. Each ray the
+/// path asks the scene for, and each shadow ray, is told to `observer`.
+Color path_traced_colour(const RenderScene& render_scene, const Ray& ray, RandomStream& random,
+                         PixelObserver& observer);
 
 }  // namespace raystep

@@ -39,7 +39,8 @@ struct LightStep {
 ///
 /// The order is the renderer's: the camera ray, its closest hit, then at a shaded hit its surface
 /// point, each light, the quad lights and the local colour; then the recursion's later rays, each
-/// with its own shading, and the colour the recursion gives. A sampled pixel tells each camera
+/// with its own shading, and the colour the recursion gives; or, path-traced, each ray of the path
+/// and each of its shadow rays. A sampled pixel tells each camera
 /// sample's start and colour, and the steps of the samples its observer asks for.
 class PixelObserver {
   public:
@@ -87,6 +88,15 @@ class PixelObserver {
                            const std::optional<PrimitiveHit>& /*hit*/) {}
     /// What the recursion gives along the eye ray.
     virtual void recursion_colour(const Ray& /*eye_ray*/, const Color& /*colour*/) {}
+    /// Under `integrator pathtracer` (renderer/path_traced.h), ray `index` of the eye ray's
+    /// path as stage 10's path_radiance asks the scene for it (0: the eye ray itself), and what
+    /// it meets: a quad light nearer than any surface (`light`), else the closest hit, empty
+    /// when it leaves the scene.
+    virtual void path_ray(int /*index*/, const Ray& /*ray*/,
+                          const std::optional<PrimitiveHit>& /*hit*/,
+                          const SeenQuadLight* /*light*/) {}
+    /// A shadow ray of the path's next event estimation, and whether a surface blocks it.
+    virtual void path_shadow_ray(const Ray& /*ray*/, bool /*blocked*/) {}
     /// The full view's colour of the eye ray, with or without a recursion.
     virtual void finished_colour(const Color& /*colour*/) {}
 };

@@ -65,7 +65,7 @@ Color camera_ray_colour(const RenderScene& render_scene, View view, const Ray& r
             // to set up (most scenes of stages 2 to 6 take this way on every pixel).
             Color colour = render_scene.scene->background;
             if (render_scene.scene->integrator == Integrator::pathtracer) {
-                colour = path_traced_colour(render_scene, ray, *light_random);
+                colour = path_traced_colour(render_scene, ray, *light_random, observer);
             } else if (render_scene.bounces > 0) {
                 colour = full_colour(render_scene, ray, closest, light_random, observer);
             } else if (closest) {

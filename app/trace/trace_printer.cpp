@@ -338,6 +338,29 @@ void TracePrinter::later_ray(int index, const Ray& ray, const std::optional<Prim
         describe_landing(render_scene_, hit));
 }
 
+void TracePrinter::path_ray(int index, const Ray& ray, const std::optional<PrimitiveHit>& hit,
+                            const SeenQuadLight* light) {
+    std::string text = "path ray " + std::to_string(index) +
+                       (index == 0 ? " (the eye ray): " : ": ") + describe_direction(ray);
+    if (light) {
+        text += " meets " + light_name("quad", light->light->line) + " at t=" + to_text(light->t) +
+                (light->colour == Color(0.0) ? ", its back: black"
+                                             : ", radiance " + to_text(light->colour));
+    } else if (hit) {
+        text += " hits " + std::string(kind_name(hit->kind)) + " " + std::to_string(hit->index) +
+                " (line " +
+                std::to_string(attributes_of(render_scene_, hit->kind, hit->index).line) +
+                ") at t=" + to_text(hit->hit.t);
+    } else {
+        text += " leaves the scene: black";
+    }
+    add(text);
+}
+
+void TracePrinter::path_shadow_ray(const Ray& ray, bool /*blocked*/) {
+    add("  shadow ray " + describe(ray) + ": " + blocker(render_scene_, ray));
+}
+
 void TracePrinter::recursion_colour(const Ray& eye_ray, const Color& colour) {
     if (render_scene_.refraction) trace_transmission_path(render_scene_, eye_ray, lines_);
     add("colour " + to_text(colour));

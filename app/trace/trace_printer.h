@@ -41,6 +41,9 @@ class TracePrinter final : public PixelObserver {
     void quad_light_ends(const QuadLight& light, const Color& term, int shadow_rays) override;
     void local_colour(const std::vector<LightSample>& reaching, const Color& colour) override;
     void later_ray(int index, const Ray& ray, const std::optional<PrimitiveHit>& hit) override;
+    void path_ray(int index, const Ray& ray, const std::optional<PrimitiveHit>& hit,
+                  const SeenQuadLight* light) override;
+    void path_shadow_ray(const Ray& ray, bool blocked) override;
     void recursion_colour(const Ray& eye_ray, const Color& colour) override;
 
   private:

@@ -59,7 +59,7 @@ double cosine_hemisphere_pdf(const Vec3& direction);
 /// cosine sampling's for s = 1.
 Vec3 phong_lobe(const Vec2& u, double exponent);
 
-/// Its density: (s + 1) / (2 pi) max(z, 0)^s.
+/// Its density: (s + 1) / (2 pi) z^s for z >= 0, and 0 below, even for s = 0.
 double phong_lobe_pdf(const Vec3& direction, double exponent);
 
 /// GGX's (Trowbridge-Reitz's) distribution of microfacet normals of roughness alpha > 0:
@@ -198,11 +198,14 @@ struct PathSettings {
 ///   PathScene::lights adds nothing with `on`, and with `mis` its emission weighted by the
 ///   power heuristic of the direction's density against light_direction_pdf from the last hit.
 /// - Then, while bounces remain: with next event estimation, one sample of each light, tested
-///   by `occluded` on stage 6's spawn_ray towards it, adds throughput f cos Le / p (times the
-///   power heuristic of p against brdf_pdf's density with `mis`); then the path draws wi by
-///   `settings.sampling` (in n's frame by frame_around, or sample_brdf) and the throughput
-///   takes f cos / p. A wi below the surface ends the path. Where Russian roulette is on, it is
-///   played with the new throughput, and the path ends where it says so.
+///   by `occluded` on stage 6's shadow_ray towards it, adds throughput f cos Le / p (with `mis`
+///   times the power heuristic of p against the density `settings.sampling` would draw that
+///   direction with); a sample of density 0 adds nothing. Then the path draws wi by
+///   `settings.sampling` (uniform_hemisphere or cosine_hemisphere in n's frame_around, or
+///   sample_brdf) and the throughput takes f cos / p. A wi below the surface ends the path.
+///   Where Russian roulette is on, it is played with the new throughput, and the path ends
+///   where it says so.
+/// n is the point's shading normal throughout.
 /// - It ends when a ray leaves the scene.
 /// max_depth 0 is the emission the eye sees, 1 adds direct light. Throws std::domain_error when
 /// max_depth is -1 and Russian roulette is off: such a path need not end.

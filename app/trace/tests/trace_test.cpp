@@ -134,6 +134,23 @@ TEST_CASE("trace: in the CSE168 dialect a quad light before the closest hit is s
     CHECK(count_lines_starting(lines, "  light sample ") == 0);
 }
 
+TEST_CASE("trace: a path-traced pixel shows each ray of its path and each shadow ray", "[app]") {
+    // A floor under a light beside the eye ray, path-traced with a light sample at each hit: the
+    // eye ray hits the floor and samples the light; its next ray leaves the scene or meets the
+    // light.
+    const std::string scene =
+        "size 3 3\ncamera 0 5 0 0 0 0 0 0 -1 45\nintegrator pathtracer\nmaxdepth 1\n"
+        "nexteventestimation on\nquadLight 1 2 -0.5 0 0 1 1 0 0 5 5 5\ndiffuse 1 1 1\n"
+        "plane 0 0 0 0 1 0\n";
+    const std::vector<std::string> lines = trace(scene, View::full, 1, 1);
+    CHECK(has_line_starting(lines,
+                            "path ray 0 (the eye ray): origin (0, 5, 0) direction "
+                            "(0, -1, 0) hits plane 0 (line 8) at t=5"));
+    CHECK(count_lines_starting(lines, "  shadow ray ") == 1);
+    CHECK(has_line_starting(lines, "  shadow ray origin "));
+    CHECK(count_lines_starting(lines, "path ray 1: ") == 1);
+}
+
 TEST_CASE("trace: a ray into the prism of total-internal-reflection.test reflects totally",
           "[app]") {
     const Scene scene = load_scene(std::string(RAYSTEP_SOURCE_DIR) +
