@@ -1,6 +1,9 @@
 #include "base/math/chi_square.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <limits>
 #include <stdexcept>
 
 namespace raystep {
@@ -56,6 +59,32 @@ double chi_square_p_value(double statistic, int degrees) {
     const double a = 0.5 * degrees;
     const double x = 0.5 * statistic;
     return x < a + 1.0 ? 1.0 - lower_gamma_by_series(a, x) : upper_gamma_by_fraction(a, x);
+}
+
+PooledChiSquare pooled_chi_square(const std::vector<double>& observed,
+                                  const std::vector<double>& expected) {
+    PooledChiSquare result;
+    double pooled_observed = 0.0;
+    double pooled_expected = 0.0;
+    int cells = 0;
+    for (std::size_t k = 0; k < observed.size(); ++k) {
+        if (expected[k] < 5.0) {
+            pooled_observed += observed[k];
+            pooled_expected += expected[k];
+            continue;
+        }
+        result.statistic += (observed[k] - expected[k]) * (observed[k] - expected[k]) / expected[k];
+        ++cells;
+    }
+    if (pooled_expected > 0.0) {
+        result.statistic += (pooled_observed - pooled_expected) *
+                            (pooled_observed - pooled_expected) / pooled_expected;
+        ++cells;
+    } else if (pooled_observed > 0.0) {
+        result.statistic = std::numeric_limits<double>::infinity();
+    }
+    result.degrees = std::max(1, cells - 1);
+    return result;
 }
 
 }  // namespace raystep

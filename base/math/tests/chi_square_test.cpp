@@ -9,6 +9,7 @@
 #include "base/testing/special_values.h"
 
 using raystep::chi_square_p_value;
+using raystep::pooled_chi_square;
 using raystep::testing::kNaN;
 
 TEST_CASE("chi_square_p_value: the tables' 5% points, and exp(-x/2) for two degrees", "[base]") {
@@ -35,4 +36,18 @@ TEST_CASE("chi_square_p_value: nothing is 1, infinity and NaN are 0 so that they
     CHECK(chi_square_p_value(0.0, 99) == 1.0);
     CHECK(chi_square_p_value(std::numeric_limits<double>::infinity(), 99) == 0.0);
     CHECK(chi_square_p_value(kNaN, 99) == 0.0);
+}
+
+TEST_CASE("pooled_chi_square: Pearson's sum, bins expecting under 5 pooled into one", "[base]") {
+    // Two full bins (10 against 8, 20 against 25) and three small ones pooled: 3 + 1 + 2 against
+    // 2 + 2 + 1 = 6 against 5. Three cells, two degrees.
+    const auto pooled = pooled_chi_square({10, 20, 3, 1, 2}, {8, 25, 2, 2, 1});
+    CHECK(pooled.statistic == Approx(4.0 / 8 + 25.0 / 25 + 1.0 / 5));
+    CHECK(pooled.degrees == 2);
+}
+
+TEST_CASE("pooled_chi_square: counts where nothing is expected make it infinite", "[base]") {
+    const auto pooled = pooled_chi_square({10, 1}, {11, 0});
+    CHECK(pooled.statistic == std::numeric_limits<double>::infinity());
+    CHECK(chi_square_p_value(pooled.statistic, pooled.degrees) == 0.0);
 }

@@ -80,29 +80,12 @@ inline DirectionTestResult direction_chi_square(const std::function<Vec3(const V
             expected[static_cast<std::size_t>(row * columns + column)] = sum * dz * dphi * count;
         }
     }
-    double statistic = 0.0;
-    double pooled_observed = 0.0;
-    double pooled_expected = 0.0;
-    int cells = 0;
-    for (std::size_t k = 0; k < observed.size(); ++k) {
-        if (expected[k] < 5.0) {
-            pooled_observed += observed[k];
-            pooled_expected += expected[k];
-            continue;
-        }
-        statistic += (observed[k] - expected[k]) * (observed[k] - expected[k]) / expected[k];
-        ++cells;
-    }
-    if (pooled_expected > 0.0) {
-        statistic += (pooled_observed - pooled_expected) * (pooled_observed - pooled_expected) /
-                     pooled_expected;
-        ++cells;
-    } else if (pooled_observed > 0.0) {
-        result.problem = std::to_string(static_cast<long>(pooled_observed)) +
-                         " samples fell where the density is 0";
+    const PooledChiSquare pooled = pooled_chi_square(observed, expected);
+    if (std::isinf(pooled.statistic)) {
+        result.problem = "samples fell where the density is 0";
         return result;
     }
-    result.p_value = chi_square_p_value(statistic, std::max(1, cells - 1));
+    result.p_value = chi_square_p_value(pooled.statistic, pooled.degrees);
     return result;
 }
 
