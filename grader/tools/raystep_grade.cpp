@@ -18,6 +18,7 @@
 
 #include "app/report/audience.h"
 #include "app/report/console_summary.h"
+#include "app/report/grade_report.h"
 #include "grader/grade/batch.h"
 #include "grader/grade/checks/stage_checks.h"
 #include "grader/grade/checks/statistics_seed.h"
@@ -204,7 +205,7 @@ int main(int argc, char** argv) {
     submission->add_option("--check", one.check, "Run only this check, by id");
     submission
         ->add_option("--stage", one.stage, "Run only this stage's checks (0: the whole pipeline's)")
-        ->check(CLI::Range(0, 9));
+        ->check(CLI::Range(0, kLastStage));
     submission->add_flag("--no-speed", one.no_speed,
                          "Leave out the speed checks (on a loaded machine, or to regrade quickly)");
     submission->add_option("--case", one.case_index, "With --check: only this case")
@@ -217,7 +218,7 @@ int main(int argc, char** argv) {
                            "Where to build (default: beside the reports, or the system's temporary "
                            "folder where the sandbox's user cannot reach them)");
     submission->add_option("--seed", one.seed,
-                           "The seed of the statistical checks (stage 8's random samples) and "
+                           "The seed of the statistical checks (stages 8 and 10) and "
                            "of stage 3's contract cases: a right submission passes at any seed at "
                            "their stated false-fail rate");
     submission->add_option("--eye-seed", one.eye_seed,

@@ -33,6 +33,12 @@ std::vector<CheckDefinition> noisy_render_checks();
 /// edges of their own, "stage9.hidden.latest_entry", "shading_normal" and "cosine_above_one"
 /// (stage9_checks.cpp).
 std::vector<CheckDefinition> stage9_checks();
+/// Stage 10's checks, "stage10.unit", "stage10.hidden" and "stage10.oracle" (stage10_checks.cpp),
+/// then its statistical ones.
+std::vector<CheckDefinition> stage10_checks();
+/// Stage 10's checks by distribution and by mean, each with a stated false-fail rate, seeded by
+/// statistics_seed() (stage10_statistics.cpp).
+std::vector<CheckDefinition> stage10_statistical_checks();
 std::vector<CheckDefinition> render_checks();
 
 /// The render checks render at most this wide: enough to see a stage's mistakes, small enough
@@ -51,6 +57,7 @@ PublicCheck stage6_public_check();
 PublicCheck stage7_public_check();
 PublicCheck stage8_public_check();
 PublicCheck stage9_public_check();
+PublicCheck stage10_public_check();
 
 /// A sample of each stage's generated cases for the student release (kSampleKind,
 /// app/grade/public_case.h): a few of each kind the "stageN.oracle" check draws, decided by the
@@ -65,6 +72,7 @@ PublicCheck stage6_sample_check();
 PublicCheck stage7_sample_check();
 PublicCheck stage8_sample_check();
 PublicCheck stage9_sample_check();
+PublicCheck stage10_sample_check();
 
 /// The render checks as data, each with the reference's render at the grader's size, made from
 /// the scenes under `source`/scenes: the grader judges a render by the same rule
