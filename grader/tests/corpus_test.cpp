@@ -57,9 +57,11 @@ struct Graded {
     std::string problem;  ///< why there is no report
 };
 
-// "4-bvh-skips-far-child.diff" is stage 4's.
+// "4-bvh-skips-far-child.diff" is stage 4's, "10-roulette-without-division.diff" stage 10's: the
+// number before the first hyphen.
 int stage_of(const fs::path& diff) {
-    return diff.filename().string().front() - '0';
+    const std::string name = diff.filename().string();
+    return std::stoi(name.substr(0, name.find('-')));
 }
 
 std::vector<fs::path> diffs_in(const std::string& folder) {
