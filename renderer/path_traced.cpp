@@ -38,8 +38,11 @@ PathHit light_hit(const Scene& scene, const Ray& ray, const SeenQuadLight& seen)
 
 }  // namespace
 
-Color path_traced_colour(const RenderScene& render_scene, const Ray& ray, RandomStream& random,
-                         PixelObserver& observer) {
+namespace {
+
+// One path of `settings` over the scene, its rays told to `observer`.
+Color path_colour(const RenderScene& render_scene, const Ray& ray, const PathSettings& settings,
+                  RandomStream& random, PixelObserver& observer) {
     const Scene& scene = *render_scene.scene;
     PathScene path;
     path.lights = scene.quad_lights;
@@ -63,7 +66,25 @@ Color path_traced_colour(const RenderScene& render_scene, const Ray& ray, Random
         surface.emission = material.emission;
         return surface;
     };
-    return path_radiance(ray, path, path_settings(scene), random);
+    return path_radiance(ray, path, settings, random);
+}
+
+}  // namespace
+
+Color path_traced_colour(const RenderScene& render_scene, const Ray& ray, RandomStream& random,
+                         PixelObserver& observer) {
+    return path_colour(render_scene, ray, path_settings(*render_scene.scene), random, observer);
+}
+
+Color path_traced_indirect_colour(const RenderScene& render_scene, const Ray& ray,
+                                  RandomStream& random, PixelObserver& observer) {
+    const PathSettings settings = path_settings(*render_scene.scene);
+    if (settings.max_depth >= 0 && settings.max_depth < 2) return Color(0.0);
+    PathSettings direct = settings;
+    direct.max_depth = 1;
+    RandomStream same = random;
+    const Color whole = path_colour(render_scene, ray, settings, random, observer);
+    return whole - path_colour(render_scene, ray, direct, same, unobserved());
 }
 
 }  // namespace raystep

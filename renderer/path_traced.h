@@ -22,4 +22,13 @@ namespace raystep {
 Color path_traced_colour(const RenderScene& render_scene, const Ray& ray, RandomStream& random,
                          PixelObserver& observer);
 
+/// The indirect view's colour: the path's estimate less the same path cut after its direct light
+/// (max_depth 1), drawn from a copy of `random`, so that the two share every step up to the cut
+/// and their difference is what arrived by more than one bounce. Its expectation is the
+/// difference of the two paths' whatever the order in which path_radiance draws its numbers;
+/// sharing them leaves only the indirect light's own noise. Only the full path is told to
+/// `observer`.
+Color path_traced_indirect_colour(const RenderScene& render_scene, const Ray& ray,
+                                  RandomStream& random, PixelObserver& observer);
+
 }  // namespace raystep

@@ -67,6 +67,7 @@ constexpr PipelineReach pipeline_reach(View view) {
         case View::shaded:
             return PipelineReach::shading;
         case View::full:
+        case View::indirect:
             return PipelineReach::full_colour;
         default:
             return PipelineReach::closest_hit;

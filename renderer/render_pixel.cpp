@@ -36,12 +36,14 @@ Color camera_ray_colour(const RenderScene& render_scene, View view, const Ray& r
 
     // The CSE168 dialect draws its quad lights in the views of the finished colour
     // (seen_quad_light.h).
-    if (view == View::shaded || view == View::full) {
+    if (view == View::shaded || view == View::full || view == View::indirect) {
         if (const std::optional<SeenQuadLight> seen =
                 seen_quad_light(*render_scene.scene, ray, closest)) {
             observer.quad_light_seen(*seen);
-            if (view == View::full) observer.finished_colour(seen->colour);
-            return seen->colour;
+            // A light seen directly reflects nothing: it has no indirect light.
+            const Color colour = view == View::indirect ? Color(0.0) : seen->colour;
+            if (view != View::shaded) observer.finished_colour(colour);
+            return colour;
         }
     }
 
@@ -71,6 +73,14 @@ Color camera_ray_colour(const RenderScene& render_scene, View view, const Ray& r
             } else if (closest) {
                 colour = shade_hit(render_scene, ray, *closest, light_random, observer).local;
             }
+            observer.finished_colour(colour);
+            return colour;
+        }
+        case View::indirect: {
+            const Color colour =
+                render_scene.scene->integrator == Integrator::pathtracer
+                    ? path_traced_indirect_colour(render_scene, ray, *light_random, observer)
+                    : Color(0.0);
             observer.finished_colour(colour);
             return colour;
         }

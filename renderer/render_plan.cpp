@@ -22,11 +22,11 @@ std::vector<int> stages_for_view(const SceneFeatures& features, View view) {
     stages.push_back(3);
     if (uses_bvh(features) || uses_instance_bvh(features)) stages.push_back(4);
     if (features.uses_transforms()) stages.push_back(5);
-    if (view != View::shaded && view != View::full) return stages;
+    if (view != View::shaded && view != View::full && view != View::indirect) return stages;
     stages.push_back(6);
-    // A path-traced full view: stage 10's paths (over stage 6's spawn_ray), stage 8 only for the
-    // pixel's samples; the paths neither mirror nor refract.
-    if (view == View::full && features.path_traced) {
+    // A path-traced full or indirect view: stage 10's paths (over stage 6's spawn_ray), stage 8
+    // only for the pixel's samples; the paths neither mirror nor refract.
+    if ((view == View::full || view == View::indirect) && features.path_traced) {
         if (features.samples_per_pixel > 1) stages.push_back(8);
         stages.push_back(10);
         return stages;

@@ -7,7 +7,7 @@ namespace raystep {
 
 namespace {
 
-constexpr std::array<std::pair<View, std::string_view>, 7> kViews = {{
+constexpr std::array<std::pair<View, std::string_view>, 8> kViews = {{
     {View::rays, "rays"},
     {View::depth, "depth"},
     {View::normal, "normal"},
@@ -15,6 +15,7 @@ constexpr std::array<std::pair<View, std::string_view>, 7> kViews = {{
     {View::cost, "cost"},
     {View::shaded, "shaded"},
     {View::full, "full"},
+    {View::indirect, "indirect"},
 }};
 
 }  // namespace
@@ -41,7 +42,7 @@ std::vector<std::string> view_names() {
 }
 
 bool averages_samples(View view) {
-    return view == View::shaded || view == View::full;
+    return view == View::shaded || view == View::full || view == View::indirect;
 }
 
 }  // namespace raystep

@@ -22,6 +22,10 @@ enum class View {
              ///< (stage 8); misses show the background
     full,    ///< the finished image: stage 6, stage 7's reflections where the scene has mirrors,
              ///< stage 9's refraction where something transmits; misses show the background
+    /// stage 10: under `integrator pathtracer`, the light that reaches what the eye sees after
+    /// bouncing off another surface: each path's colour less the same path cut after its direct
+    /// light (max_depth 1, the same random numbers). Black for a scene not path-traced.
+    indirect,
 };
 
 /// The view's name on the command line.
@@ -34,9 +38,9 @@ std::optional<View> parse_view(std::string_view name);
 std::vector<std::string> view_names();
 
 /// True for the views that average a pixel's samples when the scene has more than one
-/// (`spp`): shaded and full, the views of the finished colour. The others show one ray through
-/// the pixel's centre whatever the scene's spp: a mean of depths, normals or barycentrics blends
-/// values that belong to different surfaces (a depth halfway between a sphere and the wall
+/// (`spp`): shaded, full and indirect, the views of the finished colour. The others show one ray
+/// through the pixel's centre whatever the scene's spp: a mean of depths, normals or barycentrics
+/// blends values that belong to different surfaces (a depth halfway between a sphere and the wall
 /// behind it is a depth of nothing), and those views are there to check stages 2 to 4 one ray
 /// at a time.
 bool averages_samples(View view);

@@ -62,6 +62,13 @@ int run_render(const RenderArguments& arguments) {
     apply_sampling(arguments.sampling, scene);
     apply_eye(arguments.lookfrom, scene);
     const View view = *parse_view(arguments.view);
+    if (view == View::indirect && scene.integrator != Integrator::pathtracer) {
+        throw std::invalid_argument(
+            arguments.scene +
+            ": the indirect view shows the light a path tracer brings by more "
+            "than one bounce, and this scene is not path-traced (`integrator "
+            "pathtracer`)");
+    }
 
     std::filesystem::path output = arguments.output;
     if (output.empty()) {

@@ -114,3 +114,42 @@ TEST_CASE("render_image: a path-traced scene is the same for any thread count", 
     }
     CHECK(lit > 0);
 }
+
+TEST_CASE("render_image: the indirect view is the full path less its direct light", "[app]") {
+    // The scene of the thread test: a sphere on a floor under a light, each pixel 4 paths. The
+    // full view less the same scene cut at maxdepth 1 (the same seed, so the same random
+    // numbers up to the cut) is the indirect view, within the images' float rounding.
+    const std::string scene_text =
+        "size 12 8\ncamera 0 2 6 0 0.5 0 0 1 0 40\nintegrator pathtracer\nspp 4\nseed 5\n"
+        "nexteventestimation mis\nimportancesampling brdf\nrussianroulette on\n"
+        "quadLight -0.5 3 -0.5 0 0 1 1 0 0 20 20 20\ndiffuse 0.6 0.6 0.6\nspecular 0.3 0.3 0.3\n"
+        "shininess 20\nvertex -4 0 -4\nvertex 4 0 -4\nvertex 4 0 4\nvertex -4 0 4\ntri 0 3 2\n"
+        "tri 0 2 1\nbrdf ggx\nroughness 0.3\nsphere 0 1 0 0.8\n";
+    const auto render = [](const std::string& text, View view) {
+        RenderOptions options;
+        options.view = view;
+        options.threads = 1;
+        return render_image(prepare_render_scene(path_traced_scene(text)), options);
+    };
+    const Image full = render(scene_text + "maxdepth -1\n", View::full);
+    const Image direct = render(scene_text + "maxdepth 1\n", View::full);
+    const Image indirect = render(scene_text + "maxdepth -1\n", View::indirect);
+    int bounced = 0;
+    for (int j = 0; j < full.height(); ++j) {
+        for (int i = 0; i < full.width(); ++i) {
+            CAPTURE(i, j);
+            const Color expected = full.at(i, j) - direct.at(i, j);
+            const Color got = indirect.at(i, j);
+            for (int c = 0; c < 3; ++c)
+                CHECK(got[c] == Approx(expected[c]).margin(1e-6 * full.at(i, j)[c] + 1e-12));
+            bounced += got.r > 0.0 ? 1 : 0;
+        }
+    }
+    CHECK(bounced > 0);
+    // At maxdepth 1 nothing bounces twice: the indirect view is black.
+    const Image none = render(scene_text + "maxdepth 1\n", View::indirect);
+    for (int j = 0; j < none.height(); ++j) {
+        for (int i = 0; i < none.width(); ++i)
+            CHECK(none.at(i, j) == Color(0.0));
+    }
+}
