@@ -1,5 +1,6 @@
 #include "app/view/live_render.h"
 
+#include <algorithm>
 #include <exception>
 #include <utility>
 
@@ -21,6 +22,8 @@ std::uint64_t LiveRender::start(Scene scene, View view, int threads) {
         width_ = scene.width;
         height_ = scene.height;
         pixels_done_ = 0;
+        target_samples_ = averages_samples(view) ? scene.samples_per_pixel : 1;
+        samples_ = progressive_passes(target_samples_).front();
         started_ = std::chrono::steady_clock::now();
         seconds_ = 0.0;
         tiles_.clear();
@@ -52,6 +55,14 @@ void LiveRender::add_tile(std::uint64_t generation, const Image& image, const Ti
     tiles_.emplace_back(++sequence_, std::move(tile));
 }
 
+std::vector<int> progressive_passes(int spp) {
+    std::vector<int> passes;
+    for (int samples = 1; samples < spp; samples *= 4)
+        passes.push_back(samples);
+    passes.push_back(std::max(spp, 1));
+    return passes;
+}
+
 void LiveRender::run(Scene scene, View view, int threads, std::uint64_t generation) {
     try {
         RenderOptions options;
@@ -61,14 +72,29 @@ void LiveRender::run(Scene scene, View view, int threads, std::uint64_t generati
         options.on_tile = [this, generation](const Image& image, const TileRect& rect) {
             add_tile(generation, image, rect);
         };
-        const Image image = render_image(prepare_render_scene(scene), options);
-        if (cancel_) return;
-        // The finished image replaces the tiles: depth and cost are scaled only now.
-        Tile whole{{0, 0, image.width(), image.height()}, {}};
-        append_display_pixels(image, whole.rect, whole.pixels);
+        const std::vector<int> passes =
+            progressive_passes(averages_samples(view) ? scene.samples_per_pixel : 1);
+        for (std::size_t pass = 0; pass < passes.size(); ++pass) {
+            {
+                std::lock_guard<std::mutex> lock(mutex_);
+                if (generation != generation_) return;
+                samples_ = passes[pass];
+                pixels_done_ = 0;
+            }
+            Scene pass_scene = scene;
+            if (averages_samples(view)) pass_scene.samples_per_pixel = passes[pass];
+            const Image image = render_image(prepare_render_scene(pass_scene), options);
+            if (cancel_) return;
+            // The finished pass replaces the tiles, so that a page that starts watching now
+            // sees it whole: depth and cost are scaled only now.
+            Tile whole{{0, 0, image.width(), image.height()}, {}};
+            append_display_pixels(image, whole.rect, whole.pixels);
+            std::lock_guard<std::mutex> lock(mutex_);
+            if (generation != generation_) return;
+            tiles_.clear();
+            tiles_.emplace_back(++sequence_, std::move(whole));
+        }
         std::lock_guard<std::mutex> lock(mutex_);
-        tiles_.clear();
-        tiles_.emplace_back(++sequence_, std::move(whole));
         state_ = State::done;
         seconds_ =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
@@ -92,6 +118,8 @@ LiveRender::Changes LiveRender::changes_since(std::uint64_t generation,
     changes.width = width_;
     changes.height = height_;
     changes.pixels_done = pixels_done_;
+    changes.samples = samples_;
+    changes.target_samples = target_samples_;
     changes.seconds =
         state_ == State::rendering
             ? std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count()

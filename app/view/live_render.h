@@ -18,6 +18,11 @@ namespace raystep {
 /// `raystep view`. Each start() begins a new generation and cancels the one before. Every tile
 /// that finishes gets the next number of one running sequence, so the page asks only for the
 /// tiles after the last number it saw.
+/// The samples per pixel of the passes a live render of `spp` samples shows: 1, 4, 16, ... (every
+/// pattern's counts are squares) while below `spp`, then `spp` itself. A pass costs a quarter of
+/// the next, so the passes before the last add a third to its time at most.
+std::vector<int> progressive_passes(int spp);
+
 class LiveRender {
   public:
     enum class State { idle, rendering, done, failed };
@@ -36,9 +41,11 @@ class LiveRender {
         std::string error;  ///< why it failed: a stub's message, say
         int width = 0;
         int height = 0;
-        std::size_t pixels_done = 0;
-        double seconds = 0.0;        ///< since the start, or the whole render once done
-        std::uint64_t sequence = 0;  ///< the last tile's number: ask from here next time
+        std::size_t pixels_done = 0;  ///< of the pass under way
+        int samples = 1;              ///< the samples per pixel of the pass under way
+        int target_samples = 1;       ///< the scene's: the last pass's
+        double seconds = 0.0;         ///< since the start, or the whole render once done
+        std::uint64_t sequence = 0;   ///< the last tile's number: ask from here next time
         std::vector<Tile> tiles;
     };
 
@@ -48,7 +55,9 @@ class LiveRender {
     ~LiveRender() { stop(); }
 
     /// Cancels the render under way, if any, and starts `view` of `scene` on `threads` threads (0:
-    /// one per hardware thread). Returns the new generation.
+    /// one per hardware thread). A view that averages a pixel's samples renders in passes of
+    /// progressive_passes(scene's spp), each shown as it comes, so that the image is seen
+    /// converging; the last pass is the scene's own render. Returns the new generation.
     std::uint64_t start(Scene scene, View view, int threads);
 
     /// The tiles finished after `sequence`, all of them when `generation` is not the current
@@ -75,6 +84,8 @@ class LiveRender {
     int width_ = 0;
     int height_ = 0;
     std::size_t pixels_done_ = 0;
+    int samples_ = 1;
+    int target_samples_ = 1;
     std::chrono::steady_clock::time_point started_;
     double seconds_ = 0.0;
     std::uint64_t sequence_ = 0;

@@ -367,6 +367,8 @@ void add_routes(httplib::Server& server, ViewSession& session, ReferenceFiles& r
                         {"width", changes.width},
                         {"height", changes.height},
                         {"pixels_done", changes.pixels_done},
+                        {"samples", changes.samples},
+                        {"target_samples", changes.target_samples},
                         {"seconds", changes.seconds},
                         {"sequence", changes.sequence}},
                        changes.tiles);

@@ -228,7 +228,11 @@ async function pollTiles() {
       // Said by showSceneError or showRenderError, and kept.
     } else if (frame.state === "rendering") {
       const percent = total ? Math.floor((100 * frame.pixels_done) / total) : 0;
-      setStatus(`rendering ${frame.view}: ${percent}% (${frame.seconds.toFixed(1)} s)`);
+      // A view that averages samples renders in passes of more samples each: the image
+      // converges as the passes come.
+      const pass =
+        frame.target_samples > 1 ? `, ${frame.samples} of ${frame.target_samples} spp` : "";
+      setStatus(`rendering ${frame.view}${pass}: ${percent}% (${frame.seconds.toFixed(1)} s)`);
     } else if (frame.state === "done") {
       setStatus(`${frame.view}: done in ${frame.seconds.toFixed(2)} s`);
     } else if (frame.state === "failed") {
