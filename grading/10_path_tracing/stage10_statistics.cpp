@@ -459,6 +459,14 @@ std::vector<ProbeCase> roulette_cases() {
 
 constexpr int kPaths = 8000;
 
+// The most a mean's standard error may be, relative to the brightest channel of its exact value:
+// the z-test takes the spread from the answers themselves, so an estimator that only adds noise
+// (a colour of 1e12 (u - 0.5)) would pass every mean without a ceiling. A right path tracer's
+// standard error on these cases is at most 2.3% of the value (the diffuse floor by hemisphere
+// sampling without next event estimation; docs/measurements/stage10-checks.md); the ceiling is
+// three times it.
+constexpr double kPathsErrorCeiling = 0.07;
+
 const RayOffset kPathOffset{OffsetRule::along_normal, 1e-7};
 
 PathSettings settings_of(int depth, DirectionSampling sampling, NextEvent next_event,
@@ -484,12 +492,20 @@ ProbeCase paths_case(std::string scene, const probe::PathSceneQuestion& question
             probe::query(probe::path_radiance_call, q),
             [exact, alpha](const ProbeAnswer& answer) {
                 const double bound = two_sided_normal_bound(alpha);
-                const std::string want =
-                    full_text(exact) + " within " + full_text(bound) + " standard errors";
+                const double brightest = std::max({exact.x, exact.y, exact.z});
+                const double ceiling = kPathsErrorCeiling * brightest + kDeviationFloor;
+                const std::string want = full_text(exact) + " within " + full_text(bound) +
+                                         " standard errors, each at most " + full_text(ceiling) +
+                                         ", every path's colour finite and not negative";
                 if (answer.kind != ProbeAnswer::Kind::result) return wrong(want, "");
                 const auto colours = probe::JsonCodec<std::vector<Color>>::read(answer.value);
                 if (colours.size() != static_cast<std::size_t>(kPaths))
                     return wrong(want, std::to_string(colours.size()) + " paths");
+                for (const Color& colour : colours) {
+                    if (!(colour.x >= 0 && colour.y >= 0 && colour.z >= 0) ||
+                        !std::isfinite(colour.x + colour.y + colour.z))
+                        return wrong(want, "a path of colour " + full_text(colour));
+                }
                 std::string got;
                 bool right_mean = true;
                 for (int c = 0; c < 3; ++c) {
@@ -497,7 +513,8 @@ ProbeCase paths_case(std::string scene, const probe::PathSceneQuestion& question
                     for (const Color& colour : colours)
                         channel.push_back(colour[c]);
                     const MeanEstimate estimate = estimate_mean(channel, kDeviationFloor);
-                    right_mean = right_mean && mean_consistent(estimate, exact[c], bound);
+                    right_mean = right_mean && mean_consistent(estimate, exact[c], bound) &&
+                                 estimate.standard_error <= ceiling;
                     got += (got.empty() ? "" : "; ") + full_text(estimate.mean) + " +- " +
                            full_text(estimate.standard_error);
                 }
