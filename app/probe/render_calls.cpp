@@ -22,6 +22,11 @@ Image render_for_probe(const RenderQuestion& question) {
     // checks).
     if (question.seed) scene.seed = *question.seed;
     if (question.lookfrom) scene.camera.lookfrom = *question.lookfrom;
+    if (question.samples_per_pixel) {
+        if (*question.samples_per_pixel < 1 || *question.samples_per_pixel > kMaxSamples)
+            throw std::invalid_argument("samples_per_pixel out of range");
+        scene.samples_per_pixel = *question.samples_per_pixel;
+    }
     RenderOptions options;
     options.view = *view;
     options.threads = 1;

@@ -101,8 +101,8 @@ TEST_CASE("probe call: a structure answers each ray with its hit, or with whethe
 }
 
 TEST_CASE("probe call: an optional field is left out where it holds nothing, and read as absent") {
-    probe::RenderQuestion question{"scenes/a.test", "depth",     64, std::nullopt, 0.5,
-                                   std::nullopt,    std::nullopt};
+    probe::RenderQuestion question{"scenes/a.test", "depth",      64,          std::nullopt, 0.5,
+                                   std::nullopt,    std::nullopt, std::nullopt};
     const grade::ProbeQuery query = probe::query(probe::render_call, question);
     CHECK(query.args == Json{{"scene", "scenes/a.test"},
                              {"view", "depth"},

@@ -56,8 +56,11 @@ constexpr double kDeviationFloor = 1e-4;
 // of them or more. Measured: docs/measurements/stage8-checks.md.
 constexpr double kTilesApartPassed = 0.01;
 
-Scene seeded_scaled_scene(const fs::path& path, std::uint64_t seed, const Vec3& eye) {
+// The scene at the check's size, seed, eye and samples per pixel (0: the scene's own).
+Scene seeded_scaled_scene(const fs::path& path, std::uint64_t seed, const Vec3& eye,
+                          int samples_per_pixel) {
     Scene scene = load_scene(path);
+    if (samples_per_pixel > 0) scene.samples_per_pixel = samples_per_pixel;
     if (scene.width > kRenderCheckWidth) {
         const double scale = static_cast<double>(kRenderCheckWidth) / scene.width;
         scene.width = kRenderCheckWidth;
@@ -70,11 +73,12 @@ Scene seeded_scaled_scene(const fs::path& path, std::uint64_t seed, const Vec3& 
 
 // The reference's kReferenceRenders renders of a view from `eye`, from kReferenceSeeds on, one
 // thread each: a grade makes the noisy checks' views side by side.
-std::vector<Image> render_reference(const fs::path& path, View view, const Vec3& eye) {
+std::vector<Image> render_reference(const fs::path& path, View view, const Vec3& eye,
+                                    int samples_per_pixel) {
     std::vector<Image> renders;
     for (int k = 0; k < kReferenceRenders; ++k) {
-        const Scene scene =
-            seeded_scaled_scene(path, kReferenceSeeds + static_cast<std::uint64_t>(k), eye);
+        const Scene scene = seeded_scaled_scene(
+            path, kReferenceSeeds + static_cast<std::uint64_t>(k), eye, samples_per_pixel);
         RenderOptions options;
         options.view = view;
         options.threads = 1;
@@ -86,14 +90,16 @@ std::vector<Image> render_reference(const fs::path& path, View view, const Vec3&
 // What the reference's renders of a view depend on, as kept_renders.h keys them; empty where the
 // scene's files or the grader's program cannot be read, and then nothing is kept. The eye in
 // hexadecimal floating point: exact, so that only the same eye finds the renders.
-std::string reference_renders_key(const fs::path& path, View view, const Vec3& eye) {
+std::string reference_renders_key(const fs::path& path, View view, const Vec3& eye,
+                                  int samples_per_pixel) {
     const std::string scene = scene_digest(load_scene(path));
     const std::string grader = grader_identity();
     if (scene.empty() || grader.empty()) return "";
     char eye_text[96];
     std::snprintf(eye_text, sizeof eye_text, "%a %a %a", eye.x, eye.y, eye.z);
     return "reference renders\nscene " + scene + "\nview " + std::string(view_name(view)) +
-           "\nwidth " + std::to_string(kRenderCheckWidth) + "\neye " + eye_text + "\nrenders " +
+           "\nwidth " + std::to_string(kRenderCheckWidth) + "\nspp " +
+           std::to_string(samples_per_pixel) + "\neye " + eye_text + "\nrenders " +
            std::to_string(kReferenceRenders) + " from seed " + std::to_string(kReferenceSeeds) +
            "\ngrader " + grader + "\n";
 }
@@ -101,13 +107,13 @@ std::string reference_renders_key(const fs::path& path, View view, const Vec3& e
 // The reference's renders of a view from `eye`: from where an earlier grade from the same eyes
 // kept them (GradingContext::kept_renders), or made here and kept there for the next.
 std::vector<Image> reference_renders(const GradingContext& context, const fs::path& path, View view,
-                                     const Vec3& eye) {
-    const std::string key = reference_renders_key(path, view, eye);
+                                     const Vec3& eye, int samples_per_pixel) {
+    const std::string key = reference_renders_key(path, view, eye, samples_per_pixel);
     const fs::path kept = key.empty() ? fs::path() : context.kept_renders;
     if (!kept.empty()) {
         if (std::optional<std::vector<Image>> found = kept_renders(kept, key)) return *found;
     }
-    std::vector<Image> renders = render_reference(path, view, eye);
+    std::vector<Image> renders = render_reference(path, view, eye, samples_per_pixel);
     if (!kept.empty()) keep_renders(kept, key, renders);
     return renders;
 }
@@ -116,6 +122,8 @@ struct NoisyRenderCheck {
     int stage = 8;
     std::string scene;
     View view = View::full;
+    /// The samples per pixel of every render, student's and reference's; 0: the scene's `spp`.
+    int samples_per_pixel = 0;
 
     std::string id() const {
         return "stage" + std::to_string(stage) + ".render." + fs::path(scene).stem().string() +
@@ -132,13 +140,15 @@ CheckMeasure measure_noisy_render(const GradingContext& context, const BuiltProb
     std::vector<ProbeCase> cases;
     for (int k = 0; k < kStudentRenders; ++k) {
         const std::uint64_t seed = (statistics_seed() << 8) + static_cast<std::uint64_t>(k);
-        const probe::RenderQuestion question{path.string(),
-                                             std::string(view_name(check.view)),
-                                             kRenderCheckWidth,
-                                             seed,
-                                             {},
-                                             {},
-                                             eye};
+        probe::RenderQuestion question{path.string(),
+                                       std::string(view_name(check.view)),
+                                       kRenderCheckWidth,
+                                       seed,
+                                       {},
+                                       {},
+                                       eye,
+                                       {}};
+        if (check.samples_per_pixel > 0) question.samples_per_pixel = check.samples_per_pixel;
         cases.push_back(
             {check.scene + ", " + std::string(view_name(check.view)) + " view, " +
                  moved_eye_text(eye) + ", seed " + std::to_string(seed),
@@ -151,7 +161,9 @@ CheckMeasure measure_noisy_render(const GradingContext& context, const BuiltProb
                  return right();
              },
              std::string(kStudentRaystep) + " render scenes/" + check.scene + " --view " +
-                 std::string(view_name(check.view)) + lookfrom_arguments(eye)});
+                 std::string(view_name(check.view)) + lookfrom_arguments(eye) +
+                 (check.samples_per_pixel > 0 ? " --spp " + std::to_string(check.samples_per_pixel)
+                                              : std::string())});
     }
     ProbeRunLimits limits;
     limits.readable = {context.source / "scenes"};
@@ -165,7 +177,8 @@ CheckMeasure measure_noisy_render(const GradingContext& context, const BuiltProb
         renders.push_back(*image);
     }
 
-    const std::vector<Image> reference = reference_renders(context, path, check.view, eye);
+    const std::vector<Image> reference =
+        reference_renders(context, path, check.view, eye, check.samples_per_pixel);
     NoisyComparison comparison;
     try {
         comparison = compare_noisy_renders(renders, reference, kTile, kTileBound, kDeviationFloor);
@@ -217,6 +230,9 @@ std::vector<NoisyRenderCheck> noisy_render_check_list() {
         // Antialiasing: the film points of 16 jittered samples per pixel, where a shift or a
         // flip moves every edge of the checkerboard.
         {8, "stage8/aliasing.test", View::full},
+        // Path tracing: every estimator of the Cornell box's paths, at 4 paths per pixel (the
+        // scene's 64 would cost each grade a minute; the tiles' noise is measured either way).
+        {10, "stage10/cornell-box.test", View::full, 4},
     };
 }
 

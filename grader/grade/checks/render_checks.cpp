@@ -84,7 +84,7 @@ Counterexample pixel_counterexample(const GradingContext& context, const std::st
 ProbeQuery render_query(const std::string& scene_path, View view, const CameraClip& clip,
                         const std::optional<Vec3>& eye) {
     probe::RenderQuestion question{
-        scene_path, std::string(view_name(view)), kRenderCheckWidth, {}, {}, {}, eye};
+        scene_path, std::string(view_name(view)), kRenderCheckWidth, {}, {}, {}, eye, {}};
     if (!clip.name.empty()) {
         question.camera_t_min = clip.t_min;
         question.camera_t_max = clip.t_max;
