@@ -43,7 +43,7 @@ def read_scene(path):
     # Commands that change nothing under the scene's own integrator, or that only raystep reads.
     ignored = {"output", "integrator", "spp", "seed", "maxverts", "ambient", "specular",
                "shininess", "russianroulette", "nexteventestimation", "importancesampling",
-               "maxdepth", "lightsamples", "lightstratify", "gamma"}
+               "lightsamples", "lightstratify", "gamma"}
     with open(path) as f:
         for number, raw in enumerate(f, 1):
             words = raw.split("#")[0].split()
@@ -65,6 +65,10 @@ def read_scene(path):
             elif command == "quadLight":
                 values = [float(a) for a in args]
                 scene["lights"].append((values[0:3], values[3:6], values[6:9], values[9:12]))
+            elif command == "maxdepth" and args[0] != "-1":
+                fail(path, number, "only maxdepth -1 (unbounded) is matched in Cycles")
+            elif command == "maxdepth":
+                continue
             elif command == "brdf" and args[0] != "phong":
                 fail(path, number, "only diffuse surfaces are matched in Cycles")
             elif command == "brdf":

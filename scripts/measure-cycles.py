@@ -19,9 +19,11 @@ Needs Blender (Debian's `blender`; Cycles on the CPU) and oiiotool (`openimageio
    (1 expected), and the whole image's mean radiance in each.
 2. Time to an error. The converged image is the mean of those four renders. Each renderer renders
    at 4 to 256 samples, timed (raystep's own figure, Cycles' render alone, both on --threads),
-   and the RMSE against the converged image taken, over the same pixels. RMSE falls as 1 / sqrt(time), so each
-   renderer's time * RMSE^2 is its constant; the script prints it, and the time each needs to reach
-   the RMSE raystep reaches at 64 samples, and their ratio.
+   and the RMSE against the converged image taken, over the same pixels. The script prints each
+   renderer's time * RMSE^2 (constant where the error falls as 1 / sqrt(time), as independent
+   samples' does) and the time each needs to reach the RMSE raystep reaches at 64 samples,
+   interpolated between the measurements that bracket it (a line in log time against log RMSE),
+   and their ratio.
 """
 
 import argparse
@@ -109,6 +111,17 @@ def rmse(image, reference, left_out):
     return math.sqrt(total / (3 * len(kept)))
 
 
+def time_to_error(points, target):
+    """The time at which a renderer's RMSE is `target`: a straight line in log time against log
+    RMSE between the two measurements that bracket it (the nearest two where none does)."""
+    points = sorted(points, key=lambda p: -p[1])  # falling error
+    for (t0, e0), (t1, e1) in zip(points, points[1:]):
+        if e1 <= target <= e0 or (t1, e1) == points[-1]:
+            slope = math.log(t1 / t0) / math.log(e1 / e0)
+            return t0 * math.exp(slope * math.log(target / e0))
+    return points[0][0]
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--raystep", default=str(ROOT / "build/release/bin/raystep"))
@@ -148,22 +161,18 @@ def main():
               f"ratio {mean_a / mean_b:.4f}")
 
     print(f"\n2. time to an error: RMSE against the mean of the four {args.spp}-spp renders")
-    constants = {}
-    errors = {}
+    measured = {}
     for name, render in (("raystep", render_raystep), ("cycles", render_cycles)):
-        products = []
+        measured[name] = []
         for spp in (4, 16, 64, 256):
             path = work / f"{name}-{spp}.exr"
             seconds = render(args, spp, 7, path)
             error = rmse(pixels(path), reference, left_out)
-            errors[(name, spp)] = error
-            products.append(seconds * error * error)
+            measured[name].append((seconds, error))
             print(f"   {name:8} {spp:4} spp: {seconds:7.3f} s, RMSE {error:.5f}, "
                   f"time * RMSE^2 {seconds * error * error:.6f}")
-        # The larger counts, where fixed costs no longer count: the median of the last three.
-        constants[name] = sorted(products[1:])[1]
-    target = errors[("raystep", 64)]
-    times = {name: constants[name] / (target * target) for name in constants}
+    target = measured["raystep"][2][1]
+    times = {name: time_to_error(points, target) for name, points in measured.items()}
     print(f"   to reach RMSE {target:.5f} (raystep at 64 spp): raystep {times['raystep']:.2f} s, "
           f"cycles {times['cycles']:.2f} s; raystep takes {times['raystep'] / times['cycles']:.2f} "
           f"times Cycles' time")

@@ -19,8 +19,9 @@ namespace raystep {
 /// that finishes gets the next number of one running sequence, so the page asks only for the
 /// tiles after the last number it saw.
 /// The samples per pixel of the passes a live render of `spp` samples shows: 1, 4, 16, ... (every
-/// pattern's counts are squares) while below `spp`, then `spp` itself. A pass costs a quarter of
-/// the next, so the passes before the last add a third to its time at most.
+/// pattern's counts are squares) while below `spp`, then `spp` itself. The passes before the last
+/// sum to under 4/3 of the largest of them: a third of the last's time when spp is a power of 4,
+/// and up to 4/3 of it just above one (spp 17 renders 1, 4, 16 and 17).
 std::vector<int> progressive_passes(int spp);
 
 class LiveRender {
