@@ -104,8 +104,8 @@ fi
 
 check_command "scripts/test.sh 1 runs stage 1's public tests, every one failing at a stub" 8 \
     "0% tests passed, [0-9]+ tests failed out of [0-9]+" "$release/scripts/test.sh" 1
-check_command "scripts/test.sh of a stage that does not exist exits 2" 2 "no stage '11'" \
-    "$release/scripts/test.sh" 11
+check_command "scripts/test.sh of a stage that does not exist exits 2" 2 "no stage '12'" \
+    "$release/scripts/test.sh" 12
 check_command "raystep render names the stub" 1 "^raystep: $stub_message" \
     "$bin/raystep" render "$scene" --view normal -o "$release/normal.png"
 check_command "raystep trace stops at the stub" 1 "^stopped: $stub_message" \
@@ -243,7 +243,7 @@ while IFS=$'\t' read -r name command points may_fail; do
     fi
 done <<<"$workflow_steps"
 # Every stage the rubric has checks for and the whole pipeline (stage 0, the render checks of every
-# stage together). A stage with public tests and no checks yet (stage 10: docs/stage10.md, "What
+# stage together). A stage with public tests and no checks yet (stage 11: docs/stage11.md, "What
 # the grader checks") is run by the workflow's public tests alone.
 rubric_stages=$(python3 - "$release/grading/rubric.json" <<'PYTHON'
 import json, pathlib, re, sys
