@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "base/math/unit_roundoff.h"
+#include "stages/11_surface_detail/surface_detail.h"
 
 namespace raystep {
 
@@ -109,17 +111,25 @@ PlacedPoint place(const RenderScene& render_scene, const Ray& ray, const Primiti
     return to_world(*instance, place_in_object_frame(render_scene, object_ray, hit));
 }
 
-// A `trinormal` triangle's normal at the hit: its vertex normals, each made unit, weighted by
-// the barycentric coordinates, and taken to the world by M^-T when a transform places it.
-Vec3 interpolated_normal(const RenderScene& render_scene, std::size_t index, const Hit& hit) {
+// A smooth triangle's normal at the hit (a `trinormal` triangle's, or a mesh's with vertex
+// normals): stage 11's interpolation of its vertex normals, each made unit first, as CSE167's
+// ray tracer does, so that a long normal written in the file does not outweigh the others; taken
+// to the world by M^-T when a transform places it. nullopt where the vertex normals cancel.
+std::optional<Vec3> interpolated_normal(const RenderScene& render_scene, std::size_t index,
+                                        const Hit& hit) {
     const SceneTriangle& triangle = render_scene.scene->triangles[index];
     const VertexNormals& n =
         render_scene.scene->vertex_normals[static_cast<std::size_t>(triangle.vertex_normals)];
-    const Vec3 blended = (1.0 - hit.beta - hit.gamma) * glm::normalize(n.n0) +
-                         hit.beta * glm::normalize(n.n1) + hit.gamma * glm::normalize(n.n2);
+    Vec3 smooth;
+    try {
+        smooth = interpolate_normal(glm::normalize(n.n0), glm::normalize(n.n1),
+                                    glm::normalize(n.n2), hit.beta, hit.gamma);
+    } catch (const std::domain_error&) {
+        return std::nullopt;
+    }
     const Instance* instance = instance_of(render_scene, PrimitiveKind::triangle, index);
-    if (!instance || !instance->transform) return glm::normalize(blended);
-    return normal_to_world(*instance->transform, blended);
+    if (!instance || !instance->transform) return smooth;
+    return normal_to_world(*instance->transform, smooth);
 }
 
 // The bound handed to shading. A point's own error along the normal is not enough: intersection
@@ -152,8 +162,11 @@ SurfacePoint surface_point(const RenderScene& render_scene, const Ray& ray,
     const Scene& scene = *render_scene.scene;
     if (hit.kind == PrimitiveKind::triangle && hit.index < scene.triangles.size()) {
         if (scene.triangles[hit.index].vertex_normals >= 0) {
-            const Vec3 smooth = interpolated_normal(render_scene, hit.index, hit.hit);
-            point.shading_normal = glm::dot(smooth, point.normal) < 0.0 ? -smooth : smooth;
+            // Where the vertex normals cancel there is no smooth normal: the flat one shades.
+            if (const std::optional<Vec3> smooth =
+                    interpolated_normal(render_scene, hit.index, hit.hit)) {
+                point.shading_normal = glm::dot(*smooth, point.normal) < 0.0 ? -*smooth : *smooth;
+            }
         }
     }
     return point;

@@ -143,6 +143,10 @@ int run_info(const InfoArguments& arguments) {
                                   counted(f.instanced_triangles, "triangle", "triangles") +
                                   " in the image, each definition's kept once");
     }
+    if (f.uses_smooth_normals()) {
+        row("normals", counted(f.smooth_triangles, "triangle", "triangles") +
+                           " shaded smooth by their vertex normals (stage 11)");
+    }
     row("transforms", f.uses_transforms()
                           ? counted(f.transformed_objects, "object", "objects") + " under " +
                                 counted(f.transforms, "transform", "transforms")

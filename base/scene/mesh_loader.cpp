@@ -3,6 +3,8 @@
 #include <cctype>
 #include <string>
 
+#include <glm/geometric.hpp>
+
 #include "base/errors/input_error.h"
 
 namespace raystep {
@@ -11,6 +13,17 @@ void append_triangle_fan(TriangleMesh& mesh, const std::vector<std::uint32_t>& p
     for (std::size_t k = 1; k + 1 < polygon.size(); ++k) {
         mesh.faces.push_back({polygon[0], polygon[k], polygon[k + 1]});
     }
+}
+
+std::vector<Vec3> area_weighted_normals(const TriangleMesh& mesh) {
+    std::vector<Vec3> normals(mesh.positions.size(), Vec3(0.0));
+    for (const auto& face : mesh.faces) {
+        const Vec3& p0 = mesh.positions[face[0]];
+        const Vec3 normal = glm::cross(mesh.positions[face[1]] - p0, mesh.positions[face[2]] - p0);
+        for (const std::uint32_t corner : face)
+            normals[corner] += normal;
+    }
+    return normals;
 }
 
 TriangleMesh load_mesh(const std::filesystem::path& path) {

@@ -13,17 +13,63 @@ namespace raystep {
 
 namespace {
 
+// One kind of element an OBJ face indexes (positions, normals): how many the file has defined so
+// far, and its largest absolute index, checked against the count at the end of the file.
+struct IndexedElements {
+    const char* what;    ///< "vertex", "vertex normal"
+    const char* plural;  ///< "vertices", "vertex normals"
+    long defined = 0;
+    long largest_index = 0;
+    int largest_index_line = 0;
+};
+
+// A face corner's index `field` into `elements`: from 1, or back from the last one defined
+// when negative.
+void check_corner_index(std::string_view field, std::string_view corner, IndexedElements& elements,
+                        const TextPosition& where) {
+    const bool relative = !field.empty() && field[0] == '-';
+    if (relative) field.remove_prefix(1);
+    const long index =
+        parse_count(field, where, std::string("a face's ") + elements.what + " index");
+    if (index == 0 || (relative && index > elements.defined)) {
+        throw InputError(where.file, where.line,
+                         std::string(elements.what) + " index " + std::string(corner) +
+                             " is out of range: OBJ counts " + elements.plural + " from 1, and " +
+                             std::to_string(elements.defined) + " are defined so far");
+    }
+    if (!relative && index > elements.largest_index) {
+        elements.largest_index = index;
+        elements.largest_index_line = where.line;
+    }
+}
+
+// A line of finite numbers after its keyword, at least 3: a position or a normal. Its first 3.
+Vec3 read_triple(const std::vector<std::string_view>& fields, const char* what,
+                 const TextPosition& where) {
+    if (fields.size() < 4) {
+        throw InputError(where.file, where.line,
+                         std::string("a ") + what + " needs 3 coordinates, this one has " +
+                             std::to_string(fields.size() - 1));
+    }
+    Vec3 triple;
+    for (std::size_t k = 1; k < fields.size(); ++k) {
+        const double value =
+            parse_finite_number(fields[k], where, std::string("a ") + what + " coordinate");
+        if (k <= 3) triple[static_cast<int>(k - 1)] = value;
+    }
+    return triple;
+}
+
 // tinyobjloader reads what it can and says little: "v 1 abc 3" becomes (1, 0, 3), "f 1 2" is
-// dropped, and an index past 2^31 wraps. Before it loads, every line it will use ("v" and "f")
-// is checked here, so that a bad file is an error at its line instead of a wrong mesh.
+// dropped, and an index past 2^31 wraps. Before it loads, every line it will use ("v", "vn" and
+// "f") is checked here, so that a bad file is an error at its line instead of a wrong mesh.
 void check_obj_lines(const std::filesystem::path& path) {
     const std::string name = path.string();
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(name, 0, "cannot open the mesh file");
 
-    long vertices = 0;
-    long largest_index = 0;
-    int largest_index_line = 0;
+    IndexedElements vertices{"vertex", "vertices"};
+    IndexedElements normals{"vertex normal", "vertex normals"};
     std::string text;
     std::vector<std::string_view> fields;
     for (int line = 1; std::getline(in, text); ++line) {
@@ -31,15 +77,13 @@ void check_obj_lines(const std::filesystem::path& path) {
         if (fields.empty()) continue;
         const TextPosition where{name, line};
         if (fields[0] == "v") {
-            if (fields.size() < 4) {
-                throw InputError(name, line,
-                                 "a vertex needs 3 coordinates, this one has " +
-                                     std::to_string(fields.size() - 1));
+            read_triple(fields, "vertex", where);
+            ++vertices.defined;
+        } else if (fields[0] == "vn") {
+            if (read_triple(fields, "vertex normal", where) == Vec3(0.0)) {
+                throw InputError(name, line, "a vertex normal is zero: it has no direction");
             }
-            for (std::size_t k = 1; k < fields.size(); ++k) {
-                parse_finite_number(fields[k], where, "a vertex coordinate");
-            }
-            ++vertices;
+            ++normals.defined;
         } else if (fields[0] == "f") {
             if (fields.size() < 4) {
                 throw InputError(name, line,
@@ -47,30 +91,27 @@ void check_obj_lines(const std::filesystem::path& path) {
                                      std::to_string(fields.size() - 1));
             }
             for (std::size_t k = 1; k < fields.size(); ++k) {
-                // A corner is v, v/vt, v//vn or v/vt/vn; v counts from 1, or back from the last
-                // vertex when negative.
-                std::string_view corner = fields[k].substr(0, fields[k].find('/'));
-                const bool relative = !corner.empty() && corner[0] == '-';
-                if (relative) corner.remove_prefix(1);
-                const long index = parse_count(corner, where, "a face's vertex index");
-                if (index == 0 || (relative && index > vertices)) {
-                    throw InputError(name, line,
-                                     "vertex index " + std::string(fields[k]) +
-                                         " is out of range: OBJ counts vertices from 1, and " +
-                                         std::to_string(vertices) + " are defined so far");
-                }
-                if (!relative && index > largest_index) {
-                    largest_index = index;
-                    largest_index_line = line;
+                // A corner is v, v/vt, v//vn or v/vt/vn.
+                const std::string_view corner = fields[k];
+                const std::size_t slash = corner.find('/');
+                check_corner_index(corner.substr(0, slash), corner, vertices, where);
+                const std::size_t second = slash == std::string_view::npos
+                                               ? std::string_view::npos
+                                               : corner.find('/', slash + 1);
+                if (second != std::string_view::npos) {
+                    check_corner_index(corner.substr(second + 1), corner, normals, where);
                 }
             }
         }
     }
-    if (largest_index > vertices) {
-        throw InputError(name, largest_index_line,
-                         "vertex index " + std::to_string(largest_index) +
-                             " is out of range: the file has " + std::to_string(vertices) +
-                             " vertices, counted from 1");
+    for (const IndexedElements* elements : {&vertices, &normals}) {
+        if (elements->largest_index > elements->defined) {
+            throw InputError(
+                name, elements->largest_index_line,
+                std::string(elements->what) + " index " + std::to_string(elements->largest_index) +
+                    " is out of range: the file has " + std::to_string(elements->defined) + " " +
+                    elements->plural + ", counted from 1");
+        }
     }
 }
 
@@ -95,16 +136,36 @@ TriangleMesh load_obj_mesh(const std::filesystem::path& path) {
         mesh.positions.push_back({coordinates[k], coordinates[k + 1], coordinates[k + 2]});
     }
 
+    const std::vector<tinyobj::real_t>& normals = reader.GetAttrib().normals;
+    for (std::size_t k = 0; k + 2 < normals.size(); k += 3) {
+        mesh.normals.push_back({normals[k], normals[k + 1], normals[k + 2]});
+    }
+
     std::vector<std::uint32_t> polygon;
+    std::vector<std::uint32_t> polygon_normals;
     for (const tinyobj::shape_t& shape : reader.GetShapes()) {
         std::size_t first = 0;
         for (const unsigned int corners : shape.mesh.num_face_vertices) {
             polygon.clear();
+            polygon_normals.clear();
+            bool every_corner_has_a_normal = true;
             for (std::size_t c = 0; c < corners; ++c) {
-                polygon.push_back(
-                    static_cast<std::uint32_t>(shape.mesh.indices[first + c].vertex_index));
+                const tinyobj::index_t& corner = shape.mesh.indices[first + c];
+                polygon.push_back(static_cast<std::uint32_t>(corner.vertex_index));
+                polygon_normals.push_back(static_cast<std::uint32_t>(corner.normal_index));
+                every_corner_has_a_normal = every_corner_has_a_normal && corner.normal_index >= 0;
             }
             append_triangle_fan(mesh, polygon);
+            if (!mesh.normals.empty()) {
+                // The normals' fan is the positions': the same corners in the same order.
+                for (std::size_t k = 1; k + 1 < polygon_normals.size(); ++k) {
+                    mesh.face_normals.push_back(
+                        every_corner_has_a_normal
+                            ? std::array<std::uint32_t, 3>{polygon_normals[0], polygon_normals[k],
+                                                           polygon_normals[k + 1]}
+                            : std::array<std::uint32_t, 3>{kNoNormal, kNoNormal, kNoNormal});
+                }
+            }
             first += corners;
         }
     }

@@ -37,6 +37,9 @@ SceneFeatures scene_features(const Scene& scene) {
     features.meshes = scene.meshes.size();
     for (const SceneMesh& mesh : scene.meshes)
         features.mesh_triangles += mesh.triangle_count;
+    for (const SceneTriangle& triangle : scene.triangles) {
+        if (triangle.vertex_normals >= 0) ++features.smooth_triangles;
+    }
     features.planes = scene.planes.size();
     features.point_lights = scene.point_lights.size();
     features.directional_lights = scene.directional_lights.size();

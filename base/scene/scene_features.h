@@ -12,6 +12,9 @@ struct SceneFeatures {
     std::size_t spheres = 0;
     std::size_t triangles = 0;  ///< all triangles, mesh triangles included
     std::size_t mesh_triangles = 0;
+    /// Triangles with vertex normals (`trinormal`, a mesh's `vn` or `mesh FILE smooth`), shaded
+    /// by stage 11's interpolation.
+    std::size_t smooth_triangles = 0;
     std::size_t meshes = 0;
     std::size_t planes = 0;
     std::size_t transforms = 0;             ///< distinct non-identity transforms in use
@@ -44,6 +47,7 @@ struct SceneFeatures {
     bool uses_reflection() const { return reflective_objects > 0; }
     bool uses_sampling() const { return samples_per_pixel > 1 || quad_lights > 0; }
     bool uses_refraction() const { return transmissive_objects > 0; }
+    bool uses_smooth_normals() const { return smooth_triangles > 0; }
 };
 
 SceneFeatures scene_features(const Scene& scene);

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -25,6 +27,22 @@ bool is_identity(const TransformOp& op) {
             return op.angle_degrees == 0.0;
     }
     return false;
+}
+
+// The vertex normals of face k of a mesh: the file's where each of its corners names one, else
+// with `smooth` the area-weighted ones where none of them is zero; nullopt for a flat face.
+std::optional<VertexNormals> face_vertex_normals(const TriangleMesh& mesh, std::size_t k,
+                                                 const std::vector<Vec3>& smooth) {
+    if (!mesh.face_normals.empty() && mesh.face_normals[k][0] != kNoNormal) {
+        const auto& n = mesh.face_normals[k];
+        return VertexNormals{mesh.normals[n[0]], mesh.normals[n[1]], mesh.normals[n[2]]};
+    }
+    if (smooth.empty()) return std::nullopt;
+    const auto& face = mesh.faces[k];
+    for (const std::uint32_t corner : face) {
+        if (smooth[corner] == Vec3(0.0)) return std::nullopt;
+    }
+    return VertexNormals{smooth[face[0]], smooth[face[1]], smooth[face[2]]};
 }
 
 }  // namespace
@@ -177,6 +195,9 @@ std::pair<std::filesystem::path, TriangleMesh> SceneParser::mesh_file(std::size_
 
 void SceneParser::mesh() {
     const auto [file, loaded] = mesh_file(1);
+    const bool smooth = fields_.size() > 2 && keyword(2, "smooth") == 0;
+    const std::vector<Vec3> smooth_normals =
+        smooth ? area_weighted_normals(loaded) : std::vector<Vec3>();
 
     SceneMesh record;
     record.path = file.string();
@@ -188,12 +209,18 @@ void SceneParser::mesh() {
 
     const ObjectAttributes shared = attributes();
     scene_.triangles.reserve(scene_.triangles.size() + loaded.faces.size());
-    for (const auto& face : loaded.faces) {
+    for (std::size_t k = 0; k < loaded.faces.size(); ++k) {
+        const auto& face = loaded.faces[k];
         SceneTriangle triangle;
         triangle.shape = {loaded.positions[face[0]], loaded.positions[face[1]],
                           loaded.positions[face[2]]};
         triangle.attributes = shared;
         triangle.mesh = mesh_id;
+        if (const std::optional<VertexNormals> normals =
+                face_vertex_normals(loaded, k, smooth_normals)) {
+            triangle.vertex_normals = static_cast<std::int32_t>(scene_.vertex_normals.size());
+            scene_.vertex_normals.push_back(*normals);
+        }
         scene_.triangles.push_back(triangle);
     }
 }
@@ -210,6 +237,9 @@ void SceneParser::define() {
         }
     }
     const auto [file, loaded] = mesh_file(2);
+    if (!loaded.normals.empty()) {
+        note("the mesh's vertex normals are not used by its instances, which shade faceted");
+    }
     MeshDefinition definition;
     definition.name = name;
     definition.path = file.string();

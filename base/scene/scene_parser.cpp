@@ -112,7 +112,7 @@ const std::vector<SceneParser::Command>& SceneParser::commands() {
         {"vertexnormal", "x y z nx ny nz", &SceneParser::vertexnormal},
         {"tri", "v0 v1 v2", &SceneParser::tri},
         {"trinormal", "v0 v1 v2", &SceneParser::trinormal},
-        {"mesh", "file", &SceneParser::mesh},
+        {"mesh", "file [smooth]", &SceneParser::mesh},
         {"define", "name file", &SceneParser::define},
         {"instance", "name", &SceneParser::instance},
         {"translate", "x y z", &SceneParser::translate},

@@ -79,6 +79,16 @@ TEST_CASE("stages_for_view: transmission adds stages 7 and 9 to the full view on
     CHECK(stages_for_view(flat, View::full) == std::vector<int>{1, 2, 3, 6});
 }
 
+TEST_CASE("stages_for_view: smooth triangles add stage 11 to the views that shade", "[app]") {
+    const SceneFeatures smooth = scene_features(
+        parse("vertexnormal 0 0 0 0 0 1\nvertexnormal 1 0 0 0 0 1\nvertexnormal 0 1 0 0 0 1\n"
+              "trinormal 0 1 2\nvertex 2 0 0\nvertex 3 0 0\nvertex 2 1 0\ntri 0 1 2\n"));
+    CHECK(smooth.smooth_triangles == 1);
+    CHECK(stages_for_view(smooth, View::shaded) == std::vector<int>{1, 2, 3, 6, 11});
+    CHECK(stages_for_view(smooth, View::full) == std::vector<int>{1, 2, 3, 6, 11});
+    CHECK(stages_for_view(smooth, View::normal) == std::vector<int>{1, 2, 3});
+}
+
 TEST_CASE("uses_bvh: spheres under a transform stay out of the BVH", "[app]") {
     std::string ellipsoids = "scale 1 2 1\n";
     std::string spheres;

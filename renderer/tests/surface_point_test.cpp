@@ -10,6 +10,7 @@
 #include "base/math/to_text.h"
 #include "base/scene/scene_loader.h"
 #include "base/testing/catch.h"
+#include "stages/11_surface_detail/surface_detail.h"
 
 using namespace raystep;
 
@@ -201,6 +202,45 @@ TEST_CASE("surface_point: the normal faces the ray, the shading normal the same 
     CHECK(point.shading_normal.z > 0.9);          // the vertex normals point away: turned too
     CHECK(point.shading_normal != point.normal);  // but interpolated, not the flat one
     CHECK(point.to_eye == Vec3(0, 0, 1));
+}
+
+TEST_CASE(
+    "surface_point: a smooth triangle shades by stage 11's interpolate_normal of its unit "
+    "vertex normals",
+    "[app]") {
+    // Vertex normals of different lengths: each is made unit before the interpolation.
+    const Scene scene = parse_scene(
+        "camera 0 0 5 0 0 0 0 1 0 45\nvertexnormal -1 -1 0 0 0 3\nvertexnormal 1 -1 0 1 0 1\n"
+        "vertexnormal 0 1 0 0 1 1\ntrinormal 0 1 2\n",
+        "smooth.test", ".");
+    const RenderScene render_scene = prepare_render_scene(scene);
+    const Ray eye{{0.2, -0.1, 5}, {0, 0, -1}};
+    const std::optional<PrimitiveHit> hit = scene_closest_hit(render_scene, eye, nullptr);
+    REQUIRE(hit);
+    const SurfacePoint point = surface_point(render_scene, eye, *hit);
+    const Vec3 expected =
+        interpolate_normal(Vec3(0, 0, 1), glm::normalize(Vec3(1, 0, 1)),
+                           glm::normalize(Vec3(0, 1, 1)), hit->hit.beta, hit->hit.gamma);
+    CHECK(glm::length(point.shading_normal - expected) < 1e-15);
+    CHECK(point.normal == Vec3(0, 0, 1));  // the geometry keeps the flat normal
+}
+
+TEST_CASE("surface_point: where the vertex normals cancel, the flat normal shades", "[app]") {
+    const Scene scene = parse_scene(
+        "camera 0 0 5 0 0 0 0 1 0 45\nvertexnormal -1 -1 0 0 0 1\nvertexnormal 1 -1 0 0 0 -1\n"
+        "vertexnormal 0 1 0 0 0 1\ntrinormal 0 1 2\n",
+        "cancel.test", ".");
+    const RenderScene render_scene = prepare_render_scene(scene);
+    // At beta = 0.5, gamma = 0.25 (the point (0.25, -0.5), every number exact in binary) the
+    // weights of +z, -z and +z are 0.25, 0.5 and 0.25: the sum is zero.
+    const Ray eye{{0.25, -0.5, 5}, {0, 0, -1}};
+    const std::optional<PrimitiveHit> hit = scene_closest_hit(render_scene, eye, nullptr);
+    REQUIRE(hit);
+    CAPTURE(hit->hit.beta, hit->hit.gamma);
+    REQUIRE(hit->hit.beta == 0.5);
+    REQUIRE(hit->hit.gamma == 0.25);
+    const SurfacePoint point = surface_point(render_scene, eye, *hit);
+    CHECK(point.shading_normal == point.normal);
 }
 
 TEST_CASE("error_bound offset: rays leaving a surface never hit it again, at any scale", "[app]") {

@@ -1,7 +1,10 @@
 #include "base/scene/mesh_loader.h"
 
+#include <array>
+#include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "base/errors/input_error.h"
 #include "base/testing/catch.h"
@@ -91,6 +94,48 @@ TEST_CASE("load_mesh: OBJ errors name the file and the line", "[base]") {
     CHECK_THAT(
         error_of(kMeshes / "bad_relative_index.obj"),
         Catch::Matchers::Contains("bad_relative_index.obj:4: vertex index -4 is out of range"));
+}
+
+TEST_CASE("load_mesh: OBJ vertex normals, fanned with their face, as written", "[base]") {
+    const TriangleMesh mesh = load_mesh(kMeshes / "normals.obj");
+    REQUIRE(mesh.normals.size() == 3);
+    CHECK(mesh.normals[1] == Vec3(0, 0, 2));  // not normalized: the renderer decides
+    REQUIRE(mesh.faces.size() == 3);
+    REQUIRE(mesh.face_normals.size() == 3);
+    // The quad's corners 1//1 2//2 3//3 4//1 fan as its positions do.
+    CHECK(mesh.face_normals[0] == std::array<std::uint32_t, 3>{0, 1, 2});
+    CHECK(mesh.face_normals[1] == std::array<std::uint32_t, 3>{0, 2, 0});
+    // A face with a corner that names no normal has none.
+    CHECK(mesh.face_normals[2] == std::array<std::uint32_t, 3>{kNoNormal, kNoNormal, kNoNormal});
+}
+
+TEST_CASE("load_mesh: a file without normals has none", "[base]") {
+    const TriangleMesh mesh = load_mesh(kMeshes / "square.obj");
+    CHECK(mesh.normals.empty());
+    CHECK(mesh.face_normals.empty());
+}
+
+TEST_CASE("load_mesh: OBJ normal errors name the file and the line", "[base]") {
+    CHECK_THAT(error_of(kMeshes / "bad_normal_index.obj"),
+               Catch::Matchers::Contains("bad_normal_index.obj:5: vertex normal index 2 is out of "
+                                         "range: the file has 1 vertex normals"));
+    CHECK_THAT(error_of(kMeshes / "zero_normal.obj"),
+               Catch::Matchers::Contains("zero_normal.obj:4: a vertex normal is zero"));
+}
+
+TEST_CASE("area_weighted_normals: each vertex sums its faces' normals, weighted by area",
+          "[base]") {
+    // Two triangles meeting at the edge 0-1: one in the plane z = 0 of area 1/2, one in the
+    // plane y = 0 of area 2, facing +y.
+    TriangleMesh mesh;
+    mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 2}};
+    mesh.faces = {{0, 1, 2}, {0, 3, 1}};
+    const std::vector<Vec3> normals = area_weighted_normals(mesh);
+    REQUIRE(normals.size() == 4);
+    CHECK(normals[2] == Vec3(0, 0, 1));  // the first face's (p1 - p0) x (p2 - p0)
+    CHECK(normals[3] == Vec3(0, 2, 0));  // the second's, four times as large
+    CHECK(normals[0] == Vec3(0, 2, 1));  // both: the larger face weighs more
+    CHECK(normals[1] == normals[0]);
 }
 
 TEST_CASE("load_mesh: an unknown extension, a missing file or a folder is an error", "[base]") {

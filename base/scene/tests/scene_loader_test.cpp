@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/geometric.hpp>
+
 #include "base/errors/input_error.h"
 #include "base/scene/scene_features.h"
 #include "base/testing/catch.h"
@@ -258,6 +260,45 @@ TEST_CASE("parse_scene: mesh loads a file relative to the scene and records it",
     CHECK(scene.triangles[0].mesh == 0);
     CHECK(scene.materials.at(scene.triangles[0].attributes.material).diffuse == Color(0, 1, 0));
     CHECK(scene.spheres.size() == 1);
+}
+
+TEST_CASE(
+    "parse_scene: a mesh's vertex normals make its triangles smooth where every corner "
+    "has one",
+    "[base]") {
+    const Scene scene = parse(kCamera + "mesh meshes/normals.obj\n");
+    REQUIRE(scene.triangles.size() == 3);
+    REQUIRE(scene.triangles[0].vertex_normals >= 0);
+    const VertexNormals& n =
+        scene.vertex_normals[static_cast<std::size_t>(scene.triangles[0].vertex_normals)];
+    CHECK(n.n1 == Vec3(0, 0, 2));
+    CHECK(n.n2 == Vec3(1, 0, 1));
+    CHECK(scene.triangles[1].vertex_normals >= 0);
+    CHECK(scene.triangles[2].vertex_normals == -1);
+}
+
+TEST_CASE("parse_scene: mesh FILE smooth gives every triangle its vertices' area-weighted normals",
+          "[base]") {
+    const Scene flat = parse(kCamera + "mesh meshes/square.obj\n");
+    CHECK(flat.triangles[0].vertex_normals == -1);
+    const Scene smooth = parse(kCamera + "mesh meshes/square.obj smooth\n");
+    REQUIRE(smooth.triangles.size() == 2);
+    for (const SceneTriangle& triangle : smooth.triangles) {
+        REQUIRE(triangle.vertex_normals >= 0);
+        // A flat square: every vertex's faces face +z.
+        const VertexNormals& n =
+            smooth.vertex_normals[static_cast<std::size_t>(triangle.vertex_normals)];
+        CHECK(glm::normalize(n.n0) == Vec3(0, 0, 1));
+        CHECK(glm::normalize(n.n2) == Vec3(0, 0, 1));
+    }
+}
+
+TEST_CASE("parse_scene: a defined mesh's vertex normals are noted as unused by its instances",
+          "[base]") {
+    const Scene scene = parse(kCamera + "define ball meshes/normals.obj\ninstance ball\n");
+    REQUIRE(scene.notes.size() == 1);
+    CHECK(scene.notes[0].command == "define");
+    CHECK_THAT(scene.notes[0].text, Catch::Matchers::Contains("shade faceted"));
 }
 
 TEST_CASE("parse_scene: a mesh between vertex commands does not shift tri indices", "[base]") {
