@@ -3,6 +3,7 @@
 #include <glm/geometric.hpp>
 
 #include "renderer/seen_quad_light.h"
+#include "renderer/surface_maps.h"
 #include "renderer/surface_point.h"
 #include "stages/10_path_tracing/path_tracing.h"
 
@@ -59,9 +60,10 @@ Color path_colour(const RenderScene& render_scene, const Ray& ray, const PathSet
         observer.path_ray(rays++, next, hit, seen ? &*seen : nullptr);
         if (seen) return light_hit(scene, next, *seen);
         if (!hit) return std::nullopt;
-        const Material& material = material_of(render_scene, *hit);
         PathHit surface;
         surface.point = surface_point(render_scene, next, *hit);
+        const Material material = mapped_material(render_scene, next, *hit,
+                                                  material_of(render_scene, *hit), surface.point);
         surface.brdf = surface_brdf(material);
         surface.emission = material.emission;
         return surface;

@@ -29,7 +29,7 @@ std::vector<int> stages_for_view(const SceneFeatures& features, View view) {
     if ((view == View::full || view == View::indirect) && features.path_traced) {
         if (features.samples_per_pixel > 1) stages.push_back(8);
         stages.push_back(10);
-        if (features.uses_smooth_normals()) stages.push_back(11);
+        if (features.uses_surface_detail()) stages.push_back(11);
         return stages;
     }
     // Stage 9 reflects with stage 7's reflected_ray, so a transmitting scene runs stage 7 too.
@@ -38,8 +38,9 @@ std::vector<int> stages_for_view(const SceneFeatures& features, View view) {
     }
     if (features.uses_sampling()) stages.push_back(8);
     if (view == View::full && features.uses_refraction()) stages.push_back(9);
-    // Shading reads the smooth normal; the geometry keeps the flat one.
-    if (features.uses_smooth_normals()) stages.push_back(11);
+    // Shading reads the smooth or mapped normal and the texture; the geometry keeps the flat
+    // normal.
+    if (features.uses_surface_detail()) stages.push_back(11);
     return stages;
 }
 

@@ -37,8 +37,8 @@ bool uses_instance_bvh(const SceneFeatures& features);
 /// render_pixel.h); refraction (stage 9, and stage 7 whose reflected_ray it uses) in the full
 /// view of a scene where something transmits and maxdepth allows a bounce. The full view of a
 /// path-traced scene (`integrator pathtracer`) runs stage 10 instead of 7 and 9, and stage 8
-/// only for more than one sample per pixel. Smooth normals (stage 11) in the views that shade, of
-/// a scene with a triangle that has vertex normals.
+/// only for more than one sample per pixel. Surface detail (stage 11) in the views that shade, of
+/// a scene with a triangle that has vertex normals or an object whose material has a map.
 std::vector<int> stages_for_view(const SceneFeatures& features, View view);
 
 }  // namespace raystep

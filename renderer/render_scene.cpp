@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <unordered_map>
 
+#include "base/errors/input_error.h"
+#include "base/image/image_io.h"
 #include "base/scene/scene_features.h"
 #include "renderer/nearest_hit.h"
 #include "renderer/render_plan.h"
@@ -175,6 +178,16 @@ SceneCamera make_scene_camera(const Scene& scene) {
 RenderScene prepare_render_scene(const Scene& scene) {
     RenderScene render_scene;
     render_scene.scene = &scene;
+    for (const SceneTexture& texture : scene.textures) {
+        try {
+            render_scene.textures.push_back(read_image(texture.path));
+        } catch (const std::runtime_error& error) {
+            throw InputError(scene.path, static_cast<int>(texture.line),
+                             std::string("cannot read the image: ") + error.what());
+        }
+        if (render_scene.textures.back().width() == 0 || render_scene.textures.back().height() == 0)
+            throw InputError(scene.path, static_cast<int>(texture.line), "the image is empty");
+    }
     render_scene.camera = make_scene_camera(scene);
     InstanceGatherer(scene, render_scene).gather();
     const SceneFeatures features = scene_features(scene);

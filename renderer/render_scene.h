@@ -7,6 +7,7 @@
 #include <variant>
 #include <vector>
 
+#include "base/image/image.h"
 #include "base/scene/scene.h"
 #include "renderer/instance.h"
 #include "renderer/instance_bvh.h"
@@ -58,6 +59,8 @@ struct RenderScene {
     /// over [0, inf), and the grader narrows them to see that stage 4 keeps to [t_min, t_max].
     double camera_t_min = 0.0;
     double camera_t_max = std::numeric_limits<double>::infinity();
+    /// Scene::textures' images, read when the scene is prepared.
+    std::vector<Image> textures;
 };
 
 /// The scene's `camera` (and `ortho`) over its width x height pixels, built by stage 2, whose
@@ -65,8 +68,9 @@ struct RenderScene {
 SceneCamera make_scene_camera(const Scene& scene);
 
 /// Builds the camera with stage 2 (whose errors and stubs propagate), gathers the primitives into
-/// the world's list and the instances (composing their transforms with stage 5), and builds the
-/// BVHs with stage 4, where there are enough primitives or instances to gain from one.
+/// the world's list and the instances (composing their transforms with stage 5), builds the
+/// BVHs with stage 4, where there are enough primitives or instances to gain from one, and reads
+/// the materials' images. Throws InputError naming the scene line of an image it cannot read.
 RenderScene prepare_render_scene(const Scene& scene);
 
 /// The nearest hit of the ray in the scene, as stage 3's closest_hit over every primitive, each in

@@ -11,6 +11,7 @@
 #include "renderer/local_model.h"
 #include "renderer/polygon_irradiance.h"
 #include "renderer/spot_light.h"
+#include "renderer/surface_maps.h"
 #include "renderer/surface_point.h"
 #include "stages/8_sampling/sampling.h"
 
@@ -109,8 +110,9 @@ Color quad_lights_shading(const RenderScene& render_scene, const Material& mater
 ShadedHit shade_hit(const RenderScene& render_scene, const Ray& ray, const PrimitiveHit& hit,
                     RandomStream* light_random, PixelObserver& observer) {
     const Scene& scene = *render_scene.scene;
-    const Material& material = material_of(render_scene, hit);
-    const SurfacePoint point = surface_point(render_scene, ray, hit);
+    SurfacePoint point = surface_point(render_scene, ray, hit);
+    const Material material =
+        mapped_material(render_scene, ray, hit, material_of(render_scene, hit), point);
     observer.surface(point, material);
 
     std::vector<LightSample> reaching;

@@ -147,6 +147,11 @@ int run_info(const InfoArguments& arguments) {
         row("normals", counted(f.smooth_triangles, "triangle", "triangles") +
                            " shaded smooth by their vertex normals (stage 11)");
     }
+    if (f.mapped_objects > 0) {
+        row("maps", counted(f.mapped_objects, "object", "objects") +
+                        " with a texture, normal map " + "or bump map, over " +
+                        counted(scene.textures.size(), "image", "images") + " (stage 11)");
+    }
     row("transforms", f.uses_transforms()
                           ? counted(f.transformed_objects, "object", "objects") + " under " +
                                 counted(f.transforms, "transform", "transforms")

@@ -9,7 +9,7 @@
 
 namespace raystep {
 
-/// A face corner that names no vertex normal.
+/// A face corner that names no vertex normal (or texture coordinates).
 inline constexpr std::uint32_t kNoNormal = 0xffffffffu;
 
 /// An indexed triangle mesh as read from a file; polygons are split into triangle fans
@@ -23,6 +23,10 @@ struct TriangleMesh {
     /// Each face's corners' indices into `normals`, one entry per face, or empty where the file
     /// has no normals. A face whose corners do not all name one has kNoNormal in each.
     std::vector<std::array<std::uint32_t, 3>> face_normals;
+    /// The file's texture coordinates (OBJ's `vt`), and each face's corners' indices into them,
+    /// as `normals` and `face_normals` are: kNoNormal where a corner names none.
+    std::vector<Vec2> uvs;
+    std::vector<std::array<std::uint32_t, 3>> face_uvs;
 };
 
 /// Reads an OBJ or OFF file, chosen by its extension. Throws InputError naming the mesh file

@@ -69,6 +69,7 @@ void check_obj_lines(const std::filesystem::path& path) {
     if (!in) throw InputError(name, 0, "cannot open the mesh file");
 
     IndexedElements vertices{"vertex", "vertices"};
+    IndexedElements uvs{"texture coordinate", "texture coordinates"};
     IndexedElements normals{"vertex normal", "vertex normals"};
     std::string text;
     std::vector<std::string_view> fields;
@@ -79,6 +80,16 @@ void check_obj_lines(const std::filesystem::path& path) {
         if (fields[0] == "v") {
             read_triple(fields, "vertex", where);
             ++vertices.defined;
+        } else if (fields[0] == "vt") {
+            if (fields.size() < 3) {
+                throw InputError(name, line,
+                                 "texture coordinates need u and v, this line has " +
+                                     std::to_string(fields.size() - 1) + " numbers");
+            }
+            for (std::size_t k = 1; k < fields.size(); ++k) {
+                parse_finite_number(fields[k], where, "a texture coordinate");
+            }
+            ++uvs.defined;
         } else if (fields[0] == "vn") {
             if (read_triple(fields, "vertex normal", where) == Vec3(0.0)) {
                 throw InputError(name, line, "a vertex normal is zero: it has no direction");
@@ -95,16 +106,17 @@ void check_obj_lines(const std::filesystem::path& path) {
                 const std::string_view corner = fields[k];
                 const std::size_t slash = corner.find('/');
                 check_corner_index(corner.substr(0, slash), corner, vertices, where);
-                const std::size_t second = slash == std::string_view::npos
-                                               ? std::string_view::npos
-                                               : corner.find('/', slash + 1);
+                if (slash == std::string_view::npos) continue;
+                const std::size_t second = corner.find('/', slash + 1);
+                const std::string_view uv = corner.substr(slash + 1, second - slash - 1);
+                if (!uv.empty()) check_corner_index(uv, corner, uvs, where);
                 if (second != std::string_view::npos) {
                     check_corner_index(corner.substr(second + 1), corner, normals, where);
                 }
             }
         }
     }
-    for (const IndexedElements* elements : {&vertices, &normals}) {
+    for (const IndexedElements* elements : {&vertices, &uvs, &normals}) {
         if (elements->largest_index > elements->defined) {
             throw InputError(
                 name, elements->largest_index_line,
@@ -112,6 +124,21 @@ void check_obj_lines(const std::filesystem::path& path) {
                     " is out of range: the file has " + std::to_string(elements->defined) + " " +
                     elements->plural + ", counted from 1");
         }
+    }
+}
+
+// The fan of a polygon's corner indices (normals, uvs), as its positions fan: the same corners in
+// the same order; all kNoNormal for a polygon with a corner that has none (tinyobjloader's -1,
+// which the cast made kNoNormal).
+void append_corner_fan(std::vector<std::array<std::uint32_t, 3>>& fans,
+                       const std::vector<std::uint32_t>& corners) {
+    bool every_corner = true;
+    for (const std::uint32_t corner : corners)
+        every_corner = every_corner && corner != kNoNormal;
+    for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
+        fans.push_back(every_corner
+                           ? std::array<std::uint32_t, 3>{corners[0], corners[k], corners[k + 1]}
+                           : std::array<std::uint32_t, 3>{kNoNormal, kNoNormal, kNoNormal});
     }
 }
 
@@ -141,31 +168,29 @@ TriangleMesh load_obj_mesh(const std::filesystem::path& path) {
         mesh.normals.push_back({normals[k], normals[k + 1], normals[k + 2]});
     }
 
+    const std::vector<tinyobj::real_t>& uvs = reader.GetAttrib().texcoords;
+    for (std::size_t k = 0; k + 1 < uvs.size(); k += 2) {
+        mesh.uvs.push_back({uvs[k], uvs[k + 1]});
+    }
+
     std::vector<std::uint32_t> polygon;
     std::vector<std::uint32_t> polygon_normals;
+    std::vector<std::uint32_t> polygon_uvs;
     for (const tinyobj::shape_t& shape : reader.GetShapes()) {
         std::size_t first = 0;
         for (const unsigned int corners : shape.mesh.num_face_vertices) {
             polygon.clear();
             polygon_normals.clear();
-            bool every_corner_has_a_normal = true;
+            polygon_uvs.clear();
             for (std::size_t c = 0; c < corners; ++c) {
                 const tinyobj::index_t& corner = shape.mesh.indices[first + c];
                 polygon.push_back(static_cast<std::uint32_t>(corner.vertex_index));
                 polygon_normals.push_back(static_cast<std::uint32_t>(corner.normal_index));
-                every_corner_has_a_normal = every_corner_has_a_normal && corner.normal_index >= 0;
+                polygon_uvs.push_back(static_cast<std::uint32_t>(corner.texcoord_index));
             }
             append_triangle_fan(mesh, polygon);
-            if (!mesh.normals.empty()) {
-                // The normals' fan is the positions': the same corners in the same order.
-                for (std::size_t k = 1; k + 1 < polygon_normals.size(); ++k) {
-                    mesh.face_normals.push_back(
-                        every_corner_has_a_normal
-                            ? std::array<std::uint32_t, 3>{polygon_normals[0], polygon_normals[k],
-                                                           polygon_normals[k + 1]}
-                            : std::array<std::uint32_t, 3>{kNoNormal, kNoNormal, kNoNormal});
-                }
-            }
+            if (!mesh.normals.empty()) append_corner_fan(mesh.face_normals, polygon_normals);
+            if (!mesh.uvs.empty()) append_corner_fan(mesh.face_uvs, polygon_uvs);
             first += corners;
         }
     }

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "base/image/wrap_mode.h"
 #include "base/math/types.h"
 #include "base/scene/ray_offset.h"
 #include "base/scene/sample_pattern.h"
@@ -33,13 +34,33 @@ struct Material {
     double index = 1.0;                 ///< `ior`: index of refraction of the solid inside
     BrdfModel brdf = BrdfModel::phong;  ///< `brdf`
     double roughness = 0.0;             ///< `roughness`: GGX's alpha
+    /// Images looked up at a hit's (u, v) (docs/stage11.md), indexes into Scene::textures, -1 for
+    /// none: the diffuse colour is Kd times `diffuse_map`'s (`texture`); `normal_map`
+    /// (`normalmap`) or `bump_map` (`bumpmap`, its heights times `bump_scale`) tilts the normal
+    /// that shades.
+    std::int32_t diffuse_map = -1;
+    std::int32_t normal_map = -1;
+    std::int32_t bump_map = -1;
+    double bump_scale = 0.0;
+
+    bool has_maps() const { return diffuse_map >= 0 || normal_map >= 0 || bump_map >= 0; }
 
     bool operator==(const Material& other) const {
         return ambient == other.ambient && diffuse == other.diffuse && specular == other.specular &&
                emission == other.emission && shininess == other.shininess &&
                transmission == other.transmission && index == other.index && brdf == other.brdf &&
-               roughness == other.roughness;
+               roughness == other.roughness && diffuse_map == other.diffuse_map &&
+               normal_map == other.normal_map && bump_map == other.bump_map &&
+               bump_scale == other.bump_scale;
     }
+};
+
+/// An image file that materials look up (`texture`, `normalmap`, `bumpmap`): read by the
+/// renderer, not by the loader, which only checks that the file is there.
+struct SceneTexture {
+    std::string path;  ///< as resolved against the scene file's folder
+    WrapMode wrap = WrapMode::repeat;
+    std::uint32_t line = 0;  ///< the first line that named it
 };
 
 /// One command of the transform stack, kept as written so that stage 5 can build the matrix.
@@ -74,13 +95,16 @@ struct SceneSphere {
     ObjectAttributes attributes;
 };
 
-/// A triangle from `tri`, `trinormal` or a mesh. `vertex_normals` indexes
-/// Scene::vertex_normals for `trinormal` triangles (smooth shading) and is -1 otherwise;
-/// `mesh` indexes Scene::meshes for mesh triangles and is -1 otherwise.
+/// A triangle from `tri`, `trinormal`, `triuv` or a mesh. `vertex_normals` indexes
+/// Scene::vertex_normals for smooth triangles (`trinormal`, a mesh's normals) and is -1
+/// otherwise; `vertex_uvs` indexes Scene::vertex_uvs for triangles with texture coordinates
+/// (`triuv`, a mesh's `vt`) and is -1 otherwise, where (u, v) is the hit's (beta, gamma); `mesh`
+/// indexes Scene::meshes for mesh triangles and is -1 otherwise.
 struct SceneTriangle {
     Triangle shape;
     ObjectAttributes attributes;
     std::int32_t vertex_normals = -1;
+    std::int32_t vertex_uvs = -1;
     std::int32_t mesh = -1;
 };
 
@@ -94,6 +118,13 @@ struct VertexNormals {
     Vec3 n0;
     Vec3 n1;
     Vec3 n2;
+};
+
+/// Per-vertex texture coordinates of a triangle (`triuv`, or a mesh's `vt`).
+struct VertexUvs {
+    Vec2 uv0;
+    Vec2 uv1;
+    Vec2 uv2;
 };
 
 /// A mesh file loaded by `mesh FILE`; its triangles are in Scene::triangles.
@@ -256,6 +287,8 @@ struct Scene {
     std::vector<ScenePlane> planes;
     std::vector<SceneMesh> meshes;
     std::vector<VertexNormals> vertex_normals;
+    std::vector<VertexUvs> vertex_uvs;
+    std::vector<SceneTexture> textures;
     std::vector<MeshDefinition> mesh_definitions;
     std::vector<MeshInstance> mesh_instances;
 

@@ -40,6 +40,17 @@ SceneFeatures scene_features(const Scene& scene) {
     for (const SceneTriangle& triangle : scene.triangles) {
         if (triangle.vertex_normals >= 0) ++features.smooth_triangles;
     }
+    const auto mapped = [&](const ObjectAttributes& attributes) {
+        return scene.materials[attributes.material].has_maps() ? 1 : 0;
+    };
+    for (const SceneSphere& sphere : scene.spheres)
+        features.mapped_objects += mapped(sphere.attributes);
+    for (const SceneTriangle& triangle : scene.triangles)
+        features.mapped_objects += mapped(triangle.attributes);
+    for (const ScenePlane& plane : scene.planes)
+        features.mapped_objects += mapped(plane.attributes);
+    for (const MeshInstance& instance : scene.mesh_instances)
+        features.mapped_objects += mapped(instance.attributes);
     features.planes = scene.planes.size();
     features.point_lights = scene.point_lights.size();
     features.directional_lights = scene.directional_lights.size();

@@ -15,6 +15,9 @@ struct SceneFeatures {
     /// Triangles with vertex normals (`trinormal`, a mesh's `vn` or `mesh FILE smooth`), shaded
     /// by stage 11's interpolation.
     std::size_t smooth_triangles = 0;
+    /// Objects whose material looks up an image (`texture`, `normalmap`, `bumpmap`): stage 11's
+    /// lookups; a mesh instance counts once.
+    std::size_t mapped_objects = 0;
     std::size_t meshes = 0;
     std::size_t planes = 0;
     std::size_t transforms = 0;             ///< distinct non-identity transforms in use
@@ -48,6 +51,7 @@ struct SceneFeatures {
     bool uses_sampling() const { return samples_per_pixel > 1 || quad_lights > 0; }
     bool uses_refraction() const { return transmissive_objects > 0; }
     bool uses_smooth_normals() const { return smooth_triangles > 0; }
+    bool uses_surface_detail() const { return smooth_triangles + mapped_objects > 0; }
 };
 
 SceneFeatures scene_features(const Scene& scene);

@@ -221,6 +221,11 @@ void SceneParser::mesh() {
             triangle.vertex_normals = static_cast<std::int32_t>(scene_.vertex_normals.size());
             scene_.vertex_normals.push_back(*normals);
         }
+        if (!loaded.face_uvs.empty() && loaded.face_uvs[k][0] != kNoNormal) {
+            const auto& uv = loaded.face_uvs[k];
+            triangle.vertex_uvs = static_cast<std::int32_t>(scene_.vertex_uvs.size());
+            scene_.vertex_uvs.push_back({loaded.uvs[uv[0]], loaded.uvs[uv[1]], loaded.uvs[uv[2]]});
+        }
         scene_.triangles.push_back(triangle);
     }
 }

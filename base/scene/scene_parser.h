@@ -180,6 +180,15 @@ class SceneParser {
     void emission();
     void shininess();
 
+    // Surface detail (stage 11)
+    std::int32_t texture_file(std::size_t k, std::size_t wrap_field);
+    void set_map(std::int32_t Material::*map);
+    void texture();
+    void normalmap();
+    void bumpmap();
+    void vertexuv();
+    void triuv();
+
     // Dielectrics (stage 9)
     void transmission();
     void ior();
@@ -225,6 +234,7 @@ class SceneParser {
     long max_normal_vertices_ = -1;
     std::vector<Vec3> vertices_;
     std::vector<std::pair<Vec3, Vec3>> normal_vertices_;
+    std::vector<std::pair<Vec3, Vec2>> uv_vertices_;
 };
 
 }  // namespace raystep::scene_parsing

@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "base/image/image.h"
+#include "base/image/wrap_mode.h"
 #include "base/math/types.h"
 
 namespace raystep {
@@ -72,11 +73,8 @@ std::optional<TangentFrame> tangent_frame(const SurfaceDerivatives& derivatives,
 
 // --- Texture lookup (texture.cpp) -------------------------------------------------------------
 
-/// What a lookup beyond the image's edge reads: the image repeated, the edge texel, or the image
-/// repeated and mirrored at every edge.
-enum class WrapMode { repeat, clamp, mirror };
-
-/// The texel that index i, any integer, reads in a row or column of `size` texels (size >= 1):
+/// The texel that index i, any integer, reads in a row or column of `size` texels (size >= 1),
+/// by the WrapMode (base/image/wrap_mode.h):
 /// - repeat: i mod size, in [0, size) for negative i too;
 /// - clamp: i limited to [0, size - 1];
 /// - mirror: 0, 1, ..., size - 1, then size - 1, ..., 1, 0, and so on both ways, period 2 size.

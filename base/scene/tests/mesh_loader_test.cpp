@@ -109,6 +109,18 @@ TEST_CASE("load_mesh: OBJ vertex normals, fanned with their face, as written", "
     CHECK(mesh.face_normals[2] == std::array<std::uint32_t, 3>{kNoNormal, kNoNormal, kNoNormal});
 }
 
+TEST_CASE("load_mesh: OBJ texture coordinates, fanned with their face", "[base]") {
+    const TriangleMesh mesh = load_mesh(kMeshes / "uvs.obj");
+    REQUIRE(mesh.uvs.size() == 4);
+    CHECK(mesh.uvs[2] == Vec2(1, 1));
+    REQUIRE(mesh.face_uvs.size() == 2);
+    CHECK(mesh.face_uvs[1] == std::array<std::uint32_t, 3>{0, 2, 3});
+    CHECK(mesh.face_normals[1] == std::array<std::uint32_t, 3>{0, 0, 0});
+    CHECK_THAT(error_of(kMeshes / "bad_uv_index.obj"),
+               Catch::Matchers::Contains("bad_uv_index.obj:5: texture coordinate index 2 is out "
+                                         "of range: the file has 1 texture coordinates"));
+}
+
 TEST_CASE("load_mesh: a file without normals has none", "[base]") {
     const TriangleMesh mesh = load_mesh(kMeshes / "square.obj");
     CHECK(mesh.normals.empty());

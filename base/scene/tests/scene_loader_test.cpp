@@ -301,6 +301,47 @@ TEST_CASE("parse_scene: a defined mesh's vertex normals are noted as unused by i
     CHECK_THAT(scene.notes[0].text, Catch::Matchers::Contains("shade faceted"));
 }
 
+TEST_CASE("parse_scene: texture, normalmap and bumpmap set the maps of the objects after them",
+          "[base]") {
+    // Any regular file will do: the loader checks that it is there, the renderer reads it.
+    const Scene scene = parse(kCamera +
+                              "texture meshes/square.obj\nsphere 0 0 0 1\n"
+                              "texture meshes/square.obj clamp\nbumpmap meshes/square.off 0.5\n"
+                              "sphere 2 0 0 1\n"
+                              "texture off\nnormalmap meshes/square.off mirror\nsphere 4 0 0 1\n"
+                              "normalmap off\nsphere 6 0 0 1\n");
+    REQUIRE(scene.textures.size() == 4);
+    CHECK(scene.textures[0].wrap == WrapMode::repeat);
+    CHECK(scene.textures[1].wrap == WrapMode::clamp);  // one file, two wrap modes: two textures
+    CHECK(scene.textures[1].line == 4);
+    const auto material = [&](std::size_t k) {
+        return scene.materials[scene.spheres[k].attributes.material];
+    };
+    CHECK(material(0).diffuse_map == 0);
+    CHECK(material(1).diffuse_map == 1);
+    CHECK(material(1).bump_map == 2);
+    CHECK(material(1).bump_scale == 0.5);
+    CHECK(material(2).diffuse_map == -1);
+    CHECK(material(2).normal_map == 3);
+    CHECK(material(2).bump_map == -1);  // a normal map replaces the bump map
+    CHECK_FALSE(material(3).has_maps());
+}
+
+TEST_CASE("parse_scene: triuv keeps the vertices' texture coordinates, as a mesh's vt do",
+          "[base]") {
+    const Scene scene = parse(kCamera +
+                              "vertexuv 0 0 0 0 0\nvertexuv 1 0 0 2 0\nvertexuv 0 1 0 0 3\n"
+                              "triuv 0 1 2\nmesh meshes/uvs.obj\n");
+    REQUIRE(scene.triangles.size() == 3);
+    REQUIRE(scene.triangles[0].vertex_uvs >= 0);
+    const VertexUvs& uvs =
+        scene.vertex_uvs[static_cast<std::size_t>(scene.triangles[0].vertex_uvs)];
+    CHECK(uvs.uv1 == Vec2(2, 0));
+    CHECK(uvs.uv2 == Vec2(0, 3));
+    CHECK(scene.triangles[1].vertex_uvs >= 0);
+    CHECK(scene.triangles[1].vertex_normals >= 0);
+}
+
 TEST_CASE("parse_scene: a mesh between vertex commands does not shift tri indices", "[base]") {
     const Scene scene = parse(kCamera +
                               "vertex 5 0 0\nmesh meshes/square.obj\nvertex 6 0 0\n"
