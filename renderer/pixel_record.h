@@ -55,8 +55,8 @@ class PixelRecorder final : public PixelObserver {
 };
 
 /// How far a view takes a pixel through the pipeline, and so which parts of a record it fills:
-/// rays stops at the camera ray; depth, normal, barycentric and cost at the closest hit; shaded
-/// adds the lights and the local colour; full the finished colour.
+/// rays stops at the camera ray; depth, normal, barycentric, cost, uv and tangent at the closest
+/// hit; shaded adds the lights and the local colour; full the finished colour.
 enum class PipelineReach { camera_ray, closest_hit, shading, full_colour };
 
 /// The reach of a view.

@@ -11,6 +11,8 @@
 #include "renderer/sample_streams.h"
 #include "renderer/seen_quad_light.h"
 #include "renderer/shade_hit.h"
+#include "renderer/surface_maps.h"
+#include "renderer/surface_point.h"
 #include "stages/8_sampling/sampling.h"
 
 namespace raystep {
@@ -59,6 +61,21 @@ Color camera_ray_colour(const RenderScene& render_scene, View view, const Ray& r
             if (closest->kind != PrimitiveKind::triangle) return Color(0.25);
             return {1.0 - closest->hit.beta - closest->hit.gamma, closest->hit.beta,
                     closest->hit.gamma};
+        case View::uv: {
+            if (!closest) return Color(0.0);
+            const Vec2 uv = surface_uv(render_scene, ray, *closest).uv;
+            return {uv.x - std::floor(uv.x), uv.y - std::floor(uv.y), 0.0};
+        }
+        case View::tangent: {
+            if (!closest) return Color(0.0);
+            const std::optional<SurfaceDerivatives> derivatives =
+                surface_uv(render_scene, ray, *closest).derivatives;
+            if (!derivatives) return Color(0.0);
+            const SurfacePoint point = surface_point(render_scene, ray, *closest);
+            const std::optional<TangentFrame> frame =
+                tangent_frame(*derivatives, point.shading_normal);
+            return frame ? direction_color(frame->tangent) : Color(0.0);
+        }
         case View::shaded:
             if (!closest) return render_scene.scene->background;
             return shade_hit(render_scene, ray, *closest, light_random, observer).local;

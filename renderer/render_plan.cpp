@@ -22,6 +22,10 @@ std::vector<int> stages_for_view(const SceneFeatures& features, View view) {
     stages.push_back(3);
     if (uses_bvh(features) || uses_instance_bvh(features)) stages.push_back(4);
     if (features.uses_transforms()) stages.push_back(5);
+    if (view == View::uv || view == View::tangent) {
+        stages.push_back(11);
+        return stages;
+    }
     if (view != View::shaded && view != View::full && view != View::indirect) return stages;
     stages.push_back(6);
     // A path-traced full or indirect view: stage 10's paths (over stage 6's spawn_ray), stage 8

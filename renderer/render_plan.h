@@ -38,7 +38,8 @@ bool uses_instance_bvh(const SceneFeatures& features);
 /// view of a scene where something transmits and maxdepth allows a bounce. The full view of a
 /// path-traced scene (`integrator pathtracer`) runs stage 10 instead of 7 and 9, and stage 8
 /// only for more than one sample per pixel. Surface detail (stage 11) in the views that shade, of
-/// a scene with a triangle that has vertex normals or an object whose material has a map.
+/// a scene with a triangle that has vertex normals or an object whose material has a map, and
+/// in the uv and tangent views, which show its coordinates and frames.
 std::vector<int> stages_for_view(const SceneFeatures& features, View view);
 
 }  // namespace raystep

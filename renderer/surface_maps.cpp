@@ -14,12 +14,6 @@ namespace raystep {
 
 namespace {
 
-// Where a hit lies in a material's images, and how the surface moves with (u, v).
-struct SurfaceUv {
-    Vec2 uv;
-    std::optional<SurfaceDerivatives> derivatives;
-};
-
 // The texture coordinates a triangle without its own take: (0, 0), (1, 0), (0, 1) at its
 // vertices, so that (u, v) is the hit's (beta, gamma).
 constexpr VertexUvs kBarycentricUvs{{0, 0}, {1, 0}, {0, 1}};
@@ -68,6 +62,26 @@ Vec3 vector_to_world(const Transform& transform, const Vec3& v) {
     return Vec3(transform.matrix * Vec4(v, 0.0));
 }
 
+// The shading normal a normal map or a bump map gives, or nullopt where the surface has no
+// tangent frame there.
+std::optional<Vec3> mapped_normal(const RenderScene& render_scene, const Material& material,
+                                  const SurfaceUv& at, const Vec3& normal) {
+    if (!at.derivatives) return std::nullopt;
+    if (material.normal_map >= 0) {
+        const std::optional<TangentFrame> frame = tangent_frame(*at.derivatives, normal);
+        if (!frame) return std::nullopt;
+        const SceneTexture& map = render_scene.scene->textures[material.normal_map];
+        return normal_from_map(
+            *frame, texture_bilinear(render_scene.textures[material.normal_map], at.uv, map.wrap));
+    }
+    const SceneTexture& map = render_scene.scene->textures[material.bump_map];
+    const Vec2 slopes = height_slopes(render_scene.textures[material.bump_map], at.uv, map.wrap,
+                                      material.bump_scale);
+    return bump_normal(*at.derivatives, normal, slopes);
+}
+
+}  // namespace
+
 SurfaceUv surface_uv(const RenderScene& render_scene, const Ray& ray, const PrimitiveHit& hit) {
     const Instance* instance = instance_of(render_scene, hit.kind, hit.index);
     const bool placed = instance && instance->transform;
@@ -92,26 +106,6 @@ SurfaceUv surface_uv(const RenderScene& render_scene, const Ray& ray, const Prim
     }
     return found;
 }
-
-// The shading normal a normal map or a bump map gives, or nullopt where the surface has no
-// tangent frame there.
-std::optional<Vec3> mapped_normal(const RenderScene& render_scene, const Material& material,
-                                  const SurfaceUv& at, const Vec3& normal) {
-    if (!at.derivatives) return std::nullopt;
-    if (material.normal_map >= 0) {
-        const std::optional<TangentFrame> frame = tangent_frame(*at.derivatives, normal);
-        if (!frame) return std::nullopt;
-        const SceneTexture& map = render_scene.scene->textures[material.normal_map];
-        return normal_from_map(
-            *frame, texture_bilinear(render_scene.textures[material.normal_map], at.uv, map.wrap));
-    }
-    const SceneTexture& map = render_scene.scene->textures[material.bump_map];
-    const Vec2 slopes = height_slopes(render_scene.textures[material.bump_map], at.uv, map.wrap,
-                                      material.bump_scale);
-    return bump_normal(*at.derivatives, normal, slopes);
-}
-
-}  // namespace
 
 Material mapped_material(const RenderScene& render_scene, const Ray& ray, const PrimitiveHit& hit,
                          const Material& material, SurfacePoint& point) {

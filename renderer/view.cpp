@@ -7,12 +7,14 @@ namespace raystep {
 
 namespace {
 
-constexpr std::array<std::pair<View, std::string_view>, 8> kViews = {{
+constexpr std::array<std::pair<View, std::string_view>, 10> kViews = {{
     {View::rays, "rays"},
     {View::depth, "depth"},
     {View::normal, "normal"},
     {View::barycentric, "barycentric"},
     {View::cost, "cost"},
+    {View::uv, "uv"},
+    {View::tangent, "tangent"},
     {View::shaded, "shaded"},
     {View::full, "full"},
     {View::indirect, "indirect"},

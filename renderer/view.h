@@ -18,6 +18,8 @@ enum class View {
     normal,       ///< stage 3: the geometric normal at the nearest hit as a colour, 0.5 (n + 1)
     barycentric,  ///< stage 3: (1 - beta - gamma, beta, gamma) on triangles, grey elsewhere
     cost,         ///< stage 4: BVH nodes visited plus primitives tested, as a heat map
+    uv,           ///< stage 11: the hit's texture coordinates as (u, v, 0), each less its floor
+    tangent,      ///< stage 11: the tangent frame's tangent as 0.5 (t + 1); black without one
     shaded,  ///< stage 6: the local model with shadows, no reflection; quad lights' soft shadows
              ///< (stage 8); misses show the background
     full,    ///< the finished image: stage 6, stage 7's reflections where the scene has mirrors,

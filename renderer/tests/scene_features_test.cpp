@@ -87,6 +87,9 @@ TEST_CASE("stages_for_view: smooth triangles add stage 11 to the views that shad
     CHECK(stages_for_view(smooth, View::shaded) == std::vector<int>{1, 2, 3, 6, 11});
     CHECK(stages_for_view(smooth, View::full) == std::vector<int>{1, 2, 3, 6, 11});
     CHECK(stages_for_view(smooth, View::normal) == std::vector<int>{1, 2, 3});
+    const SceneFeatures plain = scene_features(parse("sphere 0 0 0 1\n"));
+    CHECK(stages_for_view(plain, View::uv) == std::vector<int>{1, 2, 3, 11});
+    CHECK(stages_for_view(plain, View::tangent) == std::vector<int>{1, 2, 3, 11});
 }
 
 TEST_CASE("uses_bvh: spheres under a transform stay out of the BVH", "[app]") {

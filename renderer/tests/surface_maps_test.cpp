@@ -11,6 +11,7 @@
 #include "base/testing/catch.h"
 #include "base/testing/filled_image.h"
 #include "base/testing/scratch_folder.h"
+#include "renderer/render_pixel.h"
 #include "renderer/surface_point.h"
 #include "stages/11_surface_detail/surface_detail.h"
 
@@ -107,6 +108,21 @@ TEST_CASE("mapped_material: a bump map's slope tips the normal against it, on th
     const MappedHit mapped = mapped_at(scene, 0.5, 0.5);
     CHECK(glm::length(mapped.point.shading_normal - glm::normalize(Vec3(-0.25, 0, 1))) < 1e-6);
     CHECK(mapped.point.normal == Vec3(0, 0, 1));  // the geometry's normal is not mapped
+}
+
+TEST_CASE("uv and tangent views: the hit's (u, v) less its floor, and the tangent as a colour",
+          "[renderer]") {
+    // One pixel, its ray straight down -z onto (0.8, 0.3) of a square whose texture coordinates
+    // run to 2 along x: u = 1.6 shows as 0.6.
+    const Scene scene = parse_scene(
+        "size 1 1\ncamera 0.8 0.3 5 0.8 0.3 0 0 1 0 10\nvertexuv 0 0 0 0 0\nvertexuv 1 0 0 2 0\n"
+        "vertexuv 1 1 0 2 1\nvertexuv 0 1 0 0 1\ntriuv 0 1 2\ntriuv 0 2 3\n",
+        "views.test", ".");
+    const RenderScene render_scene = prepare_render_scene(scene);
+    CHECK(glm::length(render_pixel(render_scene, View::uv, 0, 0) - Color(0.6, 0.3, 0)) < 1e-9);
+    // u grows along +x: the tangent (1, 0, 0) shows as (1, 0.5, 0.5).
+    CHECK(glm::length(render_pixel(render_scene, View::tangent, 0, 0) - Color(1, 0.5, 0.5)) <
+          1e-12);
 }
 
 TEST_CASE("prepare_render_scene: an image it cannot read names the scene line", "[renderer]") {
