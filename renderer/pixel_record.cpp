@@ -19,7 +19,7 @@ void PixelRecorder::closest_hit(const Ray& /*ray*/, const std::optional<Primitiv
 void PixelRecorder::surface(const SurfacePoint& point, const Material& material) {
     if (record_.local) return;
     point_ = point;
-    material_ = &material;
+    material_ = material;
 }
 
 // Point and directional lights only: the lights a reference trace stores.

@@ -51,7 +51,7 @@ class PixelRecorder final : public PixelObserver {
     PixelRecord& record_;
     SceneDialect dialect_;
     std::optional<SurfacePoint> point_;  ///< the eye ray's hit being shaded
-    const Material* material_ = nullptr;
+    std::optional<Material> material_;   ///< a copy: shading may hand in a mapped one
 };
 
 /// How far a view takes a pixel through the pipeline, and so which parts of a record it fills:

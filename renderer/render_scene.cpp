@@ -185,8 +185,16 @@ RenderScene prepare_render_scene(const Scene& scene) {
             throw InputError(scene.path, static_cast<int>(texture.line),
                              std::string("cannot read the image: ") + error.what());
         }
-        if (render_scene.textures.back().width() == 0 || render_scene.textures.back().height() == 0)
-            throw InputError(scene.path, static_cast<int>(texture.line), "the image is empty");
+        // Stage 11's lookups take images of at most a million texels a side, so that their
+        // indices fit an int.
+        const Image& image = render_scene.textures.back();
+        if (image.width() == 0 || image.height() == 0 || image.width() > 1000000 ||
+            image.height() > 1000000) {
+            throw InputError(scene.path, static_cast<int>(texture.line),
+                             "the image is " + std::to_string(image.width()) + " x " +
+                                 std::to_string(image.height()) +
+                                 ": a texture has 1 to 1,000,000 texels a side");
+        }
     }
     render_scene.camera = make_scene_camera(scene);
     InstanceGatherer(scene, render_scene).gather();

@@ -1,9 +1,12 @@
 #include "renderer/surface_maps.h"
 
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/constants.hpp>
 
@@ -16,7 +19,7 @@ namespace {
 
 // The texture coordinates a triangle without its own take: (0, 0), (1, 0), (0, 1) at its
 // vertices, so that (u, v) is the hit's (beta, gamma).
-constexpr VertexUvs kBarycentricUvs{{0, 0}, {1, 0}, {0, 1}};
+const VertexUvs kBarycentricUvs{{0, 0}, {1, 0}, {0, 1}};
 
 SurfaceUv uv_on_triangle(const RenderScene& render_scene, const PrimitiveHit& hit) {
     const Scene& scene = *render_scene.scene;
@@ -62,22 +65,49 @@ Vec3 vector_to_world(const Transform& transform, const Vec3& v) {
     return Vec3(transform.matrix * Vec4(v, 0.0));
 }
 
-// The shading normal a normal map or a bump map gives, or nullopt where the surface has no
-// tangent frame there.
+// The same lookups as at uv, with uv moved by whole periods of the wrap mode (one image for
+// repeat, two for mirror) or held near the image for clamp: a plane's (u, v) grows with the
+// distance to its point, and stage 11's contract asks for |u|, |v| <= 1000, so that its texel
+// indices fit an int.
+Vec2 reduced_uv(const Vec2& uv, WrapMode wrap) {
+    switch (wrap) {
+        case WrapMode::repeat:
+            return uv - glm::floor(uv);
+        case WrapMode::mirror:
+            return uv - 2.0 * glm::floor(0.5 * uv);
+        case WrapMode::clamp:
+            return glm::clamp(uv, Vec2(-1.0), Vec2(2.0));
+    }
+    return uv;
+}
+
+Color lookup(const RenderScene& render_scene, std::int32_t map, const Vec2& uv) {
+    const auto k = static_cast<std::size_t>(map);
+    const WrapMode wrap = render_scene.scene->textures[k].wrap;
+    return texture_bilinear(render_scene.textures[k], reduced_uv(uv, wrap), wrap);
+}
+
+// The normal a normal map or a bump map gives the surface whose own (unflipped) normal is
+// `normal`, or nullopt where the surface has no tangent frame there.
 std::optional<Vec3> mapped_normal(const RenderScene& render_scene, const Material& material,
                                   const SurfaceUv& at, const Vec3& normal) {
     if (!at.derivatives) return std::nullopt;
     if (material.normal_map >= 0) {
         const std::optional<TangentFrame> frame = tangent_frame(*at.derivatives, normal);
         if (!frame) return std::nullopt;
-        const SceneTexture& map = render_scene.scene->textures[material.normal_map];
-        return normal_from_map(
-            *frame, texture_bilinear(render_scene.textures[material.normal_map], at.uv, map.wrap));
+        return normal_from_map(*frame, lookup(render_scene, material.normal_map, at.uv));
     }
-    const SceneTexture& map = render_scene.scene->textures[material.bump_map];
-    const Vec2 slopes = height_slopes(render_scene.textures[material.bump_map], at.uv, map.wrap,
-                                      material.bump_scale);
-    return bump_normal(*at.derivatives, normal, slopes);
+    const auto k = static_cast<std::size_t>(material.bump_map);
+    const WrapMode wrap = render_scene.scene->textures[k].wrap;
+    const Vec2 slopes =
+        height_slopes(render_scene.textures[k], reduced_uv(at.uv, wrap), wrap, material.bump_scale);
+    // dp/du and dp/dv across the normal that shades: a smooth triangle's interpolated normal is
+    // not the flat dp/du x dp/dv, and the bumped normal of a flat height map must be it.
+    const Vec3& dpdu = at.derivatives->dpdu;
+    const Vec3& dpdv = at.derivatives->dpdv;
+    const SurfaceDerivatives across{dpdu - glm::dot(normal, dpdu) * normal,
+                                    dpdv - glm::dot(normal, dpdv) * normal};
+    return bump_normal(across, normal, slopes);
 }
 
 }  // namespace
@@ -112,15 +142,15 @@ Material mapped_material(const RenderScene& render_scene, const Ray& ray, const 
     if (!material.has_maps()) return material;
     const SurfaceUv at = surface_uv(render_scene, ray, hit);
     Material mapped = material;
-    if (material.diffuse_map >= 0) {
-        const SceneTexture& texture = render_scene.scene->textures[material.diffuse_map];
-        mapped.diffuse *=
-            texture_bilinear(render_scene.textures[material.diffuse_map], at.uv, texture.wrap);
-    }
+    if (material.diffuse_map >= 0)
+        mapped.diffuse *= lookup(render_scene, material.diffuse_map, at.uv);
     if (material.normal_map >= 0 || material.bump_map >= 0) {
+        // Mapped from the surface's own side, so that its back shows the same dents, not bumps;
+        // then turned to the eye, as the point's normals are.
+        const Vec3 own = glm::dot(point.normal, hit.hit.normal) < 0.0 ? -point.shading_normal
+                                                                      : point.shading_normal;
         try {
-            if (const std::optional<Vec3> tilted =
-                    mapped_normal(render_scene, material, at, point.shading_normal)) {
+            if (const std::optional<Vec3> tilted = mapped_normal(render_scene, material, at, own)) {
                 point.shading_normal = glm::dot(*tilted, point.normal) < 0.0 ? -*tilted : *tilted;
             }
         } catch (const std::domain_error&) {

@@ -273,7 +273,7 @@ void TracePrinter::closest_hit(const Ray& ray, const std::optional<PrimitiveHit>
 
 void TracePrinter::surface(const SurfacePoint& point, const Material& material) {
     point_ = point;
-    material_ = &material;
+    material_ = material;
     reaching_.clear();
     add("surface point " + to_text(point.position) + " error " + to_text(point.error) + " normal " +
         to_text(point.normal) + " shading normal " + to_text(point.shading_normal));

@@ -53,7 +53,7 @@ class TracePrinter final : public PixelObserver {
     std::vector<std::string>& lines_;
     // The hit being shaded, and the names of its lights that reach it, in order
     SurfacePoint point_{};
-    const Material* material_ = nullptr;
+    std::optional<Material> material_;  ///< a copy: shading may hand in a mapped one
     std::vector<std::string> reaching_;
 };
 

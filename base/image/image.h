@@ -1,6 +1,8 @@
 #pragma once
 
 #include <cstddef>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "base/math/types.h"
@@ -17,8 +19,14 @@ class Image {
     int width() const { return width_; }
     int height() const { return height_; }
 
-    /// Pixel (i, j): column i from the left, row j from the top.
+    /// Pixel (i, j): column i from the left, row j from the top. Throws std::out_of_range for a
+    /// pixel outside the image (a texture lookup whose wrap_texel let an index out, stage 11).
     Color at(int i, int j) const {
+        if (i < 0 || i >= width_ || j < 0 || j >= height_) {
+            throw std::out_of_range("pixel (" + std::to_string(i) + ", " + std::to_string(j) +
+                                    ") is outside the " + std::to_string(width_) + " x " +
+                                    std::to_string(height_) + " image");
+        }
         const std::size_t k = index(i, j);
         return {rgb_[k], rgb_[k + 1], rgb_[k + 2]};
     }

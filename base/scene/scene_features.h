@@ -16,7 +16,8 @@ struct SceneFeatures {
     /// by stage 11's interpolation.
     std::size_t smooth_triangles = 0;
     /// Objects whose material looks up an image (`texture`, `normalmap`, `bumpmap`): stage 11's
-    /// lookups; a mesh instance counts once.
+    /// lookups. Each sphere, plane and triangle counts (a `mesh` file's too), and each `instance`
+    /// once.
     std::size_t mapped_objects = 0;
     std::size_t meshes = 0;
     std::size_t planes = 0;

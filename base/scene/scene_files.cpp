@@ -14,6 +14,8 @@ std::vector<std::filesystem::path> scene_files(const Scene& scene) {
         files.emplace_back(mesh.path);
     for (const MeshDefinition& definition : scene.mesh_definitions)
         files.emplace_back(definition.path);
+    for (const SceneTexture& texture : scene.textures)
+        files.emplace_back(texture.path);
     return files;
 }
 

@@ -8,7 +8,8 @@
 
 namespace raystep {
 
-/// The files a scene is read from: the scene file (Scene::path) and every mesh it loads.
+/// The files a scene is read from: the scene file (Scene::path), every mesh it loads and every
+/// image its materials look up.
 std::vector<std::filesystem::path> scene_files(const Scene& scene);
 
 /// A digest of the contents of scene_files, 16 hexadecimal digits (64-bit FNV-1a), the same on

@@ -1,5 +1,6 @@
 #include "renderer/surface_maps.h"
 
+#include <cstdint>
 #include <fstream>
 #include <optional>
 #include <string>
@@ -55,8 +56,10 @@ MappedHit mapped_at(const Scene& scene, double x, double y) {
     SurfacePoint point = surface_point(render_scene, ray, *hit);
     const Material material =
         mapped_material(render_scene, ray, *hit, material_of(render_scene, *hit), point);
-    const VertexUvs& uvs =
-        scene.vertex_uvs[static_cast<std::size_t>(scene.triangles[hit->index].vertex_uvs)];
+    // A triangle without texture coordinates has its barycentrics for them.
+    const std::int32_t k = scene.triangles[hit->index].vertex_uvs;
+    const VertexUvs uvs =
+        k >= 0 ? scene.vertex_uvs[static_cast<std::size_t>(k)] : VertexUvs{{0, 0}, {1, 0}, {0, 1}};
     return {material, point,
             interpolate_uv(uvs.uv0, uvs.uv1, uvs.uv2, hit->hit.beta, hit->hit.gamma)};
 }
@@ -90,6 +93,26 @@ TEST_CASE("mapped_material: a flat normal map and a flat bump map leave the norm
         const MappedHit mapped = mapped_at(scene, 0.3, 0.6);
         CHECK(glm::length(mapped.point.shading_normal - Vec3(0, 0, 1)) < 1e-12);
     }
+}
+
+TEST_CASE("mapped_material: a flat bump map keeps a smooth triangle's interpolated normal",
+          "[renderer]") {
+    // Blinn's normal is built from dp/du and dp/dv across the normal that shades: from the flat
+    // triangle's own, it would be the flat normal again.
+    const ScratchFolder folder("surface-maps");
+    write_image(filled_image(4, 4, Color(0.3)), folder.path() / "flat-heights.exr");
+    const std::string smooth =
+        "camera 0 0 5 0 0 0 0 1 0 45\nvertexnormal 0 0 0 0 0 1\nvertexnormal 1 0 0 1 0 1\n"
+        "vertexnormal 0 1 0 0 1 1\n";
+    const Scene plain = parse_scene(smooth + "trinormal 0 1 2\n", "t.test", folder.path());
+    const Scene bumped = parse_scene(smooth + "bumpmap flat-heights.exr 0.1\ntrinormal 0 1 2\n",
+                                     "t.test", folder.path());
+    const RenderScene plain_scene = prepare_render_scene(plain);
+    const Ray ray{{0.3, 0.2, 5}, {0, 0, -1}};
+    const std::optional<PrimitiveHit> hit = scene_closest_hit(plain_scene, ray, nullptr);
+    REQUIRE(hit);
+    const Vec3 expected = surface_point(plain_scene, ray, *hit).shading_normal;
+    CHECK(glm::length(mapped_at(bumped, 0.3, 0.2).point.shading_normal - expected) < 1e-12);
 }
 
 TEST_CASE("mapped_material: a bump map's slope tips the normal against it, on the eye's side",

@@ -101,7 +101,8 @@ Color texture_bilinear(const Image& image, const Vec2& uv, WrapMode wrap);
 /// where the sum's length is 0 (the texel (0.5, 0.5, 0.5)).
 Vec3 normal_from_map(const TangentFrame& frame, const Color& texel);
 
-/// The slopes (dh/du, dh/dv) of a height map at (u, v), by central differences one texel apart:
+/// The slopes (dh/du, dh/dv) of a height map at (u, v), by central differences one texel either
+/// side:
 /// dh/du = (h(u + 1/W, v) - h(u - 1/W, v)) / (2 / W), dh/dv likewise with 1/H, where h is
 /// `scale` times the red channel of texture_bilinear (a grey image's value: read_image spreads
 /// grey to RGB). `scale` is the bump's height at the map's value 1, in the scene's units.

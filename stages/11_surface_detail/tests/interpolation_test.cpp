@@ -43,6 +43,10 @@ TEST_CASE("interpolate_normal: vertex normals of any length give a unit normal",
     // OBJ files need not hold unit normals: (0, 0, 3) and (0, 0, 0.5) both say +z.
     CHECK_THAT(interpolate_normal({0, 0, 3}, {0, 0, 0.5}, {0, 0, 7}, 0.25, 0.25),
                IsNear(Vec3(0, 0, 1), 1e-15));
+    // And a longer one weighs more: the sum as written, normalized once, (2, 1, 1) / sqrt(6) at
+    // the centroid, not the mean of the three made unit first.
+    CHECK_THAT(interpolate_normal({2, 0, 0}, {0, 1, 0}, {0, 0, 1}, 1.0 / 3, 1.0 / 3),
+               IsNear(Vec3(2, 1, 1) / std::sqrt(6.0), 1e-15));
 }
 
 TEST_CASE("interpolate_normal: opposing normals that cancel throw domain_error", "[stage11]") {

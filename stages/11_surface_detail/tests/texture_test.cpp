@@ -76,6 +76,9 @@ TEST_CASE("texture_nearest: beyond the edge, by the wrap mode", "[stage11]") {
     CHECK_THAT(texture_nearest(image, {1.25, 0.75}, WrapMode::mirror), IsNear(kTopRight, 0.0));
     // v = -0.25 is row 2, below the image: row 0 repeated.
     CHECK_THAT(texture_nearest(image, {0.25, -0.25}, WrapMode::repeat), IsNear(kTopLeft, 0.0));
+    // u = -0.25 is column floor(-0.5) = -1, the last column repeated; truncating -0.5 to 0
+    // would read the first.
+    CHECK_THAT(texture_nearest(image, {-0.25, 0.75}, WrapMode::repeat), IsNear(kTopRight, 0.0));
 }
 
 TEST_CASE("texture_bilinear: a texel's centre reads that texel", "[stage11]") {
