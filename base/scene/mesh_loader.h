@@ -9,8 +9,8 @@
 
 namespace raystep {
 
-/// A face corner that names no vertex normal (or texture coordinates).
-inline constexpr std::uint32_t kNoNormal = 0xffffffffu;
+/// The index of a face corner that names no vertex normal (or no texture coordinates).
+inline constexpr std::uint32_t kNoCorner = 0xffffffffu;
 
 /// An indexed triangle mesh as read from a file; polygons are split into triangle fans
 /// (i0 i1 i2, i0 i2 i3, ...), which is exact for the convex faces these formats hold.
@@ -21,10 +21,10 @@ struct TriangleMesh {
     /// has none.
     std::vector<Vec3> normals;
     /// Each face's corners' indices into `normals`, one entry per face, or empty where the file
-    /// has no normals. A face whose corners do not all name one has kNoNormal in each.
+    /// has no normals. A face whose corners do not all name one has kNoCorner in each.
     std::vector<std::array<std::uint32_t, 3>> face_normals;
     /// The file's texture coordinates (OBJ's `vt`), and each face's corners' indices into them,
-    /// as `normals` and `face_normals` are: kNoNormal where a corner names none.
+    /// as `normals` and `face_normals` are: kNoCorner where a corner names none.
     std::vector<Vec2> uvs;
     std::vector<std::array<std::uint32_t, 3>> face_uvs;
 };

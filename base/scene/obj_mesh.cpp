@@ -128,17 +128,17 @@ void check_obj_lines(const std::filesystem::path& path) {
 }
 
 // The fan of a polygon's corner indices (normals, uvs), as its positions fan: the same corners in
-// the same order; all kNoNormal for a polygon with a corner that has none (tinyobjloader's -1,
-// which the cast made kNoNormal).
+// the same order; all kNoCorner for a polygon with a corner that has none (tinyobjloader's -1,
+// which the cast made kNoCorner).
 void append_corner_fan(std::vector<std::array<std::uint32_t, 3>>& fans,
                        const std::vector<std::uint32_t>& corners) {
     bool every_corner = true;
     for (const std::uint32_t corner : corners)
-        every_corner = every_corner && corner != kNoNormal;
+        every_corner = every_corner && corner != kNoCorner;
     for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
         fans.push_back(every_corner
                            ? std::array<std::uint32_t, 3>{corners[0], corners[k], corners[k + 1]}
-                           : std::array<std::uint32_t, 3>{kNoNormal, kNoNormal, kNoNormal});
+                           : std::array<std::uint32_t, 3>{kNoCorner, kNoCorner, kNoCorner});
     }
 }
 

@@ -33,7 +33,7 @@ bool is_identity(const TransformOp& op) {
 // with `smooth` the area-weighted ones where none of them is zero; nullopt for a flat face.
 std::optional<VertexNormals> face_vertex_normals(const TriangleMesh& mesh, std::size_t k,
                                                  const std::vector<Vec3>& smooth) {
-    if (!mesh.face_normals.empty() && mesh.face_normals[k][0] != kNoNormal) {
+    if (!mesh.face_normals.empty() && mesh.face_normals[k][0] != kNoCorner) {
         const auto& n = mesh.face_normals[k];
         return VertexNormals{mesh.normals[n[0]], mesh.normals[n[1]], mesh.normals[n[2]]};
     }
@@ -221,7 +221,7 @@ void SceneParser::mesh() {
             triangle.vertex_normals = static_cast<std::int32_t>(scene_.vertex_normals.size());
             scene_.vertex_normals.push_back(*normals);
         }
-        if (!loaded.face_uvs.empty() && loaded.face_uvs[k][0] != kNoNormal) {
+        if (!loaded.face_uvs.empty() && loaded.face_uvs[k][0] != kNoCorner) {
             const auto& uv = loaded.face_uvs[k];
             triangle.vertex_uvs = static_cast<std::int32_t>(scene_.vertex_uvs.size());
             scene_.vertex_uvs.push_back({loaded.uvs[uv[0]], loaded.uvs[uv[1]], loaded.uvs[uv[2]]});

@@ -106,7 +106,7 @@ TEST_CASE("load_mesh: OBJ vertex normals, fanned with their face, as written", "
     CHECK(mesh.face_normals[0] == std::array<std::uint32_t, 3>{0, 1, 2});
     CHECK(mesh.face_normals[1] == std::array<std::uint32_t, 3>{0, 2, 0});
     // A face with a corner that names no normal has none.
-    CHECK(mesh.face_normals[2] == std::array<std::uint32_t, 3>{kNoNormal, kNoNormal, kNoNormal});
+    CHECK(mesh.face_normals[2] == std::array<std::uint32_t, 3>{kNoCorner, kNoCorner, kNoCorner});
 }
 
 TEST_CASE("load_mesh: OBJ texture coordinates, fanned with their face", "[base]") {
