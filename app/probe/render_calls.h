@@ -37,12 +37,6 @@ struct JsonFields<RenderQuestion> {
         json_field("samples_per_pixel", &Q::samples_per_pixel));
 };
 
-/// An answer only: the grader reads an image with a bound on its size (image_json.h).
-template <>
-struct JsonCodec<Image> {
-    static Json write(const Image& picture) { return image(picture); }
-};
-
 /// The render the question asks for, by the renderer over this build's stages.
 Image render_for_probe(const RenderQuestion& question);
 

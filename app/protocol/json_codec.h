@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -47,6 +48,30 @@ template <class T, Json (*Write)(const T&), T (*Read)(const Json&)>
 struct FunctionCodec {
     static Json write(const T& value) { return Write(value); }
     static T read(const Json& j) { return Read(j); }
+};
+
+/// An enum as one of its words, read strictly: `Words` is a constexpr std::array of
+/// {value, word} pairs with linkage (an `inline constexpr` beside the enum's codec), e.g.
+///   inline constexpr std::array<std::pair<WrapMode, const char*>, 3> kWrapWords{...};
+///   template <> struct JsonCodec<WrapMode> : WordCodec<WrapMode, kWrapWords> {};
+template <class Enum, const auto& Words>
+struct WordCodec {
+    static Json write(Enum value) {
+        for (const auto& [v, word] : Words) {
+            if (v == value) return Json(std::string(word));
+        }
+        throw std::invalid_argument("a value with no word");
+    }
+    static Enum read(const Json& j) {
+        if (!j.is_string()) throw std::invalid_argument("expected a string");
+        const std::string word = j.get<std::string>();
+        std::string words;
+        for (const auto& [v, w] : Words) {
+            if (word == w) return v;
+            words += (words.empty() ? "" : ", ") + std::string(w);
+        }
+        throw std::invalid_argument("unknown word \"" + word + "\": expected one of " + words);
+    }
 };
 
 template <>

@@ -4,24 +4,14 @@
 
 #include "grading/10_path_tracing/path_tracing_calls.h"
 
-#include <array>
 #include <cmath>
 #include <stdexcept>
-#include <string>
-#include <utility>
 
 #include <glm/geometric.hpp>
 
 namespace raystep::probe {
 
 namespace {
-
-constexpr std::array<std::pair<Sampler, const char*>, 5> kSamplers{
-    {{Sampler::uniform_hemisphere, "uniform_hemisphere"},
-     {Sampler::cosine_hemisphere, "cosine_hemisphere"},
-     {Sampler::phong_lobe, "phong_lobe"},
-     {Sampler::ggx_half_vector, "ggx_half_vector"},
-     {Sampler::brdf, "brdf"}}};
 
 Vec3 direction_by(const SamplerSetting& s, const Vec2& u, double choice) {
     switch (s.sampler) {
@@ -126,21 +116,6 @@ NearestHit nearest_hit(const PathSceneQuestion& q, const Ray& ray, bool blockers
 }
 
 }  // namespace
-
-Json JsonCodec<Sampler>::write(Sampler sampler) {
-    for (const auto& [s, word] : kSamplers) {
-        if (s == sampler) return Json(std::string(word));
-    }
-    throw std::invalid_argument("unknown sampler");
-}
-
-Sampler JsonCodec<Sampler>::read(const Json& j) {
-    const std::string word = JsonCodec<std::string>::read(j);
-    for (const auto& [s, w] : kSamplers) {
-        if (word == w) return s;
-    }
-    throw std::invalid_argument("unknown sampler \"" + word + "\"");
-}
 
 std::vector<Vec3> directions_of(const DirectionsQuestion& q) {
     std::vector<Vec3> directions;

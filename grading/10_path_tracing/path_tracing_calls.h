@@ -7,8 +7,10 @@
 // from RandomStream(seed, stream) for each of the streams asked, and answers one colour per
 // stream: the grader judges their mean against a closed form, never a value.
 
+#include <array>
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "app/probe/probe_call.h"
@@ -22,11 +24,15 @@ namespace raystep::probe {
 /// The samplers of the stage, each with the density it promises.
 enum class Sampler { uniform_hemisphere, cosine_hemisphere, phong_lobe, ggx_half_vector, brdf };
 
+inline constexpr std::array<std::pair<Sampler, const char*>, 5> kSamplerWords{
+    {{Sampler::uniform_hemisphere, "uniform_hemisphere"},
+     {Sampler::cosine_hemisphere, "cosine_hemisphere"},
+     {Sampler::phong_lobe, "phong_lobe"},
+     {Sampler::ggx_half_vector, "ggx_half_vector"},
+     {Sampler::brdf, "brdf"}}};
+
 template <>
-struct JsonCodec<Sampler> {
-    static Json write(Sampler sampler);
-    static Sampler read(const Json& j);
-};
+struct JsonCodec<Sampler> : WordCodec<Sampler, kSamplerWords> {};
 
 /// A sampler and what it samples around: `parameter` is phong_lobe's exponent or
 /// ggx_half_vector's roughness; sample_brdf takes `brdf`, `normal` and `to_eye`.

@@ -1,5 +1,8 @@
 #pragma once
 
+#include <array>
+#include <utility>
+
 #include "app/protocol/json_codec.h"
 #include "grading/8_sampling/sampling_json.h"
 #include "stages/10_path_tracing/path_tracing.h"
@@ -9,23 +12,21 @@ namespace raystep::probe {
 // Stage 10's values as JSON: the enums by the scene file's words (`phong`, `ggx`; `hemisphere`,
 // `cosine`, `brdf`; `off`, `on`, `mis`), read strictly, and the structs by their fields.
 
-template <>
-struct JsonCodec<BrdfModel> {
-    static Json write(BrdfModel model);
-    static BrdfModel read(const Json& j);
-};
+inline constexpr std::array<std::pair<BrdfModel, const char*>, 2> kBrdfModelWords{
+    {{BrdfModel::phong, "phong"}, {BrdfModel::ggx, "ggx"}}};
+inline constexpr std::array<std::pair<DirectionSampling, const char*>, 3> kDirectionSamplingWords{
+    {{DirectionSampling::hemisphere, "hemisphere"},
+     {DirectionSampling::cosine, "cosine"},
+     {DirectionSampling::brdf, "brdf"}}};
+inline constexpr std::array<std::pair<NextEvent, const char*>, 3> kNextEventWords{
+    {{NextEvent::off, "off"}, {NextEvent::on, "on"}, {NextEvent::mis, "mis"}}};
 
 template <>
-struct JsonCodec<DirectionSampling> {
-    static Json write(DirectionSampling sampling);
-    static DirectionSampling read(const Json& j);
-};
-
+struct JsonCodec<BrdfModel> : WordCodec<BrdfModel, kBrdfModelWords> {};
 template <>
-struct JsonCodec<NextEvent> {
-    static Json write(NextEvent next_event);
-    static NextEvent read(const Json& j);
-};
+struct JsonCodec<DirectionSampling> : WordCodec<DirectionSampling, kDirectionSamplingWords> {};
+template <>
+struct JsonCodec<NextEvent> : WordCodec<NextEvent, kNextEventWords> {};
 
 template <>
 struct JsonFields<SurfaceBrdf> {
