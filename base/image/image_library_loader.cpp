@@ -1,5 +1,6 @@
 #include "base/image/image_library_loader.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <mutex>
@@ -100,19 +101,32 @@ fs::path executable_path() {
 
 #endif
 
-// Where the module may be: where this build put it, then beside the executable (a build folder
-// moved or installed elsewhere keeps the two together).
+// The module use_image_library_module named; empty where none was.
+fs::path& chosen_module() {
+    static fs::path module;
+    return module;
+}
+
+// Where the module may be: where the program was told, where this build put it, then beside the
+// executable (a build folder moved or installed elsewhere keeps the two together).
 std::vector<fs::path> module_candidates() {
-    std::vector<fs::path> candidates = {fs::path(RAYSTEP_IMAGE_LIBRARY_PATH)};
+    std::vector<fs::path> candidates;
+    if (!chosen_module().empty()) candidates.push_back(chosen_module());
+    candidates.push_back(fs::path(RAYSTEP_IMAGE_LIBRARY_PATH));
     const fs::path executable = executable_path();
     if (!executable.empty()) {
         const fs::path beside = executable.parent_path() / RAYSTEP_IMAGE_LIBRARY_FILE;
-        if (beside != candidates.front()) candidates.push_back(beside);
+        if (std::find(candidates.begin(), candidates.end(), beside) == candidates.end())
+            candidates.push_back(beside);
     }
     return candidates;
 }
 
 }  // namespace
+
+void use_image_library_module(const fs::path& module) {
+    chosen_module() = module;
+}
 
 const RaystepImageLibraryTable& load_image_library(const std::vector<fs::path>& candidates) {
     std::string tried;

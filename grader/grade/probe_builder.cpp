@@ -466,6 +466,21 @@ BuiltProbe copy_reference(const fs::path& reference_probe, const fs::path& progr
     return {program, ""};
 }
 
+// The image library module copied into work/image-library, which the sandbox's user may read (the
+// path of the copy); empty where the build has none, and a texture's render then fails with the
+// loader's message.
+fs::path place_image_library(const ProbeToolchain& toolchain, const fs::path& work) {
+    if (!fs::is_regular_file(toolchain.image_module)) return {};
+    const fs::path folder = work / "image-library";
+    fs::create_directories(folder);
+    fs::permissions(folder, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                                fs::perms::others_read | fs::perms::others_exec);
+    const fs::path module = folder / toolchain.image_module.filename();
+    // Read, not run: dlopen maps it, and a submission looking for a program to exec finds none.
+    copy_file_for_sandbox(toolchain.image_module, module, kSharedFile);
+    return module;
+}
+
 }  // namespace
 
 const BuiltProbe& ProbeSet::stage(int number) const {
@@ -549,6 +564,7 @@ ProbeSet build_probes(const Submission& submission, const ProbeToolchain& toolch
     });
     if (needed.reference)
         set.reference = copy_reference(reference_probe, probes / "reference" / "probe");
+    set.image_library = place_image_library(toolchain, work);
     // The reference stages leave before any probe runs.
     fs::remove_all(work / "link");
     set.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -32,6 +32,10 @@ struct ProbeSet {
     std::vector<std::pair<int, BuiltProbe>> stages;  ///< by stage number, in order
     BuiltProbe pipeline;
     BuiltProbe reference;
+    /// The image library module, copied into a folder of its own that the sandbox's user can
+    /// read (work/image-library), which every probe is told to load a scene's textures from:
+    /// without bubblewrap, the folders of the probes and of the build are shut to that user.
+    std::filesystem::path image_library;
     double seconds = 0.0;
 
     /// The probe of stage `number`; one that was not needed reads "not built".

@@ -27,6 +27,11 @@ ProbeSession ask_probe(const std::filesystem::path& program, const std::vector<P
     SandboxPolicy policy;
     policy.read_only = limits.readable;
     policy.read_only.push_back(program.parent_path());
+    std::vector<std::string> argv = {program.string()};
+    if (!limits.image_library.empty()) {
+        argv.insert(argv.end(), {"--image-library", limits.image_library.string()});
+        policy.read_only.push_back(limits.image_library.parent_path());
+    }
     policy.limits.cpu_seconds = limits.cpu_seconds;
     policy.limits.wall = limits.wall;
     policy.limits.answer_bytes = limits.answer_bytes;
@@ -37,7 +42,7 @@ ProbeSession ask_probe(const std::filesystem::path& program, const std::vector<P
     policy.single_process = true;
 
     ProbeSession session;
-    session.run = run_sandboxed({program.string()}, input, policy);
+    session.run = run_sandboxed(argv, input, policy);
     session.answers.resize(queries.size());
 
     // Answers come in order, one per line, on the answer channel; each must carry its query's id.

@@ -23,6 +23,9 @@ struct ProbeRunLimits {
     std::chrono::milliseconds wall{20000};
     std::size_t answer_bytes = 128u << 20;        ///< the answers read at most
     std::vector<std::filesystem::path> readable;  ///< e.g. the scenes a render call loads
+    /// The image library module the probe reads a scene's textures through
+    /// (ProbeSet::image_library), readable with its folder; empty: the probe's own candidates.
+    std::filesystem::path image_library;
 };
 
 /// Sends the queries to one run of the probe (in the sandbox), which sees only the folder that

@@ -19,6 +19,9 @@ struct ProbeToolchain {
     std::vector<std::filesystem::path> probe_objects;  ///< the calls, the renderer, app/check
     std::vector<std::filesystem::path> libraries;      ///< below the stages: protocol, scene, core
     std::vector<std::string> link_flags;
+    /// The image library module (base/image/image_library_loader.h), which a probe loads to read
+    /// a scene's texture: copied where the sandbox's user can read it (ProbeSet::image_library).
+    std::filesystem::path image_module;
     std::map<int, std::filesystem::path> stage_libraries;  ///< each stage's reference library
     std::filesystem::path source;  ///< the repository: its base/ and stages/ headers, scenes/
 };

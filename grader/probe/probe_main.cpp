@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "app/probe/call_reply.h"
+#include "base/image/image_library_loader.h"
 #include "grading/4_accel/accel_workloads.h"
 
 using namespace raystep;
@@ -59,7 +60,15 @@ __attribute__((constructor(101))) void report_abort_as_first_process() {
 
 }  // namespace
 
-int main() {
+// `raystep-probe [--image-library MODULE]`: the image library module a scene's textures load
+// through, where raystep-grade placed a copy the sandbox's user can read (ProbeSet::image_library).
+int main(int argc, char** argv) {
+    if (argc == 3 && std::string(argv[1]) == "--image-library") {
+        use_image_library_module(argv[2]);
+    } else if (argc != 1) {
+        std::fputs("usage: raystep-probe [--image-library MODULE]\n", stderr);
+        return 2;
+    }
     std::FILE* const answers = answer_stream();
     if (!answers) {
         std::perror("raystep-probe: cannot set up the answer stream");

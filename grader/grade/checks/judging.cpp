@@ -42,6 +42,13 @@ CheckDefinition case_check(std::string id, int stage, std::string kind, std::str
             }};
 }
 
+ProbeRunLimits scene_reading_limits(const GradingContext& context) {
+    ProbeRunLimits limits;
+    limits.readable = {context.source / "scenes"};
+    if (context.probes) limits.image_library = context.probes->image_library;
+    return limits;
+}
+
 std::vector<CheckDefinition> stage_case_checks(const StageCases& cases) {
     const std::string stage = "stage" + std::to_string(cases.stage);
     return {

@@ -19,6 +19,10 @@ namespace raystep::grade {
 /// program a student's reproduce line calls.
 inline constexpr const char* kStudentRaystep = "build/student/bin/raystep";
 
+/// What a render's probe reads: the work copy of scenes/, and the image library its textures load
+/// through (ProbeSet::image_library, where the context has probes).
+ProbeRunLimits scene_reading_limits(const GradingContext& context);
+
 /// A check that sends the probe of `stage` the cases `make_cases` writes and judges each answer
 /// (run_cases); the cases are made when the check runs, not when the checks are listed.
 CheckDefinition case_check(std::string id, int stage, std::string kind, std::string name,

@@ -165,8 +165,7 @@ CheckMeasure measure_noisy_render(const GradingContext& context, const BuiltProb
                  (check.samples_per_pixel > 0 ? " --spp " + std::to_string(check.samples_per_pixel)
                                               : std::string())});
     }
-    ProbeRunLimits limits;
-    limits.readable = {context.source / "scenes"};
+    ProbeRunLimits limits = scene_reading_limits(context);
     // Eight renders in one run: the time of eight single renders.
     limits.cpu_seconds = 60.0;
     limits.wall = std::chrono::seconds(120);

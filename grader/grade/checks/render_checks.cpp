@@ -133,8 +133,7 @@ CheckMeasure measure_render(const GradingContext& context, const BuiltProbe& pro
             return right();
         },
         render_command(scene, view, eye)};
-    ProbeRunLimits limits;
-    limits.readable = {context.source / "scenes"};
+    ProbeRunLimits limits = scene_reading_limits(context);
     CheckMeasure measure = run_cases(context, id, probe, {render_case}, limits);
     if (!student) return measure;
 
