@@ -17,14 +17,6 @@ std::string within_text(const std::string& expected, double tolerance) {
     return expected + " (within " + full_text(tolerance) + ")";
 }
 
-// Written so that a NaN fails.
-bool near_vec(const Vec3& got, const Vec3& expected, double tolerance) {
-    for (int k = 0; k < 3; ++k) {
-        if (!(std::abs(got[k] - expected[k]) <= tolerance)) return false;
-    }
-    return true;
-}
-
 const JudgeRegistry::Registration near_number_registration{
     {"near_number", [](const Json& p) -> Judge {
          const double expected = probe::number_from(p.at("expected"));
@@ -44,7 +36,7 @@ const JudgeRegistry::Registration near_vec3_registration{
          return [=](const ProbeAnswer& answer) {
              if (answer.kind != Kind::result) return verdict_wrong(full_text(expected), "");
              const Vec3 got = probe::vec3_from(answer.value);
-             if (near_vec(got, expected, tolerance)) return verdict_right();
+             if (near_double(got, expected, tolerance)) return verdict_right();
              return verdict_wrong(within_text(full_text(expected), tolerance), full_text(got));
          };
      }}};
@@ -100,8 +92,8 @@ const JudgeRegistry::Registration frame_registration{
              const Vec3 got[3] = {probe::vec3_from(answer.value.at("u")),
                                   probe::vec3_from(answer.value.at("v")),
                                   probe::vec3_from(answer.value.at("w"))};
-             if (near_vec(got[0], u, tolerance) && near_vec(got[1], v, tolerance) &&
-                 near_vec(got[2], w, tolerance)) {
+             if (near_double(got[0], u, tolerance) && near_double(got[1], v, tolerance) &&
+                 near_double(got[2], w, tolerance)) {
                  return verdict_right();
              }
              return verdict_wrong(

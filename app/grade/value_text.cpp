@@ -56,4 +56,17 @@ bool near_wide(const Vec3& got, const DoubleDoubleVec3& expected,
     return true;
 }
 
+bool near_double(double got, double expected, double tolerance) {
+    return std::abs(got - expected) <= tolerance;
+}
+
+bool near_double(const Vec2& got, const Vec2& expected, double tolerance) {
+    return near_double(got.x, expected.x, tolerance) && near_double(got.y, expected.y, tolerance);
+}
+
+bool near_double(const Vec3& got, const Vec3& expected, double tolerance) {
+    return near_double(got.x, expected.x, tolerance) && near_double(got.y, expected.y, tolerance) &&
+           near_double(got.z, expected.z, tolerance);
+}
+
 }  // namespace raystep::grade

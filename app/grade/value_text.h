@@ -43,4 +43,10 @@ bool near_wide(const Vec3& got, const DoubleDoubleVec3& expected,
 /// |got - expected| <= tolerance in double-double, got taken exactly. Written so that a NaN fails.
 bool near_wide(double got, const DoubleDouble& expected, const DoubleDouble& tolerance);
 
+/// |got - expected| <= tolerance in double, for a vector each coordinate: an expectation an oracle
+/// rounded to double, its tolerance many ulps. Written so that a NaN fails.
+bool near_double(double got, double expected, double tolerance);
+bool near_double(const Vec2& got, const Vec2& expected, double tolerance);
+bool near_double(const Vec3& got, const Vec3& expected, double tolerance);
+
 }  // namespace raystep::grade

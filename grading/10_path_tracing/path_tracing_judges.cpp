@@ -17,16 +17,6 @@ namespace {
 using probe::Json;
 using Kind = ProbeAnswer::Kind;
 
-// Written so that a NaN fails.
-bool near(double got, double expected, double tolerance) {
-    return std::abs(got - expected) <= tolerance;
-}
-
-bool near(const Vec3& got, const Vec3& expected, double tolerance) {
-    return near(got.x, expected.x, tolerance) && near(got.y, expected.y, tolerance) &&
-           near(got.z, expected.z, tolerance);
-}
-
 std::string frame_text(const Frame& f) {
     return "u " + full_text(f.u) + " v " + full_text(f.v) + " w " + full_text(f.w);
 }
@@ -40,12 +30,12 @@ const JudgeRegistry::Registration frame_around_registration{
          return [=](const ProbeAnswer& answer) {
              if (answer.kind != Kind::result) return verdict_wrong(want, "");
              const Frame f = probe::JsonCodec<Frame>::read(answer.value);
-             const bool right = near(f.w, normal, tolerance) &&
-                                near(glm::dot(f.u, f.u), 1.0, tolerance) &&
-                                near(glm::dot(f.v, f.v), 1.0, tolerance) &&
-                                near(glm::dot(f.u, f.v), 0.0, tolerance) &&
-                                near(glm::dot(f.u, f.w), 0.0, tolerance) &&
-                                near(glm::dot(f.v, f.w), 0.0, tolerance);
+             const bool right = near_double(f.w, normal, tolerance) &&
+                                near_double(glm::dot(f.u, f.u), 1.0, tolerance) &&
+                                near_double(glm::dot(f.v, f.v), 1.0, tolerance) &&
+                                near_double(glm::dot(f.u, f.v), 0.0, tolerance) &&
+                                near_double(glm::dot(f.u, f.w), 0.0, tolerance) &&
+                                near_double(glm::dot(f.v, f.w), 0.0, tolerance);
              return right ? verdict_right() : verdict_wrong(want, frame_text(f));
          };
      }}};
@@ -62,7 +52,7 @@ const JudgeRegistry::Registration roulette_registration{
              if (answer.kind != Kind::result) return verdict_wrong(want, "");
              const auto got = probe::JsonCodec<std::optional<Color>>::read(answer.value);
              if (!got) return expected ? verdict_wrong(want, "nullopt") : verdict_right();
-             if (expected && near(*got, *expected, tolerance)) return verdict_right();
+             if (expected && near_double(*got, *expected, tolerance)) return verdict_right();
              return verdict_wrong(want, full_text(*got));
          };
      }}};
@@ -84,15 +74,16 @@ const JudgeRegistry::Registration light_direction_sample_registration{
              if (answer.kind != Kind::result) return verdict_wrong(want, "");
              const auto got = probe::JsonCodec<LightDirectionSample>::read(answer.value);
              const auto within = [&](double g, double e) {
-                 return near(g, e, std::max(relative * std::abs(e), 1e-300));
+                 return near_double(g, e, std::max(relative * std::abs(e), 1e-300));
              };
              const double brightest =
                  std::max({std::abs(expected.radiance.x), std::abs(expected.radiance.y),
                            std::abs(expected.radiance.z)});
              bool right = within(got.pdf, expected.pdf) &&
-                          near(got.radiance, expected.radiance, relative * brightest);
+                          near_double(got.radiance, expected.radiance, relative * brightest);
              if (expected.pdf > 0) {
-                 right = right && near(got.direction, expected.direction, direction_tolerance) &&
+                 right = right &&
+                         near_double(got.direction, expected.direction, direction_tolerance) &&
                          within(got.distance, expected.distance);
              }
              return right ? verdict_right() : verdict_wrong(want, sample_text(got));
