@@ -2,6 +2,7 @@
 
 #include "app/probe/render_calls.h"
 #include "grading/10_path_tracing/path_tracing_calls.h"
+#include "grading/11_surface_detail/surface_detail_calls.h"
 #include "grading/1_vectors/vector_calls.h"
 #include "grading/2_rays/ray_calls.h"
 #include "grading/3_intersect/intersect_calls.h"
@@ -16,17 +17,18 @@ namespace raystep::probe {
 
 CallTable stage_calls() {
     CallTable table;
-    add_calls(table, vector_calls);        // stage 1
-    add_calls(table, ray_calls);           // stage 2
-    add_calls(table, intersect_calls);     // stage 3
-    add_calls(table, accel_calls);         // stage 4: a structure's answers, no work counted
-    add_calls(table, transform_calls);     // stage 5
-    add_calls(table, shading_calls);       // stage 6
-    add_calls(table, recursion_calls);     // stage 7
-    add_calls(table, sampling_calls);      // stage 8
-    add_calls(table, refraction_calls);    // stage 9
-    add_calls(table, path_tracing_calls);  // stage 10
-    add_call(table, render_call);          // whole images, through every stage a view needs
+    add_calls(table, vector_calls);          // stage 1
+    add_calls(table, ray_calls);             // stage 2
+    add_calls(table, intersect_calls);       // stage 3
+    add_calls(table, accel_calls);           // stage 4: a structure's answers, no work counted
+    add_calls(table, transform_calls);       // stage 5
+    add_calls(table, shading_calls);         // stage 6
+    add_calls(table, recursion_calls);       // stage 7
+    add_calls(table, sampling_calls);        // stage 8
+    add_calls(table, refraction_calls);      // stage 9
+    add_calls(table, path_tracing_calls);    // stage 10
+    add_calls(table, surface_detail_calls);  // stage 11
+    add_call(table, render_call);            // whole images, through every stage a view needs
     return table;
 }
 

@@ -10,11 +10,12 @@
 
 namespace raystep {
 
-// The long-double arithmetic of the grader's high-precision oracles (stages 1, 2 and 4 to 9):
+// The long-double arithmetic of the grader's high-precision oracles (stages 1, 2 and 4 to 11):
 // 64-bit mantissas on x86-64, 11 more bits than a double, so that an expectation's own rounding
 // is far below the tolerances a check allows. The oracles run only on the instructor's Linux
 // machine; what they decide reaches the judges (app/grade/), which run on students' laptops too,
-// as double-doubles (base/math/double_double.h), the same bits on every platform.
+// as double-doubles (base/math/double_double.h), the same bits on every platform, or, where the
+// tolerance is many ulps (stages 10 and 11), as the nearest double.
 using Wide = long double;
 using WideVec = glm::vec<3, Wide>;
 using WideMat = glm::mat<4, 4, Wide>;

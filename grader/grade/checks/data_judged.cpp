@@ -41,6 +41,8 @@ std::vector<PublicCheck> public_checks(const std::filesystem::path& source) {
     checks.push_back(stage9_sample_check());
     checks.push_back(stage10_public_check());
     checks.push_back(stage10_sample_check());
+    checks.push_back(stage11_public_check());
+    checks.push_back(stage11_sample_check());
     for (PublicCheck& check : render_public_checks(source))
         checks.push_back(std::move(check));
     return checks;

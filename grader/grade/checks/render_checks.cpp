@@ -221,6 +221,11 @@ std::vector<RenderCheck> render_check_list() {
         {9, "stage9/nested-media.test", View::full, {}},
         {9, "stage9/total-internal-reflection.test", View::full, {}},
         {0, "stage9/glass-sphere.test", View::full, {}},
+        // Stage 11's: each kind of surface detail in a scene of its own, shaded by the
+        // reference's stage 6 through the submission's lookups.
+        {11, "stage11/smooth-bunny.test", View::shaded, {}},
+        {11, "stage11/textured.test", View::shaded, {}},
+        {11, "stage11/bumps.test", View::shaded, {}},
     };
 }
 

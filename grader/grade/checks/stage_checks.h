@@ -39,6 +39,10 @@ std::vector<CheckDefinition> stage10_checks();
 /// Stage 10's checks by distribution and by mean, each with a stated false-fail rate, seeded by
 /// statistics_seed() (stage10_statistics.cpp).
 std::vector<CheckDefinition> stage10_statistical_checks();
+/// Stage 11's checks, "stage11.unit", "stage11.hidden" and an oracle check for each part of the
+/// contract, "stage11.oracle.interpolation" and the rest (stage11_checks.cpp);
+/// its maps are render checks (render_checks.cpp).
+std::vector<CheckDefinition> stage11_checks();
 std::vector<CheckDefinition> render_checks();
 
 /// The render checks render at most this wide: enough to see a stage's mistakes, small enough
@@ -58,6 +62,7 @@ PublicCheck stage7_public_check();
 PublicCheck stage8_public_check();
 PublicCheck stage9_public_check();
 PublicCheck stage10_public_check();
+PublicCheck stage11_public_check();
 
 /// A sample of each stage's generated cases for the student release (kSampleKind,
 /// app/grade/public_case.h): a few of each kind the "stageN.oracle" check draws, decided by the
@@ -73,6 +78,7 @@ PublicCheck stage7_sample_check();
 PublicCheck stage8_sample_check();
 PublicCheck stage9_sample_check();
 PublicCheck stage10_sample_check();
+PublicCheck stage11_sample_check();
 
 /// The render checks as data, each with the reference's render at the grader's size, made from
 /// the scenes under `source`/scenes: the grader judges a render by the same rule

@@ -52,8 +52,8 @@ TEST_CASE("GradeReport::stage_scores: one entry per stage, the pipeline at index
 TEST_CASE("GradeReport::stage_scores: a stage out of range names its check", "[report]") {
     GradeReport report;
     report.checks.resize(1);
-    report.checks[0].id = "stage11.unit.nothing";
-    report.checks[0].stage = 11;
-    CHECK_THROWS_WITH(report.stage_scores(), Catch::Matchers::Contains("stage11.unit.nothing") &&
-                                                 Catch::Matchers::Contains("stage 11"));
+    report.checks[0].id = "stage12.unit.nothing";
+    report.checks[0].stage = 12;
+    CHECK_THROWS_WITH(report.stage_scores(), Catch::Matchers::Contains("stage12.unit.nothing") &&
+                                                 Catch::Matchers::Contains("stage 12"));
 }
