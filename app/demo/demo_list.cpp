@@ -99,6 +99,14 @@ const std::vector<DemoEntry>& demo_list() {
          "spp=4",
          {},
          nullptr},
+        {"surface-detail",
+         "stage 11: face against interpolated normals, bump against normal maps, textures",
+         surface_detail_demo,
+         "stage11/bumps.test",
+         "shaded",
+         "",
+         {},
+         nullptr},
     };
     return kDemos;
 }

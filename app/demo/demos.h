@@ -8,9 +8,9 @@ namespace raystep {
 
 // The lecture demos of `raystep demo NAME`, a file per lecture: ray_demos.cpp (stages 2 and 3),
 // cost_demos.cpp (stage 4), shading_demos.cpp (stages 5, 6 and 9), sampling_demos.cpp (stage 8),
-// path_tracing_demos.cpp (stage 10). Each renders its panels at the panel_size its figure needs on
-// an image of `size`, through the stages' public API, so that a stage that is not implemented yet
-// stops it with its NotImplemented message.
+// path_tracing_demos.cpp (stage 10), surface_detail_demos.cpp (stage 11). Each renders its panels
+// at the panel_size its figure needs on an image of `size`, through the stages' public API, so that
+// a stage that is not implemented yet stops it with its NotImplemented message.
 
 /// Stage 2: each camera ray's direction as a colour, perspective beside orthographic.
 DemoFigure ray_directions_demo(const DemoSize& size);
@@ -53,6 +53,10 @@ DemoFigure soft_shadows_demo(const DemoSize& size);
 /// cosine, cosine with light samples, MIS), then MIS at 1 to 64, each captioned with its RMSE
 /// against MIS at 576.
 DemoFigure path_tracing_demo(const DemoSize& size);
+
+/// Stage 11: a bunny by face normals beside interpolated ones, a wall flat, bump-mapped and
+/// normal-mapped, that wall's tangent frames, and textures on a sphere, a plane and a floor.
+DemoFigure surface_detail_demo(const DemoSize& size);
 
 /// Stage 9: a glass cube of index 1, 1.33, 1.5 and 2.4, each panel captioned with its critical
 /// angle: where the side faces reflect the cube's inside by total internal reflection.

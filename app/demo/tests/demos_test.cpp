@@ -1,5 +1,7 @@
 #include "app/demo/demos.h"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -56,11 +58,11 @@ int pixels_costing_at_least(const Image& image, double cost, const LogHeatScale&
 
 }  // namespace
 
-TEST_CASE("demo_list: the eleven lecture demos, in lecture order, each described", "[app]") {
+TEST_CASE("demo_list: the twelve lecture demos, in lecture order, each described", "[app]") {
     CHECK(demo_names() == std::vector<std::string>{"ray-directions", "barycentrics", "watertight",
                                                    "bvh-cost", "grid-cost", "normal-transform",
                                                    "shadow-acne", "aliasing", "soft-shadows",
-                                                   "refraction", "path-tracing"});
+                                                   "refraction", "path-tracing", "surface-detail"});
     for (const DemoEntry& demo : demo_list()) {
         CAPTURE(demo.name);
         CHECK(demo.description.substr(0, 6) == "stage ");
@@ -72,7 +74,7 @@ TEST_CASE("find_demo: an unknown name is refused with the list of demos", "[app]
     CHECK_THROWS_WITH(find_demo("teapot"),
                       "no demo 'teapot'; the demos are ray-directions, barycentrics, watertight, "
                       "bvh-cost, grid-cost, normal-transform, shadow-acne, aliasing, "
-                      "soft-shadows, refraction, path-tracing");
+                      "soft-shadows, refraction, path-tracing, surface-detail");
 }
 
 TEST_CASE("ray_directions_demo: perspective rays fan out, orthographic rays are one colour",
@@ -207,4 +209,45 @@ TEST_CASE("shadow_acne_demo: acne falls as epsilon grows, none with the error bo
     CHECK(too_small > good);
     CHECK(good == 0);
     CHECK(figure.panels[0].caption == "epsilon = 0: " + thousands(zero) + " pixels of acne");
+}
+
+namespace {
+
+// The standard deviation of r + g + b over the lit pixels of columns [x0, x1) and rows
+// [y0, y1), each a fraction of the image's size.
+double brightness_spread(const Image& image, double x0, double x1, double y0, double y1) {
+    double sum = 0.0, squares = 0.0;
+    int count = 0;
+    for (int j = static_cast<int>(y0 * image.height()); j < y1 * image.height(); ++j) {
+        for (int i = static_cast<int>(x0 * image.width()); i < x1 * image.width(); ++i) {
+            const Color c = image.at(i, j);
+            const double b = c.r + c.g + c.b;
+            if (b < 1e-3) continue;
+            sum += b;
+            squares += b * b;
+            ++count;
+        }
+    }
+    REQUIRE(count > 0);
+    const double mean = sum / count;
+    return std::sqrt(std::max(0.0, squares / count - mean * mean));
+}
+
+}  // namespace
+
+TEST_CASE("surface_detail_demo: the maps put bricks on a flat wall, read along tangent frames",
+          "[app]") {
+    const DemoFigure figure = surface_detail_demo(kTestDemoSize);
+    check_panels(figure, 4);
+    // The walls of stage11/bumps.test fill the middle of each third, whatever the panel's height.
+    const Image& walls = figure.panels[1].image;
+    const double flat = brightness_spread(walls, 0.12, 0.3, 0.35, 0.65);
+    const double bumped = brightness_spread(walls, 0.42, 0.58, 0.35, 0.65);
+    const double mapped = brightness_spread(walls, 0.72, 0.88, 0.35, 0.65);
+    CHECK(bumped > 3 * flat);
+    CHECK(mapped > 3 * flat);
+    // Every wall has a tangent frame: its view is nowhere black there.
+    const Image& frames = figure.panels[2].image;
+    for (const double x : {0.2, 0.5, 0.8})
+        CHECK(frames.at(static_cast<int>(x * frames.width()), frames.height() / 2) != Color(0.0));
 }
