@@ -1,6 +1,8 @@
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include <tiny_obj_loader.h>
@@ -60,10 +62,32 @@ Vec3 read_triple(const std::vector<std::string_view>& fields, const char* what,
     return triple;
 }
 
+// A line of the OBJ file that names something by a word: a material library or a material.
+struct NamedAt {
+    std::string name;
+    int line = 0;
+};
+
+// What the check of an OBJ file's lines leaves for after tinyobjloader has read it: the material
+// libraries (each there, beside the file) and the materials the faces use.
+struct ObjMaterialLines {
+    std::vector<NamedAt> libraries;
+    std::vector<NamedAt> used;
+};
+
+// The rest of an OBJ line after its keyword, as one name (a file name may hold spaces).
+std::string rest_of_line(const std::string& text, std::string_view keyword) {
+    const std::size_t start = text.find_first_not_of(" \t", text.find(keyword) + keyword.size());
+    if (start == std::string::npos) return {};
+    const std::size_t end = text.find_last_not_of(" \t\r");
+    return text.substr(start, end + 1 - start);
+}
+
 // tinyobjloader reads what it can and says little: "v 1 abc 3" becomes (1, 0, 3), "f 1 2" is
-// dropped, and an index past 2^31 wraps. Before it loads, every line it will use ("v", "vn" and
-// "f") is checked here, so that a bad file is an error at its line instead of a wrong mesh.
-void check_obj_lines(const std::filesystem::path& path) {
+// dropped, an index past 2^31 wraps, and a missing material library is a warning. Before it
+// loads, every line it will use ("v", "vt", "vn", "f", "mtllib", "usemtl") is checked here, so
+// that a bad file is an error at its line instead of a wrong mesh.
+ObjMaterialLines check_obj_lines(const std::filesystem::path& path) {
     const std::string name = path.string();
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(name, 0, "cannot open the mesh file");
@@ -71,6 +95,7 @@ void check_obj_lines(const std::filesystem::path& path) {
     IndexedElements vertices{"vertex", "vertices"};
     IndexedElements uvs{"texture coordinate", "texture coordinates"};
     IndexedElements normals{"vertex normal", "vertex normals"};
+    ObjMaterialLines materials;
     std::string text;
     std::vector<std::string_view> fields;
     for (int line = 1; std::getline(in, text); ++line) {
@@ -95,6 +120,25 @@ void check_obj_lines(const std::filesystem::path& path) {
                 throw InputError(name, line, "a vertex normal is zero: it has no direction");
             }
             ++normals.defined;
+        } else if (fields[0] == "mtllib" || fields[0] == "usemtl") {
+            const std::string named = rest_of_line(text, fields[0]);
+            if (named.empty()) {
+                throw InputError(name, line,
+                                 "'" + std::string(fields[0]) + "' needs a name after it");
+            }
+            if (fields[0] == "usemtl") {
+                materials.used.push_back({named, line});
+                continue;
+            }
+            const std::filesystem::path library = path.parent_path() / named;
+            std::error_code error;
+            if (!std::filesystem::is_regular_file(library, error)) {
+                throw InputError(name, line,
+                                 "material library " + quoted_field(named) +
+                                     " not found (looked for " + quoted_field(library.string()) +
+                                     ")");
+            }
+            materials.libraries.push_back({named, line});
         } else if (fields[0] == "f") {
             if (fields.size() < 4) {
                 throw InputError(name, line,
@@ -125,6 +169,7 @@ void check_obj_lines(const std::filesystem::path& path) {
                     elements->plural + ", counted from 1");
         }
     }
+    return materials;
 }
 
 // The fan of a polygon's corner indices (normals, uvs), as its positions fan: the same corners in
@@ -142,10 +187,63 @@ void append_corner_fan(std::vector<std::array<std::uint32_t, 3>>& fans,
     }
 }
 
+// A material's map: its image resolved against the OBJ file's folder, which must hold it (the
+// error names the file's first `mtllib` line, as tinyobjloader keeps no MTL line numbers).
+MeshMap mesh_map(const std::string& image, const tinyobj::texture_option_t& option,
+                 const char* keyword, const std::string& material,
+                 const std::filesystem::path& path, const NamedAt& library) {
+    if (image.empty()) return {};
+    const std::filesystem::path file = path.parent_path() / image;
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(file, error)) {
+        throw InputError(path.string(), library.line,
+                         "in material " + quoted_field(material) + " of " +
+                             quoted_field(library.name) + ": " + keyword + " " +
+                             quoted_field(image) + " not found (looked for " +
+                             quoted_field(file.string()) + ")");
+    }
+    return {file, option.clamp ? WrapMode::clamp : WrapMode::repeat};
+}
+
+// The MTL materials tinyobjloader read, and a check that every `usemtl` names one of them.
+std::vector<MeshMaterial> mesh_materials(const std::vector<tinyobj::material_t>& read,
+                                         const ObjMaterialLines& lines,
+                                         const std::filesystem::path& path) {
+    std::vector<MeshMaterial> materials;
+    if (lines.libraries.empty()) return materials;
+    const NamedAt& library = lines.libraries.front();
+    for (const tinyobj::material_t& m : read) {
+        MeshMaterial material;
+        material.name = m.name;
+        material.diffuse = {m.diffuse[0], m.diffuse[1], m.diffuse[2]};
+        material.diffuse_map =
+            mesh_map(m.diffuse_texname, m.diffuse_texopt, "map_Kd", m.name, path, library);
+        material.bump_map =
+            mesh_map(m.bump_texname, m.bump_texopt, "map_Bump", m.name, path, library);
+        material.bump_scale = m.bump_texopt.bump_multiplier;
+        material.normal_map =
+            mesh_map(m.normal_texname, m.normal_texopt, "norm", m.name, path, library);
+        materials.push_back(std::move(material));
+    }
+    for (const NamedAt& used : lines.used) {
+        const bool known = std::any_of(materials.begin(), materials.end(),
+                                       [&](const MeshMaterial& m) { return m.name == used.name; });
+        if (known) continue;
+        std::string names;
+        for (const MeshMaterial& m : materials)
+            names += (names.empty() ? "" : ", ") + quoted_field(m.name);
+        throw InputError(path.string(), used.line,
+                         "material " + quoted_field(used.name) +
+                             " is not in the file's material libraries, which define " +
+                             (names.empty() ? std::string("none") : names));
+    }
+    return materials;
+}
+
 }  // namespace
 
 TriangleMesh load_obj_mesh(const std::filesystem::path& path) {
-    check_obj_lines(path);
+    const ObjMaterialLines material_lines = check_obj_lines(path);
 
     const std::string name = path.string();
     tinyobj::ObjReaderConfig config;
@@ -157,6 +255,7 @@ TriangleMesh load_obj_mesh(const std::filesystem::path& path) {
     }
 
     TriangleMesh mesh;
+    mesh.materials = mesh_materials(reader.GetMaterials(), material_lines, path);
     const std::vector<tinyobj::real_t>& coordinates = reader.GetAttrib().vertices;
     mesh.positions.reserve(coordinates.size() / 3);
     for (std::size_t k = 0; k + 2 < coordinates.size(); k += 3) {
@@ -178,7 +277,8 @@ TriangleMesh load_obj_mesh(const std::filesystem::path& path) {
     std::vector<std::uint32_t> polygon_uvs;
     for (const tinyobj::shape_t& shape : reader.GetShapes()) {
         std::size_t first = 0;
-        for (const unsigned int corners : shape.mesh.num_face_vertices) {
+        for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
+            const unsigned int corners = shape.mesh.num_face_vertices[f];
             polygon.clear();
             polygon_normals.clear();
             polygon_uvs.clear();
@@ -191,6 +291,9 @@ TriangleMesh load_obj_mesh(const std::filesystem::path& path) {
             append_triangle_fan(mesh, polygon);
             if (!mesh.normals.empty()) append_corner_fan(mesh.face_normals, polygon_normals);
             if (!mesh.uvs.empty()) append_corner_fan(mesh.face_uvs, polygon_uvs);
+            if (!mesh.materials.empty())
+                mesh.face_materials.insert(mesh.face_materials.end(), corners - 2,
+                                           shape.mesh.material_ids[f]);
             first += corners;
         }
     }

@@ -193,6 +193,28 @@ std::pair<std::filesystem::path, TriangleMesh> SceneParser::mesh_file(std::size_
     return {file, std::move(loaded)};
 }
 
+// The scene material of a face whose OBJ file gives it an MTL material: the material in force,
+// with the MTL's Kd and maps in place of its own (docs/scene-format.md, "Meshes"). Its index in
+// Scene::materials.
+std::uint32_t SceneParser::mesh_material(const MeshMaterial& from_file) {
+    Material material = material_;
+    material.diffuse = from_file.diffuse;
+    material.diffuse_map =
+        from_file.diffuse_map.file.empty()
+            ? -1
+            : texture_index(from_file.diffuse_map.file, from_file.diffuse_map.wrap);
+    material.normal_map = from_file.normal_map.file.empty()
+                              ? -1
+                              : texture_index(from_file.normal_map.file, from_file.normal_map.wrap);
+    material.bump_map = -1;
+    if (material.normal_map < 0 && !from_file.bump_map.file.empty()) {
+        material.bump_map = texture_index(from_file.bump_map.file, from_file.bump_map.wrap);
+        material.bump_scale = from_file.bump_scale;
+    }
+    scene_.materials.push_back(material);
+    return static_cast<std::uint32_t>(scene_.materials.size() - 1);
+}
+
 void SceneParser::mesh() {
     const auto [file, loaded] = mesh_file(1);
     const bool smooth = fields_.size() > 2 && keyword(2, "smooth") == 0;
@@ -208,6 +230,8 @@ void SceneParser::mesh() {
     scene_.meshes.push_back(record);
 
     const ObjectAttributes shared = attributes();
+    // Each MTL material the faces use, made a scene material once.
+    std::vector<std::uint32_t> scene_materials(loaded.materials.size(), kUnregistered);
     scene_.triangles.reserve(scene_.triangles.size() + loaded.faces.size());
     for (std::size_t k = 0; k < loaded.faces.size(); ++k) {
         const auto& face = loaded.faces[k];
@@ -215,6 +239,12 @@ void SceneParser::mesh() {
         triangle.shape = {loaded.positions[face[0]], loaded.positions[face[1]],
                           loaded.positions[face[2]]};
         triangle.attributes = shared;
+        if (!loaded.face_materials.empty() && loaded.face_materials[k] >= 0) {
+            const auto m = static_cast<std::size_t>(loaded.face_materials[k]);
+            if (scene_materials[m] == kUnregistered)
+                scene_materials[m] = mesh_material(loaded.materials[m]);
+            triangle.attributes.material = scene_materials[m];
+        }
         triangle.mesh = mesh_id;
         if (const std::optional<VertexNormals> normals =
                 face_vertex_normals(loaded, k, smooth_normals)) {
@@ -244,6 +274,11 @@ void SceneParser::define() {
     const auto [file, loaded] = mesh_file(2);
     if (!loaded.normals.empty()) {
         note("the mesh's vertex normals are not used by its instances, which shade faceted");
+    }
+    if (!loaded.materials.empty()) {
+        note(
+            "the mesh's MTL materials are not used by its instances, which take the material in "
+            "force where each is placed");
     }
     MeshDefinition definition;
     definition.name = name;

@@ -141,6 +141,7 @@ class SceneParser {
     void tri();
     void trinormal();
     std::pair<std::filesystem::path, TriangleMesh> mesh_file(std::size_t k) const;
+    std::uint32_t mesh_material(const MeshMaterial& material);
     void mesh();
     void define();
     void instance();
@@ -181,6 +182,7 @@ class SceneParser {
     void shininess();
 
     // Surface detail (stage 11)
+    std::int32_t texture_index(const std::filesystem::path& file, WrapMode wrap);
     std::int32_t texture_file(std::size_t k, std::size_t wrap_field);
     void set_map(std::int32_t Material::*map);
     void texture();

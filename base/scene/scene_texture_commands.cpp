@@ -11,9 +11,19 @@
 
 namespace raystep::scene_parsing {
 
+// The image `file` read with `wrap`, as an index in Scene::textures: a file named twice with one
+// wrap mode is kept once. The renderer reads it, and names this line where it cannot.
+std::int32_t SceneParser::texture_index(const std::filesystem::path& file, WrapMode wrap) {
+    for (std::size_t t = 0; t < scene_.textures.size(); ++t) {
+        if (scene_.textures[t].path == file.string() && scene_.textures[t].wrap == wrap)
+            return static_cast<std::int32_t>(t);
+    }
+    scene_.textures.push_back({file.string(), wrap, static_cast<std::uint32_t>(line_)});
+    return static_cast<std::int32_t>(scene_.textures.size() - 1);
+}
+
 // The image file of field k for a material's map, resolved against the scene's folder, with the
-// wrap mode of field `wrap_field` (repeat when absent): its index in Scene::textures, a file named
-// twice with one wrap mode kept once. The file must be there; the renderer reads it.
+// wrap mode of field `wrap_field` (repeat when absent). The file must be there.
 std::int32_t SceneParser::texture_file(std::size_t k, std::size_t wrap_field) {
     std::filesystem::path file{std::string(fields_[k])};
     if (file.is_relative()) file = folder_ / file;
@@ -25,12 +35,7 @@ std::int32_t SceneParser::texture_file(std::size_t k, std::size_t wrap_field) {
     const WrapMode wrap = fields_.size() > wrap_field
                               ? static_cast<WrapMode>(keyword(wrap_field, "repeat|clamp|mirror"))
                               : WrapMode::repeat;
-    for (std::size_t t = 0; t < scene_.textures.size(); ++t) {
-        if (scene_.textures[t].path == file.string() && scene_.textures[t].wrap == wrap)
-            return static_cast<std::int32_t>(t);
-    }
-    scene_.textures.push_back({file.string(), wrap, static_cast<std::uint32_t>(line_)});
-    return static_cast<std::int32_t>(scene_.textures.size() - 1);
+    return texture_index(file, wrap);
 }
 
 // `texture FILE [wrap]`, `normalmap FILE [wrap]`: the map of the objects that follow, until

@@ -121,6 +121,40 @@ TEST_CASE("load_mesh: OBJ texture coordinates, fanned with their face", "[base]"
                                          "of range: the file has 1 texture coordinates"));
 }
 
+TEST_CASE("load_mesh: OBJ materials from its MTL library, each face's by usemtl", "[base]") {
+    const TriangleMesh mesh = load_mesh(kMeshes / "materials.obj");
+    REQUIRE(mesh.materials.size() == 2);
+    const MeshMaterial& painted = mesh.materials[0];
+    CHECK(painted.name == "painted");
+    CHECK(painted.diffuse == Color(0.8, 0.2, 0.1));
+    CHECK(painted.diffuse_map.file == kMeshes / "maps/two.ppm");
+    CHECK(painted.diffuse_map.wrap == WrapMode::clamp);  // -clamp on
+    CHECK(painted.bump_map.file.empty());
+    const MeshMaterial& bricks = mesh.materials[1];
+    CHECK(bricks.bump_map.file == kMeshes / "maps/two.ppm");
+    CHECK(bricks.bump_map.wrap == WrapMode::repeat);
+    CHECK(bricks.bump_scale == Approx(0.05));  // -bm, read as a float by tinyobjloader
+    CHECK(bricks.normal_map.file == kMeshes / "maps/two.ppm");
+    // The triangle before any usemtl has none; each quad's two triangles have its material.
+    CHECK(mesh.face_materials == std::vector<std::int32_t>{-1, 0, 0, 1, 1});
+    CHECK(load_mesh(kMeshes / "square.obj").materials.empty());
+    CHECK(load_mesh(kMeshes / "square.obj").face_materials.empty());
+}
+
+TEST_CASE("load_mesh: a missing material library, material or map names the file and line",
+          "[base]") {
+    CHECK_THAT(error_of(kMeshes / "missing_library.obj"),
+               Catch::Matchers::Contains("missing_library.obj:2: material library 'nowhere.mtl' "
+                                         "not found"));
+    CHECK_THAT(error_of(kMeshes / "unknown_material.obj"),
+               Catch::Matchers::Contains("unknown_material.obj:5: material 'stone' is not in the "
+                                         "file's material libraries, which define 'painted', "
+                                         "'bricks'"));
+    CHECK_THAT(error_of(kMeshes / "missing_map.obj"),
+               Catch::Matchers::Contains("missing_map.obj:1: in material 'lost' of "
+                                         "'missing_map.mtl': map_Kd 'maps/none.png' not found"));
+}
+
 TEST_CASE("load_mesh: a file without normals has none", "[base]") {
     const TriangleMesh mesh = load_mesh(kMeshes / "square.obj");
     CHECK(mesh.normals.empty());

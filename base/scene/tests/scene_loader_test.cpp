@@ -327,6 +327,40 @@ TEST_CASE("parse_scene: texture, normalmap and bumpmap set the maps of the objec
     CHECK_FALSE(material(3).has_maps());
 }
 
+TEST_CASE(
+    "parse_scene: a mesh face with an MTL material takes its Kd and maps, the rest as in "
+    "force",
+    "[base]") {
+    const Scene scene =
+        parse(kCamera + "diffuse 0 1 0\nspecular 0.3 0.3 0.3\nmesh meshes/materials.obj\n");
+    REQUIRE(scene.triangles.size() == 5);
+    const auto material = [&](std::size_t k) {
+        return scene.materials[scene.triangles[k].attributes.material];
+    };
+    // Before any usemtl: the material in force.
+    CHECK(material(0).diffuse == Color(0, 1, 0));
+    CHECK_FALSE(material(0).has_maps());
+    // "painted": its Kd and its clamped diffuse map; the scene's specular kept.
+    CHECK(material(1).diffuse == Color(0.8, 0.2, 0.1));
+    CHECK(material(1).specular == Color(0.3, 0.3, 0.3));
+    REQUIRE(material(1).diffuse_map >= 0);
+    CHECK(scene.textures[static_cast<std::size_t>(material(1).diffuse_map)].wrap ==
+          WrapMode::clamp);
+    CHECK(scene.triangles[2].attributes.material == scene.triangles[1].attributes.material);
+    // "bricks": a normal map and a bump map, of which the normal map shades, as with normalmap.
+    CHECK(material(3).normal_map >= 0);
+    CHECK(material(3).bump_map == -1);
+    CHECK(scene.textures[static_cast<std::size_t>(material(3).normal_map)].line ==
+          4);  // the mesh's
+}
+
+TEST_CASE("parse_scene: a defined mesh's MTL materials are noted as unused by its instances",
+          "[base]") {
+    const Scene scene = parse(kCamera + "define wall meshes/materials.obj\ninstance wall\n");
+    REQUIRE(scene.notes.size() == 1);
+    CHECK_THAT(scene.notes[0].text, Catch::Matchers::Contains("MTL materials are not used"));
+}
+
 TEST_CASE("parse_scene: triuv keeps the vertices' texture coordinates, as a mesh's vt do",
           "[base]") {
     const Scene scene = parse(kCamera +
