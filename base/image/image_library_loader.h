@@ -8,14 +8,14 @@
 
 namespace raystep {
 
-/// The module image_library() tries first, before the build's own path: for a program that runs
-/// where the build tree is out of its view, a grader's probe, which is told where its copy lies.
-/// Call it before the first image is read.
+/// The module image_library() loads, in place of the build's own path and the executable's
+/// folder: for a program that runs where the build tree is out of its view, a grader's probe,
+/// which is told where its copy lies. Call it before the first image is read.
 void use_image_library_module(const std::filesystem::path& module);
 
-/// The image library's table, the module loaded on the first call: from the module named by
-/// use_image_library_module, else from the path the build compiled in, else from beside the
-/// running executable. Later calls return the same table.
+/// The image library's table, the module loaded on the first call: the module named by
+/// use_image_library_module where one was, else from the path the build compiled in, else from
+/// beside the running executable. Later calls return the same table.
 /// Throws std::runtime_error naming each path tried and the system loader's message when the
 /// module cannot be loaded, has no table or was built for another table version; the next call
 /// tries again.

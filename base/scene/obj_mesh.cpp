@@ -62,31 +62,30 @@ Vec3 read_triple(const std::vector<std::string_view>& fields, const char* what,
     return triple;
 }
 
-// A line of the OBJ file that names something by a word: a material library or a material.
-struct NamedAt {
-    std::string name;
+// A `usemtl` line: the material it names.
+struct MaterialUse {
+    std::string material;
     int line = 0;
 };
 
-// What the check of an OBJ file's lines leaves for after tinyobjloader has read it: the material
-// libraries (each there, beside the file) and the materials the faces use.
+// What the check of an OBJ file's lines leaves for after tinyobjloader has read it: whether it
+// names a material library, each `usemtl`, and for each face in file order the `usemtl` it
+// follows (an index into `uses`, -1 before any).
 struct ObjMaterialLines {
-    std::vector<NamedAt> libraries;
-    std::vector<NamedAt> used;
+    bool has_library = false;
+    std::vector<MaterialUse> uses;
+    std::vector<int> face_use;
 };
 
-// The rest of an OBJ line after its keyword, as one name (a file name may hold spaces).
-std::string rest_of_line(const std::string& text, std::string_view keyword) {
-    const std::size_t start = text.find_first_not_of(" \t", text.find(keyword) + keyword.size());
-    if (start == std::string::npos) return {};
-    const std::size_t end = text.find_last_not_of(" \t\r");
-    return text.substr(start, end + 1 - start);
-}
+// tinyobjloader keeps a face's corner count in an unsigned char.
+constexpr std::size_t kMostFaceCorners = 255;
 
 // tinyobjloader reads what it can and says little: "v 1 abc 3" becomes (1, 0, 3), "f 1 2" is
-// dropped, an index past 2^31 wraps, and a missing material library is a warning. Before it
-// loads, every line it will use ("v", "vt", "vn", "f", "mtllib", "usemtl") is checked here, so
-// that a bad file is an error at its line instead of a wrong mesh.
+// dropped, an index past 2^31 wraps, a face of 256 corners has 0, and a missing material library
+// or material is a warning. Before it loads, every line it will use ("v", "vt", "vn", "f",
+// "mtllib", "usemtl") is checked here, so that a bad file is an error at its line instead of a
+// wrong mesh. A name is one word, as tinyobjloader reads it, and a library lies beside the file,
+// where it looks.
 ObjMaterialLines check_obj_lines(const std::filesystem::path& path) {
     const std::string name = path.string();
     std::ifstream in(path, std::ios::binary);
@@ -121,30 +120,39 @@ ObjMaterialLines check_obj_lines(const std::filesystem::path& path) {
             }
             ++normals.defined;
         } else if (fields[0] == "mtllib" || fields[0] == "usemtl") {
-            const std::string named = rest_of_line(text, fields[0]);
-            if (named.empty()) {
+            if (fields.size() != 2) {
                 throw InputError(name, line,
-                                 "'" + std::string(fields[0]) + "' needs a name after it");
+                                 "'" + std::string(fields[0]) + "' takes one name, of one word; " +
+                                     "this line has " + std::to_string(fields.size() - 1));
             }
+            const std::string named(fields[1]);
             if (fields[0] == "usemtl") {
-                materials.used.push_back({named, line});
+                materials.uses.push_back({named, line});
                 continue;
             }
             const std::filesystem::path library = path.parent_path() / named;
             std::error_code error;
+            if (std::filesystem::path(named).has_parent_path() || named.find('\\') != named.npos) {
+                throw InputError(name, line,
+                                 "material library " + quoted_field(named) +
+                                     " is not a file name: the library is read from beside the "
+                                     "OBJ file");
+            }
             if (!std::filesystem::is_regular_file(library, error)) {
                 throw InputError(name, line,
                                  "material library " + quoted_field(named) +
                                      " not found (looked for " + quoted_field(library.string()) +
                                      ")");
             }
-            materials.libraries.push_back({named, line});
+            materials.has_library = true;
         } else if (fields[0] == "f") {
-            if (fields.size() < 4) {
+            if (fields.size() < 4 || fields.size() - 1 > kMostFaceCorners) {
                 throw InputError(name, line,
-                                 "a face needs at least 3 vertices, this one has " +
+                                 "a face needs 3 to " + std::to_string(kMostFaceCorners) +
+                                     " vertices, this one has " +
                                      std::to_string(fields.size() - 1));
             }
+            materials.face_use.push_back(static_cast<int>(materials.uses.size()) - 1);
             for (std::size_t k = 1; k < fields.size(); ++k) {
                 // A corner is v, v/vt, v//vn or v/vt/vn.
                 const std::string_view corner = fields[k];
@@ -187,57 +195,76 @@ void append_corner_fan(std::vector<std::array<std::uint32_t, 3>>& fans,
     }
 }
 
-// A material's map: its image resolved against the OBJ file's folder, which must hold it (the
-// error names the file's first `mtllib` line, as tinyobjloader keeps no MTL line numbers).
+// A material's map: its image resolved against the OBJ file's folder, where the library lies.
 MeshMap mesh_map(const std::string& image, const tinyobj::texture_option_t& option,
-                 const char* keyword, const std::string& material,
-                 const std::filesystem::path& path, const NamedAt& library) {
+                 const std::filesystem::path& path) {
     if (image.empty()) return {};
-    const std::filesystem::path file = path.parent_path() / image;
-    std::error_code error;
-    if (!std::filesystem::is_regular_file(file, error)) {
-        throw InputError(path.string(), library.line,
-                         "in material " + quoted_field(material) + " of " +
-                             quoted_field(library.name) + ": " + keyword + " " +
-                             quoted_field(image) + " not found (looked for " +
-                             quoted_field(file.string()) + ")");
-    }
-    return {file, option.clamp ? WrapMode::clamp : WrapMode::repeat};
+    return {path.parent_path() / image, option.clamp ? WrapMode::clamp : WrapMode::repeat};
 }
 
-// The MTL materials tinyobjloader read, and a check that every `usemtl` names one of them.
 std::vector<MeshMaterial> mesh_materials(const std::vector<tinyobj::material_t>& read,
-                                         const ObjMaterialLines& lines,
                                          const std::filesystem::path& path) {
     std::vector<MeshMaterial> materials;
-    if (lines.libraries.empty()) return materials;
-    const NamedAt& library = lines.libraries.front();
     for (const tinyobj::material_t& m : read) {
         MeshMaterial material;
         material.name = m.name;
         material.diffuse = {m.diffuse[0], m.diffuse[1], m.diffuse[2]};
-        material.diffuse_map =
-            mesh_map(m.diffuse_texname, m.diffuse_texopt, "map_Kd", m.name, path, library);
-        material.bump_map =
-            mesh_map(m.bump_texname, m.bump_texopt, "map_Bump", m.name, path, library);
+        material.diffuse_map = mesh_map(m.diffuse_texname, m.diffuse_texopt, path);
+        material.bump_map = mesh_map(m.bump_texname, m.bump_texopt, path);
         material.bump_scale = m.bump_texopt.bump_multiplier;
-        material.normal_map =
-            mesh_map(m.normal_texname, m.normal_texopt, "norm", m.name, path, library);
+        material.normal_map = mesh_map(m.normal_texname, m.normal_texopt, path);
         materials.push_back(std::move(material));
     }
-    for (const NamedAt& used : lines.used) {
-        const bool known = std::any_of(materials.begin(), materials.end(),
-                                       [&](const MeshMaterial& m) { return m.name == used.name; });
-        if (known) continue;
-        std::string names;
-        for (const MeshMaterial& m : materials)
-            names += (names.empty() ? "" : ", ") + quoted_field(m.name);
-        throw InputError(path.string(), used.line,
-                         "material " + quoted_field(used.name) +
-                             " is not in the file's material libraries, which define " +
-                             (names.empty() ? std::string("none") : names));
-    }
     return materials;
+}
+
+// That the material a `usemtl` gave its faces can be rendered: each map's image is there and the
+// bump's scale is finite. Checked for the materials faces use, at the first `usemtl` of each.
+void check_used_material(const MeshMaterial& material, const MaterialUse& use,
+                         const std::filesystem::path& path) {
+    const std::pair<const MeshMap*, const char*> maps[] = {{&material.diffuse_map, "map_Kd"},
+                                                           {&material.bump_map, "map_Bump"},
+                                                           {&material.normal_map, "norm"}};
+    for (const auto& [map, keyword] : maps) {
+        std::error_code error;
+        if (!map->file.empty() && !std::filesystem::is_regular_file(map->file, error)) {
+            throw InputError(path.string(), use.line,
+                             "material " + quoted_field(use.material) + ": its " + keyword +
+                                 " image " + quoted_field(map->file.filename().string()) +
+                                 " not found (looked for " + quoted_field(map->file.string()) +
+                                 ")");
+        }
+    }
+    if (!std::isfinite(material.bump_scale)) {
+        throw InputError(path.string(), use.line,
+                         "material " + quoted_field(use.material) +
+                             ": its bump map's scale (-bm) is not a finite number");
+    }
+}
+
+// The material of face `face_number` (in file order) as tinyobjloader gave it, `read_id`, held
+// to the file's `usemtl` lines: a face after one must have its material, which tinyobjloader
+// leaves out (-1) where the name is in no library named above that line.
+std::int32_t face_material(const TriangleMesh& mesh, const ObjMaterialLines& lines,
+                           std::size_t face_number, int read_id, std::vector<bool>& checked,
+                           const std::filesystem::path& path) {
+    if (face_number >= lines.face_use.size()) {
+        throw InputError(path.string(), 0, "the OBJ reader read more faces than the file has");
+    }
+    const int use = lines.face_use[face_number];
+    if (use < 0) return -1;
+    const MaterialUse& named = lines.uses[static_cast<std::size_t>(use)];
+    if (read_id < 0 || static_cast<std::size_t>(read_id) >= mesh.materials.size()) {
+        throw InputError(path.string(), named.line,
+                         "material " + quoted_field(named.material) +
+                             " is in no material library named above this line");
+    }
+    const auto id = static_cast<std::size_t>(read_id);
+    if (!checked[id]) {
+        check_used_material(mesh.materials[id], named, path);
+        checked[id] = true;
+    }
+    return read_id;
 }
 
 }  // namespace
@@ -255,7 +282,7 @@ TriangleMesh load_obj_mesh(const std::filesystem::path& path) {
     }
 
     TriangleMesh mesh;
-    mesh.materials = mesh_materials(reader.GetMaterials(), material_lines, path);
+    mesh.materials = mesh_materials(reader.GetMaterials(), path);
     const std::vector<tinyobj::real_t>& coordinates = reader.GetAttrib().vertices;
     mesh.positions.reserve(coordinates.size() / 3);
     for (std::size_t k = 0; k + 2 < coordinates.size(); k += 3) {
@@ -275,6 +302,8 @@ TriangleMesh load_obj_mesh(const std::filesystem::path& path) {
     std::vector<std::uint32_t> polygon;
     std::vector<std::uint32_t> polygon_normals;
     std::vector<std::uint32_t> polygon_uvs;
+    std::vector<bool> checked(mesh.materials.size(), false);
+    std::size_t face_number = 0;  // in file order, as the shapes hold the faces
     for (const tinyobj::shape_t& shape : reader.GetShapes()) {
         std::size_t first = 0;
         for (std::size_t f = 0; f < shape.mesh.num_face_vertices.size(); ++f) {
@@ -291,9 +320,13 @@ TriangleMesh load_obj_mesh(const std::filesystem::path& path) {
             append_triangle_fan(mesh, polygon);
             if (!mesh.normals.empty()) append_corner_fan(mesh.face_normals, polygon_normals);
             if (!mesh.uvs.empty()) append_corner_fan(mesh.face_uvs, polygon_uvs);
-            if (!mesh.materials.empty())
-                mesh.face_materials.insert(mesh.face_materials.end(), corners - 2,
-                                           shape.mesh.material_ids[f]);
+            if (material_lines.has_library || !material_lines.uses.empty()) {
+                mesh.face_materials.insert(
+                    mesh.face_materials.end(), corners - 2,
+                    face_material(mesh, material_lines, face_number, shape.mesh.material_ids[f],
+                                  checked, path));
+            }
+            ++face_number;
             first += corners;
         }
     }

@@ -239,7 +239,8 @@ TEST_CASE("surface_detail_demo: the maps put bricks on a flat wall, read along t
           "[app]") {
     const DemoFigure figure = surface_detail_demo(kTestDemoSize);
     check_panels(figure, 4);
-    // The walls of stage11/bumps.test fill the middle of each third, whatever the panel's height.
+    // The walls of stage11/bumps.test fill the middle of each third across, and rows 0.35 to 0.65
+    // of a panel as wide as the test's (a demo panel keeps the scene's horizontal view).
     const Image& walls = figure.panels[1].image;
     const double flat = brightness_spread(walls, 0.12, 0.3, 0.35, 0.65);
     const double bumped = brightness_spread(walls, 0.42, 0.58, 0.35, 0.65);

