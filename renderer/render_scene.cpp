@@ -324,6 +324,19 @@ const Triangle& triangle_shape(const RenderScene& render_scene, std::size_t inde
     return definition.triangles.at(index - instance.first_triangle);
 }
 
+TriangleCorners triangle_corners(const RenderScene& render_scene, std::size_t index) {
+    const Scene& scene = *render_scene.scene;
+    if (index < scene.triangles.size()) {
+        return {scene.triangles[index].vertex_normals, scene.triangles[index].vertex_uvs};
+    }
+    const std::size_t mesh = mesh_instance_at(render_scene, index);
+    const Instance& instance = render_scene.instances[render_scene.first_mesh_instance + mesh];
+    const MeshDefinition& definition =
+        scene.mesh_definitions[scene.mesh_instances[mesh].definition];
+    const std::size_t k = index - instance.first_triangle;
+    return {definition.vertex_normals.at(k), definition.vertex_uvs.at(k)};
+}
+
 const char* kind_name(PrimitiveKind kind) {
     switch (kind) {
         case PrimitiveKind::sphere:

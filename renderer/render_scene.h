@@ -108,6 +108,15 @@ const Instance* instance_of(const RenderScene& render_scene, PrimitiveKind kind,
 /// Triangle `index` of the scene's numbering (triangle_count) as written, in its object frame.
 const Triangle& triangle_shape(const RenderScene& render_scene, std::size_t index);
 
+/// Triangle `index`'s smooth normals and texture coordinates: a scene triangle's own, or for a
+/// placed mesh's triangle its definition's (MeshDefinition), indices into Scene::vertex_normals
+/// and Scene::vertex_uvs, -1 for none.
+struct TriangleCorners {
+    std::int32_t vertex_normals = -1;
+    std::int32_t vertex_uvs = -1;
+};
+TriangleCorners triangle_corners(const RenderScene& render_scene, std::size_t index);
+
 /// "sphere", "triangle", "plane".
 const char* kind_name(PrimitiveKind kind);
 

@@ -22,12 +22,10 @@ namespace {
 const VertexUvs kBarycentricUvs{{0, 0}, {1, 0}, {0, 1}};
 
 SurfaceUv uv_on_triangle(const RenderScene& render_scene, const PrimitiveHit& hit) {
-    const Scene& scene = *render_scene.scene;
     const Triangle& shape = triangle_shape(render_scene, hit.index);
     VertexUvs uvs = kBarycentricUvs;
-    if (hit.index < scene.triangles.size() && scene.triangles[hit.index].vertex_uvs >= 0) {
-        uvs = scene.vertex_uvs[static_cast<std::size_t>(scene.triangles[hit.index].vertex_uvs)];
-    }
+    const std::int32_t vertex_uvs = triangle_corners(render_scene, hit.index).vertex_uvs;
+    if (vertex_uvs >= 0) uvs = render_scene.scene->vertex_uvs[static_cast<std::size_t>(vertex_uvs)];
     return {interpolate_uv(uvs.uv0, uvs.uv1, uvs.uv2, hit.hit.beta, hit.hit.gamma),
             surface_derivatives(shape.p0, shape.p1, shape.p2, uvs.uv0, uvs.uv1, uvs.uv2)};
 }

@@ -116,10 +116,9 @@ PlacedPoint place(const RenderScene& render_scene, const Ray& ray, const Primiti
 // ray tracer does, so that a long normal written in the file does not outweigh the others; taken
 // to the world by M^-T when a transform places it. nullopt where the vertex normals cancel.
 std::optional<Vec3> interpolated_normal(const RenderScene& render_scene, std::size_t index,
-                                        const Hit& hit) {
-    const SceneTriangle& triangle = render_scene.scene->triangles[index];
+                                        std::int32_t vertex_normals, const Hit& hit) {
     const VertexNormals& n =
-        render_scene.scene->vertex_normals[static_cast<std::size_t>(triangle.vertex_normals)];
+        render_scene.scene->vertex_normals[static_cast<std::size_t>(vertex_normals)];
     Vec3 smooth;
     try {
         smooth = interpolate_normal(glm::normalize(n.n0), glm::normalize(n.n1),
@@ -159,12 +158,13 @@ SurfacePoint surface_point(const RenderScene& render_scene, const Ray& ray,
     point.to_eye = -glm::normalize(ray.direction);
     point.normal = glm::dot(hit.hit.normal, point.to_eye) < 0.0 ? -hit.hit.normal : hit.hit.normal;
     point.shading_normal = point.normal;
-    const Scene& scene = *render_scene.scene;
-    if (hit.kind == PrimitiveKind::triangle && hit.index < scene.triangles.size()) {
-        if (scene.triangles[hit.index].vertex_normals >= 0) {
-            // Where the vertex normals cancel there is no smooth normal: the flat one shades.
+    if (hit.kind == PrimitiveKind::triangle) {
+        const std::int32_t vertex_normals =
+            triangle_corners(render_scene, hit.index).vertex_normals;
+        // Where the vertex normals cancel there is no smooth normal: the flat one shades.
+        if (vertex_normals >= 0) {
             if (const std::optional<Vec3> smooth =
-                    interpolated_normal(render_scene, hit.index, hit.hit)) {
+                    interpolated_normal(render_scene, hit.index, vertex_normals, hit.hit)) {
                 point.shading_normal = glm::dot(*smooth, point.normal) < 0.0 ? -*smooth : *smooth;
             }
         }

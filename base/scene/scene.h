@@ -141,6 +141,11 @@ struct MeshDefinition {
     std::string name;
     std::string path;  ///< as resolved against the scene file's folder
     std::vector<Triangle> triangles;
+    /// Each triangle's smooth normals and texture coordinates, as a mesh's triangles have them
+    /// (SceneTriangle): indices into Scene::vertex_normals and Scene::vertex_uvs, -1 for none;
+    /// one entry per triangle, shared by every instance.
+    std::vector<std::int32_t> vertex_normals;
+    std::vector<std::int32_t> vertex_uvs;
     std::uint32_t line = 0;
 };
 

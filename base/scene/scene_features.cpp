@@ -40,6 +40,12 @@ SceneFeatures scene_features(const Scene& scene) {
     for (const SceneTriangle& triangle : scene.triangles) {
         if (triangle.vertex_normals >= 0) ++features.smooth_triangles;
     }
+    for (const MeshInstance& instance : scene.mesh_instances) {
+        const std::vector<std::int32_t>& normals =
+            scene.mesh_definitions[instance.definition].vertex_normals;
+        features.smooth_triangles += static_cast<std::size_t>(
+            std::count_if(normals.begin(), normals.end(), [](std::int32_t n) { return n >= 0; }));
+    }
     const auto mapped = [&](const ObjectAttributes& attributes) {
         return scene.materials[attributes.material].has_maps() ? 1 : 0;
     };

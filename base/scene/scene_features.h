@@ -12,8 +12,8 @@ struct SceneFeatures {
     std::size_t spheres = 0;
     std::size_t triangles = 0;  ///< all triangles, mesh triangles included
     std::size_t mesh_triangles = 0;
-    /// Triangles with vertex normals (`trinormal`, a mesh's `vn` or `mesh FILE smooth`), shaded
-    /// by stage 11's interpolation.
+    /// Triangles with vertex normals (`trinormal`, a mesh's `vn` or `mesh FILE smooth`, a defined
+    /// mesh's once per instance), shaded by stage 11's interpolation.
     std::size_t smooth_triangles = 0;
     /// Objects whose material looks up an image (`texture`, `normalmap`, `bumpmap`): stage 11's
     /// lookups. Each sphere, plane and triangle counts (a `mesh` file's too), and each `instance`

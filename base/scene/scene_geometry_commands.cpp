@@ -45,6 +45,28 @@ std::optional<VertexNormals> face_vertex_normals(const TriangleMesh& mesh, std::
     return VertexNormals{smooth[face[0]], smooth[face[1]], smooth[face[2]]};
 }
 
+// Face k's smooth normals and texture coordinates, where it has them, added to the scene's pools:
+// their indices there, -1 for none (SceneTriangle, MeshDefinition).
+struct FaceCorners {
+    std::int32_t vertex_normals = -1;
+    std::int32_t vertex_uvs = -1;
+};
+
+FaceCorners add_face_corners(Scene& scene, const TriangleMesh& mesh, std::size_t k,
+                             const std::vector<Vec3>& smooth_normals) {
+    FaceCorners corners;
+    if (const std::optional<VertexNormals> normals = face_vertex_normals(mesh, k, smooth_normals)) {
+        corners.vertex_normals = static_cast<std::int32_t>(scene.vertex_normals.size());
+        scene.vertex_normals.push_back(*normals);
+    }
+    if (!mesh.face_uvs.empty() && mesh.face_uvs[k][0] != kNoCorner) {
+        const auto& uv = mesh.face_uvs[k];
+        corners.vertex_uvs = static_cast<std::int32_t>(scene.vertex_uvs.size());
+        scene.vertex_uvs.push_back({mesh.uvs[uv[0]], mesh.uvs[uv[1]], mesh.uvs[uv[2]]});
+    }
+    return corners;
+}
+
 }  // namespace
 
 // Geometry
@@ -246,16 +268,9 @@ void SceneParser::mesh() {
             triangle.attributes.material = scene_materials[m];
         }
         triangle.mesh = mesh_id;
-        if (const std::optional<VertexNormals> normals =
-                face_vertex_normals(loaded, k, smooth_normals)) {
-            triangle.vertex_normals = static_cast<std::int32_t>(scene_.vertex_normals.size());
-            scene_.vertex_normals.push_back(*normals);
-        }
-        if (!loaded.face_uvs.empty() && loaded.face_uvs[k][0] != kNoCorner) {
-            const auto& uv = loaded.face_uvs[k];
-            triangle.vertex_uvs = static_cast<std::int32_t>(scene_.vertex_uvs.size());
-            scene_.vertex_uvs.push_back({loaded.uvs[uv[0]], loaded.uvs[uv[1]], loaded.uvs[uv[2]]});
-        }
+        const FaceCorners corners = add_face_corners(scene_, loaded, k, smooth_normals);
+        triangle.vertex_normals = corners.vertex_normals;
+        triangle.vertex_uvs = corners.vertex_uvs;
         scene_.triangles.push_back(triangle);
     }
 }
@@ -272,9 +287,9 @@ void SceneParser::define() {
         }
     }
     const auto [file, loaded] = mesh_file(2);
-    if (!loaded.normals.empty()) {
-        note("the mesh's vertex normals are not used by its instances, which shade faceted");
-    }
+    const bool smooth = fields_.size() > 3 && keyword(3, "smooth") == 0;
+    const std::vector<Vec3> smooth_normals =
+        smooth ? area_weighted_normals(loaded) : std::vector<Vec3>();
     if (!loaded.materials.empty()) {
         note(
             "the mesh's MTL materials are not used by its instances, which take the material in "
@@ -285,9 +300,13 @@ void SceneParser::define() {
     definition.path = file.string();
     definition.line = static_cast<std::uint32_t>(line_);
     definition.triangles.reserve(loaded.faces.size());
-    for (const auto& face : loaded.faces) {
+    for (std::size_t k = 0; k < loaded.faces.size(); ++k) {
+        const auto& face = loaded.faces[k];
         definition.triangles.push_back(
             {loaded.positions[face[0]], loaded.positions[face[1]], loaded.positions[face[2]]});
+        const FaceCorners corners = add_face_corners(scene_, loaded, k, smooth_normals);
+        definition.vertex_normals.push_back(corners.vertex_normals);
+        definition.vertex_uvs.push_back(corners.vertex_uvs);
     }
     scene_.mesh_definitions.push_back(std::move(definition));
 }

@@ -115,7 +115,7 @@ const std::vector<SceneParser::Command>& SceneParser::commands() {
         {"vertexuv", "x y z u v", &SceneParser::vertexuv},
         {"triuv", "v0 v1 v2", &SceneParser::triuv},
         {"mesh", "file [smooth]", &SceneParser::mesh},
-        {"define", "name file", &SceneParser::define},
+        {"define", "name file [smooth]", &SceneParser::define},
         {"instance", "name", &SceneParser::instance},
         {"translate", "x y z", &SceneParser::translate},
         {"rotate", "axisx axisy axisz degrees", &SceneParser::rotate},

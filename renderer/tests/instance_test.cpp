@@ -2,6 +2,7 @@
 // boxes. Whatever the structure, the renderer's hit must be brute force's: every object tested in
 // turn in its own frame, the nearest kept by comes_before.
 
+#include <algorithm>
 #include <fstream>
 #include <string>
 
@@ -13,6 +14,7 @@
 #include "base/testing/catch.h"
 #include "base/testing/scratch_folder.h"
 #include "renderer/render_scene.h"
+#include "renderer/tile_renderer.h"
 
 using namespace raystep;
 
@@ -224,5 +226,46 @@ TEST_CASE("instances: define and instance errors name the line", "[app]") {
                Catch::Contains("bad.test:3") && Catch::Contains("already defined, at line 2"));
     CHECK_THAT(error_of("define grid missing.off\n"),
                Catch::Contains("bad.test:2") && Catch::Contains("not found"));
-    CHECK_THAT(error_of("define grid\n"), Catch::Contains("takes 2 arguments"));
+    CHECK_THAT(error_of("define grid\n"), Catch::Contains("takes 2 or 3 arguments"));
+}
+
+TEST_CASE("instances: a defined mesh's normals and uvs shade each instance as its mesh's own",
+          "[app]") {
+    testing::ScratchFolder folder("instances");
+    write_grid_mesh(folder.path() / "grid.off", 6);
+    const std::string top =
+        "size 40 30\ncamera 0 0 4 0 0 0 0 1 0 45\npoint 1 2 3 1 1 1\ndiffuse 0.8 0.8 0.8\n";
+    const auto shaded = [&](const std::string& objects) {
+        RenderOptions options;
+        options.view = View::shaded;
+        return render_image(
+            prepare_render_scene(parse_scene(top + objects, "grid.test", folder.path())), options);
+    };
+    const Image meshed = shaded("mesh grid.off smooth\n");
+    const Image placed = shaded("define grid grid.off smooth\ninstance grid\n");
+    const Image flat = shaded("define grid grid.off\ninstance grid\n");
+    double largest = 0.0;
+    int unlike_flat = 0;
+    for (int j = 0; j < meshed.height(); ++j) {
+        for (int i = 0; i < meshed.width(); ++i) {
+            const Color d = glm::abs(meshed.at(i, j) - placed.at(i, j));
+            largest = std::max({largest, d.r, d.g, d.b});
+            if (glm::length(meshed.at(i, j) - flat.at(i, j)) > 1e-3) ++unlike_flat;
+        }
+    }
+    CHECK(largest < 1e-9);
+    CHECK(unlike_flat > 100);
+
+    // The texture coordinates an instance's triangle looks up are its definition's.
+    std::ofstream(folder.path() / "quad.obj")
+        << "v 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0.5 0\nvt 1 0\nvt 1 1\nf 1/1 2/2 3/3\n";
+    const Scene scene = parse_scene(
+        "camera 0 0 4 0 0 0 0 1 0 45\ndefine quad quad.obj\n"
+        "instance quad\ninstance quad\n",
+        "quad.test", folder.path());
+    const RenderScene render_scene = prepare_render_scene(scene);
+    const TriangleCorners second = triangle_corners(render_scene, 1);
+    REQUIRE(second.vertex_uvs >= 0);
+    CHECK(scene.vertex_uvs[static_cast<std::size_t>(second.vertex_uvs)].uv0 == Vec2(0.5, 0));
+    CHECK(second.vertex_normals == -1);
 }

@@ -293,12 +293,27 @@ TEST_CASE("parse_scene: mesh FILE smooth gives every triangle its vertices' area
     }
 }
 
-TEST_CASE("parse_scene: a defined mesh's vertex normals are noted as unused by its instances",
+TEST_CASE("parse_scene: a defined mesh keeps each face's vertex normals and uvs, as mesh does",
           "[base]") {
-    const Scene scene = parse(kCamera + "define ball meshes/normals.obj\ninstance ball\n");
-    REQUIRE(scene.notes.size() == 1);
-    CHECK(scene.notes[0].command == "define");
-    CHECK_THAT(scene.notes[0].text, Catch::Matchers::Contains("shade faceted"));
+    const Scene scene =
+        parse(kCamera +
+              "define ball meshes/normals.obj\ninstance ball\n"
+              "define quad meshes/uvs.obj\ndefine square meshes/square.obj smooth\n");
+    CHECK(scene.notes.empty());
+    REQUIRE(scene.mesh_definitions.size() == 3);
+    const MeshDefinition& ball = scene.mesh_definitions[0];
+    REQUIRE(ball.vertex_normals.size() == 3);
+    REQUIRE(ball.vertex_normals[0] >= 0);
+    CHECK(scene.vertex_normals[static_cast<std::size_t>(ball.vertex_normals[0])].n1 ==
+          Vec3(0, 0, 2));
+    CHECK(ball.vertex_normals[2] == -1);  // a face with a corner that names no normal
+    const MeshDefinition& quad = scene.mesh_definitions[1];
+    REQUIRE(quad.vertex_uvs.size() == 2);
+    REQUIRE(quad.vertex_uvs[0] >= 0);
+    CHECK(scene.vertex_uvs[static_cast<std::size_t>(quad.vertex_uvs[0])].uv2 == Vec2(1, 1));
+    // smooth: normals made at the vertices, as for mesh FILE smooth.
+    CHECK(scene.mesh_definitions[2].vertex_normals[0] >= 0);
+    CHECK(scene_features(scene).smooth_triangles == 2);  // the ball's, placed once
 }
 
 TEST_CASE("parse_scene: texture, normalmap and bumpmap set the maps of the objects after them",
