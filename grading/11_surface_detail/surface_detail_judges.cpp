@@ -3,7 +3,6 @@
 #include <cmath>
 #include <optional>
 #include <string>
-#include <type_traits>
 
 #include "app/grade/data_judge.h"
 #include "app/grade/value_text.h"
@@ -29,10 +28,6 @@ bool components_within(const TangentFrame& got, const TangentFrame& expected, do
            near_double(got.normal, expected.normal, tolerance);
 }
 
-std::string surface_value_text(const Vec2& uv) {
-    return full_text(uv);
-}
-
 std::string surface_value_text(const SurfaceDerivatives& d) {
     return "dp/du " + full_text(d.dpdu) + ", dp/dv " + full_text(d.dpdv);
 }
@@ -42,46 +37,50 @@ std::string surface_value_text(const TangentFrame& f) {
            ", normal " + full_text(f.normal);
 }
 
-// The judge of an answer of type T, or of std::optional<T> where `none` names what nullopt means.
+std::string tolerance_text(double tolerance) {
+    return tolerance > 0 ? " (each component within " + full_text(tolerance) + ")" : "";
+}
+
+const JudgeRegistry::Registration near_vec2_registration{
+    {"near_vec2", [](const Json& p) -> Judge {
+         const Vec2 expected = probe::vec2_from(p.at("expected"));
+         const double tolerance = probe::number_from(p.at("tolerance"));
+         const std::string want = full_text(expected) + tolerance_text(tolerance);
+         return [=](const ProbeAnswer& answer) {
+             if (answer.kind != Kind::result) return verdict_wrong(want, "");
+             const Vec2 got = probe::vec2_from(answer.value);
+             if (near_double(got, expected, tolerance)) return verdict_right();
+             return verdict_wrong(want, full_text(got));
+         };
+     }}};
+
+// The judge of a std::optional<T> answer: nullopt (which `none` explains) where the expectation
+// is, else each component within the tolerance.
 template <class T>
-Judge near_judge(const Json& p, const char* none) {
-    using Answer = std::conditional_t<std::is_same_v<T, Vec2>, T, std::optional<T>>;
-    const Answer expected = probe::JsonCodec<Answer>::read(p.at("expected"));
+Judge optional_near_judge(const Json& p, const char* none) {
+    const auto expected = probe::JsonCodec<std::optional<T>>::read(p.at("expected"));
     const double tolerance = probe::number_from(p.at("tolerance"));
-    const auto answer_text = [none](const Answer& a) {
-        if constexpr (std::is_same_v<Answer, T>) {
-            return surface_value_text(a);
-        } else {
-            return a ? surface_value_text(*a) : std::string("nullopt: ") + none;
-        }
+    const auto answer_text = [none](const std::optional<T>& a) {
+        return a ? surface_value_text(*a) : std::string("nullopt: ") + none;
     };
-    std::string want = answer_text(expected);
-    if (tolerance > 0) want += " (each component within " + full_text(tolerance) + ")";
+    const std::string want = answer_text(expected) + tolerance_text(tolerance);
     return [=](const ProbeAnswer& answer) {
         if (answer.kind != Kind::result) return verdict_wrong(want, "");
-        const Answer got = probe::JsonCodec<Answer>::read(answer.value);
-        bool right = false;
-        if constexpr (std::is_same_v<Answer, T>) {
-            right = near_double(got, expected, tolerance);
-        } else {
-            right =
-                got && expected ? components_within(*got, *expected, tolerance) : !got && !expected;
-        }
+        const auto got = probe::JsonCodec<std::optional<T>>::read(answer.value);
+        const bool right =
+            got && expected ? components_within(*got, *expected, tolerance) : !got && !expected;
         return right ? verdict_right() : verdict_wrong(want, answer_text(got));
     };
 }
 
-const JudgeRegistry::Registration near_vec2_registration{
-    {"near_vec2", [](const Json& p) { return near_judge<Vec2>(p, ""); }}};
-
 const JudgeRegistry::Registration surface_derivatives_registration{
     {"surface_derivatives", [](const Json& p) {
-         return near_judge<SurfaceDerivatives>(p, "the uv triangle has no area");
+         return optional_near_judge<SurfaceDerivatives>(p, "the uv triangle has no area");
      }}};
 
 const JudgeRegistry::Registration tangent_frame_registration{
     {"tangent_frame", [](const Json& p) {
-         return near_judge<TangentFrame>(p, "dp/du has no part across the normal");
+         return optional_near_judge<TangentFrame>(p, "dp/du has no part across the normal");
      }}};
 
 }  // namespace
