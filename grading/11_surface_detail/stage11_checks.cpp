@@ -1,9 +1,10 @@
 // Stage 11 checks: interpolation, the tangent frame, texture lookup and the perturbed normals,
 // each function against the long-double oracle (grading/11_surface_detail/surface_detail_oracle.h)
 // on hand-worked cases (public), on the contract's edges (hidden: a vertex's own normal,
-// opposing normals, the poles and the seam, uvs with no area, dp/du along the normal, negative
-// and far texel indices, v = 0 and 1, a one-texel image, the grey texel, parallel derivatives)
-// and on seeded random ones. Every case is judged by a data judge, so the public ones go into
+// opposing normals, near the poles and either side of the seam, uvs with no area, dp/du along the
+// normal, negative and far texel indices, v = 0 and 1, a one-texel image, the grey texel,
+// parallel derivatives) and on seeded random ones, each of the contract's four parts an oracle
+// check of its own. Every case is judged by a data judge, so the public ones go into
 // the student release as data and the others are judged by the same code. The renders that show
 // each map are render checks (grader/grade/checks/render_checks.cpp).
 
