@@ -15,6 +15,7 @@
 #include "app/check/case_scoring.h"
 #include "app/check/check_report.h"
 #include "app/check/stage3_methods.h"
+#include "app/demo/source_tree.h"
 #include "base/errors/input_error.h"
 
 namespace raystep {
@@ -24,7 +25,7 @@ namespace {
 // Where the cases come from when the command line names none: the stage's cases/ folder in the
 // source tree this program was built from.
 std::filesystem::path default_case_folder() {
-    return std::filesystem::path(RAYSTEP_SOURCE_DIR) / "stages" / "3_intersect" / "cases";
+    return source_tree() / "stages" / "3_intersect" / "cases";
 }
 
 std::vector<std::filesystem::path> case_files(const CheckArguments& arguments) {

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "app/cli/command_registry.h"
+#include "app/demo/source_tree.h"
 #include "app/grade/public_case.h"
 #include "app/grade/public_check_run.h"
 #include "app/grade/rubric.h"
@@ -36,7 +37,7 @@ using namespace raystep::grade;
 
 struct GradeArguments {
     int stage = -1;  ///< -1: every stage; 0: the whole pipeline
-    std::string grading = (fs::path(RAYSTEP_SOURCE_DIR) / "grading").string();
+    std::string grading = (source_tree() / "grading").string();
 };
 
 // The rubric's id prefix for a stage: "stage3." or, for the pipeline, "pipeline.".
@@ -119,11 +120,11 @@ int run_grade(const GradeArguments& arguments) {
             if (!selected(arguments, file.stem().string())) continue;
             const PublicCheck check = read_public_check(file);
             run.insert(check.id);
-            report.checks.push_back(run_public_check(check, rubric, calls, RAYSTEP_SOURCE_DIR));
+            report.checks.push_back(run_public_check(check, rubric, calls, source_tree()));
         }
         // Stage 3's public cases are the case files `raystep check` reads, scored per function.
         if (selected(arguments, "stage3.")) {
-            const std::vector<CaseFamily> families = stage3_public_families(RAYSTEP_SOURCE_DIR);
+            const std::vector<CaseFamily> families = stage3_public_families(source_tree());
             const std::map<std::string, std::size_t> reference =
                 read_stage3_reference(folder / "stage3-reference.json");
             for (CheckResult& result : run_stage3_case_checks(families, reference, rubric)) {

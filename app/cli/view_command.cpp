@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #if RAYSTEP_HAVE_VIEW_SERVER
+#include "app/demo/source_tree.h"
 #include "app/view/program_restart.h"
 #include "app/view/view_server.h"
 #endif
@@ -45,7 +46,7 @@ int run_view(const ViewArguments& arguments, const char* argv0) {
     options.scene = arguments.scene;
     options.port = arguments.port;
     options.threads = arguments.threads;
-    options.project = RAYSTEP_SOURCE_DIR;
+    options.project = source_tree();
     options.program = own_program_file(argv0);
     // Beside the build's bin/ folder, in the build tree, which nothing commits.
     options.reference_cache = options.program.parent_path().parent_path() / "view-references";

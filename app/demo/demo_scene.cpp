@@ -5,13 +5,14 @@
 
 #include <glm/trigonometric.hpp>
 
+#include "app/demo/source_tree.h"
 #include "base/scene/scene_loader.h"
 #include "renderer/tile_renderer.h"
 
 namespace raystep {
 
 Scene load_demo_scene(const std::string& relative_path, const PanelSize& panel) {
-    Scene scene = load_scene(std::filesystem::path(RAYSTEP_SOURCE_DIR) / "scenes" / relative_path);
+    Scene scene = load_scene(source_tree() / "scenes" / relative_path);
     // Keep the width of the view: scale its height by the change of aspect ratio
     const double taller = (static_cast<double>(scene.width) / scene.height) /
                           (static_cast<double>(panel.width) / panel.height);

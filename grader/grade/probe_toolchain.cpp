@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "grader/grade/build_locations.h"
+
 namespace raystep::grade {
 
 namespace {
@@ -47,7 +49,7 @@ ProbeToolchain load_probe_toolchain(const std::filesystem::path& file) {
 }
 
 ProbeToolchain this_build_toolchain() {
-    return load_probe_toolchain(RAYSTEP_PROBE_TOOLCHAIN);
+    return load_probe_toolchain(built_probe_toolchain());
 }
 
 }  // namespace raystep::grade

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <fstream>
 
+#include "grader/grade/build_locations.h"
 #include "grader/grade/checks/stage_checks.h"
 #include "grader/sandbox/sandbox.h"
 #include "studies/speed_error/pareto_json.h"
@@ -66,20 +67,21 @@ std::optional<nlohmann::json> speed_error_chart_data(const GradeReport& report,
 }
 
 std::string draw_chart_svg(const nlohmann::json& data) {
-    const std::string python = RAYSTEP_CHART_PYTHON;
+    const std::string python = built_chart_python();
     if (python.empty()) return "";
     // Our script on our data: the sandbox only for its limits and its clean environment. The
     // data on stdin, the SVG on stdout.
     SandboxPolicy policy;
     policy.isolate = false;
-    policy.read_only = {RAYSTEP_DRAW_CHARTS};
+    const std::filesystem::path script = built_chart_script();
+    policy.read_only = {script};
     policy.limits.cpu_seconds = 30.0;
     policy.limits.wall = std::chrono::seconds(60);
     policy.limits.address_space_bytes = std::size_t{8} << 30;  // numpy's threads reserve much
     policy.limits.open_files = 256;
     SandboxRun run;
     try {
-        run = run_sandboxed({python, RAYSTEP_DRAW_CHARTS, "-", "-o", "-"}, data.dump(), policy);
+        run = run_sandboxed({python, script.string(), "-", "-o", "-"}, data.dump(), policy);
     } catch (const std::runtime_error&) {
         return "";  // the Python configured is gone
     }

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "grader/grade/archive_entry_name.h"
+#include "grader/grade/build_locations.h"
 #include "grader/grade/mebibytes.h"
 #include "grader/grade/sandbox_copies.h"
 #include "grader/sandbox/sandbox.h"
@@ -50,7 +51,7 @@ std::vector<Entry> listed_entries(const fs::path& submission, bool folder,
     fs::create_directories(tools);
     fs::create_directories(unpacked);
     const fs::path unpack = tools / "raystep-unpack";
-    copy_file_for_sandbox(RAYSTEP_UNPACK_PROGRAM, unpack, kSharedProgram);
+    copy_file_for_sandbox(built_unpack_program(), unpack, kSharedProgram);
 
     std::vector<std::string> argv = {unpack.string(), unpacked.string(),
                                      std::to_string(budget.largest_file),

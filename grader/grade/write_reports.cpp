@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/report/audience.h"
+#include "grader/grade/build_locations.h"
 #include "grader/grade/report_json.h"
 #include "grader/grade/speed_error_chart.h"
 #include "grader/report/gradescope_results.h"
@@ -46,9 +47,9 @@ void write_reports(const GradeReport& report, const fs::path& output) {
     // that a withheld speed check's measurements stay out of it; drawn once when both views
     // hold the same.
     const std::optional<nlohmann::json> student_chart =
-        speed_error_chart_data(seen_by(report, Audience::student), RAYSTEP_PARETO_REFERENCE);
+        speed_error_chart_data(seen_by(report, Audience::student), built_pareto_reference());
     const std::optional<nlohmann::json> instructor_chart =
-        speed_error_chart_data(report, RAYSTEP_PARETO_REFERENCE);
+        speed_error_chart_data(report, built_pareto_reference());
     HtmlReportOptions student_page;
     if (student_chart) student_page.speed_error_chart_svg = draw_chart_svg(*student_chart);
     write_file(student / "index.html", html_report(report, instructor, student_page));

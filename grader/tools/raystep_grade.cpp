@@ -20,6 +20,7 @@
 #include "app/report/console_summary.h"
 #include "app/report/grade_report.h"
 #include "grader/grade/batch.h"
+#include "grader/grade/build_locations.h"
 #include "grader/grade/checks/stage_checks.h"
 #include "grader/grade/checks/statistics_seed.h"
 #include "grader/grade/grade_submission.h"
@@ -58,7 +59,7 @@ struct SubmissionArguments {
     int stage = -1;
     bool no_speed = false;
     long case_index = -1;
-    std::string rubric = RAYSTEP_RUBRIC;
+    std::string rubric = built_rubric().string();
     bool instructor = false;
     std::string work;
     bool keep_work = false;
@@ -87,7 +88,7 @@ int grade_one(const SubmissionArguments& arguments) {
         options.only_case = static_cast<std::size_t>(arguments.case_index);
     options.eye_seed = arguments.eye_seed;
     options.checks_time_limit = std::chrono::seconds(arguments.checks_time_limit);
-    options.reference_probe = RAYSTEP_REFERENCE_PROBE;
+    options.reference_probe = built_reference_probe();
     options.reproduce = "raystep-grade submission " + arguments.path;
     // The statistical checks' seed is part of how a case is reproduced: a command for one of
     // them names it unless it is the default.
@@ -124,7 +125,7 @@ struct BatchArguments {
     std::string folder;
     std::string output = "grades";
     int jobs = default_jobs();
-    std::string rubric = RAYSTEP_RUBRIC;
+    std::string rubric = built_rubric().string();
     bool no_speed = false;
     std::string shard = "1/1";
     std::vector<std::string> merge;
@@ -155,7 +156,7 @@ int grade_many(const BatchArguments& arguments) {
     options.shard = parse_shard(arguments.shard);
     options.eye_seed = arguments.eye_seed;
     options.progress = isatty(fileno(stderr)) != 0;
-    options.reference_probe = RAYSTEP_REFERENCE_PROBE;
+    options.reference_probe = built_reference_probe();
     const auto start = std::chrono::steady_clock::now();
     const BatchTally tally =
         grade_class(options, load_rubric(fs::absolute(arguments.rubric)), this_build_toolchain());
@@ -329,7 +330,7 @@ int main(int argc, char** argv) {
         }
         if (public_cases_command->parsed()) {
             const std::size_t written = write_release_grading(this_build_toolchain().source,
-                                                              RAYSTEP_RUBRIC, grading_folder);
+                                                              built_rubric(), grading_folder);
             std::printf("wrote %zu public case files and the rubric to %s\n", written,
                         grading_folder.c_str());
             return 0;
