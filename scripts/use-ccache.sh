@@ -11,7 +11,10 @@
 #   CCACHE_BASEDIR               the repository: paths under it enter the hash relative to the
 #                                build folder, so that build/release, the student release written
 #                                to build/student-release and the autograder unpacked under
-#                                build/release/grader/tests hit each other's objects.
+#                                build/release/grader/tests hit each other's objects. It rewrites
+#                                paths on the command line, not a macro's value: the few files that
+#                                name their copy's paths are compiled alone, outside the unity
+#                                files (grader/grade/build_locations.cpp, app/demo/source_tree.cpp).
 #   CCACHE_DIR                   a cache of the repository's own, in build/, read with no
 #                                ccache.conf of the user's: a run is the same on a developer's
 #                                machine and on a fresh CI machine, and nothing else writes to it.

@@ -7,8 +7,8 @@ namespace raystep::grade {
 
 // Where this build keeps what a grade runs and reads beside raystep-grade, fixed when CMake
 // configures. Only build_locations.cpp is compiled with these paths, outside the unity build: they
-// differ between copies of the tree (the Gradescope test's autograder, a second checkout), and the
-// files that hold none compile to the same object in every copy, which ccache then shares
+// differ between copies of the tree (the Gradescope test's autograder, unpacked under build/), and
+// the files that hold none compile to the same object in every copy, which ccache then shares
 // (scripts/use-ccache.sh).
 
 /// probe-toolchain.json: how this build compiles and links a submission's probes.

@@ -21,7 +21,7 @@ std::optional<nlohmann::json> speed_error_chart_data(const GradeReport& report,
                                                      const std::filesystem::path& reference_json);
 
 /// The chart as one inline <svg> element, drawn by scripts/draw-charts.py with the Python that
-/// has matplotlib (RAYSTEP_CHART_PYTHON, chosen when CMake configured). Empty where there is no
+/// has matplotlib (built_chart_python(), chosen when CMake configured). Empty where there is no
 /// such Python, or the script fails or takes longer than a minute: the HTML then shows no chart.
 std::string draw_chart_svg(const nlohmann::json& data);
 
