@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/command_registry.h"
+#include "app/demo/source_tree.h"
 #include "renderer/terminal.h"
 #include "studies/common/figures_file.h"
 #include "studies/common/machine_description.h"
@@ -178,8 +179,7 @@ void run_threshold(const BenchArguments& arguments) {
 
 // The acne scenes of stage 6, at the three scales the study compares.
 std::vector<std::filesystem::path> acne_scenes() {
-    const std::filesystem::path folder =
-        std::filesystem::path(RAYSTEP_SOURCE_DIR) / "scenes/stage6";
+    const std::filesystem::path folder = source_tree() / "scenes/stage6";
     return {folder / "acne-scale-1e-3.test", folder / "acne-scale-1.test",
             folder / "acne-scale-1e4.test"};
 }
@@ -331,8 +331,7 @@ int run_bench(const BenchArguments& arguments) {
     if (everything || arguments.epsilon) run_epsilon(arguments);
     if (everything || arguments.scale) {
         ProgressLine().show("the scale bars");
-        run_scale_bars(std::filesystem::path(RAYSTEP_SOURCE_DIR) / "scenes/scale", options.threads,
-                       arguments.quick);
+        run_scale_bars(source_tree() / "scenes/scale", options.threads, arguments.quick);
         ProgressLine().clear();
     }
 

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/demo/source_tree.h"
 #include "renderer/terminal.h"
 #include "studies/common/figures_file.h"
 #include "studies/common/machine_description.h"
@@ -41,8 +42,7 @@ int run_noise_study(bool quick, const std::string& json_path) {
         machine.c_str(), date.c_str(), options.width, options.height, options.threads,
         counts_text(options.counts).c_str(), options.seeds, options.converged_samples);
 
-    const std::vector<NoiseScene> scenes =
-        measure_noise(std::filesystem::path(RAYSTEP_SOURCE_DIR) / "scenes/demos", options);
+    const std::vector<NoiseScene> scenes = measure_noise(source_tree() / "scenes/demos", options);
     if (terminal) std::fprintf(stderr, "\r\033[K");
 
     for (const NoiseScene& scene : scenes) {

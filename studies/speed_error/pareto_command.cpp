@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "app/check/case_file.h"
+#include "app/demo/source_tree.h"
 #include "studies/common/figures_file.h"
 #include "studies/common/machine_description.h"
 #include "studies/common/markdown_table.h"
@@ -32,7 +33,7 @@ const std::vector<double> kOffsetEpsilons = {1e-10, 1e-8, 1e-6, 1e-4, 1e-2};
 std::vector<fs::path> case_files(const std::vector<std::string>& named) {
     std::vector<fs::path> paths;
     if (named.empty()) {
-        return case_files({(fs::path(RAYSTEP_SOURCE_DIR) / "stages/3_intersect/cases").string()});
+        return case_files({(source_tree() / "stages/3_intersect/cases").string()});
     }
     for (const std::string& name : named) {
         if (!fs::is_directory(name)) {
@@ -57,7 +58,7 @@ OffsetErrors errors_of(const EpsilonSceneResult& study, const RayOffset& offset)
 // Each acne scene (with `quick`, the largest scale's alone): the epsilon study's acne and leaks
 // beside the time of each rule's shadow rays.
 std::vector<OffsetRuleResult> measure_offset_rules(bool quick, std::string& notes) {
-    const fs::path folder = fs::path(RAYSTEP_SOURCE_DIR) / "scenes/stage6";
+    const fs::path folder = source_tree() / "scenes/stage6";
     std::vector<RayOffset> offsets;
     for (const double epsilon : kOffsetEpsilons)
         offsets.push_back({OffsetRule::along_ray, epsilon});
