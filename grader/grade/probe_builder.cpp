@@ -316,6 +316,10 @@ fs::path nm_program(const ProbeToolchain& toolchain) {
 std::vector<std::string> weak_references(const std::vector<fs::path>& objects,
                                          const ProbeToolchain& toolchain) {
     std::vector<std::string> argv = {nm_program(toolchain).string(), "-P", "--undefined-only"};
+    if (!toolchain.nm_plugin.empty()) {
+        argv.push_back("--plugin");
+        argv.push_back(toolchain.nm_plugin.string());
+    }
     for (const fs::path& object : objects)
         argv.push_back(object.string());
     SandboxPolicy policy;

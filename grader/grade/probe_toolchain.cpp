@@ -37,6 +37,7 @@ ProbeToolchain load_probe_toolchain(const std::filesystem::path& file) {
         for (const auto& l : j.at("libraries"))
             t.libraries.emplace_back(l.get<std::string>());
         t.link_flags = words(j.at("link_flags").get<std::string>());
+        t.nm_plugin = j.at("nm_plugin").get<std::string>();
         t.image_module = j.at("image_module").get<std::string>();
         for (const auto& [stage, library] : j.at("stage_libraries").items()) {
             t.stage_libraries[std::stoi(stage)] = library.get<std::string>();

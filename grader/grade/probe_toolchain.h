@@ -19,6 +19,9 @@ struct ProbeToolchain {
     std::vector<std::filesystem::path> probe_objects;  ///< the calls, the renderer, app/check
     std::vector<std::filesystem::path> libraries;      ///< below the stages: protocol, scene, core
     std::vector<std::string> link_flags;
+    /// The compiler's LTO plugin, which nm is told to load alone rather than every plugin
+    /// installed beside binutils (LLVM's among them); empty: nm chooses.
+    std::filesystem::path nm_plugin;
     /// The image library module (base/image/image_library_loader.h), which a probe loads to read
     /// a scene's texture: copied where the sandbox's user can read it (ProbeSet::image_library).
     std::filesystem::path image_module;
