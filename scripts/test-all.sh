@@ -63,10 +63,16 @@ sanitizer_run() {
     # The tests of those programs, by label; of them, the page in a browser and the studies' runs
     # (browser, measurement) run the code the others run, and the test that writes the public
     # case files needs raystep-grade: the release build's writes them instead, for the tests of
-    # `raystep grade` that read them.
+    # `raystep grade` that read them. Two more repeat what other tests of this pass run, at ten to
+    # twenty times their release cost (docs/measurements/ci-time.md): `raystep info` on each bad
+    # scene, a sanitized process each, where load_scene's test reads every one of those scenes
+    # in-process; and the path tracing demo's 576-path reference, whose renders the renderer's
+    # path-traced tests run and whose figure the other demos' tests make.
     build/release/bin/raystep-grade public-cases build/debug-asan/grader/tests/grading >/dev/null
+    local elsewhere='^(raystep grade: the release writer writes'
+    elsewhere+='|raystep command: info on every bad scene|path_tracing_demo: )'
     ctest --preset debug-asan -j "$jobs" -L '^(base|renderer|app|stage[0-9]+|cli|view|sandbox)$' \
-        -LE '^(browser|measurement)$' -E '^raystep grade: the release writer writes'
+        -LE '^(browser|measurement)$' -E "$elsewhere"
 }
 # In a process group of its own (set -m), so that a failure here stops all of it.
 set -m
