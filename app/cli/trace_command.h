@@ -5,9 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/cli/eye_option.h"
-#include "app/cli/ray_offset_option.h"
-#include "app/cli/sampling_options.h"
+#include "app/cli/scene_options.h"
 
 namespace raystep {
 

@@ -1,4 +1,4 @@
-#include "app/cli/eye_option.h"
+#include "app/cli/scene_options.h"
 
 #include <stdexcept>
 #include <string>
@@ -55,4 +55,34 @@ TEST_CASE("apply_eye: an eye at the look-at point is refused, not a camera that 
     scene.camera = {Vec3(0, 0, 4), Vec3(0, 1, 0), Vec3(0, 1, 0), 45.0, {}, 3};
     CHECK_THROWS_AS(apply_eye({0.0, 1.0, 0.0}, scene), std::invalid_argument);
     CHECK(scene.camera.lookfrom == Vec3(0, 0, 4));
+}
+
+TEST_CASE("apply_sampling: each option given replaces the scene's setting, the rest stay",
+          "[app]") {
+    Scene scene;
+    scene.samples_per_pixel = 4;
+    scene.seed = 3;
+    SamplingArguments arguments;
+    arguments.samples_per_pixel = 16;
+    apply_sampling(arguments, scene);
+    CHECK(scene.samples_per_pixel == 16);
+    CHECK(scene.seed == 3);
+    CHECK(scene.pixel_sampling == SamplePattern::jittered);
+    arguments.pixel_sampling = "random";
+    arguments.seed = 11;
+    apply_sampling(arguments, scene);
+    CHECK(scene.pixel_sampling == SamplePattern::random);
+    CHECK(scene.seed == 11);
+}
+
+TEST_CASE("apply_sampling: a count that is not a square cannot be jittered or regular", "[app]") {
+    Scene scene;
+    SamplingArguments arguments;
+    arguments.samples_per_pixel = 8;
+    CHECK_THROWS_AS(apply_sampling(arguments, scene), std::invalid_argument);
+    arguments.pixel_sampling = "regular";
+    CHECK_THROWS_AS(apply_sampling(arguments, scene), std::invalid_argument);
+    arguments.pixel_sampling = "random";
+    CHECK_NOTHROW(apply_sampling(arguments, scene));
+    CHECK(scene.samples_per_pixel == 8);
 }
