@@ -53,9 +53,9 @@ endfunction()
 
 # Static libraries archived by GCC's own ar and ranlib (gcc-ar), which name GCC's LTO plugin to
 # binutils. Binutils' ar and ranlib, told none, load every plugin of bfd-plugins/ on each call, and
-# where LLVM is installed (the macOS stand-in's clang) that is two LLVM libraries: 0.15 s a call
-# against 0.01 s, twice for each of some 25 libraries a build archives. Not on a Mac, where GCC's
-# gcc-ar would hand the plugin to Apple's ar, which takes none.
+# where LLVM is installed those are LLVM's, whose libraries take longer to load than the archive
+# takes to write (docs/measurements/ci-time.md). Not on a Mac, where GCC's gcc-ar would hand the
+# plugin to Apple's ar, which takes none.
 if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND NOT APPLE AND CMAKE_CXX_COMPILER_AR AND
    CMAKE_CXX_COMPILER_RANLIB)
     set(CMAKE_AR ${CMAKE_CXX_COMPILER_AR})
